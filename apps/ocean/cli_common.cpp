@@ -1,0 +1,171 @@
+// Shared pieces of the ocean command-line tool (see cli_common.hpp).
+#include "cli_common.hpp"
+
+#include <charconv>
+#include <cmath>
+#include <iostream>
+#include <utility>
+
+namespace ocean::cli {
+
+namespace {
+// Library parameter names and the flags that set them, so messages speak the user's language.
+constexpr std::pair<std::string_view, std::string_view> kFlagNames[] = {
+    {"significant_wave_height_m", "--hs"},
+    {"peak_period_s", "--tp"},
+    {"wind_speed_mps", "--wind-speed"},
+    {"fetch_m", "--fetch"},
+    {"gamma", "--gamma"},
+    {"depth_m", "--depth"},
+    {"gravity_mps2", "--gravity"},
+    {"phillips_amplitude", "--phillips-amplitude"},
+    {"small_wave_cutoff_m", "--cutoff-length"},
+    {"alpha", "--alpha"},
+};
+
+bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
+
+std::string with_flag_names(std::string message) {
+  for (const auto& [field, flag] : kFlagNames) {
+    std::size_t pos = 0;
+    while ((pos = message.find(field, pos)) != std::string::npos) {
+      const std::size_t end = pos + field.size();
+      const bool starts = pos == 0 || !is_word_char(message[pos - 1]);
+      const bool ends = end == message.size() || !is_word_char(message[end]);
+      if (starts && ends) {
+        message.replace(pos, field.size(), flag);
+        pos += flag.size();
+      } else {
+        pos = end;
+      }
+    }
+  }
+  return message;
+}
+}  // namespace
+
+int report(const Status& status) {
+  std::cerr << "ocean: error: " << with_flag_names(status.message()) << "\n";
+  return status.code() == ErrorCode::invalid_argument ? kExitUsage : kExitFailure;
+}
+
+Result<double> parse_number(std::string_view flag, const std::string& text) {
+  double value = 0.0;
+  const char* first = text.data();
+  const char* last = text.data() + text.size();
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (text.empty() || ec != std::errc() || ptr != last) {
+    return invalid_argument(std::string(flag) + " = '" + text + "' is not a number");
+  }
+  if (std::isnan(value)) return require_finite(flag, value);  // NaN is never a valid value
+  return value;
+}
+
+Result<std::vector<double>> parse_number_list(std::string_view flag, const std::string& text) {
+  std::vector<double> values;
+  if (text.empty()) return invalid_argument(std::string(flag) + " is empty: give W1,W2,...");
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::size_t end = comma == std::string::npos ? text.size() : comma;
+    Result<double> v = parse_number(flag, text.substr(start, end - start));
+    if (!v.ok()) return v.status();
+    values.push_back(v.value());
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return values;
+}
+
+void add_spectrum_flags(CLI::App& command, SpectrumFlags& f) {
+  command.add_option("--model", f.model, "pierson-moskowitz | jonswap | tma | phillips")
+      ->capture_default_str();
+  command.add_option("--hs", f.hs, "significant wave height Hs, m (with --tp)");
+  command.add_option("--tp", f.tp, "peak period Tp, s (with --hs)");
+  command.add_option("--wind-speed", f.wind_speed,
+                     "wind speed, m/s: U10 (U19.5 for pierson-moskowitz)");
+  command.add_option("--fetch", f.fetch, "fetch, m (jonswap/tma from wind)");
+  command.add_option("--gamma", f.gamma, "JONSWAP peak enhancement, >= 1, or 'auto'");
+  command.add_option("--depth", f.depth, "water depth, m (tma)");
+  command.add_option("--depth-factor", f.depth_factor, "exact | thompson-vincent (tma)")
+      ->capture_default_str();
+  command.add_option("--gravity", f.gravity, "gravitational acceleration, m/s^2 (default 9.81)");
+  command
+      .add_option("--fetch-law", f.fetch_law,
+                  "hasselmann (2pi*3.5 (g/U)(gF/U^2)^-0.33) | cube-root (22 (g^2/(U F))^(1/3))")
+      ->capture_default_str();
+  command
+      .add_option("--normalization", f.normalization,
+                  "JONSWAP Hs/Tp normalisation: dnv (1 - 0.287 ln gamma) | exact")
+      ->capture_default_str();
+  command.add_option("--phillips-amplitude", f.phillips_amplitude,
+                     "Phillips amplitude A (dimensionless; default: Hs of Pierson-Moskowitz)");
+  command.add_option("--cutoff-length", f.cutoff_length,
+                     "Phillips small-wave cutoff length l, m (factor exp(-k^2 l^2))");
+}
+
+Result<FrequencySpectrumParams> to_params(const SpectrumFlags& f) {
+  FrequencySpectrumParams p;
+  Result<SpectrumModel> model = parse_spectrum_model(f.model);
+  if (!model.ok()) return Status(model.status().code(), "--model: " + model.status().message());
+  p.model = model.value();
+  const std::pair<const std::string*, double*> scalars[] = {
+      {&f.hs, &p.significant_wave_height_m},
+      {&f.tp, &p.peak_period_s},
+      {&f.wind_speed, &p.wind_speed_mps},
+      {&f.fetch, &p.fetch_m},
+      {&f.depth, &p.depth_m},
+      {&f.gravity, &p.gravity_mps2},
+      {&f.phillips_amplitude, &p.phillips_amplitude},
+      {&f.cutoff_length, &p.small_wave_cutoff_m}};
+  const std::string_view names[] = {
+      "--hs",    "--tp",      "--wind-speed",         "--fetch",
+      "--depth", "--gravity", "--phillips-amplitude", "--cutoff-length"};
+  for (std::size_t i = 0; i < std::size(scalars); ++i) {
+    if (scalars[i].first->empty()) continue;
+    Result<double> v = parse_number(names[i], *scalars[i].first);
+    if (!v.ok()) return v.status();
+    *scalars[i].second = v.value();
+  }
+  if (!f.gamma.empty() && f.gamma != "auto") {
+    Result<double> v = parse_number("--gamma", f.gamma);
+    if (!v.ok()) return v.status();
+    p.gamma = v.value();
+  }
+  if (f.depth_factor == "exact")
+    p.depth_factor = DepthFactor::exact;
+  else if (f.depth_factor == "thompson-vincent")
+    p.depth_factor = DepthFactor::thompson_vincent;
+  else
+    return invalid_argument("--depth-factor = '" + f.depth_factor +
+                            "' is unknown: must be exact or thompson-vincent");
+  if (f.fetch_law == "hasselmann")
+    p.fetch_law = FetchLaw::hasselmann_1973;
+  else if (f.fetch_law == "cube-root")
+    p.fetch_law = FetchLaw::cube_root;
+  else
+    return invalid_argument("--fetch-law = '" + f.fetch_law +
+                            "' is unknown: must be hasselmann or cube-root");
+  if (f.normalization == "dnv")
+    p.normalization = JonswapNormalization::dnv;
+  else if (f.normalization == "exact")
+    p.normalization = JonswapNormalization::exact;
+  else
+    return invalid_argument("--normalization = '" + f.normalization +
+                            "' is unknown: must be dnv or exact");
+  if (f.hs.empty() && f.tp.empty() && f.wind_speed.empty()) {
+    // The default sea state: a fresh breeze over a long fetch.
+    p.wind_speed_mps = 10.0;
+    if (p.model == SpectrumModel::jonswap || p.model == SpectrumModel::tma) {
+      if (f.fetch.empty()) p.fetch_m = 100e3;
+    }
+  }
+  if (p.model == SpectrumModel::tma && f.depth.empty()) {
+    return invalid_argument("tma needs --depth (water depth, m)");
+  }
+  return p;
+}
+
+void print_json(const nlohmann::ordered_json& value) { std::cout << value.dump(2) << "\n"; }
+
+}  // namespace ocean::cli

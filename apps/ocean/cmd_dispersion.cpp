@@ -1,0 +1,87 @@
+// `ocean dispersion`: wavenumber, frequency and group velocity from the finite-depth
+// dispersion relation.
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+
+namespace ocean::cli {
+
+namespace {
+struct DispersionOptions {
+  std::string depth, gravity, k, omega;
+  bool capillary = false;
+  bool json = false;
+};
+
+int run_dispersion(const DispersionOptions& o) {
+  if (o.k.empty() == o.omega.empty()) {
+    return report(invalid_argument("dispersion needs exactly one of --k K1,... or --omega W1,..."));
+  }
+  DispersionParams params;
+  if (!o.depth.empty()) {
+    Result<double> v = parse_number("--depth", o.depth);
+    if (!v.ok()) return report(v.status());
+    params.depth_m = v.value();
+  }
+  if (!o.gravity.empty()) {
+    Result<double> v = parse_number("--gravity", o.gravity);
+    if (!v.ok()) return report(v.status());
+    params.gravity_mps2 = v.value();
+  }
+  if (o.capillary) params.capillarity_m3ps2 = kSeaWaterCapillarity;
+  Result<Dispersion> dispersion = Dispersion::make(params);
+  if (!dispersion.ok()) return report(dispersion.status());
+  const Dispersion& d = dispersion.value();
+  const bool from_k = !o.k.empty();
+  Result<std::vector<double>> input =
+      from_k ? parse_number_list("--k", o.k) : parse_number_list("--omega", o.omega);
+  if (!input.ok()) return report(input.status());
+  std::vector<double> k, omega, cg;
+  for (double v : input.value()) {
+    if (Status s = require_non_negative(from_k ? "--k" : "--omega", v); !s.ok()) return report(s);
+    const double kk = from_k ? v : d.wavenumber(v);
+    k.push_back(kk);
+    omega.push_back(from_k ? d.omega(v) : v);
+    cg.push_back(kk > 0.0 ? d.group_velocity(kk) : d.group_velocity(0.0));
+  }
+  if (o.json) {
+    nlohmann::ordered_json out{{"k", k}, {"omega", omega}, {"group_velocity", cg}};
+    std::vector<double> wavelength, phase_velocity;
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      wavelength.push_back(k[i] > 0.0 ? 2.0 * kPi / k[i] : kInfiniteDepth);
+      phase_velocity.push_back(k[i] > 0.0 ? omega[i] / k[i] : cg[i]);
+    }
+    // JSON has no infinity: the wavelength of k = 0 prints as null.
+    out["wavelength_m"] = wavelength;
+    out["phase_velocity"] = phase_velocity;
+    print_json(out);
+  } else {
+    std::cout << std::setw(16) << "k_rad_m" << std::setw(16) << "omega_rad_s" << std::setw(16)
+              << "group_vel_m_s"
+              << "\n";
+    for (std::size_t i = 0; i < k.size(); ++i) {
+      std::cout << std::setprecision(10) << std::setw(16) << k[i] << std::setw(16) << omega[i]
+                << std::setw(16) << cg[i] << "\n";
+    }
+  }
+  return kExitOk;
+}
+}  // namespace
+
+Command add_dispersion_command(CLI::App& app) {
+  auto o = std::make_shared<DispersionOptions>();
+  CLI::App* command = app.add_subcommand(
+      "dispersion", "Finite-depth dispersion omega^2 = g k tanh(k h): k <-> omega, group velocity");
+  command->add_option("--depth", o->depth, "water depth, m (default: deep water)");
+  command->add_option("--gravity", o->gravity, "gravitational acceleration, m/s^2 (default 9.81)");
+  command->add_option("--k", o->k, "wavenumbers K1,K2,..., rad/m");
+  command->add_option("--omega", o->omega, "angular frequencies W1,W2,..., rad/s");
+  command->add_flag("--capillary", o->capillary, "include sea-water surface tension");
+  command->add_flag("--json", o->json, "print JSON {\"k\",\"omega\",\"group_velocity\"}");
+  return {command, [o] { return run_dispersion(*o); }};
+}
+
+}  // namespace ocean::cli

@@ -1,0 +1,19 @@
+// The subcommands of the ocean tool. Each add_* registers its flags on the parent and returns
+// the subcommand with the function that runs it.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace ocean::cli {
+
+struct Command {
+  CLI::App* app;             ///< the registered subcommand
+  std::function<int()> run;  ///< runs it after parsing; returns the process exit code
+};
+
+Command add_spectrum_command(CLI::App& app);
+Command add_dispersion_command(CLI::App& app);
+Command add_spreading_command(CLI::App& app);
+
+}  // namespace ocean::cli

@@ -1,0 +1,332 @@
+// ocean/spectrum.hpp — ocean wave spectra, directional spreading, dispersion and the initial
+// Fourier amplitudes h0(k). Pure CPU math: no GPU headers, no global state, thread-safe.
+//
+// Conventions (docs/conventions.md): SI units throughout; angular frequency ω in rad/s;
+// wavenumber k in rad/m; one-sided frequency spectra S(ω) in m²·s/rad with m0 = ∫S(ω)dω the
+// height variance; wave-vector spectra F(kx, kz) in m⁴ (variance per unit k-area) with
+// ∫∫F dkx dkz = m0. Directions are angles in the horizontal x–z plane measured from +x towards
+// +z (Y is up); a component's direction is where its waves travel TO. Equation numbers (M.n)
+// refer to docs/math.md.
+//
+// Errors: every make_* function validates its parameters and returns a Status naming the
+// parameter, its value and the valid range. Evaluation functions on validated objects never fail.
+#pragma once
+
+#include <array>
+#include <complex>
+#include <cstdint>
+#include <limits>
+#include <string_view>
+#include <vector>
+
+#include "ocean/core.hpp"
+
+namespace ocean {
+
+inline constexpr double kPi = 3.14159265358979323846;
+/// Default gravitational acceleration, m/s² (the value the source documents and DNV-RP-C205 use).
+inline constexpr double kDefaultGravity = 9.81;
+inline constexpr double kInfiniteDepth = std::numeric_limits<double>::infinity();
+inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
+
+// ---------------------------------------------------------------------------------------------
+// Dispersion (docs/math.md §2)
+// ---------------------------------------------------------------------------------------------
+
+struct DispersionParams {
+  double gravity_mps2 = kDefaultGravity;  ///< g > 0
+  double depth_m = kInfiniteDepth;        ///< water depth h > 0; infinity = deep water
+  /// Surface tension / density, m³/s² (σ/ρ). 0 = pure gravity waves. Sea water ≈ 7.2e-5
+  /// (σ = 0.0728 N/m, ρ = 1025 kg/m³); see kSeaWaterCapillarity.
+  double capillarity_m3ps2 = 0.0;
+};
+inline constexpr double kSeaWaterCapillarity = 0.0728 / 1025.0;
+
+/// A validated dispersion relation ω²(k) = (g·k + T·k³)·tanh(k·h)   (M.2.1)
+class Dispersion {
+ public:
+  /// Deep water, g = kDefaultGravity, no capillarity.
+  Dispersion() = default;
+  static Result<Dispersion> make(const DispersionParams& params);
+
+  /// ω(k) for k ≥ 0, rad/s.
+  [[nodiscard]] double omega(double k) const;
+  /// Group velocity dω/dk for k > 0, m/s (M.2.3). Deep-water limit at k→0 is not used.
+  [[nodiscard]] double group_velocity(double k) const;
+  /// Inverse k(ω) for ω ≥ 0: safeguarded Newton on the monotone ω²(k), relative accuracy ~1e-14.
+  [[nodiscard]] double wavenumber(double omega) const;
+  [[nodiscard]] const DispersionParams& params() const { return params_; }
+
+ private:
+  DispersionParams params_;
+};
+
+/// Loop-period quantisation ω' = ⌊ω/ω0⌋·ω0, ω0 = 2π/T  (seed 000 eq. 16, M.2.4). T > 0.
+double quantize_omega(double omega, double loop_period_s);
+
+// ---------------------------------------------------------------------------------------------
+// One-sided frequency spectra S(ω) (docs/math.md §3)
+// ---------------------------------------------------------------------------------------------
+
+enum class SpectrumModel { pierson_moskowitz, jonswap, tma, phillips };
+/// Fetch law for the fetch-limited JONSWAP peak frequency.
+enum class FetchLaw {
+  hasselmann_1973,  ///< ωp = 2π·3.5·(g/U)·(gF/U²)^−0.33 (Hasselmann et al. 1973) — default
+  cube_root,  ///< ωp = 22·(g²/(U·F))^(1/3) (seed 001 eq. 1.9; ≈3 % lower at typical fetch)
+};
+/// Kitaigorodskii depth attenuation used by TMA.
+enum class DepthFactor {
+  exact,             ///< Φ from finite-depth dispersion (M.3.9)
+  thompson_vincent,  ///< Thompson & Vincent's piecewise-quadratic approximation (M.3.10)
+};
+/// Normalisation of the Hs/Tp JONSWAP form.
+enum class JonswapNormalization {
+  dnv,    ///< A_γ = 1 − 0.287·ln γ (DNV-RP-C205 §3.5.5.2; exact to ~1 % for 1 ≤ γ ≤ 7)
+  exact,  ///< numerically scaled so that 4·√m0 equals the requested Hs exactly
+};
+
+std::string_view to_string(SpectrumModel model);
+Result<SpectrumModel> parse_spectrum_model(std::string_view name);
+
+struct FrequencySpectrumParams {
+  SpectrumModel model = SpectrumModel::jonswap;
+  // Sea state, either (Hs, Tp) or wind (with fetch for JONSWAP/TMA).
+  double significant_wave_height_m = kUnset;  ///< Hs = 4·√m0, m (with peak_period_s)
+  double peak_period_s = kUnset;              ///< Tp, s
+  /// Wind speed, m/s: U10 for JONSWAP/TMA/Phillips; U19.5 for Pierson–Moskowitz (their
+  /// definition, Pierson & Moskowitz 1964).
+  double wind_speed_mps = kUnset;
+  double fetch_m = kUnset;  ///< JONSWAP/TMA from wind: fetch F, m (required there)
+  /// JONSWAP peak enhancement γ ≥ 1. Unset = "auto": the DNV-RP-C205 rule γ(Tp/√Hs) in the
+  /// Hs/Tp form, Hasselmann's mean 3.3 in the wind/fetch form.
+  double gamma = kUnset;
+  double sigma_a = 0.07;  ///< JONSWAP peak width for ω ≤ ωp
+  double sigma_b = 0.09;  ///< JONSWAP peak width for ω > ωp
+  FetchLaw fetch_law = FetchLaw::hasselmann_1973;
+  JonswapNormalization normalization = JonswapNormalization::dnv;
+  double depth_m = kInfiniteDepth;  ///< TMA only: water depth h, m
+  DepthFactor depth_factor = DepthFactor::exact;
+  double gravity_mps2 = kDefaultGravity;
+  // Phillips only (Tessendorf 2001; seed 000 §3.2).
+  /// Dimensionless amplitude A of F(k) = A·e^(−1/(kL)²)/k⁴·D. Unset = calibrated so that Hs
+  /// equals Pierson–Moskowitz's for the same wind without the cutoff (M.3.13).
+  double phillips_amplitude = kUnset;
+  double small_wave_cutoff_m = 0.0;  ///< l of the factor e^(−k²l²) (seed 000 eq. 10), m ≥ 0
+};
+
+/// A validated S(ω) with its derived constants resolved.
+class FrequencySpectrum {
+ public:
+  static Result<FrequencySpectrum> make(const FrequencySpectrumParams& params);
+
+  /// S(ω), m²·s/rad, for ω ≥ 0 (0 at ω = 0).
+  [[nodiscard]] double operator()(double omega) const;
+  [[nodiscard]] const FrequencySpectrumParams& params() const { return params_; }
+  [[nodiscard]] double peak_omega() const { return omega_p_; }  ///< ωp, rad/s
+  [[nodiscard]] double gamma() const { return gamma_; }         ///< γ in use (1 for PM/Phillips)
+  [[nodiscard]] double alpha() const { return alpha_; }  ///< Phillips constant α (PM/JONSWAP wind)
+  /// Spectral moment m_n = ∫ωⁿ S(ω) dω by adaptive quadrature on a log grid (rel. err < 1e-8).
+  [[nodiscard]] double moment(int n) const;
+  /// Significant wave height of the spectrum, 4·√m0.
+  [[nodiscard]] double hs_m() const { return 4.0 * std::sqrt(moment(0)); }
+
+ private:
+  FrequencySpectrumParams params_;
+  double omega_p_ = 0.0;  // peak angular frequency (JONSWAP/TMA/PM: ωp; Phillips: g/U ...)
+  double alpha_ = 0.0;  // high-frequency level α (wind forms) or 5/16·Hs²·ωp⁴/g² (Hs/Tp forms)
+  double gamma_ = 1.0;
+  double scale_ = 1.0;  // JONSWAP normalisation A_γ (or exact factor)
+  double phillips_a_ = 0.0;
+  double phillips_dir_integral_ = 1.0;
+  Dispersion dispersion_;  // for TMA's exact factor and Phillips' k(ω)
+  FrequencySpectrum() = default;
+  double jonswap_shape(double omega) const;
+};
+
+// Closed forms, exposed for tests and tools (all one-sided, m²·s/rad).
+/// Pierson–Moskowitz, wind form: α·g²/ω⁵·exp(−β(g/(U·ω))⁴), α = 0.0081, β = 0.74  (M.3.1)
+double pierson_moskowitz_wind(double omega, double wind_speed_mps, double gravity_mps2);
+/// Bretschneider / PM Hs–Tp form: 5/16·Hs²·ωp⁴/ω⁵·exp(−5/4·(ωp/ω)⁴), ωp = 2π/Tp  (M.3.3)
+double pierson_moskowitz_hs_tp(double omega, double hs_m, double tp_s);
+/// DNV-RP-C205 peak-enhancement rule γ(Tp/√Hs)  (M.3.6)
+double jonswap_gamma_dnv(double hs_m, double tp_s);
+/// Hasselmann 1973 / seed-001 fetch law: returns {α, ωp}  (M.3.7, M.3.8)
+std::array<double, 2> jonswap_fetch_law(double wind_speed_mps, double fetch_m, double gravity_mps2,
+                                        FetchLaw law);
+/// Kitaigorodskii depth factor Φ(ω, h): exact (M.3.9) or Thompson–Vincent (M.3.10).
+double tma_depth_factor(double omega, double depth_m, double gravity_mps2, DepthFactor factor);
+
+// ---------------------------------------------------------------------------------------------
+// Directional spreading D(ω, θ), ∫D dθ = 1 over (−π, π]  (docs/math.md §4)
+// ---------------------------------------------------------------------------------------------
+
+enum class SpreadingModel { power_cosine, cos2s, mitsuyasu, hasselmann, donelan_banner };
+std::string_view to_string(SpreadingModel model);
+Result<SpreadingModel> parse_spreading_model(std::string_view name);
+
+struct SpreadingParams {
+  SpreadingModel model = SpreadingModel::donelan_banner;
+  /// power_cosine: exponent of |cos θ|^s; unset = s(α) = 1 + 5α² (seed 000 eq. 6).
+  /// cos2s: exponent of cos^(2s)(θ/2) (required). Others: unused (frequency dependent).
+  double s = kUnset;
+  /// power_cosine: wind alignment α ∈ [0, 1]; sets s(α) when s is unset and the counter-wave
+  /// energy fraction σ(α) = 0.01 + 0.49(1 − α)² (seed 000 eq. 8) for |θ| > π/2.
+  double alpha = 1.0;
+  /// power_cosine: apply σ(α) to the back half-plane. false = symmetric |cos θ|^s
+  /// (Tessendorf's classic |k̂·ŵ|^n).
+  bool counter_wave_suppression = true;
+};
+
+/// Conditions that frequency-dependent models need.
+struct SpreadingContext {
+  double omega_p = kUnset;         ///< peak angular frequency, rad/s (ratio models)
+  double wind_speed_mps = kUnset;  ///< U10 (Mitsuyasu s_max, Hasselmann U/cp)
+  double gravity_mps2 = kDefaultGravity;
+};
+
+class Spreading {
+ public:
+  /// Validates params; context is required for mitsuyasu/hasselmann (ωp and U) and
+  /// donelan_banner (ωp).
+  static Result<Spreading> make(const SpreadingParams& params, const SpreadingContext& context);
+
+  /// D(ω, θ), 1/rad; θ measured from the mean direction, any real value (wrapped to (−π, π]).
+  [[nodiscard]] double operator()(double omega, double theta) const;
+  /// The exponent of the model at ω (s for power-cosine/cos-2s families, β_s for Donelan–Banner).
+  [[nodiscard]] double spread_parameter(double omega) const;
+  [[nodiscard]] const SpreadingParams& params() const { return params_; }
+
+ private:
+  SpreadingParams params_;
+  SpreadingContext context_;
+  double s_max_ = 0.0;       // Mitsuyasu peak exponent
+  double sigma_back_ = 1.0;  // power-cosine back-half energy fraction
+  double norm_ = 1.0;        // power-cosine / cos2s constant normaliser
+};
+
+/// cos-2s normaliser G(s) = Γ(s+1)/(2√π·Γ(s+½)) so that ∫G·cos^(2s)(θ/2) dθ = 1  (M.4.3)
+double cos2s_normalization(double s);
+/// ∫ over (−π, π] of |cos θ|^s with weight σ on |θ| > π/2: (1+σ)·√π·Γ((s+1)/2)/Γ(s/2+1) (M.4.2)
+double power_cosine_integral(double s, double sigma_back);
+/// Donelan–Banner β_s(ω/ωp) (Donelan, Hamilton & Hui 1985; Banner 1990)  (M.4.6)
+double donelan_banner_beta(double omega_ratio);
+
+// ---------------------------------------------------------------------------------------------
+// Sea state: wind sea (+ optional swell) and its wave-vector spectrum F(k)  (docs/math.md §5)
+// ---------------------------------------------------------------------------------------------
+
+/// One wave system: a frequency spectrum, a spreading and a mean direction.
+struct WaveSystemParams {
+  FrequencySpectrumParams spectrum;
+  SpreadingParams spreading;
+  double direction_rad = 0.0;  ///< mean direction waves travel towards, from +x towards +z
+};
+
+class WaveSystem {
+ public:
+  static Result<WaveSystem> make(const WaveSystemParams& params);
+  const FrequencySpectrum& spectrum() const { return spectrum_; }
+  const Spreading& spreading() const { return spreading_; }
+  double direction_rad() const { return direction_rad_; }
+
+ private:
+  FrequencySpectrum spectrum_;
+  Spreading spreading_;
+  double direction_rad_ = 0.0;
+  WaveSystem(FrequencySpectrum s, Spreading d, double dir)
+      : spectrum_(std::move(s)), spreading_(std::move(d)), direction_rad_(dir) {}
+};
+
+struct SeaStateParams {
+  WaveSystemParams wind_sea;
+  bool has_swell = false;
+  WaveSystemParams swell;  ///< used when has_swell; typically JONSWAP Hs/Tp with cos2s, s ≥ 10
+  /// Dispersion used for ω(k) in the ω→k conversion (depth should match TMA's depth).
+  DispersionParams dispersion;
+};
+
+class SeaState {
+ public:
+  static Result<SeaState> make(const SeaStateParams& params);
+
+  /// Wave-vector spectrum F(kx, kz) = Σ_systems S(ω)·D(ω, θ − θ_mean)·(dω/dk)/k, m⁴  (M.5.1)
+  /// (seed 001 eq. 1.15 without its grid factors). 0 at k = 0.
+  [[nodiscard]] double wave_vector_spectrum(double kx, double kz) const;
+  /// Total height variance m0 of all systems, m².
+  [[nodiscard]] double variance_m2() const;
+  [[nodiscard]] const Dispersion& dispersion() const { return dispersion_; }
+  [[nodiscard]] const std::vector<WaveSystem>& systems() const { return systems_; }
+
+ private:
+  std::vector<WaveSystem> systems_;
+  Dispersion dispersion_;
+  SeaState(std::vector<WaveSystem> systems, Dispersion d)
+      : systems_(std::move(systems)), dispersion_(std::move(d)) {}
+};
+
+// ---------------------------------------------------------------------------------------------
+// Deterministic Gaussian draws and initial amplitudes h0(k)  (docs/math.md §6)
+// ---------------------------------------------------------------------------------------------
+
+/// Two independent standard normal variates for (seed, index): a counter-based hash (SplitMix64
+/// finaliser) gives two uniforms, Box–Muller (seed 000 eq. 12) turns them into Gaussians.
+/// Depends only on its arguments, never on call order or thread: identical across runs and
+/// thread counts, and across machines whose C library computes log/sin/cos identically.
+std::array<double, 2> gaussian_pair(std::uint64_t seed, std::uint64_t index);
+
+/// The square N×N grid of wave vectors of a periodic patch: k(m,n) = 2π/L·(m − N/2, n − N/2)
+/// (seed 000 eq. 2), index i = n·N + m (m along x, n along z).
+struct SpectrumGrid {
+  int resolution = 256;        ///< N, a power of two in [16, 4096]
+  double patch_size_m = 1000;  ///< L, the patch side, m > 0
+};
+Status validate(const SpectrumGrid& grid);
+
+/// How h0 is scaled.
+enum class AmplitudeConvention {
+  /// E|h0(k)|² = F(k)·Δk²/2, so E[h²] = Σ F·Δk² ≈ m0 for h = Σ h̃·e^{ik·x} with
+  /// h̃ = h0(k) + h0*(−k)  (M.6.2). The default.
+  variance_preserving,
+  /// Seed 000's VR-Ocean Phillips: h0 = ξ/√2·√(P'(k)), P' from eqs. 3–5, 7–11 with its grid
+  /// normalisation A = N^(−1/2)·(e/L)²; only for SpectrumModel::phillips with power_cosine.
+  vr_ocean,
+};
+
+struct InitialSpectrumParams {
+  SpectrumGrid grid;
+  std::uint64_t seed = 1;
+  AmplitudeConvention convention = AmplitudeConvention::variance_preserving;
+  /// Loop period T of the quantised dispersion (seed 000 eq. 16), s; 0 = no quantisation.
+  double loop_period_s = 200.0;
+};
+
+/// Per-wave-vector data of seed 000 eqs. 18–22, planar arrays of N² entries (index n·N + m).
+struct InitialSpectrum {
+  int resolution = 0;
+  double patch_size_m = 0;
+  /// Pre-transformed packed amplitudes S' = (a+c, b+d, b−d, c−a) where (a, b) = h0(k) and
+  /// (c, d) = h0*(−k), so that h̃(k, t) = S'xy·cos ω't + S'zw·sin ω't   (M.6.5)
+  std::vector<std::array<float, 4>> packed;
+  std::vector<float> omega;  ///< ω'(k), rad/s, quantised if loop_period_s > 0; 0 at DC
+  /// h0(k) itself in double precision (the oracle for tests and height statistics).
+  std::vector<std::complex<double>> h0;
+};
+
+/// h0 for every grid wave vector. Deterministic for a given seed. Zero at DC (seed 000 eq. 14).
+Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p);
+
+/// The VR-Ocean Phillips power P'(k) of seed 000 eqs. 3–11 (directional factor applied once,
+/// counter-wave factor σ(α) on the back half-plane).
+struct VrOceanPhillipsParams {
+  double wind_speed_mps = 10;        ///< V, m/s
+  double wind_direction_rad = 0;     ///< ŵ, from +x towards +z
+  double alpha = 1.0;                ///< alignment α ∈ [0, 1] (eqs. 6, 8)
+  double small_wave_cutoff_m = 0.0;  ///< l_cutoff (eq. 10); see vr_ocean_cutoff_length
+  double gravity_mps2 = kDefaultGravity;
+};
+double vr_ocean_phillips_power(double kx, double kz, const VrOceanPhillipsParams& p,
+                               const SpectrumGrid& grid);
+/// l_cutoff(β) = 0.001·(0.25·L/0.001)^β, m  (seed 000 eq. 11)
+double vr_ocean_cutoff_length(double beta, double patch_size_m);
+
+}  // namespace ocean

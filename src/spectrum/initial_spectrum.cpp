@@ -1,0 +1,115 @@
+// Initial Fourier amplitudes h0(k) on the patch's wave-vector grid, the loop-quantised ω'(k) and
+// the packed, pre-transformed layout of seed 000 for single-FMA time evolution.
+//
+// This work is based on:
+//   - Tessendorf, J. (2001) Simulating Ocean Water, eqs. 42–43 (h0 = ξ·√(P/2), h̃ = h0·e^{iωt} +
+//     h0*(−k)·e^{−iωt}).
+//   - Seed 000 §3.2.5–3.4 (Box–Muller, DC guard, eq. 16 quantisation, eqs. 18–24 packing).
+// Amplitude convention and the direction of travel: docs/math.md §6 (M.6.2)–(M.6.5).
+#include <bit>
+#include <cmath>
+#include <string>
+
+#include "ocean/spectrum.hpp"
+
+namespace ocean {
+
+Status validate(const SpectrumGrid& grid) {
+  const int n = grid.resolution;
+  if (n < 16 || n > 4096 || !std::has_single_bit(static_cast<unsigned>(n))) {
+    return invalid_argument("resolution = " + std::to_string(n) +
+                            " is out of range: must be a power of two in [16, 4096]");
+  }
+  return require_in_range("patch_size_m", grid.patch_size_m, 1e-3, 1e7);
+}
+
+namespace {
+
+Status validate_vr_ocean(const SeaState& sea) {
+  const WaveSystem& w = sea.systems().front();
+  if (sea.systems().size() != 1 || w.spectrum().params().model != SpectrumModel::phillips ||
+      w.spreading().params().model != SpreadingModel::power_cosine) {
+    return invalid_argument(
+        "amplitude convention vr_ocean needs a single phillips wave system "
+        "with power-cosine spreading (seed 000 §3.2)");
+  }
+  return {};
+}
+
+}  // namespace
+
+Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p) {
+  if (Status s = validate(p.grid); !s.ok()) return s;
+  if (Status s = require_in_range("loop_period_s", p.loop_period_s, 0.0, 1e6); !s.ok()) return s;
+  if (p.convention == AmplitudeConvention::vr_ocean) {
+    if (Status s = validate_vr_ocean(sea); !s.ok()) return s;
+  }
+  const int n = p.grid.resolution;
+  const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  const double dk = 2.0 * kPi / p.grid.patch_size_m;
+  InitialSpectrum out;
+  out.resolution = n;
+  out.patch_size_m = p.grid.patch_size_m;
+  out.h0.resize(count);
+  out.omega.resize(count);
+  out.packed.resize(count);
+
+  VrOceanPhillipsParams vr;
+  if (p.convention == AmplitudeConvention::vr_ocean) {
+    const WaveSystem& w = sea.systems().front();
+    const FrequencySpectrumParams& sp = w.spectrum().params();
+    vr = {.wind_speed_mps = sp.wind_speed_mps,
+          .wind_direction_rad = w.direction_rad(),
+          .alpha = w.spreading().params().alpha,
+          .small_wave_cutoff_m = sp.small_wave_cutoff_m,
+          .gravity_mps2 = sp.gravity_mps2};
+  }
+  const int half = n / 2;
+  for (int row = 0; row < n; ++row) {
+    for (int col = 0; col < n; ++col) {
+      const std::size_t i = static_cast<std::size_t>(row) * static_cast<std::size_t>(n) +
+                            static_cast<std::size_t>(col);
+      const double kx = dk * (col - half);  // seed 000 eq. 2
+      const double kz = dk * (row - half);
+      if (col == half && row == half) {  // DC guard, seed 000 eq. 14
+        out.h0[i] = 0.0;
+        out.omega[i] = 0.0f;
+        continue;
+      }
+      const auto [xi_re, xi_im] = gaussian_pair(p.seed, i);
+      double amplitude = 0.0;
+      if (p.convention == AmplitudeConvention::variance_preserving) {
+        // E|h0|² = F·Δk²/2 with E|ξ|² = 2   (M.6.2)
+        amplitude = 0.5 * std::sqrt(sea.wave_vector_spectrum(kx, kz) * dk * dk);
+      } else {
+        amplitude =
+            std::sqrt(0.5 * vr_ocean_phillips_power(kx, kz, vr, p.grid));  // seed 000 eq. 13
+      }
+      out.h0[i] = {xi_re * amplitude, xi_im * amplitude};
+      double omega = sea.dispersion().omega(std::hypot(kx, kz));
+      if (p.loop_period_s > 0.0) omega = quantize_omega(omega, p.loop_period_s);  // (M.2.4)
+      out.omega[i] = static_cast<float>(omega);
+    }
+  }
+  // Pack (a, b) = h0(k), (c, d) = h0*(−k) and pre-transform   (M.6.5, seed 000 eqs. 18–22).
+  // −k of grid index (col, row) is ((N − col) mod N, (N − row) mod N): the Nyquist row/column
+  // maps onto itself, which keeps the aliased component real.
+  const unsigned mask = static_cast<unsigned>(n - 1);
+  for (int row = 0; row < n; ++row) {
+    for (int col = 0; col < n; ++col) {
+      const std::size_t i = static_cast<std::size_t>(row * n + col);
+      const std::size_t j = static_cast<std::size_t>(
+          ((static_cast<unsigned>(n - row) & mask) * static_cast<unsigned>(n)) +
+          (static_cast<unsigned>(n - col) & mask));
+      const double a = out.h0[i].real();
+      const double b = out.h0[i].imag();
+      const double c = out.h0[j].real();
+      const double d = -out.h0[j].imag();
+      out.packed[i] = {static_cast<float>(a + c), static_cast<float>(b + d),
+                       static_cast<float>(b - d), static_cast<float>(c - a)};
+    }
+  }
+  return out;
+}
+
+}  // namespace ocean

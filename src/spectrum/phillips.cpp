@@ -1,0 +1,60 @@
+// Phillips spectrum: Tessendorf's wave-vector form, and the VR-Ocean variant of seed 000 with
+// its grid normalisation, alignment-dependent spreading and counter-wave suppression.
+//
+// This work is based on:
+//   - Phillips, O. M. (1958) The equilibrium range in the spectrum of wind-generated waves.
+//     J. Fluid Mech. 4(4).
+//   - Tessendorf, J. (2001) Simulating Ocean Water, SIGGRAPH course notes, eqs. 40–42:
+//     P(k) = A·exp(−1/(kL)²)/k⁴·|k̂·ŵ|², L = V²/g, and the small-wave factor exp(−k²l²).
+//   - Seed 000 (Aebi, VR Ocean) §3.2, eqs. 3–11: A = N^(−1/2)·(e/L_patch)², s(α) = 1 + 5α²,
+//     σ(α) = 0.01 + 0.49(1 − α)², l_cutoff(β) = 0.001·(0.25·L_patch/0.001)^β.
+// Equations: docs/math.md (M.3.11)–(M.3.14), (M.6.6).
+#include <cmath>
+
+#include "internal.hpp"
+
+namespace ocean {
+
+double phillips_k_density(double k, double amplitude, double wind_speed_mps, double gravity_mps2,
+                          double small_wave_cutoff_m) {
+  if (!(k > 0.0)) return 0.0;
+  const double big_l = wind_speed_mps * wind_speed_mps / gravity_mps2;  // largest wave, L = V²/g
+  const double kl = k * big_l;
+  const double k2 = k * k;
+  const double cutoff = std::exp(-k2 * small_wave_cutoff_m * small_wave_cutoff_m);  // (M.3.12)
+  return amplitude * std::exp(-1.0 / (kl * kl)) / (k2 * k2) * cutoff;               // (M.3.11)
+}
+
+double phillips_default_amplitude() {
+  // m0 = ∫∫A·e^(−1/(kL)²)/k⁴·D dk = A·L²/2 and m0_PM = α·U⁴/(4β·g²)  ⇒  A = α/(2β)   (M.3.13)
+  return pierson_moskowitz_alpha() / (2.0 * pierson_moskowitz_beta());
+}
+
+double vr_ocean_cutoff_length(double beta, double patch_size_m) {
+  constexpr double l_min = 0.001;                              // seed 000 §3.2.4
+  return l_min * std::pow(patch_size_m * 0.25 / l_min, beta);  // seed 000 eq. 11
+}
+
+double vr_ocean_phillips_power(double kx, double kz, const VrOceanPhillipsParams& p,
+                               const SpectrumGrid& grid) {
+  const double k2 = kx * kx + kz * kz;
+  if (!(k2 > 0.0)) return 0.0;  // DC guard, seed 000 eq. 14
+  const double k = std::sqrt(k2);
+  const double n = static_cast<double>(grid.resolution);
+  const double a_fft = std::pow(n, -0.25);                         // eq. 5
+  const double a_spatial = std::exp(1.0) / grid.patch_size_m;      // eq. 5
+  const double amplitude = a_fft * a_fft * a_spatial * a_spatial;  // eq. 4
+  const double cos_theta =
+      (kx * std::cos(p.wind_direction_rad) + kz * std::sin(p.wind_direction_rad)) / k;
+  const double s = 1.0 + 5.0 * p.alpha * p.alpha;         // eq. 6
+  double directional = std::pow(std::abs(cos_theta), s);  // eq. 7
+  if (cos_theta < 0.0) {
+    const double one_minus = 1.0 - p.alpha;
+    directional *= 0.01 + 0.49 * one_minus * one_minus;  // eqs. 8–9, in the power domain
+  }
+  return phillips_k_density(k, amplitude, p.wind_speed_mps, p.gravity_mps2,
+                            p.small_wave_cutoff_m) *
+         directional;  // eqs. 3, 10  (M.6.6)
+}
+
+}  // namespace ocean
