@@ -1,0 +1,133 @@
+// FFT against a naive DFT (long double) and FFTW at every supported size 16…2048; the sign
+// correction; determinism across task runners.
+#include "ocean/fft.hpp"
+
+#include <fftw3.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstring>
+#include <random>
+#include <vector>
+
+namespace {
+
+using ocean::fft::SplitComplex;
+
+struct Signal {
+  std::vector<float> re, im;
+  explicit Signal(std::size_t n, std::uint64_t seed) : re(n), im(n) {
+    std::mt19937_64 rng(seed);
+    std::normal_distribution<float> g(0.0f, 1.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+      re[i] = g(rng);
+      im[i] = g(rng);
+    }
+  }
+  SplitComplex view() { return {re.data(), im.data()}; }
+};
+
+// Root-mean-square error of ours against a reference, relative to the reference's RMS.
+double relative_rms(const Signal& ours, const std::vector<std::complex<double>>& ref) {
+  double err = 0.0, norm = 0.0;
+  for (std::size_t i = 0; i < ref.size(); ++i) {
+    err += std::norm(std::complex<double>(ours.re[i], ours.im[i]) - ref[i]);
+    norm += std::norm(ref[i]);
+  }
+  return std::sqrt(err / norm);
+}
+
+TEST(Fft1D, MatchesNaiveDft) {
+  for (int n : {2, 4, 8, 16, 32, 64, 128, 256, 512}) {
+    Signal s(static_cast<std::size_t>(n), 11);
+    std::vector<std::complex<double>> ref(static_cast<std::size_t>(n));
+    for (int j = 0; j < n; ++j) {
+      std::complex<long double> sum = 0;
+      for (int k = 0; k < n; ++k) {
+        const long double angle = 2.0L * 3.141592653589793238462643383279502884L * j * k / n;
+        sum += std::complex<long double>(s.re[static_cast<std::size_t>(k)],
+                                         s.im[static_cast<std::size_t>(k)]) *
+               std::complex<long double>(std::cos(angle), std::sin(angle));
+      }
+      ref[static_cast<std::size_t>(j)] =
+          std::complex<double>(static_cast<double>(sum.real()), static_cast<double>(sum.imag()));
+    }
+    const auto plan = ocean::fft::Plan1D::make(n).value();
+    const SplitComplex v = s.view();
+    plan.inverse({&v, 1});
+    EXPECT_LT(relative_rms(s, ref), 1e-6) << "n = " << n;
+  }
+}
+
+// 2D, every supported size 16…2048 against FFTW's double-precision backward transform
+// (FFTW_BACKWARD is e^{+2πi jk/N}, unnormalised: our convention).
+TEST(Fft2D, MatchesFftwAtEverySize) {
+  auto runner = ocean::make_tbb_runner();
+  for (int n = 16; n <= 2048; n *= 2) {
+    const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    Signal a(count, 3), b(count, 4);
+    std::vector<std::complex<double>> ref_a(count), ref_b(count);
+    for (std::size_t i = 0; i < count; ++i) {
+      ref_a[i] = {a.re[i], a.im[i]};
+      ref_b[i] = {b.re[i], b.im[i]};
+    }
+    for (auto* ref : {&ref_a, &ref_b}) {
+      auto* data = reinterpret_cast<fftw_complex*>(ref->data());
+      fftw_plan p = fftw_plan_dft_2d(n, n, data, data, FFTW_BACKWARD, FFTW_ESTIMATE);
+      fftw_execute(p);
+      fftw_destroy_plan(p);
+    }
+    const auto plan = ocean::fft::Plan2D::make(n).value();
+    const SplitComplex planes[] = {a.view(), b.view()};
+    plan.inverse(planes, *runner, false);
+    const double bound = 2e-7 * std::log2(double(count));  // float rounding grows with log N
+    EXPECT_LT(relative_rms(a, ref_a), bound) << "n = " << n;
+    EXPECT_LT(relative_rms(b, ref_b), bound) << "n = " << n;
+  }
+}
+
+// A single centred wave vector (m, n) transforms to e^{2πi((m−N/2)x + (n−N/2)y)/N}; with the
+// sign correction that is exactly the field of wave vector k = (m − N/2, n − N/2).
+TEST(Fft2D, SignCorrectionCentresTheSpectrum) {
+  const int n = 32;
+  const std::size_t count = 32 * 32;
+  std::vector<float> re(count, 0.0f), im(count, 0.0f);
+  const int m = 19, row = 13;  // k = (3, −3) cycles per patch
+  re[static_cast<std::size_t>(row * n + m)] = 1.0f;
+  const auto plan = ocean::fft::Plan2D::make(n).value();
+  auto serial = ocean::make_serial_runner();
+  const SplitComplex plane{re.data(), im.data()};
+  plan.inverse({&plane, 1}, *serial, true);
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < n; ++x) {
+      const double phase = 2.0 * 3.14159265358979323846 * ((m - n / 2) * x + (row - n / 2) * y) / n;
+      EXPECT_NEAR(re[static_cast<std::size_t>(y * n + x)], std::cos(phase), 1e-5);
+      EXPECT_NEAR(im[static_cast<std::size_t>(y * n + x)], std::sin(phase), 1e-5);
+    }
+  }
+}
+
+TEST(Fft2D, BitIdenticalForAnyRunner) {
+  const int n = 128;
+  const std::size_t count = 128 * 128;
+  Signal a(count, 8), b(count, 8);
+  const auto plan = ocean::fft::Plan2D::make(n).value();
+  auto serial = ocean::make_serial_runner();
+  auto tbb = ocean::make_tbb_runner(2);
+  const SplitComplex pa = a.view(), pb = b.view();
+  plan.inverse({&pa, 1}, *serial, true);
+  plan.inverse({&pb, 1}, *tbb, true);
+  EXPECT_EQ(std::memcmp(a.re.data(), b.re.data(), count * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(a.im.data(), b.im.data(), count * sizeof(float)), 0);
+}
+
+TEST(Fft, RejectsBadSizes) {
+  for (int n : {0, 1, 3, 100, 8192, -4}) {
+    const auto p = ocean::fft::Plan2D::make(n);
+    ASSERT_FALSE(p.ok());
+    EXPECT_NE(p.status().message().find(std::to_string(n)), std::string::npos);
+  }
+}
+
+}  // namespace
