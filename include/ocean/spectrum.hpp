@@ -298,6 +298,10 @@ struct InitialSpectrumParams {
   AmplitudeConvention convention = AmplitudeConvention::variance_preserving;
   /// Loop period T of the quantised dispersion (seed 000 eq. 16), s; 0 = no quantisation.
   double loop_period_s = 200.0;
+  /// The band of wavenumbers this patch synthesises, |k| ∈ [k_min, k_max) rad/m: cascades
+  /// split the spectrum so that no wave vector is counted twice.
+  double k_min_radpm = 0.0;
+  double k_max_radpm = std::numeric_limits<double>::infinity();
 };
 
 /// Per-wave-vector data of seed 000 eqs. 18–22, planar arrays of N² entries (index n·N + m).
@@ -312,7 +316,9 @@ struct InitialSpectrum {
   std::vector<std::complex<double>> h0;
 };
 
-/// h0 for every grid wave vector. Deterministic for a given seed. Zero at DC (seed 000 eq. 14).
+/// h0 for every grid wave vector. Deterministic for a given seed. Zero at DC (seed 000 eq. 14),
+/// outside the band, and on the Nyquist row and column (index 0), whose single aliased
+/// component cannot carry the odd-symmetric displacement and slope fields (M.6.3).
 Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p);
 
 /// The VR-Ocean Phillips power P'(k) of seed 000 eqs. 3–11 (directional factor applied once,

@@ -41,6 +41,11 @@ Status validate_vr_ocean(const SeaState& sea) {
 Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p) {
   if (Status s = validate(p.grid); !s.ok()) return s;
   if (Status s = require_in_range("loop_period_s", p.loop_period_s, 0.0, 1e6); !s.ok()) return s;
+  if (!(p.k_min_radpm >= 0.0) || !(p.k_max_radpm > p.k_min_radpm)) {
+    return invalid_argument("wavenumber band [" + format_number(p.k_min_radpm) + ", " +
+                            format_number(p.k_max_radpm) +
+                            ") is empty or negative: need 0 <= k_min < k_max");
+  }
   if (p.convention == AmplitudeConvention::vr_ocean) {
     if (Status s = validate_vr_ocean(sea); !s.ok()) return s;
   }
@@ -71,9 +76,15 @@ Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const Initial
                             static_cast<std::size_t>(col);
       const double kx = dk * (col - half);  // seed 000 eq. 2
       const double kz = dk * (row - half);
-      if (col == half && row == half) {  // DC guard, seed 000 eq. 14
+      const double k = std::hypot(kx, kz);
+      double omega = sea.dispersion().omega(k);
+      if (p.loop_period_s > 0.0) omega = quantize_omega(omega, p.loop_period_s);  // (M.2.4)
+      out.omega[i] = static_cast<float>(omega);
+      // DC guard (seed 000 eq. 14), Nyquist row/column and the band limits (M.6.3).
+      const bool nyquist = row == 0 || col == 0;
+      if ((col == half && row == half) || nyquist || k < p.k_min_radpm || k >= p.k_max_radpm) {
         out.h0[i] = 0.0;
-        out.omega[i] = 0.0f;
+        if (col == half && row == half) out.omega[i] = 0.0f;
         continue;
       }
       const auto [xi_re, xi_im] = gaussian_pair(p.seed, i);
@@ -86,14 +97,10 @@ Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const Initial
             std::sqrt(0.5 * vr_ocean_phillips_power(kx, kz, vr, p.grid));  // seed 000 eq. 13
       }
       out.h0[i] = {xi_re * amplitude, xi_im * amplitude};
-      double omega = sea.dispersion().omega(std::hypot(kx, kz));
-      if (p.loop_period_s > 0.0) omega = quantize_omega(omega, p.loop_period_s);  // (M.2.4)
-      out.omega[i] = static_cast<float>(omega);
     }
   }
   // Pack (a, b) = h0(k), (c, d) = h0*(−k) and pre-transform   (M.6.5, seed 000 eqs. 18–22).
-  // −k of grid index (col, row) is ((N − col) mod N, (N − row) mod N): the Nyquist row/column
-  // maps onto itself, which keeps the aliased component real.
+  // −k of grid index (col, row) is ((N − col) mod N, (N − row) mod N).
   const unsigned mask = static_cast<unsigned>(n - 1);
   for (int row = 0; row < n; ++row) {
     for (int col = 0; col < n; ++col) {

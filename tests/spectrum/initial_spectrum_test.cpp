@@ -69,7 +69,10 @@ TEST(InitialSpectrum, VarianceConventionGivesM0) {
   double grid_variance = 0.0;         // Σ F·Δk²
   for (int row = 0; row < grid.resolution; ++row) {
     for (int col = 0; col < grid.resolution; ++col) {
-      cell_variance.push_back(sea.wave_vector_spectrum(dk * (col - 64), dk * (row - 64)) * dk * dk);
+      // The Nyquist row and column (index 0) are not synthesised (M.6.3).
+      const double f =
+          row == 0 || col == 0 ? 0.0 : sea.wave_vector_spectrum(dk * (col - 64), dk * (row - 64));
+      cell_variance.push_back(f * dk * dk);
       grid_variance += cell_variance.back();
     }
   }
@@ -123,6 +126,39 @@ TEST(InitialSpectrum, PackedEvolutionMatchesDirectFormulaAndIsHermitian) {
         EXPECT_LT(std::abs(evolve(j, t) - std::conj(packed)), 1e-6 * scale);
       }
     }
+  }
+}
+
+// Cascades split the spectrum into bands: complementary bands add up to the full spectrum
+// exactly, wave vector by wave vector.
+TEST(InitialSpectrum, BandsPartitionTheSpectrum) {
+  const SeaState sea = jonswap_sea();
+  const ocean::SpectrumGrid grid{.resolution = 64, .patch_size_m = 250.0};
+  const double split = 0.6;  // rad/m
+  const InitialSpectrum full = ocean::make_initial_spectrum(sea, {.grid = grid, .seed = 4}).value();
+  const InitialSpectrum low =
+      ocean::make_initial_spectrum(sea, {.grid = grid, .seed = 4, .k_max_radpm = split}).value();
+  const InitialSpectrum high =
+      ocean::make_initial_spectrum(sea, {.grid = grid, .seed = 4, .k_min_radpm = split}).value();
+  int in_low = 0, in_high = 0;
+  for (std::size_t i = 0; i < full.h0.size(); ++i) {
+    EXPECT_EQ(low.h0[i] + high.h0[i], full.h0[i]);
+    EXPECT_TRUE(low.h0[i] == 0.0 || high.h0[i] == 0.0);
+    in_low += low.h0[i] != 0.0;
+    in_high += high.h0[i] != 0.0;
+  }
+  EXPECT_GT(in_low, 100);
+  EXPECT_GT(in_high, 100);
+  EXPECT_FALSE(ocean::make_initial_spectrum(sea, {.k_min_radpm = 2.0, .k_max_radpm = 1.0}).ok());
+}
+
+TEST(InitialSpectrum, NyquistRowAndColumnAreEmpty) {
+  const InitialSpectrum h = ocean::make_initial_spectrum(
+                                jonswap_sea(), {.grid = {.resolution = 32, .patch_size_m = 20.0}})
+                                .value();
+  for (int i = 0; i < 32; ++i) {
+    EXPECT_EQ(h.h0[static_cast<std::size_t>(i)], 0.0);       // row 0
+    EXPECT_EQ(h.h0[static_cast<std::size_t>(i * 32)], 0.0);  // column 0
   }
 }
 

@@ -1,0 +1,308 @@
+// io/npy.cpp — .npy 1.0 float32 writing (numpy.save's exact header) and a strict, fuzz-safe reader.
+#include "io/npy.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "io/atomic_file.hpp"
+
+namespace ocean::io {
+namespace {
+
+constexpr char kMagic[] = "\x93NUMPY";
+constexpr std::size_t kMagicLen = 6;
+constexpr std::size_t kPreludeLen = 10;  // magic, major, minor, uint16 header length
+constexpr std::size_t kAlign = 64;
+constexpr std::size_t kGrowthAxisMaxDigits = 21;  // numpy's spare room for the first axis
+
+// Product of the dimensions, or nullopt when the element count or its byte size overflows.
+std::optional<std::size_t> element_count(std::span<const std::size_t> shape) {
+  std::size_t n = 1;
+  for (const std::size_t d : shape) {
+    if (d != 0 && n > std::numeric_limits<std::size_t>::max() / d) return std::nullopt;
+    n *= d;
+  }
+  if (n > static_cast<std::size_t>(std::numeric_limits<std::ptrdiff_t>::max()) / sizeof(float)) {
+    return std::nullopt;
+  }
+  return n;
+}
+
+// Only used on big-endian hosts: .npy '<f4' data are little-endian.
+void byte_swap(std::span<float> values) {
+  for (float& v : values) {
+    const auto u = std::bit_cast<std::uint32_t>(v);
+    v = std::bit_cast<float>((u >> 24U) | ((u >> 8U) & 0xFF00U) | ((u << 8U) & 0xFF0000U) |
+                             (u << 24U));
+  }
+}
+
+// ---- header parsing: the subset of Python literal syntax that .npy headers use ------------------
+class HeaderParser {
+ public:
+  explicit HeaderParser(std::string_view text) : s_(text) {}
+
+  // Parses the whole dict into `out` or returns the problem.
+  std::optional<std::string> parse(NpyArray& out) {
+    bool have_descr = false, have_order = false, have_shape = false;
+    skip_ws();
+    if (!eat('{')) return error("expected '{'");
+    skip_ws();
+    while (!eat('}')) {
+      std::string key;
+      if (!parse_string(key)) return error("expected a quoted key");
+      skip_ws();
+      if (!eat(':')) return error("expected ':'");
+      skip_ws();
+      bool* seen = key == "descr" ? &have_descr
+                 : key == "fortran_order" ? &have_order
+                 : key == "shape" ? &have_shape : nullptr;
+      if (seen == nullptr) return "unexpected header key '" + key + "'";
+      if (*seen) return "duplicate header key '" + key + "'";
+      *seen = true;
+      if (key == "descr") {
+        std::string descr;
+        if (!parse_string(descr)) return std::string("'descr' is not a simple dtype string");
+        if (descr != "<f4") {
+          return "dtype '" + descr + "' is not supported: only '<f4' (little-endian float32)";
+        }
+      } else if (key == "fortran_order") {
+        if (s_.substr(pos_, 4) == "True") return std::string("Fortran-ordered arrays are not supported");
+        if (s_.substr(pos_, 5) != "False") return error("'fortran_order' must be True or False");
+        pos_ += 5;
+      } else if (auto problem = parse_shape(out.shape)) {
+        return problem;
+      }
+      skip_ws();
+      if (eat(',')) {
+        skip_ws();
+      } else if (pos_ >= s_.size() || s_[pos_] != '}') {
+        return error("expected ',' or '}'");
+      }
+    }
+    skip_ws();
+    if (pos_ != s_.size()) return error("unexpected text after the header dict");
+    if (!have_descr) return std::string("header lacks 'descr'");
+    if (!have_order) return std::string("header lacks 'fortran_order'");
+    if (!have_shape) return std::string("header lacks 'shape'");
+    return std::nullopt;
+  }
+
+ private:
+  std::string error(const char* what) const {
+    return std::string("malformed header: ").append(what).append(" at header byte ")
+        .append(std::to_string(pos_));
+  }
+  void skip_ws() {
+    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' ||
+                                s_[pos_] == '\r')) {
+      ++pos_;
+    }
+  }
+  bool eat(char c) {
+    if (pos_ < s_.size() && s_[pos_] == c) return ++pos_, true;
+    return false;
+  }
+  bool parse_string(std::string& out) {
+    if (pos_ >= s_.size() || (s_[pos_] != '\'' && s_[pos_] != '"')) return false;
+    const char quote = s_[pos_];
+    const std::size_t end = s_.find(quote, pos_ + 1);
+    if (end == std::string_view::npos) return false;
+    const std::string_view body = s_.substr(pos_ + 1, end - pos_ - 1);
+    if (body.find_first_of("\\\n") != std::string_view::npos) return false;  // no escapes
+    out.assign(body);
+    pos_ = end + 1;
+    return true;
+  }
+  std::optional<std::string> parse_shape(std::vector<std::size_t>& shape) {
+    if (!eat('(')) return error("'shape' must be a tuple");
+    bool last_had_comma = true;
+    for (skip_ws(); !eat(')'); skip_ws()) {
+      if (!last_had_comma) return error("expected ',' or ')' in 'shape'");
+      if (pos_ >= s_.size() || s_[pos_] < '0' || s_[pos_] > '9') {
+        return error("expected a non-negative integer in 'shape'");
+      }
+      if (s_[pos_] == '0' && pos_ + 1 < s_.size() && s_[pos_ + 1] >= '0' && s_[pos_ + 1] <= '9') {
+        return error("leading zero in 'shape'");
+      }
+      std::size_t value = 0;
+      for (; pos_ < s_.size() && s_[pos_] >= '0' && s_[pos_] <= '9'; ++pos_) {
+        const auto digit = static_cast<std::size_t>(s_[pos_] - '0');
+        if (value > (std::numeric_limits<std::size_t>::max() - digit) / 10) {
+          return std::string("a 'shape' dimension is too large");
+        }
+        value = value * 10 + digit;
+      }
+      (void)eat('L');  // Python 2 era files wrote longs as "3L"
+      if (shape.size() == kNpyMaxDims) return std::string("'shape' has too many dimensions");
+      shape.push_back(value);
+      skip_ws();
+      last_had_comma = eat(',');
+    }
+    // "(3)" is the integer 3 in Python, not a tuple.
+    if (shape.size() == 1 && !last_had_comma) return error("'shape' must be a tuple");
+    return std::nullopt;
+  }
+
+  std::string_view s_;
+  std::size_t pos_ = 0;
+};
+
+// Reads exactly n bytes; returns 0, an errno value, or -1 at a premature end of file.
+int read_exact(int fd, void* buffer, std::size_t n) {
+  auto* p = static_cast<unsigned char*>(buffer);
+  while (n > 0) {
+    const ssize_t r = ::read(fd, p, std::min(n, std::size_t{1} << 30));
+    if (r < 0) {
+      if (errno == EINTR) continue;
+      return errno;
+    }
+    if (r == 0) return -1;
+    p += r;
+    n -= static_cast<std::size_t>(r);
+  }
+  return 0;
+}
+
+Result<NpyArray> read_fd(int fd, const std::filesystem::path& path) {
+  const auto bad = [&](const std::string& problem) -> Status {
+    return invalid_argument(std::string("cannot read '").append(path.string()).append("': ")
+                                .append(problem));
+  };
+  const auto os_error = [&](int err) -> Status {
+    return io_error(std::string("cannot read '").append(path.string()).append("': ")
+                        .append(errno_message(err)));
+  };
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) return os_error(errno);
+  if (S_ISDIR(st.st_mode)) return os_error(EISDIR);
+  if (!S_ISREG(st.st_mode)) return bad("not a regular file");
+  const auto file_size = static_cast<std::uint64_t>(st.st_size);
+
+  unsigned char prelude[kPreludeLen] = {};
+  const std::size_t got = static_cast<std::size_t>(std::min<std::uint64_t>(file_size, kPreludeLen));
+  if (const int err = read_exact(fd, prelude, got); err != 0) {
+    return err > 0 ? os_error(err) : bad("file shrank while reading");
+  }
+  if (got < kMagicLen || std::memcmp(prelude, kMagic, kMagicLen) != 0) {
+    return bad("not a .npy file (wrong magic)");
+  }
+  if (got < kPreludeLen) return bad("truncated header");
+  if (prelude[6] != 1 || prelude[7] != 0) {
+    return bad("npy format version " + std::to_string(prelude[6]) + "." +
+               std::to_string(prelude[7]) + " is not supported (only 1.0)");
+  }
+  const std::size_t header_len = std::size_t{prelude[8]} | (std::size_t{prelude[9]} << 8U);
+  if (file_size < kPreludeLen + header_len) return bad("truncated header");
+  std::string header(header_len, '\0');
+  if (const int err = read_exact(fd, header.data(), header_len); err != 0) {
+    return err > 0 ? os_error(err) : bad("truncated header");
+  }
+
+  NpyArray array;
+  if (auto problem = HeaderParser(header).parse(array)) return bad(*problem);
+  const std::optional<std::size_t> count = element_count(array.shape);
+  if (!count) return bad("the size of 'shape' overflows");
+  const std::uint64_t available = file_size - kPreludeLen - header_len;
+  const std::uint64_t expected = static_cast<std::uint64_t>(*count) * sizeof(float);
+  if (available < expected) {
+    return bad("truncated data: the shape needs " + std::to_string(expected) +
+               " bytes after the header, the file has " + std::to_string(available));
+  }
+  if (available > expected) {
+    return bad(std::to_string(available - expected) + " unexpected bytes after the data");
+  }
+  array.data.resize(*count);
+  if (const int err = read_exact(fd, array.data.data(), expected); err != 0) {
+    return err > 0 ? os_error(err) : bad("truncated data (the file shrank while reading)");
+  }
+  if constexpr (std::endian::native == std::endian::big) byte_swap(array.data);
+  return array;
+}
+
+}  // namespace
+
+Status write_npy(const std::filesystem::path& path, const float* data,
+                 std::span<const std::size_t> shape) {
+  try {
+    if (shape.size() > kNpyMaxDims) {
+      return invalid_argument("npy shape has " + std::to_string(shape.size()) +
+                              " dimensions: at most " + std::to_string(kNpyMaxDims));
+    }
+    const std::optional<std::size_t> count = element_count(shape);
+    if (!count) return invalid_argument("npy shape is too large: its size overflows");
+    if (data == nullptr && *count > 0) return invalid_argument("npy data pointer is null");
+
+    // Exactly what numpy.save writes: sorted keys, repr() of the values, spare spaces.
+    std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (";
+    for (std::size_t i = 0; i < shape.size(); ++i) {
+      if (i > 0) header.append(", ");
+      header.append(std::to_string(shape[i]));
+    }
+    header.append(shape.size() == 1 ? ",), }" : "), }");
+    if (!shape.empty()) {
+      header.append(kGrowthAxisMaxDigits - std::min(kGrowthAxisMaxDigits,
+                                                    std::to_string(shape[0]).size()), ' ');
+    }
+    const std::size_t unpadded = kPreludeLen + header.size() + 1;  // + '\n'
+    header.append(kAlign - unpadded % kAlign, ' ').push_back('\n');
+    const std::size_t header_len = header.size();  // at most ~1000 bytes for 32 dimensions
+
+    std::string prelude(kMagic, kMagicLen);
+    prelude.push_back('\x01');
+    prelude.push_back('\x00');
+    prelude.push_back(static_cast<char>(header_len & 0xFFU));
+    prelude.push_back(static_cast<char>(header_len >> 8U));
+    prelude.append(header);
+
+    std::span<const std::byte> payload;
+    std::vector<float> swapped;
+    if (*count > 0) {
+      if constexpr (std::endian::native == std::endian::big) {
+        swapped.assign(data, data + *count);
+        byte_swap(swapped);
+        data = swapped.data();
+      }
+      payload = std::as_bytes(std::span<const float>(data, *count));
+    }
+    return write_bytes_atomically(path, {std::as_bytes(std::span<const char>(prelude)), payload});
+  } catch (const std::exception& e) {
+    return io_error(std::string("cannot write '").append(path.string()).append("': ")
+                        .append(e.what()));
+  }
+}
+
+Result<NpyArray> read_npy(const std::filesystem::path& path) {
+  try {
+    int fd = -1;
+    do {
+      fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    } while (fd < 0 && errno == EINTR);
+    if (fd < 0) {
+      return io_error(std::string("cannot read '").append(path.string()).append("': ")
+                          .append(errno_message(errno)));
+    }
+    struct Closer {
+      int fd;
+      ~Closer() { ::close(fd); }
+    } closer{fd};
+    return read_fd(closer.fd, path);
+  } catch (const std::exception& e) {  // out of memory
+    return io_error(std::string("cannot read '").append(path.string()).append("': ")
+                        .append(e.what()));
+  }
+}
+
+}  // namespace ocean::io

@@ -1,0 +1,167 @@
+// ocean/sim.hpp — the simulation front end: configuration, cascades, per-frame outputs, the
+// Backend interface every implementation (CPU reference, Vulkan, ...) provides, and the
+// Simulator that double-buffers frames and answers height queries.
+//
+// Conventions (docs/conventions.md): a cascade is a periodic square patch of side L sampled on
+// an N×N grid; texel (col, row) is the surface point that starts at world (x, z) =
+// (col·L/N, row·L/N) and is displaced to (x + Dx, h, z + Dz). Displacements are metres,
+// Y up. Equation numbers (M.n) refer to docs/math.md.
+//
+// Threading: a Simulator is driven from one thread. kick() runs a frame on the task runner while
+// the caller keeps reading the previous frame; frame() and the queries read the last completed
+// frame and are safe to call concurrently with a kicked step.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ocean/core.hpp"
+#include "ocean/spectrum.hpp"
+#include "ocean/task_runner.hpp"
+
+namespace ocean {
+
+/// How surface normals and the Jacobian are obtained from the synthesised fields.
+enum class NormalMethod {
+  central_difference,  ///< central differences of the displacement, toroidal wrap (seed 000 eq. 45)
+  analytic,  ///< inverse FFTs of the slope and displacement-gradient spectra (seeds 001/004)
+  sobel,     ///< 3×3 Sobel filter of the displacement (seed 002)
+};
+std::string_view to_string(NormalMethod method);
+Result<NormalMethod> parse_normal_method(std::string_view name);
+
+/// What the blue channel of the packed RGBA8 map carries.
+enum class BlueChannel {
+  foam,      ///< accumulated foam coverage in [0, 1] (what shading needs)
+  jacobian,  ///< saturate(J/2 + 1/2), seed 000 eq. 50
+};
+
+struct FoamParams {
+  /// Foam appears where the Jacobian falls below `jacobian_start` and is full at `jacobian_full`
+  /// (linear ramp between, M.7.4). J < 0 is a fold (seed 000 §3.8.2).
+  double jacobian_start = 0.3;
+  double jacobian_full = -0.2;
+  /// Decay of accumulated foam per second (seed 001 §2.4.2); 0 keeps foam forever, large values
+  /// disable accumulation.
+  double decay_per_s = 0.6;
+};
+
+struct SimulationConfig {
+  SeaStateParams sea;    ///< wave systems and dispersion
+  int resolution = 256;  ///< N per cascade, a power of two in [16, 2048]
+  /// Patch side of each cascade, m, largest first. Non-integer ratios keep the patterns of the
+  /// cascades from lining up (visible tiling). Each cascade synthesises one band of |k| (M.7.1).
+  std::vector<double> cascade_patch_sizes_m = {1000.0, 233.0, 57.0};
+  double choppiness = 1.0;       ///< λ ≥ 0 (seed 000 eq. 25); 0 = heights only
+  double loop_period_s = 200.0;  ///< T: the surface repeats after T seconds; 0 = never
+  std::uint64_t seed = 1;
+  AmplitudeConvention convention = AmplitudeConvention::variance_preserving;
+  NormalMethod normals = NormalMethod::central_difference;
+  /// Base microfacet roughness r ∈ [0, 1] encoded in the normal length (seed 000 eq. 49).
+  double roughness = 0.1;
+  FoamParams foam;
+  BlueChannel blue_channel = BlueChannel::foam;
+};
+
+/// Validates a configuration; the message names the field, the value and the valid range.
+Status validate(const SimulationConfig& config);
+
+/// The wavenumber band [k_min, k_max) of each cascade: cascade c starts where cascade c−1 stops,
+/// at half of cascade c−1's Nyquist wavenumber π·N/L (M.7.1). Rad/m.
+std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& config);
+
+/// Number of texels in mip levels 0..log2 N of an N×N map: (4N² − 1)/3.
+std::size_t mip_chain_texels(int resolution);
+/// Offset of mip level m in the contiguous chain (seed 000 eq. 55).
+std::size_t mip_offset(int resolution, int level);
+
+/// The outputs of one cascade for one frame. Arrays are row-major, index row·N + col.
+struct CascadeFrame {
+  int resolution = 0;
+  double patch_size_m = 0.0;
+  std::vector<float> displacement;               ///< float3 (Dx, h, Dz) per texel, m (eq. 44)
+  std::vector<std::uint16_t> displacement_half;  ///< half4 (Dx, h, Dz, 0), texture-ready
+  std::vector<float> normal;                     ///< float3 unit normal of the displaced surface
+  std::vector<float> jacobian;                   ///< J of the horizontal map (eq. 48)
+  std::vector<float> foam;                       ///< accumulated foam coverage [0, 1]
+  /// RGBA8 (normal x, normal z, blue channel, smoothness), all mips, packed as eq. 51.
+  std::vector<std::uint32_t> packed_mips;
+};
+
+struct Frame {
+  double time_s = 0.0;
+  std::uint64_t index = 0;  ///< frames computed since configuration
+  std::vector<CascadeFrame> cascades;
+};
+
+/// A simulation implementation. configure() allocates and plans; step() never allocates,
+/// never throws and writes every field of `out` (whose arrays configure() sized).
+class Backend {
+ public:
+  virtual ~Backend() = default;
+  [[nodiscard]] virtual std::string_view name() const = 0;
+  /// Validates, allocates, generates the spectra. May be called again with a new config.
+  virtual Status configure(const SimulationConfig& config, TaskRunner& runner) = 0;
+  /// Sizes the arrays of a frame for the configured simulation.
+  virtual void allocate(Frame& frame) const = 0;
+  /// Computes the frame at `time_s`. Foam accumulates over the time since the previous step.
+  virtual void step(double time_s, Frame& out) = 0;
+};
+
+/// The result of a height query at a world position (x, z).
+struct HeightSample {
+  double height_m = 0.0;                 ///< surface height above the mean level
+  std::array<double, 3> displacement{};  ///< (Dx, h, Dz) at the source point, m
+  std::array<double, 2> source_xz{};     ///< undisplaced point that lands on (x, z)
+  int iterations = 0;                    ///< inverse iterations used
+};
+
+class Simulator {
+ public:
+  /// Configures the backend; runner = nullptr uses oneTBB with all hardware threads.
+  static Result<std::unique_ptr<Simulator>> make(const SimulationConfig& config,
+                                                 std::unique_ptr<Backend> backend,
+                                                 std::shared_ptr<TaskRunner> runner = nullptr);
+  ~Simulator();
+  Simulator(const Simulator&) = delete;
+  Simulator& operator=(const Simulator&) = delete;
+
+  /// Regenerates spectra and buffers for a new configuration (on demand, seed 000 §4.2.1).
+  Status reconfigure(const SimulationConfig& config);
+  /// Computes the frame at time_s synchronously and publishes it.
+  void step(double time_s);
+  /// Starts computing the frame at time_s in the background (into the back buffer).
+  void kick(double time_s);
+  /// Waits for the kicked frame and publishes it (swaps front and back). No-op if none.
+  void wait();
+
+  /// The last published frame.
+  [[nodiscard]] const Frame& frame() const;
+  [[nodiscard]] const SimulationConfig& config() const { return config_; }
+  [[nodiscard]] const Backend& backend() const { return *backend_; }
+
+  /// Displacement (Dx, h, Dz) summed over cascades at the undisplaced point (x, z), bilinear
+  /// between texels exactly as a GPU samples the maps with wrap addressing (M.7.6).
+  [[nodiscard]] std::array<double, 3> displacement_at(double x, double z) const;
+  /// Height of the rendered surface above world (x, z): finds the undisplaced point p with
+  /// p + D_xz(p) = (x, z) by fixed-point iteration and Newton refinement (M.7.7), then
+  /// returns h(p). Batched: out.size() must equal xz.size().
+  void heights_at(std::span<const std::array<double, 2>> xz, std::span<HeightSample> out) const;
+
+ private:
+  Simulator() = default;
+  struct Async;
+  SimulationConfig config_;
+  std::unique_ptr<Backend> backend_;
+  std::shared_ptr<TaskRunner> runner_;
+  Frame frames_[2];
+  int front_ = 0;
+  std::unique_ptr<Async> async_;
+};
+
+}  // namespace ocean

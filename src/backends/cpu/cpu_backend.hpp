@@ -1,0 +1,61 @@
+// The CPU reference backend: spectrum evolution, inverse FFT, displacement, gradients, foam,
+// packing and mips on planar float arrays, parallel over rows through the task runner.
+#pragma once
+
+#include <complex>
+#include <vector>
+
+#include "ocean/fft.hpp"
+#include "ocean/sim.hpp"
+
+namespace ocean::cpu {
+
+/// Per-cascade state that lives across frames.
+struct CascadeState {
+  int resolution = 0;
+  double patch_size_m = 0.0;
+  InitialSpectrum spectrum;
+  std::vector<std::int32_t> harmonic;  ///< ω'/ω0 per wave vector when looping
+  /// plane p's spectrum is factor[p][i]·h̃(k_i, t): the fields packed two per complex plane.
+  std::vector<std::vector<std::complex<float>>> factor;
+  std::vector<std::vector<float>> plane_re, plane_im;
+  std::vector<float> foam;      ///< accumulated foam carried between frames
+  std::vector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
+};
+
+/// Number of complex planes a normal method needs (two real fields per plane, M.7.2).
+int plane_count(NormalMethod method);
+/// Fills state.factor for the configured method and choppiness (M.7.2).
+void build_plane_factors(CascadeState& state, NormalMethod method, double choppiness);
+/// Evolves h̃(k, t) with exact phase (M.6.5, M.7.3) and writes every plane's spectrum.
+void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner& runner);
+/// Displacement, half texture, gradients, normal, Jacobian, foam, base-level packing.
+void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
+              CascadeFrame& out, TaskRunner& runner);
+/// Box-filtered mip chain with normal-length smoothness (seed 000 eqs. 52–55).
+void build_mips(CascadeState& state, CascadeFrame& out, TaskRunner& runner);
+
+/// RGBA8 packing of seed 000 eqs. 50–51 from a unit normal, blue value and smoothness.
+std::uint32_t pack_rgba8(float nx, float nz, float blue, float smoothness);
+/// Roughness → normal length, seed 000 eq. 49.
+float normal_length_from_roughness(float roughness);
+/// Normal length → smoothness, seed 000 eq. 53.
+float smoothness_from_normal_length(float length);
+
+class CpuBackend final : public Backend {
+ public:
+  [[nodiscard]] std::string_view name() const override { return "cpu"; }
+  Status configure(const SimulationConfig& config, TaskRunner& runner) override;
+  void allocate(Frame& frame) const override;
+  void step(double time_s, Frame& out) override;
+
+ private:
+  SimulationConfig config_;
+  TaskRunner* runner_ = nullptr;
+  fft::Plan2D plan_;
+  std::vector<CascadeState> cascades_;
+  double last_time_s_ = 0.0;
+  bool has_stepped_ = false;
+};
+
+}  // namespace ocean::cpu

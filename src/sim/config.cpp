@@ -1,0 +1,93 @@
+// Simulation configuration: validation, cascade wavenumber bands and the mip-chain layout.
+//
+// Sources: seed 001 §2.5 (cascades against tiling); seed 000 eq. 55 (mip offsets).
+// Equations: docs/math.md §7.
+#include <bit>
+#include <cmath>
+#include <string>
+
+#include "ocean/sim.hpp"
+
+namespace ocean {
+
+std::string_view to_string(NormalMethod method) {
+  switch (method) {
+    case NormalMethod::central_difference: return "central-difference";
+    case NormalMethod::analytic: return "analytic";
+    case NormalMethod::sobel: return "sobel";
+  }
+  return "unknown";
+}
+
+Result<NormalMethod> parse_normal_method(std::string_view name) {
+  for (NormalMethod m :
+       {NormalMethod::central_difference, NormalMethod::analytic, NormalMethod::sobel}) {
+    if (name == to_string(m)) return m;
+  }
+  return invalid_argument("normals = '" + std::string(name) +
+                          "' is unknown: must be one of central-difference, analytic, sobel");
+}
+
+Status validate(const SimulationConfig& c) {
+  const int n = c.resolution;
+  if (n < 16 || n > 2048 || !std::has_single_bit(static_cast<unsigned>(n))) {
+    return invalid_argument("resolution = " + std::to_string(n) +
+                            " is out of range: must be a power of two in [16, 2048]");
+  }
+  if (c.cascade_patch_sizes_m.empty() || c.cascade_patch_sizes_m.size() > 8) {
+    return invalid_argument("cascades = " + std::to_string(c.cascade_patch_sizes_m.size()) +
+                            " is out of range: must be 1 to 8 patch sizes");
+  }
+  for (std::size_t i = 0; i < c.cascade_patch_sizes_m.size(); ++i) {
+    const double size = c.cascade_patch_sizes_m[i];
+    const std::string name = "patch_size_m[" + std::to_string(i) + "]";
+    if (Status s = require_in_range(name, size, 0.01, 1e6); !s.ok()) return s;
+    if (i > 0 && !(size < c.cascade_patch_sizes_m[i - 1])) {
+      return invalid_argument(
+          name + " = " + format_number(size) + " must be smaller than the previous cascade's " +
+          format_number(c.cascade_patch_sizes_m[i - 1]) + " (largest patch first)");
+    }
+  }
+  if (Status s = require_in_range("choppiness", c.choppiness, 0.0, 10.0); !s.ok()) return s;
+  if (Status s = require_in_range("loop_period_s", c.loop_period_s, 0.0, 1e6); !s.ok()) return s;
+  if (Status s = require_in_range("roughness", c.roughness, 0.0, 1.0); !s.ok()) return s;
+  if (Status s = require_in_range("foam.jacobian_start", c.foam.jacobian_start, -10.0, 10.0);
+      !s.ok()) {
+    return s;
+  }
+  if (!(c.foam.jacobian_full < c.foam.jacobian_start) || !std::isfinite(c.foam.jacobian_full)) {
+    return invalid_argument("foam.jacobian_full = " + format_number(c.foam.jacobian_full) +
+                            " is out of range: must be finite and below foam.jacobian_start = " +
+                            format_number(c.foam.jacobian_start));
+  }
+  return require_in_range("foam.decay_per_s", c.foam.decay_per_s, 0.0, 1e6);
+}
+
+std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& c) {
+  std::vector<std::array<double, 2>> bands;
+  const double n = static_cast<double>(c.resolution);
+  double k_min = 0.0;
+  for (std::size_t i = 0; i < c.cascade_patch_sizes_m.size(); ++i) {
+    const bool last = i + 1 == c.cascade_patch_sizes_m.size();
+    // (M.7.1): hand over at half this cascade's Nyquist wavenumber π·N/L.
+    const double k_max =
+        last ? std::numeric_limits<double>::infinity() : 0.5 * kPi * n / c.cascade_patch_sizes_m[i];
+    bands.push_back({k_min, k_max});
+    k_min = k_max;
+  }
+  return bands;
+}
+
+std::size_t mip_chain_texels(int resolution) {
+  const auto n = static_cast<std::size_t>(resolution);
+  return (4 * n * n - 1) / 3;
+}
+
+std::size_t mip_offset(int resolution, int level) {
+  const int log2n = std::countr_zero(static_cast<unsigned>(resolution));
+  // offset(m) = (4N² − 1)/3 − (4^(log2 N + 1 − m) − 1)/3   (seed 000 eq. 55)
+  const std::size_t remaining = ((std::size_t{1} << (2 * (log2n + 1 - level))) - 1) / 3;
+  return mip_chain_texels(resolution) - remaining;
+}
+
+}  // namespace ocean

@@ -1,0 +1,78 @@
+// Height queries on the published frame: bilinear displacement sampling with wrap (as a GPU
+// samples the maps) and the inverse of the horizontal displacement for buoyancy.
+// Equations: docs/math.md (M.7.6), (M.7.7).
+#include <cmath>
+
+#include "ocean/sim.hpp"
+
+namespace ocean {
+
+namespace {
+
+void add_bilinear(const CascadeFrame& c, double x, double z, std::array<double, 3>& sum) {
+  const int n = c.resolution;
+  const double scale = n / c.patch_size_m;  // texels per metre
+  const double u = x * scale;
+  const double v = z * scale;
+  const double u0 = std::floor(u), v0 = std::floor(v);
+  const double fu = u - u0, fv = v - v0;
+  const auto wrap = [n](double t) {
+    const long long i = static_cast<long long>(t) % n;
+    return static_cast<std::size_t>(i < 0 ? i + n : i);
+  };
+  const std::size_t c0 = wrap(u0), c1 = wrap(u0 + 1.0);
+  const std::size_t r0 = wrap(v0), r1 = wrap(v0 + 1.0);
+  const auto texel = [&](std::size_t col, std::size_t row, int comp) {
+    return static_cast<double>(c.displacement[3 * (row * static_cast<std::size_t>(n) + col) +
+                                              static_cast<std::size_t>(comp)]);
+  };
+  for (int comp = 0; comp < 3; ++comp) {
+    const double top = texel(c0, r0, comp) * (1.0 - fu) + texel(c1, r0, comp) * fu;
+    const double bottom = texel(c0, r1, comp) * (1.0 - fu) + texel(c1, r1, comp) * fu;
+    sum[static_cast<std::size_t>(comp)] += top * (1.0 - fv) + bottom * fv;  // (M.7.6)
+  }
+}
+
+}  // namespace
+
+std::array<double, 3> Simulator::displacement_at(double x, double z) const {
+  std::array<double, 3> sum{0.0, 0.0, 0.0};
+  for (const CascadeFrame& c : frame().cascades) add_bilinear(c, x, z, sum);
+  return sum;
+}
+
+void Simulator::heights_at(std::span<const std::array<double, 2>> xz,
+                           std::span<HeightSample> out) const {
+  constexpr int kMaxIterations = 40;
+  constexpr double kTolerance_m = 1e-6;
+  const std::size_t count = std::min(xz.size(), out.size());
+  for (std::size_t q = 0; q < count; ++q) {
+    const double tx = xz[q][0], tz = xz[q][1];
+    // Solve p + D_xz(p) = t (M.7.7): Newton on the bilinear field, with a fixed-point step
+    // p ← t − D_xz(p) wherever the map is near a fold (det ≤ 0.1).
+    double px = tx, pz = tz;
+    std::array<double, 3> d = displacement_at(px, pz);
+    int iteration = 0;
+    for (; iteration < kMaxIterations; ++iteration) {
+      const double rx = px + d[0] - tx, rz = pz + d[2] - tz;
+      if (std::abs(rx) < kTolerance_m && std::abs(rz) < kTolerance_m) break;
+      constexpr double h = 1e-4;  // m; exact for the piecewise-bilinear field inside a cell
+      const auto dxp = displacement_at(px + h, pz), dxm = displacement_at(px - h, pz);
+      const auto dzp = displacement_at(px, pz + h), dzm = displacement_at(px, pz - h);
+      const double a = 1.0 + (dxp[0] - dxm[0]) / (2 * h), b = (dzp[0] - dzm[0]) / (2 * h);
+      const double c = (dxp[2] - dxm[2]) / (2 * h), e = 1.0 + (dzp[2] - dzm[2]) / (2 * h);
+      const double det = a * e - b * c;
+      if (det > 0.1) {
+        px -= (e * rx - b * rz) / det;
+        pz -= (a * rz - c * rx) / det;
+      } else {
+        px = tx - d[0];
+        pz = tz - d[2];
+      }
+      d = displacement_at(px, pz);
+    }
+    out[q] = {.height_m = d[1], .displacement = d, .source_xz = {px, pz}, .iterations = iteration};
+  }
+}
+
+}  // namespace ocean

@@ -1,0 +1,220 @@
+// The simulator end to end on the CPU backend: looping, exact phase after days, determinism
+// across thread counts, band-split cascades, double buffering, height queries, validation.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "ocean/backends.hpp"
+
+namespace {
+
+ocean::SimulationConfig small_config() {
+  ocean::SimulationConfig c;
+  c.sea.wind_sea = {
+      .spectrum = {.model = ocean::SpectrumModel::jonswap, .wind_speed_mps = 9.0, .fetch_m = 8e4},
+      .spreading = {.model = ocean::SpreadingModel::donelan_banner},
+      .direction_rad = 0.3};
+  c.resolution = 64;
+  c.cascade_patch_sizes_m = {300.0, 71.0};
+  c.choppiness = 0.9;
+  c.loop_period_s = 100.0;
+  c.seed = 5;
+  return c;
+}
+
+std::unique_ptr<ocean::Simulator> make(const ocean::SimulationConfig& c,
+                                       std::shared_ptr<ocean::TaskRunner> runner = nullptr) {
+  auto sim = ocean::make_simulator(c, "cpu", std::move(runner));
+  EXPECT_TRUE(sim.ok()) << sim.status().message();
+  return std::move(sim).value();
+}
+
+float max_abs_difference(const std::vector<float>& a, const std::vector<float>& b) {
+  float m = 0.0f;
+  for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+float max_abs(const std::vector<float>& a) {
+  float m = 0.0f;
+  for (float v : a) m = std::max(m, std::abs(v));
+  return m;
+}
+
+TEST(Simulator, LoopRepeatsAfterPeriodEvenAfterDays) {
+  auto sim = make(small_config());
+  sim->step(12.5);
+  const auto first = sim->frame().cascades[0].displacement;
+  const float scale = max_abs(first);
+  ASSERT_GT(scale, 0.1f);
+  sim->step(12.5 + 100.0);
+  EXPECT_LT(max_abs_difference(sim->frame().cascades[0].displacement, first), 1e-6f * scale);
+  sim->step(12.5 + 100.0 * 2592.0);  // 3 days later: the phase is still exact
+  EXPECT_LT(max_abs_difference(sim->frame().cascades[0].displacement, first), 1e-6f * scale);
+  sim->step(12.5 + 50.0);  // but half a period later it is a different sea
+  EXPECT_GT(max_abs_difference(sim->frame().cascades[0].displacement, first), 0.1f * scale);
+}
+
+TEST(Simulator, BitIdenticalForAnyThreadCount) {
+  const ocean::SimulationConfig c = small_config();
+  auto serial = make(c, std::shared_ptr<ocean::TaskRunner>(ocean::make_serial_runner()));
+  auto two = make(c, std::shared_ptr<ocean::TaskRunner>(ocean::make_tbb_runner(2)));
+  auto all = make(c);
+  for (auto* sim : {serial.get(), two.get(), all.get()}) {
+    sim->step(3.0);
+    sim->step(3.5);
+  }
+  for (std::size_t k = 0; k < c.cascade_patch_sizes_m.size(); ++k) {
+    const auto& a = serial->frame().cascades[k];
+    for (auto* sim : {two.get(), all.get()}) {
+      const auto& b = sim->frame().cascades[k];
+      EXPECT_EQ(
+          std::memcmp(a.displacement.data(), b.displacement.data(), a.displacement.size() * 4), 0);
+      EXPECT_EQ(std::memcmp(a.normal.data(), b.normal.data(), a.normal.size() * 4), 0);
+      EXPECT_EQ(std::memcmp(a.foam.data(), b.foam.data(), a.foam.size() * 4), 0);
+      EXPECT_EQ(a.packed_mips, b.packed_mips);
+      EXPECT_EQ(a.displacement_half, b.displacement_half);
+    }
+  }
+}
+
+// Each wave vector belongs to one cascade: the bands are contiguous and disjoint, and the
+// variance of the summed cascades is the spectrum's m0 (within what the grids resolve), while
+// overlapping (unsplit) cascades would count the shared band twice.
+TEST(Simulator, CascadeBandsPartitionTheVariance) {
+  ocean::SimulationConfig c = small_config();
+  c.resolution = 128;
+  c.cascade_patch_sizes_m = {1200.0, 270.0, 61.0};
+  const auto bands = ocean::cascade_bands(c);
+  ASSERT_EQ(bands.size(), 3u);
+  EXPECT_EQ(bands[0][0], 0.0);
+  EXPECT_EQ(bands[0][1], bands[1][0]);
+  EXPECT_EQ(bands[1][1], bands[2][0]);
+  EXPECT_TRUE(std::isinf(bands[2][1]));
+  const ocean::SeaState sea = ocean::SeaState::make(c.sea).value();
+  const auto grid_variance = [&](double patch, double k_min, double k_max) {
+    const double dk = 2 * ocean::kPi / patch;
+    double sum = 0.0;
+    for (int r = 1; r < c.resolution; ++r) {  // the Nyquist row/column (index 0) is empty
+      for (int col = 1; col < c.resolution; ++col) {
+        const double kx = dk * (col - c.resolution / 2), kz = dk * (r - c.resolution / 2);
+        const double k = std::hypot(kx, kz);
+        if (k >= k_min && k < k_max) sum += sea.wave_vector_spectrum(kx, kz) * dk * dk;
+      }
+    }
+    return sum;
+  };
+  double split = 0.0, overlapping = 0.0;
+  for (std::size_t i = 0; i < 3; ++i) {
+    split += grid_variance(c.cascade_patch_sizes_m[i], bands[i][0], bands[i][1]);
+    overlapping += grid_variance(c.cascade_patch_sizes_m[i], 0.0, INFINITY);
+  }
+  EXPECT_NEAR(split / sea.variance_m2(), 1.0, 0.03);
+  EXPECT_GT(overlapping / sea.variance_m2(), 1.5);
+  // The simulator's summed surface realises that variance (averaged over seeds).
+  double realised = 0.0;
+  constexpr int kSeeds = 12;
+  for (int seed = 1; seed <= kSeeds; ++seed) {
+    c.seed = static_cast<std::uint64_t>(seed);
+    auto sim = make(c);
+    sim->step(0.0);
+    double sum2 = 0.0;
+    const int n = 128;
+    for (int r = 0; r < n; ++r) {
+      for (int col = 0; col < n; ++col) {
+        // Sample the summed surface on the largest patch's grid.
+        const double x = col * 1200.0 / n, z = r * 1200.0 / n;
+        const double h = sim->displacement_at(x, z)[1];
+        sum2 += h * h;
+      }
+    }
+    realised += sum2 / (n * n) / kSeeds;
+  }
+  EXPECT_NEAR(realised / split, 1.0, 0.1);
+}
+
+TEST(Simulator, KickComputesInTheBackground) {
+  auto sim = make(small_config());
+  sim->step(1.0);
+  const auto front = sim->frame().cascades[0].displacement;
+  sim->kick(2.0);
+  // The published frame is untouched while the next one is computed.
+  EXPECT_EQ(sim->frame().time_s, 1.0);
+  EXPECT_EQ(sim->frame().cascades[0].displacement, front);
+  sim->wait();
+  EXPECT_EQ(sim->frame().time_s, 2.0);
+  EXPECT_NE(sim->frame().cascades[0].displacement, front);
+  sim->wait();  // nothing pending: a no-op
+  EXPECT_EQ(sim->frame().time_s, 2.0);
+}
+
+// The height query inverts the horizontal displacement: a surface point that started at a
+// texel p and was displaced to p + D_xz(p) reports h(p).
+TEST(Simulator, HeightQueriesInvertTheDisplacement) {
+  ocean::SimulationConfig c = small_config();
+  c.cascade_patch_sizes_m = {250.0};
+  auto sim = make(c);
+  sim->step(4.0);
+  const auto& f = sim->frame().cascades[0];
+  std::vector<std::array<double, 2>> targets;
+  std::vector<double> expected;
+  for (int i = 0; i < 64 * 64; i += 97) {
+    const double x = (i % 64) * 250.0 / 64 + 1000.0, z = (i / 64) * 250.0 / 64 - 500.0;
+    const auto idx = static_cast<std::size_t>(i);
+    targets.push_back({x + f.displacement[3 * idx], z + f.displacement[3 * idx + 2]});
+    expected.push_back(f.displacement[3 * idx + 1]);
+  }
+  std::vector<ocean::HeightSample> out(targets.size());
+  sim->heights_at(targets, out);
+  for (std::size_t q = 0; q < out.size(); ++q) {
+    EXPECT_NEAR(out[q].height_m, expected[q], 1e-4) << q;
+    EXPECT_LT(out[q].iterations, 40);
+  }
+}
+
+TEST(Simulator, DisplacementSamplingWrapsAndInterpolates) {
+  ocean::SimulationConfig c = small_config();
+  c.cascade_patch_sizes_m = {64.0};
+  auto sim = make(c);
+  sim->step(0.5);
+  const auto& f = sim->frame().cascades[0];
+  const auto texel = [&](int col, int row) {
+    return double(f.displacement[3 * static_cast<std::size_t>(row * 64 + col) + 1]);
+  };
+  EXPECT_NEAR(sim->displacement_at(3.0, 5.0)[1], texel(3, 5), 1e-6);
+  EXPECT_NEAR(sim->displacement_at(3.0 + 64.0 * 7, 5.0 - 64.0 * 3)[1], texel(3, 5), 1e-6);
+  EXPECT_NEAR(sim->displacement_at(3.5, 5.0)[1], 0.5 * (texel(3, 5) + texel(4, 5)), 1e-6);
+  EXPECT_NEAR(sim->displacement_at(63.5, 0.0)[1], 0.5 * (texel(63, 0) + texel(0, 0)), 1e-6);
+}
+
+TEST(Simulator, ValidatesConfiguration) {
+  ocean::SimulationConfig c = small_config();
+  c.resolution = 100;
+  EXPECT_FALSE(ocean::make_simulator(c).ok());
+  c = small_config();
+  c.cascade_patch_sizes_m = {50.0, 80.0};
+  EXPECT_NE(ocean::make_simulator(c).status().message().find("largest patch first"),
+            std::string::npos);
+  c = small_config();
+  c.cascade_patch_sizes_m = {0.0};
+  EXPECT_FALSE(ocean::make_simulator(c).ok());
+  c = small_config();
+  c.choppiness = std::nan("");
+  EXPECT_FALSE(ocean::make_simulator(c).ok());
+  c = small_config();
+  c.sea.wind_sea.spectrum.fetch_m = 0.0;
+  EXPECT_NE(ocean::make_simulator(c).status().message().find("fetch_m = 0"), std::string::npos);
+}
+
+TEST(Backends, UnavailableBackendsSaySo) {
+  const auto vulkan = ocean::make_backend("vulkan");
+  ASSERT_FALSE(vulkan.ok());
+  EXPECT_EQ(vulkan.status().code(), ocean::ErrorCode::unsupported);
+  EXPECT_NE(vulkan.status().message().find("built without"), std::string::npos);
+  EXPECT_EQ(ocean::make_backend("metal").status().code(), ocean::ErrorCode::invalid_argument);
+  EXPECT_TRUE(ocean::make_backend("cpu").ok());
+}
+
+}  // namespace
