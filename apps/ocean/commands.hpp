@@ -15,5 +15,7 @@ struct Command {
 Command add_spectrum_command(CLI::App& app);
 Command add_dispersion_command(CLI::App& app);
 Command add_spreading_command(CLI::App& app);
+Command add_stats_command(CLI::App& app);
+Command add_bake_command(CLI::App& app);
 
 }  // namespace ocean::cli

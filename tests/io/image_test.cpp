@@ -1,19 +1,25 @@
 // Tests for the io module's image files: OpenEXR (half and float) and PNG (8-bit, 16-bit gray).
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 
 #include <cmath>
+#include <csignal>
 #include <cstring>
+#include <functional>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
 #include "io/exr.hpp"
+#include "io/npy.hpp"
 #include "io/png_image.hpp"
 #include "io_test_util.hpp"
 
 namespace ocean::io {
 namespace {
 
+using test::cat;
 using test::read_file;
 using test::TempDir;
 using test::write_file;
@@ -43,7 +49,8 @@ TEST(Exr, FloatRoundTripIsBitExact) {
   height[1] = -0.0f;
   const ExrChannel channels[] = {{"height", height.data()}, {"foam", foam.data()}};
   const fs::path p = dir.path() / "f.exr";
-  ASSERT_TRUE(write_exr(p, w, h, channels, ExrPixelType::float32).ok());
+  const Status written = write_exr(p, w, h, channels, ExrPixelType::float32);
+  ASSERT_TRUE(written.ok()) << written.message();
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"f.exr"});
   Result<ExrImage> r = read_exr(p);
   ASSERT_TRUE(r.ok()) << r.status().message();
@@ -69,11 +76,12 @@ TEST(Exr, HalfRoundTripIsWithinHalfPrecision) {
   TempDir dir;
   const int w = 16, h = 9;
   std::vector<float> v = pattern(w, h, 100.0f);
-  v[0] = 1e6f;  // beyond half range
+  v[0] = 1e6f;   // beyond half range
   v[1] = 1e-6f;  // subnormal in half
   const ExrChannel channels[] = {{"Y", v.data()}};
   const fs::path p = dir.path() / "h.exr";
-  ASSERT_TRUE(write_exr(p, w, h, channels, ExrPixelType::half).ok());
+  const Status written = write_exr(p, w, h, channels, ExrPixelType::half);
+  ASSERT_TRUE(written.ok()) << written.message();
   Result<ExrImage> r = read_exr(p);
   ASSERT_TRUE(r.ok()) << r.status().message();
   EXPECT_EQ(r.value().pixel_types, std::vector<ExrPixelType>{ExrPixelType::half});
@@ -109,7 +117,7 @@ TEST(Exr, RejectsBadInputsAndWritesNothing) {
   EXPECT_TRUE(dir.entries().empty());
   const fs::path missing = dir.path() / "no" / "x.exr";
   expect_error(write_exr(missing, 4, 4, one, ExrPixelType::half), ErrorCode::io_error,
-               "cannot write '" + missing.string() + "': No such file or directory");
+               cat("cannot write '", missing.string(), "': No such file or directory"));
   EXPECT_TRUE(dir.entries().empty());
   // A directory in the way: io_error, no temporary left behind.
   fs::create_directory(dir.path() / "d.exr");
@@ -136,7 +144,7 @@ TEST(Png, EightBitRoundTripsAreExactForAllChannelCounts) {
   for (int c = 1; c <= 4; ++c) {
     std::vector<std::uint8_t> px(static_cast<std::size_t>(w * h * c));
     for (std::size_t i = 0; i < px.size(); ++i) px[i] = static_cast<std::uint8_t>(i * 37 + 11);
-    const fs::path p = dir.path() / ("c" + std::to_string(c) + ".png");
+    const fs::path p = dir.path() / (cat("c", std::to_string(c), ".png"));
     ASSERT_TRUE(write_png8(p, w, h, c, px.data()).ok());
     Result<PngImage> r = read_png(p);
     ASSERT_TRUE(r.ok()) << r.status().message();
@@ -183,13 +191,47 @@ TEST(Png, RejectsBadInputsAndNonPngFiles) {
   EXPECT_TRUE(dir.entries().empty());
   const fs::path missing = dir.path() / "no" / "x.png";
   expect_error(write_png8(missing, 4, 4, 1, px), ErrorCode::io_error,
-               "cannot write '" + missing.string() + "': No such file or directory");
+               cat("cannot write '", missing.string(), "': No such file or directory"));
   EXPECT_TRUE(dir.entries().empty());
   write_file(p, "GIF89a not a png at all");
-  expect_error(read_png(p).status(), ErrorCode::io_error, "cannot read '" + p.string() + "'");
+  expect_error(read_png(p).status(), ErrorCode::io_error, cat("cannot read '", p.string(), "'"));
   expect_error(read_png(dir.path() / "none.png").status(), ErrorCode::io_error,
                "No such file or directory");
   expect_error(read_png(dir.path()).status(), ErrorCode::io_error, "cannot read");
+}
+
+// A file size limit makes writes fail with EFBIG midway (including the writes OpenEXR performs
+// in OutputFile's destructor): every writer reports it and leaves the old file in place.
+TEST(WriteErrors, FailingWritesAreReportedAndKeepTheOldFile) {
+  TempDir dir;
+  std::mt19937 rng(3);
+  std::vector<float> noise(256 * 256);  // incompressible
+  for (float& v : noise) v = std::uniform_real_distribution<float>(-1, 1)(rng);
+  const std::size_t shape[1] = {noise.size()};
+  const ExrChannel channels[] = {{"Y", noise.data()}};
+  std::vector<std::uint8_t> png_noise(noise.size() * 3);
+  for (auto& b : png_noise) b = static_cast<std::uint8_t>(rng());
+  const auto old_handler = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit old_limit{};
+  ASSERT_EQ(::getrlimit(RLIMIT_FSIZE, &old_limit), 0);
+  const std::vector<std::pair<std::string, std::function<Status(const fs::path&)>>> writers = {
+      {"a.npy", [&](const fs::path& p) { return write_npy(p, noise.data(), shape); }},
+      {"a.exr",
+       [&](const fs::path& p) { return write_exr(p, 256, 256, channels, ExrPixelType::float32); }},
+      {"a.png", [&](const fs::path& p) { return write_png8(p, 256, 256, 3, png_noise.data()); }}};
+  for (const auto& [name, write] : writers) {
+    write_file(dir.path() / name, "old contents");
+    rlimit small = old_limit;
+    small.rlim_cur = 64 * 1024;
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
+    const Status s = write(dir.path() / name);
+    ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &old_limit), 0);
+    expect_error(s, ErrorCode::io_error, cat("cannot write '", (dir.path() / name).string(), "'"));
+    EXPECT_NE(s.message().find("File too large"), std::string::npos) << s.message();
+    EXPECT_EQ(read_file(dir.path() / name), "old contents");
+  }
+  std::signal(SIGXFSZ, old_handler);
+  EXPECT_EQ(dir.entries(), (std::vector<std::string>{"a.exr", "a.npy", "a.png"}));
 }
 
 }  // namespace

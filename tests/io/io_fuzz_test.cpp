@@ -14,6 +14,7 @@
 namespace ocean::io {
 namespace {
 
+using test::cat;
 using test::read_file;
 using test::TempDir;
 using test::write_file;
@@ -102,7 +103,9 @@ TEST(PngFuzz, TruncationsAndCorruptionsAreCleanErrors) {
     write_file(p, bytes);
     Result<PngImage> r = read_png(p);
     // Every chunk is CRC-protected; anything that still decodes must decode to the same image.
-    if (r.ok()) EXPECT_EQ(r.value().samples, expected);
+    if (r.ok()) {
+      EXPECT_EQ(r.value().samples, expected);
+    }
   }
 }
 
@@ -115,14 +118,17 @@ TEST(ExrFuzz, TruncationsAndCorruptionsNeverCrash) {
     b[i] = -static_cast<float>(i);
   }
   const ExrChannel channels[] = {{"a", a.data()}, {"b", b.data()}};
-  ASSERT_TRUE(write_exr(p, 20, 12, channels, ExrPixelType::half).ok());
+  const Status written = write_exr(p, 20, 12, channels, ExrPixelType::half);
+  ASSERT_TRUE(written.ok()) << written.message();
   const std::string valid = read_file(p);
   std::mt19937 rng(11);
   for (std::size_t len = 0; len < valid.size(); len += 1 + len / 16) {
     write_file(p, valid.substr(0, len));
     Result<ExrImage> r = read_exr(p);
     EXPECT_FALSE(r.ok()) << "length " << len;
-    if (!r.ok()) EXPECT_EQ(r.status().code(), ErrorCode::io_error);
+    if (!r.ok()) {
+      EXPECT_EQ(r.status().code(), ErrorCode::io_error);
+    }
   }
   for (int iteration = 0; iteration < 400; ++iteration) {
     std::string bytes = valid;
@@ -133,7 +139,8 @@ TEST(ExrFuzz, TruncationsAndCorruptionsNeverCrash) {
     const ExrImage& im = r.value();
     ASSERT_EQ(im.planes.size(), im.channel_names.size());
     for (const auto& plane : im.planes) {
-      EXPECT_EQ(plane.size(), static_cast<std::size_t>(im.width) * static_cast<std::size_t>(im.height));
+      EXPECT_EQ(plane.size(),
+                static_cast<std::size_t>(im.width) * static_cast<std::size_t>(im.height));
     }
   }
 }

@@ -18,6 +18,7 @@
 namespace ocean::io {
 namespace {
 
+using test::cat;
 using test::read_file;
 using test::TempDir;
 using test::write_file;
@@ -63,7 +64,7 @@ TEST(AtomicFile, OldContentsStayUntilTheRename) {
     return io_error("disk on fire");
   });
   EXPECT_EQ(s.code(), ErrorCode::io_error);
-  EXPECT_EQ(s.message(), "cannot write '" + target.string() + "': disk on fire");
+  EXPECT_EQ(s.message(), cat("cannot write '", target.string(), "': disk on fire"));
   EXPECT_EQ(read_file(target), "old");
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"keep.txt"});
   // A throwing callback is reported the same way.
@@ -77,8 +78,9 @@ TEST(AtomicFile, MissingDirectoryNamesThePathAndLeavesNothing) {
   TempDir dir;
   const fs::path target = dir.path() / "missing" / "x.npy";
   bool called = false;
-  const Status s = write_atomically(target, [&](const fs::path&) { return called = true, Status{}; });
-  expect_error(s, ErrorCode::io_error, "cannot write '" + target.string() + "': No such file");
+  const Status s =
+      write_atomically(target, [&](const fs::path&) { return called = true, Status{}; });
+  expect_error(s, ErrorCode::io_error, cat("cannot write '", target.string(), "': No such file"));
   EXPECT_FALSE(called);
   EXPECT_TRUE(dir.entries().empty());
 }
@@ -88,7 +90,7 @@ TEST(AtomicFile, DirectoryInTheWayIsIoErrorAndLeavesNoTemporary) {
   fs::create_directory(dir.path() / "d");
   write_file(dir.path() / "d" / "inside", "x");
   const Status s = write_bytes_atomically(dir.path() / "d", {bytes_of("data")});
-  expect_error(s, ErrorCode::io_error, "cannot write '" + (dir.path() / "d").string() + "'");
+  expect_error(s, ErrorCode::io_error, cat("cannot write '", (dir.path() / "d").string(), "'"));
   EXPECT_EQ(dir.entries(), std::vector<std::string>{"d"});
   EXPECT_EQ(read_file(dir.path() / "d" / "inside"), "x");
 }
@@ -110,7 +112,8 @@ TEST(AtomicFile, ConcurrentWritersNeverLeaveAPartialFile) {
   for (int t = 0; t < 8; ++t) {
     threads.emplace_back([&target, t] {
       const std::string content(10000, static_cast<char>('a' + t));
-      for (int i = 0; i < 20; ++i) EXPECT_TRUE(write_bytes_atomically(target, {bytes_of(content)}).ok());
+      for (int i = 0; i < 20; ++i)
+        EXPECT_TRUE(write_bytes_atomically(target, {bytes_of(content)}).ok());
     });
   }
   for (auto& th : threads) th.join();
@@ -128,9 +131,9 @@ TEST(EnsureDirectory, CreatesNestedAndReportsObstacles) {
   EXPECT_TRUE(ensure_directory("").ok());
   write_file(dir.path() / "file", "x");
   expect_error(ensure_directory(dir.path() / "file"), ErrorCode::io_error,
-               "'" + (dir.path() / "file").string() + "' exists and is not a directory");
+               cat("'", (dir.path() / "file").string(), "' exists and is not a directory"));
   expect_error(ensure_directory(dir.path() / "file" / "sub"), ErrorCode::io_error,
-               "cannot create directory '" + (dir.path() / "file" / "sub").string() + "'");
+               cat("cannot create directory '", (dir.path() / "file" / "sub").string(), "'"));
   if (::geteuid() != 0) {  // root ignores permissions
     fs::create_directory(dir.path() / "locked");
     fs::permissions(dir.path() / "locked", fs::perms::owner_read | fs::perms::owner_exec);
@@ -146,16 +149,16 @@ std::vector<float> special_values(std::size_t n) {
   std::vector<float> v(n);
   for (std::size_t i = 0; i < n; ++i) v[i] = static_cast<float>(i) * 0.37f - 5.0f;
   const float specials[] = {std::numeric_limits<float>::quiet_NaN(), -0.0f,
-                            std::numeric_limits<float>::infinity(), 1e-45f,
-                            std::bit_cast<float>(0x7fc01234U), -3.4e38f};
+                            std::numeric_limits<float>::infinity(),  1e-45f,
+                            std::bit_cast<float>(0x7fc01234U),       -3.4e38f};
   for (std::size_t i = 0; i < n && i < std::size(specials); ++i) v[i] = specials[i];
   return v;
 }
 
 TEST(Npy, RoundTripsBitExactlyWithAlignedHeader) {
   TempDir dir;
-  const std::vector<std::vector<std::size_t>> shapes = {{}, {0}, {7}, {2, 3}, {3, 0, 2},
-                                                        {2, 3, 4}, {1, 1, 1, 1, 5}};
+  const std::vector<std::vector<std::size_t>> shapes = {
+      {}, {0}, {7}, {2, 3}, {3, 0, 2}, {2, 3, 4}, {1, 1, 1, 1, 5}};
   for (const auto& shape : shapes) {
     std::size_t n = 1;
     for (auto d : shape) n *= d;
@@ -163,8 +166,8 @@ TEST(Npy, RoundTripsBitExactlyWithAlignedHeader) {
     const fs::path p = dir.path() / "a.npy";
     ASSERT_TRUE(write_npy(p, data.data(), shape).ok());
     const std::string bytes = read_file(p);
-    const std::size_t header_len = static_cast<unsigned char>(bytes[8]) +
-                                   256U * static_cast<unsigned char>(bytes[9]);
+    const std::size_t header_len =
+        static_cast<unsigned char>(bytes[8]) + 256U * static_cast<unsigned char>(bytes[9]);
     EXPECT_EQ((10 + header_len) % 64, 0U);
     EXPECT_EQ(bytes[9 + header_len], '\n');
     EXPECT_EQ(bytes.size(), 10 + header_len + 4 * n);
@@ -204,9 +207,10 @@ std::string make_npy(std::string header, std::size_t data_bytes, char major = 1)
 TEST(Npy, ReaderAcceptsOtherValidSpellings) {
   TempDir dir;
   const fs::path p = dir.path() / "v.npy";
-  for (const std::string h : {"{\"shape\": (2, 2), \"fortran_order\": False, \"descr\": \"<f4\"}",
-                              "{'descr':'<f4','fortran_order':False,'shape':(2L,2L)}",
-                              "{ 'descr' : '<f4' , 'fortran_order' : False , 'shape' : ( 2 , 2 , ) , }"}) {
+  for (const std::string h :
+       {"{\"shape\": (2, 2), \"fortran_order\": False, \"descr\": \"<f4\"}",
+        "{'descr':'<f4','fortran_order':False,'shape':(2L,2L)}",
+        "{ 'descr' : '<f4' , 'fortran_order' : False , 'shape' : ( 2 , 2 , ) , }"}) {
     write_file(p, make_npy(h, 16));
     Result<NpyArray> r = read_npy(p);
     ASSERT_TRUE(r.ok()) << h << ": " << r.status().message();
@@ -239,8 +243,9 @@ TEST(Npy, ReaderNamesTheProblem) {
         "unexpected header key 'x'");
   check(make_npy("{'descr': '<f4', 'fortran_order': False, 'shape': (3), }", 12), "tuple");
   check(make_npy("{'descr': '<f4', 'fortran_order': False, 'shape': (-3,), }", 12), "shape");
-  check(make_npy("{'descr': '<f4', 'fortran_order': False, 'shape': (4294967296, 4294967296), }",
-                 0), "overflows");
+  check(
+      make_npy("{'descr': '<f4', 'fortran_order': False, 'shape': (4294967296, 4294967296), }", 0),
+      "overflows");
   check(make_npy("{'descr': [('a', '<f4')], 'fortran_order': False, 'shape': (3,), }", 12),
         "'descr'");
   Result<NpyArray> missing = read_npy(dir.path() / "none.npy");
@@ -262,7 +267,7 @@ TEST(Npy, WriterRejectsBadArguments) {
   const std::size_t empty[1] = {0};
   EXPECT_TRUE(write_npy(p, nullptr, empty).ok());
   expect_error(write_npy(dir.path() / "no" / "x.npy", &one, {}), ErrorCode::io_error,
-               "cannot write '" + (dir.path() / "no" / "x.npy").string() + "'");
+               cat("cannot write '", (dir.path() / "no" / "x.npy").string(), "'"));
 }
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <fcntl.h>
+#include <half.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <set>
 #include <string>
 #include <system_error>
+#include <vector>
 
 #include "io/atomic_file.hpp"
 
@@ -126,13 +128,22 @@ Status write_to(const std::filesystem::path& temporary, int width, int height,
     header.compression() = Imf::ZIP_COMPRESSION;
     const Imf::PixelType file_type = type == ExrPixelType::half ? Imf::HALF : Imf::FLOAT;
     Imf::FrameBuffer frame_buffer;
-    const std::size_t row_stride = sizeof(float) * static_cast<std::size_t>(width);
-    for (const ExrChannel& c : channels) {
+    const auto pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    // OutputFile does not convert between pixel types, so half channels get a converted copy.
+    std::vector<std::vector<half>> halves(type == ExrPixelType::half ? channels.size() : 0);
+    for (std::size_t i = 0; i < channels.size(); ++i) {
+      const ExrChannel& c = channels[i];
       header.channels().insert(c.name, Imf::Channel(file_type));
-      // OpenEXR only reads through the pointer when writing; it converts float to half itself.
-      frame_buffer.insert(c.name, Imf::Slice(Imf::FLOAT,
-                                             const_cast<char*>(reinterpret_cast<const char*>(c.data)),
-                                             sizeof(float), row_stride));
+      if (type == ExrPixelType::half) {
+        halves[i].assign(c.data, c.data + pixels);  // rounds to nearest; overflow to infinity
+        frame_buffer.insert(
+            c.name, Imf::Slice::Make(Imf::HALF, halves[i].data(), header.dataWindow(), sizeof(half),
+                                     sizeof(half) * static_cast<std::size_t>(width)));
+      } else {
+        frame_buffer.insert(c.name,
+                            Imf::Slice::Make(Imf::FLOAT, c.data, header.dataWindow(), sizeof(float),
+                                             sizeof(float) * static_cast<std::size_t>(width)));
+      }
     }
     Imf::OutputFile file(stream, header);
     file.setFrameBuffer(frame_buffer);
@@ -172,9 +183,10 @@ Result<ExrImage> read_checked(const std::filesystem::path& path) {
   const std::int64_t w = std::int64_t{window.max.x} - window.min.x + 1;
   const std::int64_t h = std::int64_t{window.max.y} - window.min.y + 1;
   if (w < 1 || w > kExrMaxDimension || h < 1 || h > kExrMaxDimension) {
-    return io_error(with_path("read", path, "data window " + std::to_string(w) + "x" +
-                                                std::to_string(h) + " is out of range [1, " +
-                                                std::to_string(kExrMaxDimension) + "]"));
+    return io_error(with_path("read", path,
+                              "data window " + std::to_string(w) + "x" + std::to_string(h) +
+                                  " is out of range [1, " + std::to_string(kExrMaxDimension) +
+                                  "]"));
   }
   ExrImage image;
   image.width = static_cast<int>(w);
@@ -186,12 +198,12 @@ Result<ExrImage> read_checked(const std::filesystem::path& path) {
       return io_error(with_path("read", path, "channel '" + name + "' is subsampled"));
     }
     if (channel.type != Imf::HALF && channel.type != Imf::FLOAT) {
-      return io_error(with_path("read", path, "channel '" + name +
-                                                  "' is not HALF or FLOAT (UINT is unsupported)"));
+      return io_error(with_path(
+          "read", path, "channel '" + name + "' is not HALF or FLOAT (UINT is unsupported)"));
     }
     if (image.channel_names.size() == static_cast<std::size_t>(kExrMaxChannels)) {
-      return io_error(with_path("read", path, "more than " + std::to_string(kExrMaxChannels) +
-                                                  " channels"));
+      return io_error(
+          with_path("read", path, "more than " + std::to_string(kExrMaxChannels) + " channels"));
     }
     image.channel_names.push_back(name);
     image.pixel_types.push_back(channel.type == Imf::HALF ? ExrPixelType::half
@@ -203,8 +215,8 @@ Result<ExrImage> read_checked(const std::filesystem::path& path) {
   for (std::size_t i = 0; i < image.planes.size(); ++i) {
     image.planes[i].assign(static_cast<std::size_t>(w * h), 0.0f);
     frame_buffer.insert(image.channel_names[i],
-                        Imf::Slice::Make(Imf::FLOAT, image.planes[i].data(), window,
-                                         sizeof(float), sizeof(float) * static_cast<std::size_t>(w)));
+                        Imf::Slice::Make(Imf::FLOAT, image.planes[i].data(), window, sizeof(float),
+                                         sizeof(float) * static_cast<std::size_t>(w)));
   }
   file.setFrameBuffer(frame_buffer);
   file.readPixels(window.min.y, window.max.y);

@@ -66,9 +66,10 @@ class HeaderParser {
       skip_ws();
       if (!eat(':')) return error("expected ':'");
       skip_ws();
-      bool* seen = key == "descr" ? &have_descr
-                 : key == "fortran_order" ? &have_order
-                 : key == "shape" ? &have_shape : nullptr;
+      bool* seen = key == "descr"           ? &have_descr
+                   : key == "fortran_order" ? &have_order
+                   : key == "shape"         ? &have_shape
+                                            : nullptr;
       if (seen == nullptr) return "unexpected header key '" + key + "'";
       if (*seen) return "duplicate header key '" + key + "'";
       *seen = true;
@@ -79,18 +80,15 @@ class HeaderParser {
           return "dtype '" + descr + "' is not supported: only '<f4' (little-endian float32)";
         }
       } else if (key == "fortran_order") {
-        if (s_.substr(pos_, 4) == "True") return std::string("Fortran-ordered arrays are not supported");
+        if (s_.substr(pos_, 4) == "True") return std::string("Fortran order is not supported");
         if (s_.substr(pos_, 5) != "False") return error("'fortran_order' must be True or False");
         pos_ += 5;
       } else if (auto problem = parse_shape(out.shape)) {
         return problem;
       }
       skip_ws();
-      if (eat(',')) {
-        skip_ws();
-      } else if (pos_ >= s_.size() || s_[pos_] != '}') {
-        return error("expected ',' or '}'");
-      }
+      if (!eat(',') && (pos_ >= s_.size() || s_[pos_] != '}')) return error("expected ',' or '}'");
+      skip_ws();
     }
     skip_ws();
     if (pos_ != s_.size()) return error("unexpected text after the header dict");
@@ -102,15 +100,13 @@ class HeaderParser {
 
  private:
   std::string error(const char* what) const {
-    return std::string("malformed header: ").append(what).append(" at header byte ")
-        .append(std::to_string(pos_));
+    std::string message = "malformed header: ";
+    return message.append(what).append(" at header byte ").append(std::to_string(pos_));
   }
   void skip_ws() {
-    while (pos_ < s_.size() && (s_[pos_] == ' ' || s_[pos_] == '\t' || s_[pos_] == '\n' ||
-                                s_[pos_] == '\r')) {
-      ++pos_;
-    }
+    while (pos_ < s_.size() && std::string_view(" \t\n\r").find(s_[pos_]) != s_.npos) ++pos_;
   }
+  bool digit_at(std::size_t i) const { return i < s_.size() && s_[i] >= '0' && s_[i] <= '9'; }
   bool eat(char c) {
     if (pos_ < s_.size() && s_[pos_] == c) return ++pos_, true;
     return false;
@@ -131,14 +127,10 @@ class HeaderParser {
     bool last_had_comma = true;
     for (skip_ws(); !eat(')'); skip_ws()) {
       if (!last_had_comma) return error("expected ',' or ')' in 'shape'");
-      if (pos_ >= s_.size() || s_[pos_] < '0' || s_[pos_] > '9') {
-        return error("expected a non-negative integer in 'shape'");
-      }
-      if (s_[pos_] == '0' && pos_ + 1 < s_.size() && s_[pos_ + 1] >= '0' && s_[pos_ + 1] <= '9') {
-        return error("leading zero in 'shape'");
-      }
+      if (!digit_at(pos_)) return error("expected a non-negative integer in 'shape'");
+      if (s_[pos_] == '0' && digit_at(pos_ + 1)) return error("leading zero in 'shape'");
       std::size_t value = 0;
-      for (; pos_ < s_.size() && s_[pos_] >= '0' && s_[pos_] <= '9'; ++pos_) {
+      for (; digit_at(pos_); ++pos_) {
         const auto digit = static_cast<std::size_t>(s_[pos_] - '0');
         if (value > (std::numeric_limits<std::size_t>::max() - digit) / 10) {
           return std::string("a 'shape' dimension is too large");
@@ -176,14 +168,17 @@ int read_exact(int fd, void* buffer, std::size_t n) {
   return 0;
 }
 
+// "cannot read '<path>': <why>" with the given code.
+Status read_failure(ErrorCode code, const std::filesystem::path& path, const std::string& why) {
+  return {code, std::string("cannot read '").append(path.string()).append("': ").append(why)};
+}
+
 Result<NpyArray> read_fd(int fd, const std::filesystem::path& path) {
-  const auto bad = [&](const std::string& problem) -> Status {
-    return invalid_argument(std::string("cannot read '").append(path.string()).append("': ")
-                                .append(problem));
+  const auto bad = [&](const std::string& problem) {
+    return read_failure(ErrorCode::invalid_argument, path, problem);
   };
-  const auto os_error = [&](int err) -> Status {
-    return io_error(std::string("cannot read '").append(path.string()).append("': ")
-                        .append(errno_message(err)));
+  const auto os_error = [&](int err) {
+    return read_failure(ErrorCode::io_error, path, errno_message(err));
   };
   struct stat st {};
   if (::fstat(fd, &st) != 0) return os_error(errno);
@@ -253,18 +248,17 @@ Status write_npy(const std::filesystem::path& path, const float* data,
     }
     header.append(shape.size() == 1 ? ",), }" : "), }");
     if (!shape.empty()) {
-      header.append(kGrowthAxisMaxDigits - std::min(kGrowthAxisMaxDigits,
-                                                    std::to_string(shape[0]).size()), ' ');
+      header.append(
+          kGrowthAxisMaxDigits - std::min(kGrowthAxisMaxDigits, std::to_string(shape[0]).size()),
+          ' ');
     }
     const std::size_t unpadded = kPreludeLen + header.size() + 1;  // + '\n'
     header.append(kAlign - unpadded % kAlign, ' ').push_back('\n');
     const std::size_t header_len = header.size();  // at most ~1000 bytes for 32 dimensions
 
     std::string prelude(kMagic, kMagicLen);
-    prelude.push_back('\x01');
-    prelude.push_back('\x00');
-    prelude.push_back(static_cast<char>(header_len & 0xFFU));
-    prelude.push_back(static_cast<char>(header_len >> 8U));
+    prelude.append({'\x01', '\x00', static_cast<char>(header_len & 0xFFU),
+                    static_cast<char>(header_len >> 8U)});
     prelude.append(header);
 
     std::span<const std::byte> payload;
@@ -279,8 +273,8 @@ Status write_npy(const std::filesystem::path& path, const float* data,
     }
     return write_bytes_atomically(path, {std::as_bytes(std::span<const char>(prelude)), payload});
   } catch (const std::exception& e) {
-    return io_error(std::string("cannot write '").append(path.string()).append("': ")
-                        .append(e.what()));
+    return io_error(
+        std::string("cannot write '").append(path.string()).append("': ").append(e.what()));
   }
 }
 
@@ -290,18 +284,14 @@ Result<NpyArray> read_npy(const std::filesystem::path& path) {
     do {
       fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     } while (fd < 0 && errno == EINTR);
-    if (fd < 0) {
-      return io_error(std::string("cannot read '").append(path.string()).append("': ")
-                          .append(errno_message(errno)));
-    }
+    if (fd < 0) return read_failure(ErrorCode::io_error, path, errno_message(errno));
     struct Closer {
       int fd;
       ~Closer() { ::close(fd); }
     } closer{fd};
     return read_fd(closer.fd, path);
   } catch (const std::exception& e) {  // out of memory
-    return io_error(std::string("cannot read '").append(path.string()).append("': ")
-                        .append(e.what()));
+    return read_failure(ErrorCode::io_error, path, e.what());
   }
 }
 

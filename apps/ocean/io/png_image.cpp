@@ -133,15 +133,18 @@ Status write_png(const std::filesystem::path& path, int width, int height, int c
         static_cast<std::uint64_t>(std::numeric_limits<std::ptrdiff_t>::max())) {
       return invalid_argument("PNG image is too large for this machine");
     }
-    const Layout layout{width, height, channels, bit_depth,
+    const Layout layout{width,
+                        height,
+                        channels,
+                        bit_depth,
                         static_cast<const unsigned char*>(pixels),
                         static_cast<std::size_t>(row_bytes)};
     return write_atomically(path, [&layout](const std::filesystem::path& temporary) {
       return write_to(temporary, layout);
     });
   } catch (const std::exception& e) {
-    return io_error(std::string("cannot write '").append(path.string()).append("': ")
-                        .append(e.what()));
+    return io_error(
+        std::string("cannot write '").append(path.string()).append("': ").append(e.what()));
   }
 }
 
@@ -187,10 +190,9 @@ Result<PngImage> read_opened(PngIo& io, const std::filesystem::path& path) {
   image.bit_depth = png_get_bit_depth(png, info);
   const std::size_t row_bytes = png_get_rowbytes(png, info);
   const auto h = static_cast<std::size_t>(image.height);
-  const auto samples_per_row = static_cast<std::size_t>(image.width) *
-                               static_cast<std::size_t>(image.channels);
-  if (image.channels < 1 || image.channels > 4 ||
-      (image.bit_depth != 8 && image.bit_depth != 16) ||
+  const auto samples_per_row =
+      static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.channels);
+  if (image.channels < 1 || image.channels > 4 || (image.bit_depth != 8 && image.bit_depth != 16) ||
       row_bytes != samples_per_row * static_cast<std::size_t>(image.bit_depth / 8)) {
     return fail("unexpected PNG layout after expansion");
   }
@@ -230,7 +232,9 @@ Result<PngImage> read_png(const std::filesystem::path& path) {
   try {
     io.file = std::fopen(path.c_str(), "rb");
     if (io.file == nullptr) {
-      return io_error(std::string("cannot read '").append(path.string()).append("': ")
+      return io_error(std::string("cannot read '")
+                          .append(path.string())
+                          .append("': ")
                           .append(errno_message(errno)));
     }
     Result<PngImage> result = read_opened(io, path);
@@ -238,8 +242,8 @@ Result<PngImage> read_png(const std::filesystem::path& path) {
     return result;
   } catch (const std::exception& e) {  // out of memory
     if (io.file != nullptr) std::fclose(io.file);
-    return io_error(std::string("cannot read '").append(path.string()).append("': ")
-                        .append(e.what()));
+    return io_error(
+        std::string("cannot read '").append(path.string()).append("': ").append(e.what()));
   }
 }
 

@@ -16,8 +16,8 @@ inline constexpr int kPngMaxDimension = 1000000;
 struct PngImage {
   int width = 0;
   int height = 0;
-  int channels = 0;   ///< 1 gray, 2 gray+alpha, 3 RGB, 4 RGBA
-  int bit_depth = 0;  ///< 8 or 16: the depth of `samples` (see read_png)
+  int channels = 0;                    ///< 1 gray, 2 gray+alpha, 3 RGB, 4 RGBA
+  int bit_depth = 0;                   ///< 8 or 16: the depth of `samples` (see read_png)
   std::vector<std::uint16_t> samples;  ///< width*height*channels values, 0..2^bit_depth-1
 };
 

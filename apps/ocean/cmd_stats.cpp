@@ -1,0 +1,164 @@
+// `ocean stats`: statistics of the simulated surface (Hs measured against the spectrum, height
+// moments, slopes, Jacobian and foam, numerical checks) over several seeds, as JSON or a table.
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "preset.hpp"
+#include "surface_stats.hpp"
+
+namespace ocean::cli {
+
+namespace {
+
+struct StatsOptions {
+  SimulationFlags simulation;
+  std::string patch_size, seeds = "8", time = "0";
+  bool json = false;
+};
+
+struct Row {
+  const char* key;
+  nlohmann::ordered_json value;
+  const char* unit;
+};
+
+nlohmann::ordered_json optional_json(const std::optional<double>& v) {
+  return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
+}
+
+std::vector<Row> rows(const SurfaceStats& s) {
+  return {
+      {"model", s.model, ""},
+      {"wind_speed_mps", optional_json(s.wind_speed_mps), "m/s"},
+      {"resolution", s.resolution, "texels"},
+      {"patch_size_m", s.patch_size_m, "m"},
+      {"cascades", s.cascades, ""},
+      {"seeds", s.seeds, ""},
+      {"first_seed", s.first_seed, ""},
+      {"time_s", s.time_s, "s"},
+      {"choppiness", s.choppiness, ""},
+      {"loop_period_s", s.loop_period_s, "s"},
+      {"hs_measured_m", s.hs_measured_m, "m"},
+      {"hs_spectrum_m", s.hs_spectrum_m, "m"},
+      {"hs_closed_form_m", s.hs_closed_form_m, "m"},
+      {"resolved_variance_fraction", s.resolved_variance_fraction, ""},
+      {"independent_wave_vectors", s.independent_wave_vectors, ""},
+      {"hs_sampling_rel_std", s.hs_sampling_rel_std, ""},
+      {"mean_height_m", s.mean_height_m, "m"},
+      {"height_skewness", optional_json(s.height_skewness), ""},
+      {"height_kurtosis", optional_json(s.height_kurtosis), ""},
+      {"mean_square_slope", s.mean_square_slope, ""},
+      {"cox_munk_mss", optional_json(s.cox_munk_mss), ""},
+      {"folded_fraction", s.folded_fraction, ""},
+      {"min_jacobian", s.min_jacobian, ""},
+      {"foam_coverage", s.foam_coverage, ""},
+      {"mean_foam", s.mean_foam, ""},
+      {"max_imaginary_rel_hs", optional_json(s.max_imaginary_rel_hs), ""},
+      {"loop_error_rel_hs", optional_json(s.loop_error_rel_hs), ""},
+  };
+}
+
+// Flags of this command that resolve_config does not know.
+struct Inputs {
+  int seeds = 8;
+  double time_s = 0.0;
+  std::optional<double> patch_size_m;
+};
+
+Result<Inputs> parse_inputs(const StatsOptions& o) {
+  Inputs in;
+  Result<double> seeds = parse_number("--seeds", o.seeds);
+  if (!seeds.ok()) return seeds.status();
+  if (!(seeds.value() >= 1.0 && seeds.value() <= 100000.0) ||
+      seeds.value() != std::floor(seeds.value())) {
+    return invalid_argument("--seeds = " + o.seeds +
+                            " is out of range: must be an integer in [1, 100000]");
+  }
+  in.seeds = static_cast<int>(seeds.value());
+  Result<double> time = parse_number("--time", o.time);
+  if (!time.ok()) return time.status();
+  if (Status s = require_finite("--time", time.value()); !s.ok()) return s;
+  in.time_s = time.value();
+  if (!o.patch_size.empty()) {
+    Result<double> size = parse_number("--patch-size", o.patch_size);
+    if (!size.ok()) return size.status();
+    // The range SimulationConfig accepts for a cascade.
+    if (Status s = require_in_range("--patch-size", size.value(), 0.01, 1e6); !s.ok()) return s;
+    in.patch_size_m = size.value();
+  }
+  return in;
+}
+
+// resolve_config validates the preset document before the sea-state flags replace its wind sea,
+// and SimulationConfig{} has no sea state of its own; without a preset or a --set of the sea,
+// start from the default sea of the spectrum flags (U10 = 10 m/s over 100 km, see to_params).
+// Explicit sea-state flags still replace it.
+SimulationFlags with_default_sea(SimulationFlags flags) {
+  if (!flags.preset_path.empty()) return flags;
+  for (const std::string& assignment : flags.set) {
+    if (assignment.rfind("sea", 0) == 0) return flags;
+  }
+  flags.set.insert(flags.set.begin(),
+                   {"sea.wind_sea.wind_speed_mps=10", "sea.wind_sea.fetch_m=100000"});
+  return flags;
+}
+
+int run_stats(const StatsOptions& o) {
+  Result<Inputs> inputs = parse_inputs(o);
+  if (!inputs.ok()) return report(inputs.status());
+  Result<SimulationConfig> resolved = resolve_config(with_default_sea(o.simulation));
+  if (!resolved.ok()) return report(resolved.status());
+  SimulationConfig config = std::move(resolved).value();
+  // One cascade of --patch-size; else the cascades the user chose (--cascades, a preset or
+  // --set); else a single 1000 m patch.
+  if (inputs.value().patch_size_m) {
+    config.cascade_patch_sizes_m = {*inputs.value().patch_size_m};
+  } else if (o.simulation.cascades.empty() &&
+             config.cascade_patch_sizes_m == SimulationConfig{}.cascade_patch_sizes_m) {
+    config.cascade_patch_sizes_m = {1000.0};
+  }
+  Result<SurfaceStats> stats = compute_surface_stats(config, inputs.value().seeds,
+                                                     inputs.value().time_s);
+  if (!stats.ok()) return report(stats.status());
+  const std::vector<Row> table = rows(stats.value());
+  if (o.json) {
+    nlohmann::ordered_json j = nlohmann::ordered_json::object();
+    for (const Row& r : table) j[r.key] = r.value;
+    print_json(j);
+    return kExitOk;
+  }
+  std::cout << std::left << std::setw(28) << "key" << std::setw(24) << "value"
+            << "unit\n";
+  for (const Row& r : table) {
+    const std::string value = r.value.is_string() ? r.value.get<std::string>() : r.value.dump();
+    std::cout << std::setw(28) << r.key << std::setw(24) << value << r.unit << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_stats_command(CLI::App& app) {
+  auto options = std::make_shared<StatsOptions>();
+  CLI::App* command = app.add_subcommand(
+      "stats", "Statistics of the simulated surface (Hs, height moments, slopes, foam) over seeds");
+  add_simulation_flags(*command, options->simulation);
+  command->add_option("--patch-size", options->patch_size,
+                      "one cascade of this patch side, m (overrides --cascades; default 1000)");
+  command->add_option("--seeds", options->seeds,
+                      "number of realisations: seed, seed+1, ..., seed+N-1")
+      ->capture_default_str();
+  command->add_option("--time", options->time, "simulation time t, s")->capture_default_str();
+  command->add_flag("--json", options->json, "print JSON instead of a table");
+  return {command, [options] { return run_stats(*options); }};
+}
+
+}  // namespace ocean::cli
