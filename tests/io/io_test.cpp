@@ -175,7 +175,9 @@ TEST(Npy, RoundTripsBitExactlyWithAlignedHeader) {
     ASSERT_TRUE(r.ok()) << r.status().message();
     EXPECT_EQ(r.value().shape, shape);
     ASSERT_EQ(r.value().data.size(), n);
-    EXPECT_EQ(std::memcmp(r.value().data.data(), data.data(), 4 * n), 0);
+    if (n > 0) {
+      EXPECT_EQ(std::memcmp(r.value().data.data(), data.data(), 4 * n), 0);
+    }
   }
 }
 
