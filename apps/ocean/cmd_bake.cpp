@@ -47,10 +47,18 @@ struct FrameWriter {
     };
     if (formats.contains("npy")) {
       const std::size_t vec3[] = {un, un, 3}, scalar[] = {un, un};
-      if (Status s = io::write_npy(record("displacement_" + stem + ".npy"), c.displacement.data(), vec3); !s.ok()) return s;
-      if (Status s = io::write_npy(record("normal_" + stem + ".npy"), c.normal.data(), vec3); !s.ok()) return s;
-      if (Status s = io::write_npy(record("jacobian_" + stem + ".npy"), c.jacobian.data(), scalar); !s.ok()) return s;
-      if (Status s = io::write_npy(record("foam_" + stem + ".npy"), c.foam.data(), scalar); !s.ok()) return s;
+      if (Status s =
+              io::write_npy(record("displacement_" + stem + ".npy"), c.displacement.data(), vec3);
+          !s.ok())
+        return s;
+      if (Status s = io::write_npy(record("normal_" + stem + ".npy"), c.normal.data(), vec3);
+          !s.ok())
+        return s;
+      if (Status s = io::write_npy(record("jacobian_" + stem + ".npy"), c.jacobian.data(), scalar);
+          !s.ok())
+        return s;
+      if (Status s = io::write_npy(record("foam_" + stem + ".npy"), c.foam.data(), scalar); !s.ok())
+        return s;
     }
     if (formats.contains("exr")) {
       std::vector<float> planes(6 * texels);
@@ -60,10 +68,11 @@ struct FrameWriter {
           planes[(3 + k) * texels + i] = c.normal[3 * i + k];
         }
       }
-      const io::ExrChannel displacement[] = {{"R", planes.data()}, {"G", planes.data() + texels},
-                                             {"B", planes.data() + 2 * texels}};
+      const io::ExrChannel displacement[] = {
+          {"R", planes.data()}, {"G", planes.data() + texels}, {"B", planes.data() + 2 * texels}};
       if (Status s = io::write_exr(record("displacement_" + stem + ".exr"), n, n, displacement,
-                                   io::ExrPixelType::float32); !s.ok()) {
+                                   io::ExrPixelType::float32);
+          !s.ok()) {
         return s;
       }
       const io::ExrChannel maps[] = {{"normal.X", planes.data() + 3 * texels},
@@ -71,7 +80,9 @@ struct FrameWriter {
                                      {"normal.Z", planes.data() + 5 * texels},
                                      {"jacobian", c.jacobian.data()},
                                      {"foam", c.foam.data()}};
-      if (Status s = io::write_exr(record("maps_" + stem + ".exr"), n, n, maps, io::ExrPixelType::half); !s.ok()) {
+      if (Status s =
+              io::write_exr(record("maps_" + stem + ".exr"), n, n, maps, io::ExrPixelType::half);
+          !s.ok()) {
         return s;
       }
     }
@@ -84,26 +95,35 @@ struct FrameWriter {
       const std::string name = "nfs_" + stem + "_mip" + std::to_string(level);
       std::vector<std::uint8_t> rgba(4 * count);
       for (std::size_t i = 0; i < count; ++i) {
-        for (std::size_t k = 0; k < 4; ++k) rgba[4 * i + k] = static_cast<std::uint8_t>(packed[i] >> (8 * k));
+        for (std::size_t k = 0; k < 4; ++k)
+          rgba[4 * i + k] = static_cast<std::uint8_t>(packed[i] >> (8 * k));
       }
       if (formats.contains("png")) {
-        if (Status s = io::write_png8(record(name + ".png"), size, size, 4, rgba.data()); !s.ok()) return s;
+        if (Status s = io::write_png8(record(name + ".png"), size, size, 4, rgba.data()); !s.ok())
+          return s;
       }
       if (formats.contains("exr") || formats.contains("npy")) {
         std::vector<float> values(4 * count);
         for (std::size_t i = 0; i < 4 * count; ++i) values[i] = rgba[i] / 255.0f;
         if (formats.contains("npy")) {
-          const std::size_t shape[] = {static_cast<std::size_t>(size), static_cast<std::size_t>(size), 4};
-          if (Status s = io::write_npy(record(name + ".npy"), values.data(), shape); !s.ok()) return s;
+          const std::size_t shape[] = {static_cast<std::size_t>(size),
+                                       static_cast<std::size_t>(size), 4};
+          if (Status s = io::write_npy(record(name + ".npy"), values.data(), shape); !s.ok())
+            return s;
         }
         if (formats.contains("exr")) {
           std::vector<float> planar(4 * count);
           for (std::size_t i = 0; i < count; ++i) {
             for (std::size_t k = 0; k < 4; ++k) planar[k * count + i] = values[4 * i + k];
           }
-          const io::ExrChannel ch[] = {{"R", planar.data()}, {"G", planar.data() + count},
-                                       {"B", planar.data() + 2 * count}, {"A", planar.data() + 3 * count}};
-          if (Status s = io::write_exr(record(name + ".exr"), size, size, ch, io::ExrPixelType::half); !s.ok()) return s;
+          const io::ExrChannel ch[] = {{"R", planar.data()},
+                                       {"G", planar.data() + count},
+                                       {"B", planar.data() + 2 * count},
+                                       {"A", planar.data() + 3 * count}};
+          if (Status s =
+                  io::write_exr(record(name + ".exr"), size, size, ch, io::ExrPixelType::half);
+              !s.ok())
+            return s;
         }
       }
     }
@@ -113,7 +133,9 @@ struct FrameWriter {
         const double t = 0.5 + 0.5 * c.displacement[3 * i + 1] / height_range_m;
         height[i] = static_cast<std::uint16_t>(std::lround(std::clamp(t, 0.0, 1.0) * 65535.0));
       }
-      if (Status s = io::write_png16_gray(record("height_" + stem + ".png"), n, n, height.data()); !s.ok()) return s;
+      if (Status s = io::write_png16_gray(record("height_" + stem + ".png"), n, n, height.data());
+          !s.ok())
+        return s;
     }
     return {};
   }
@@ -140,14 +162,18 @@ int run_bake(const BakeOptions& o) {
   long long frames = 1;
   if (o.loop) {
     if (!o.frames.empty()) return report(invalid_argument("give --frames N or --loop, not both"));
-    if (!(c.loop_period_s > 0)) return report(invalid_argument("--loop needs a loop period > 0 (--loop-period)"));
+    if (!(c.loop_period_s > 0))
+      return report(invalid_argument("--loop needs a loop period > 0 (--loop-period)"));
     frames = std::llround(c.loop_period_s * fps.value());
-    if (frames < 1 || frames > 1000000) return report(invalid_argument("--loop at --fps " + o.fps + " gives " + std::to_string(frames) + " frames: must be 1 to 1000000"));
+    if (frames < 1 || frames > 1000000)
+      return report(invalid_argument("--loop at --fps " + o.fps + " gives " +
+                                     std::to_string(frames) + " frames: must be 1 to 1000000"));
   } else if (!o.frames.empty()) {
     Result<double> v = parse_number("--frames", o.frames);
     if (!v.ok()) return report(v.status());
     if (v.value() != std::floor(v.value()) || v.value() < 1 || v.value() > 1000000) {
-      return report(invalid_argument("--frames = " + o.frames + " is out of range: must be an integer in [1, 1000000]"));
+      return report(invalid_argument("--frames = " + o.frames +
+                                     " is out of range: must be an integer in [1, 1000000]"));
     }
     frames = static_cast<long long>(v.value());
   }
@@ -157,17 +183,20 @@ int run_bake(const BakeOptions& o) {
   if (!sim.ok()) return report(sim.status());
   const double hs = 4.0 * std::sqrt(SeaState::make(c.sea).value().variance_m2());
   FrameWriter writer{.dir = o.out, .formats = formats, .height_range_m = std::max(hs, 1e-3)};
-  nlohmann::ordered_json manifest{{"generator", "ocean bake"},
-                                  {"backend", o.backend},
-                                  {"config", to_json(c)},
-                                  {"fps", fps.value()},
-                                  {"formats", formats},
-                                  {"height_png_range_m", writer.height_range_m},
-                                  {"layout", "row-major [row][col][channel]; texel (col,row) starts at world (col, row)*L/N; "
-                                             "displacement = (Dx, h, Dz) m; nfs = RGBA8 (normal x, normal z, foam, smoothness)"},
-                                  {"cascades", nlohmann::ordered_json::array()},
-                                  {"frames", nlohmann::ordered_json::array()}};
-  for (double size : c.cascade_patch_sizes_m) manifest["cascades"].push_back({{"patch_size_m", size}, {"resolution", c.resolution}});
+  nlohmann::ordered_json manifest{
+      {"generator", "ocean bake"},
+      {"backend", o.backend},
+      {"config", to_json(c)},
+      {"fps", fps.value()},
+      {"formats", formats},
+      {"height_png_range_m", writer.height_range_m},
+      {"layout",
+       "row-major [row][col][channel]; texel (col,row) starts at world (col, row)*L/N; "
+       "displacement = (Dx, h, Dz) m; nfs = RGBA8 (normal x, normal z, foam, smoothness)"},
+      {"cascades", nlohmann::ordered_json::array()},
+      {"frames", nlohmann::ordered_json::array()}};
+  for (double size : c.cascade_patch_sizes_m)
+    manifest["cascades"].push_back({{"patch_size_m", size}, {"resolution", c.resolution}});
   Progress progress("bake", frames);
   for (long long f = 0; f < frames; ++f) {
     const double t = start.value() + static_cast<double>(f) / fps.value();
@@ -177,16 +206,18 @@ int run_bake(const BakeOptions& o) {
     std::snprintf(index, sizeof index, "%05lld", f);
     const Frame& frame = sim.value()->frame();
     for (std::size_t k = 0; k < frame.cascades.size(); ++k) {
-      if (Status s = writer.write(frame.cascades[k], "c" + std::to_string(k) + "_f" + index); !s.ok()) {
+      if (Status s = writer.write(frame.cascades[k], "c" + std::to_string(k) + "_f" + index);
+          !s.ok()) {
         return report(s);
       }
     }
     manifest["frames"].push_back({{"index", f}, {"time_s", t}, {"files", writer.files}});
     if (f == 0 && !o.contact_sheet.empty()) {
       char title[200];
-      std::snprintf(title, sizeof title, "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 x %zu cascades",
-                    std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(), hs, t, c.resolution,
-                    c.cascade_patch_sizes_m.size());
+      std::snprintf(title, sizeof title,
+                    "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 x %zu cascades",
+                    std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(), hs, t,
+                    c.resolution, c.cascade_patch_sizes_m.size());
       if (Status s = write_contact_sheet(frame, title, o.contact_sheet); !s.ok()) return report(s);
     }
     progress.update(f + 1);
@@ -215,8 +246,10 @@ Command add_bake_command(CLI::App& app) {
   command->add_flag("--loop", o->loop, "one whole loop period of frames at --fps");
   command->add_option("--fps", o->fps, "frames per second")->capture_default_str();
   command->add_option("--time", o->time, "time of the first frame, s")->capture_default_str();
-  command->add_option("--backend", o->backend, "simulation backend (see ocean info)")->capture_default_str();
-  command->add_option("--contact-sheet", o->contact_sheet, "also draw the first frame's maps to this PNG");
+  command->add_option("--backend", o->backend, "simulation backend (see ocean info)")
+      ->capture_default_str();
+  command->add_option("--contact-sheet", o->contact_sheet,
+                      "also draw the first frame's maps to this PNG");
   return {command, [o] { return run_bake(*o); }};
 }
 

@@ -97,24 +97,10 @@ Result<Inputs> parse_inputs(const StatsOptions& o) {
   return in;
 }
 
-// resolve_config validates the preset document before the sea-state flags replace its wind sea,
-// and SimulationConfig{} has no sea state of its own; without a preset or a --set of the sea,
-// start from the default sea of the spectrum flags (U10 = 10 m/s over 100 km, see to_params).
-// Explicit sea-state flags still replace it.
-SimulationFlags with_default_sea(SimulationFlags flags) {
-  if (!flags.preset_path.empty()) return flags;
-  for (const std::string& assignment : flags.set) {
-    if (assignment.rfind("sea", 0) == 0) return flags;
-  }
-  flags.set.insert(flags.set.begin(),
-                   {"sea.wind_sea.wind_speed_mps=10", "sea.wind_sea.fetch_m=100000"});
-  return flags;
-}
-
 int run_stats(const StatsOptions& o) {
   Result<Inputs> inputs = parse_inputs(o);
   if (!inputs.ok()) return report(inputs.status());
-  Result<SimulationConfig> resolved = resolve_config(with_default_sea(o.simulation));
+  Result<SimulationConfig> resolved = resolve_config(o.simulation);
   if (!resolved.ok()) return report(resolved.status());
   SimulationConfig config = std::move(resolved).value();
   // One cascade of --patch-size; else the cascades the user chose (--cascades, a preset or
@@ -125,8 +111,8 @@ int run_stats(const StatsOptions& o) {
              config.cascade_patch_sizes_m == SimulationConfig{}.cascade_patch_sizes_m) {
     config.cascade_patch_sizes_m = {1000.0};
   }
-  Result<SurfaceStats> stats = compute_surface_stats(config, inputs.value().seeds,
-                                                     inputs.value().time_s);
+  Result<SurfaceStats> stats =
+      compute_surface_stats(config, inputs.value().seeds, inputs.value().time_s);
   if (!stats.ok()) return report(stats.status());
   const std::vector<Row> table = rows(stats.value());
   if (o.json) {
@@ -153,8 +139,8 @@ Command add_stats_command(CLI::App& app) {
   add_simulation_flags(*command, options->simulation);
   command->add_option("--patch-size", options->patch_size,
                       "one cascade of this patch side, m (overrides --cascades; default 1000)");
-  command->add_option("--seeds", options->seeds,
-                      "number of realisations: seed, seed+1, ..., seed+N-1")
+  command
+      ->add_option("--seeds", options->seeds, "number of realisations: seed, seed+1, ..., seed+N-1")
       ->capture_default_str();
   command->add_option("--time", options->time, "simulation time t, s")->capture_default_str();
   command->add_flag("--json", options->json, "print JSON instead of a table");

@@ -53,17 +53,20 @@ Status write_contact_sheet(const Frame& frame, const std::string& title,
   const int height = kTitle + rows * (kLabel + kTile + kMargin);
   Canvas canvas(width, height, {250, 250, 250});
   const Rgb ink{30, 30, 30};
-  plot::detail::draw_text(canvas, kMargin, 14, title, 2.0, ink, plot::detail::TextDir::horizontal, true);
+  plot::detail::draw_text(canvas, kMargin, 14, title, 2.0, ink, plot::detail::TextDir::horizontal,
+                          true);
   for (int r = 0; r < rows; ++r) {
     const CascadeFrame& c = frame.cascades[static_cast<std::size_t>(r)];
     const int n = c.resolution;
     const auto at = [n](int col, int row) { return static_cast<std::size_t>(row * n + col); };
     float max_h = 1e-6f;
-    for (std::size_t i = 0; i < c.jacobian.size(); ++i) max_h = std::max(max_h, std::abs(c.displacement[3 * i + 1]));
+    for (std::size_t i = 0; i < c.jacobian.size(); ++i)
+      max_h = std::max(max_h, std::abs(c.displacement[3 * i + 1]));
     const int y0 = kTitle + r * (kLabel + kTile + kMargin) + kLabel;
     const auto x_of = [](int column) { return kMargin + column * (kTile + kMargin); };
     char label[160];
-    std::snprintf(label, sizeof label, "cascade %d: %.0f m  height +-%.2f m", r, c.patch_size_m, double(max_h));
+    std::snprintf(label, sizeof label, "cascade %d: %.0f m  height +-%.2f m", r, c.patch_size_m,
+                  double(max_h));
     plot::detail::draw_text(canvas, x_of(0), y0 - 22, label, 1.5, ink);
     plot::detail::draw_text(canvas, x_of(1), y0 - 22, "normal map (x, y, z)", 1.5, ink);
     plot::detail::draw_text(canvas, x_of(2), y0 - 22, "foam (red: J < 0)", 1.5, ink);
@@ -75,7 +78,10 @@ Status write_contact_sheet(const Frame& frame, const std::string& title,
     });
     draw_tile(canvas, x_of(1), y0, n, [&](int col, int row) {
       const float* v = &c.normal[3 * at(col, row)];
-      const auto channel = [](float x) { return static_cast<std::uint8_t>(std::lround(std::clamp(x * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f)); };
+      const auto channel = [](float x) {
+        return static_cast<std::uint8_t>(
+            std::lround(std::clamp(x * 0.5f + 0.5f, 0.0f, 1.0f) * 255.0f));
+      };
       return Rgb{channel(v[0]), channel(v[2]), channel(v[1])};  // tangent-space style: up is blue
     });
     draw_tile(canvas, x_of(2), y0, n, [&](int col, int row) {
@@ -86,7 +92,8 @@ Status write_contact_sheet(const Frame& frame, const std::string& title,
     const int size = n >> level;
     const std::size_t offset = mip_offset(n, level);
     draw_tile(canvas, x_of(3), y0, size, [&](int col, int row) {
-      const std::uint32_t texel = c.packed_mips[offset + static_cast<std::size_t>(row * size + col)];
+      const std::uint32_t texel =
+          c.packed_mips[offset + static_cast<std::size_t>(row * size + col)];
       const auto s = static_cast<std::uint8_t>(texel >> 24);
       return Rgb{s, s, s};
     });

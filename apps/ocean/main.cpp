@@ -9,11 +9,10 @@ int main(int argc, char** argv) {
   CLI::App app{"ocean — spectral ocean surface simulation: spectra, dispersion, spreading"};
   app.name("ocean");
   app.require_subcommand(1);
-  const ocean::cli::Command commands[] = {ocean::cli::add_spectrum_command(app),
-                                          ocean::cli::add_dispersion_command(app),
-                                          ocean::cli::add_spreading_command(app),
-                                          ocean::cli::add_stats_command(app),
-                                          ocean::cli::add_bake_command(app)};
+  const ocean::cli::Command commands[] = {
+      ocean::cli::add_spectrum_command(app), ocean::cli::add_dispersion_command(app),
+      ocean::cli::add_spreading_command(app), ocean::cli::add_stats_command(app),
+      ocean::cli::add_bake_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

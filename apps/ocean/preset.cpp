@@ -34,11 +34,10 @@ Json wave_system_json(const WaveSystemParams& w) {
       {"phillips_amplitude", number_or_null(s.phillips_amplitude)},
       {"cutoff_length_m", s.small_wave_cutoff_m},
       {"direction_deg", w.direction_rad * 180.0 / kPi},
-      {"spreading",
-       Json{{"model", to_string(w.spreading.model)},
-            {"s", number_or_null(w.spreading.s)},
-            {"alpha", w.spreading.alpha},
-            {"counter_wave_suppression", w.spreading.counter_wave_suppression}}}};
+      {"spreading", Json{{"model", to_string(w.spreading.model)},
+                         {"s", number_or_null(w.spreading.s)},
+                         {"alpha", w.spreading.alpha},
+                         {"counter_wave_suppression", w.spreading.counter_wave_suppression}}}};
 }
 
 // Reads the keys of one JSON object, rejecting unknown keys and wrong types.
@@ -71,14 +70,18 @@ class ObjectReader {
   void boolean(const char* key, bool& out) {
     const Json* v = find(key);
     if (v == nullptr) return;
-    if (v->is_boolean()) out = v->get<bool>();
-    else fail(key, "expected true or false");
+    if (v->is_boolean())
+      out = v->get<bool>();
+    else
+      fail(key, "expected true or false");
   }
   void string(const char* key, std::string& out) {
     const Json* v = find(key);
     if (v == nullptr) return;
-    if (v->is_string()) out = v->get<std::string>();
-    else fail(key, "expected a string");
+    if (v->is_string())
+      out = v->get<std::string>();
+    else
+      fail(key, "expected a string");
   }
   const Json* child(const char* key) { return find(key); }
   [[nodiscard]] std::string path_of(const char* key) const { return join(key); }
@@ -128,9 +131,12 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
   r.number("hs_m", s.significant_wave_height_m, true);
   r.number("tp_s", s.peak_period_s, true);
   if (const Json* g = r.child("gamma")) {
-    if (g->is_string() && g->get<std::string>() == "auto") s.gamma = kUnset;
-    else if (g->is_number()) s.gamma = g->get<double>();
-    else r.fail("gamma", "expected a number or \"auto\"");
+    if (g->is_string() && g->get<std::string>() == "auto")
+      s.gamma = kUnset;
+    else if (g->is_number())
+      s.gamma = g->get<double>();
+    else
+      r.fail("gamma", "expected a number or \"auto\"");
   }
   std::string fetch_law(fetch_law_name(s.fetch_law)), normalization = "dnv", depth_factor = "exact";
   if (s.normalization == JonswapNormalization::exact) normalization = "exact";
@@ -139,9 +145,12 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
   r.string("normalization", normalization);
   r.string("depth_factor", depth_factor);
   if (const Json* d = r.child("depth_m")) {
-    if (d->is_null()) s.depth_m = kInfiniteDepth;
-    else if (d->is_number()) s.depth_m = d->get<double>();
-    else r.fail("depth_m", "expected a number or null (deep water)");
+    if (d->is_null())
+      s.depth_m = kInfiniteDepth;
+    else if (d->is_number())
+      s.depth_m = d->get<double>();
+    else
+      r.fail("depth_m", "expected a number or null (deep water)");
   }
   r.number("phillips_amplitude", s.phillips_amplitude, true);
   r.number("cutoff_length_m", s.small_wave_cutoff_m);
@@ -153,22 +162,32 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
     std::string sm(to_string(w.spreading.model));
     sr.string("model", sm);
     Result<SpreadingModel> parsed = parse_spreading_model(sm);
-    if (!parsed.ok()) return invalid_argument(sr.path_of("model") + ": " + parsed.status().message());
+    if (!parsed.ok())
+      return invalid_argument(sr.path_of("model") + ": " + parsed.status().message());
     w.spreading.model = parsed.value();
     sr.number("s", w.spreading.s, true);
     sr.number("alpha", w.spreading.alpha);
     sr.boolean("counter_wave_suppression", w.spreading.counter_wave_suppression);
     r.adopt(sr.finish());
   }
-  if (fetch_law == "hasselmann") s.fetch_law = FetchLaw::hasselmann_1973;
-  else if (fetch_law == "cube-root") s.fetch_law = FetchLaw::cube_root;
-  else r.fail("fetch_law", "expected \"hasselmann\" or \"cube-root\"");
-  if (normalization == "dnv") s.normalization = JonswapNormalization::dnv;
-  else if (normalization == "exact") s.normalization = JonswapNormalization::exact;
-  else r.fail("normalization", "expected \"dnv\" or \"exact\"");
-  if (depth_factor == "exact") s.depth_factor = DepthFactor::exact;
-  else if (depth_factor == "thompson-vincent") s.depth_factor = DepthFactor::thompson_vincent;
-  else r.fail("depth_factor", "expected \"exact\" or \"thompson-vincent\"");
+  if (fetch_law == "hasselmann")
+    s.fetch_law = FetchLaw::hasselmann_1973;
+  else if (fetch_law == "cube-root")
+    s.fetch_law = FetchLaw::cube_root;
+  else
+    r.fail("fetch_law", "expected \"hasselmann\" or \"cube-root\"");
+  if (normalization == "dnv")
+    s.normalization = JonswapNormalization::dnv;
+  else if (normalization == "exact")
+    s.normalization = JonswapNormalization::exact;
+  else
+    r.fail("normalization", "expected \"dnv\" or \"exact\"");
+  if (depth_factor == "exact")
+    s.depth_factor = DepthFactor::exact;
+  else if (depth_factor == "thompson-vincent")
+    s.depth_factor = DepthFactor::thompson_vincent;
+  else
+    r.fail("depth_factor", "expected \"exact\" or \"thompson-vincent\"");
   return r.finish();
 }
 
@@ -187,10 +206,9 @@ nlohmann::ordered_json to_json(const SimulationConfig& c) {
               {"normals", to_string(c.normals)},
               {"roughness", c.roughness},
               {"blue_channel", c.blue_channel == BlueChannel::foam ? "foam" : "jacobian"},
-              {"foam",
-               Json{{"jacobian_start", c.foam.jacobian_start},
-                    {"jacobian_full", c.foam.jacobian_full},
-                    {"decay_per_s", c.foam.decay_per_s}}}};
+              {"foam", Json{{"jacobian_start", c.foam.jacobian_start},
+                            {"jacobian_full", c.foam.jacobian_full},
+                            {"decay_per_s", c.foam.decay_per_s}}}};
 }
 
 Result<SimulationConfig> from_json(const nlohmann::ordered_json& document) {
@@ -219,13 +237,17 @@ Result<SimulationConfig> from_json(const nlohmann::ordered_json& document) {
   r.integer("seed", seed);
   if (resolution < 0 || resolution > 1 << 20) resolution = -1;
   c.resolution = static_cast<int>(resolution);
-  if (seed < 0) return invalid_argument("seed = " + std::to_string(seed) + " is out of range: must be >= 0");
+  if (seed < 0)
+    return invalid_argument("seed = " + std::to_string(seed) + " is out of range: must be >= 0");
   c.seed = static_cast<std::uint64_t>(seed);
   if (const Json* cascades = r.child("cascades_m")) {
-    if (!cascades->is_array()) return invalid_argument("cascades_m: expected an array of patch sizes in metres");
+    if (!cascades->is_array())
+      return invalid_argument("cascades_m: expected an array of patch sizes in metres");
     c.cascade_patch_sizes_m.clear();
     for (const Json& v : *cascades) {
-      if (!v.is_number()) return invalid_argument("cascades_m: expected numbers, got a " + std::string(v.type_name()));
+      if (!v.is_number())
+        return invalid_argument("cascades_m: expected numbers, got a " +
+                                std::string(v.type_name()));
       c.cascade_patch_sizes_m.push_back(v.get<double>());
     }
   }
@@ -246,9 +268,12 @@ Result<SimulationConfig> from_json(const nlohmann::ordered_json& document) {
   Result<NormalMethod> method = parse_normal_method(normals);
   if (!method.ok()) return method.status();
   c.normals = method.value();
-  if (blue == "foam") c.blue_channel = BlueChannel::foam;
-  else if (blue == "jacobian") c.blue_channel = BlueChannel::jacobian;
-  else return invalid_argument("blue_channel = '" + blue + "' is unknown: must be foam or jacobian");
+  if (blue == "foam")
+    c.blue_channel = BlueChannel::foam;
+  else if (blue == "jacobian")
+    c.blue_channel = BlueChannel::jacobian;
+  else
+    return invalid_argument("blue_channel = '" + blue + "' is unknown: must be foam or jacobian");
   if (Status s = validate(c); !s.ok()) return s;
   if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
   return c;
@@ -258,7 +283,8 @@ void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
   command.add_option("--preset", f.preset_path, "preset JSON file (see presets/)");
   command.add_option("--set", f.set, "override a preset key: --set sea.wind_sea.fetch_m=5e4");
   add_spectrum_flags(command, f.sea);
-  command.add_option("--resolution", f.resolution, "grid size N per cascade (power of two, 16-2048)");
+  command.add_option("--resolution", f.resolution,
+                     "grid size N per cascade (power of two, 16-2048)");
   command.add_option("--seed", f.seed, "random seed (integer)");
   command.add_option("--choppiness", f.choppiness, "horizontal displacement lambda >= 0");
   command.add_option("--cascades", f.cascades, "patch sizes L1,L2,... in metres, largest first");
@@ -295,9 +321,11 @@ Status apply_set(Json& doc, const std::string& assignment) {
   std::size_t start = 0;
   while (true) {
     const std::size_t dot = key.find('.', start);
-    const std::string part = key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const std::string part =
+        key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
     if (part.empty()) return invalid_argument("--set '" + assignment + "': empty key part");
-    if (!node->is_object()) return invalid_argument("--set " + key + ": '" + part + "' is not inside an object");
+    if (!node->is_object())
+      return invalid_argument("--set " + key + ": '" + part + "' is not inside an object");
     if (dot == std::string::npos) {
       (*node)[part] = value;
       return {};
@@ -336,8 +364,8 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
     c.sea.dispersion.gravity_mps2 = spectrum.value().gravity_mps2;
     c.sea.dispersion.depth_m = kInfiniteDepth;
   }
-  const std::pair<const std::string*, const char*> numbers[] = {
-      {&f.choppiness, "--choppiness"}, {&f.loop_period, "--loop-period"}};
+  const std::pair<const std::string*, const char*> numbers[] = {{&f.choppiness, "--choppiness"},
+                                                                {&f.loop_period, "--loop-period"}};
   for (const auto& [text, flag] : numbers) {
     if (text->empty()) continue;
     Result<double> v = parse_number(flag, *text);
@@ -348,7 +376,8 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
     Result<double> v = parse_number("--resolution", f.resolution);
     if (!v.ok()) return v.status();
     if (v.value() != std::floor(v.value()) || std::abs(v.value()) > 1e6) {
-      return invalid_argument("--resolution = " + f.resolution + " is out of range: must be a power of two in [16, 2048]");
+      return invalid_argument("--resolution = " + f.resolution +
+                              " is out of range: must be a power of two in [16, 2048]");
     }
     c.resolution = static_cast<int>(v.value());
   }

@@ -81,7 +81,9 @@ double max_imaginary_height(const InitialSpectrum& spectrum, double time_s, doub
 
 }  // namespace
 
-double cox_munk_mean_square_slope(double wind_speed_mps) { return 0.003 + 5.12e-3 * wind_speed_mps; }
+double cox_munk_mean_square_slope(double wind_speed_mps) {
+  return 0.003 + 5.12e-3 * wind_speed_mps;
+}
 
 Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int seeds,
                                            double time_s) {
@@ -192,17 +194,17 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
 
     // Imaginary residue of the height transform, independent of the backend: cascade 0's
     // spectrum exactly as CpuBackend::configure makes it (seed + 0x9e3779b9·0).
-    Result<InitialSpectrum> spectrum = make_initial_spectrum(
-        sea, {.grid = {.resolution = n, .patch_size_m = patch},
-              .seed = c.seed,
-              .convention = config.convention,
-              .loop_period_s = config.loop_period_s,
-              .k_min_radpm = band[0],
-              .k_max_radpm = band[1]});
+    Result<InitialSpectrum> spectrum =
+        make_initial_spectrum(sea, {.grid = {.resolution = n, .patch_size_m = patch},
+                                    .seed = c.seed,
+                                    .convention = config.convention,
+                                    .loop_period_s = config.loop_period_s,
+                                    .k_min_radpm = band[0],
+                                    .k_max_radpm = band[1]});
     if (!spectrum.ok()) return spectrum.status();
-    max_imag = std::max(max_imag, max_imaginary_height(spectrum.value(), time_s,
-                                                       config.loop_period_s, plan.value(),
-                                                       *runner));
+    max_imag =
+        std::max(max_imag, max_imaginary_height(spectrum.value(), time_s, config.loop_period_s,
+                                                plan.value(), *runner));
   }
 
   const double total = static_cast<double>(texels) * seeds;

@@ -20,13 +20,13 @@ struct SurfaceStats {
   int resolution = 0;
   double patch_size_m = 0.0;  ///< cascade 0's patch side L, m
   int cascades = 0;
-  int seeds = 0;                ///< realisations: seed, seed + 1, ..., seed + seeds − 1
+  int seeds = 0;  ///< realisations: seed, seed + 1, ..., seed + seeds − 1
   std::uint64_t first_seed = 0;
   double time_s = 0.0;
   double choppiness = 0.0;
   double loop_period_s = 0.0;
-  std::string model;                      ///< the wind sea's spectrum model
-  std::optional<double> wind_speed_mps;   ///< when the wind sea is given by wind speed
+  std::string model;                     ///< the wind sea's spectrum model
+  std::optional<double> wind_speed_mps;  ///< when the wind sea is given by wind speed
 
   // Significant wave height, m.
   /// 4·√(variance of h over the texels), the variance averaged over the seeds.

@@ -65,7 +65,7 @@ inline SeaStateParams default_sea_state() {
 
 struct SimulationConfig {
   SeaStateParams sea = default_sea_state();  ///< wave systems and dispersion
-  int resolution = 256;  ///< N per cascade, a power of two in [16, 2048]
+  int resolution = 256;                      ///< N per cascade, a power of two in [16, 2048]
   /// Patch side of each cascade, m, largest first. Non-integer ratios keep the patterns of the
   /// cascades from lining up (visible tiling). Each cascade synthesises one band of |k| (M.7.1).
   std::vector<double> cascade_patch_sizes_m = {1000.0, 233.0, 57.0};

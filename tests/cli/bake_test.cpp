@@ -10,6 +10,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cli/cli_run.hpp"
 #include "io/exr.hpp"
 #include "io/npy.hpp"
 #include "io/png_image.hpp"
@@ -20,20 +21,15 @@ namespace {
 namespace fs = std::filesystem;
 
 int run(const std::string& args, std::string* err = nullptr) {
-  const fs::path err_file = fs::temp_directory_path() / ("bake_err_" + std::to_string(::getpid()));
-  const std::string command = std::string(OCEAN_CLI_PATH) + " bake " + args + " >/dev/null 2>" + err_file.string();
-  const int status = std::system(command.c_str());
-  if (err != nullptr) {
-    std::ifstream in(err_file);
-    err->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
-  fs::remove(err_file);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  const ocean_test::CliRun r = ocean_test::run_cli("bake " + args);
+  if (err != nullptr) *err = r.err;
+  return r.exit_code;
 }
 
 struct TempDir {
   fs::path path;
-  explicit TempDir(const std::string& name) : path(fs::temp_directory_path() / (name + std::to_string(::getpid()))) {
+  explicit TempDir(const std::string& name)
+      : path(fs::temp_directory_path() / (name + std::to_string(::getpid()))) {
     fs::remove_all(path);
   }
   ~TempDir() { fs::remove_all(path); }
@@ -41,15 +37,18 @@ struct TempDir {
 
 std::size_t count_files(const fs::path& dir) {
   if (!fs::exists(dir)) return 0;
-  return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
+  return static_cast<std::size_t>(
+      std::distance(fs::directory_iterator(dir), fs::directory_iterator{}));
 }
 
 TEST(Bake, NpyMatchesTheSimulatorBitForBit) {
   TempDir dir("bake_npy_");
-  const std::string flags = "--wind-speed 12 --fetch 40000 --resolution 32 --cascades 200,47 --seed 3 --choppiness 0.7";
+  const std::string flags =
+      "--wind-speed 12 --fetch 40000 --resolution 32 --cascades 200,47 --seed 3 --choppiness 0.7";
   ASSERT_EQ(run(flags + " --out " + dir.path.string() + " --frames 2 --fps 10 --time 1.5"), 0);
   ocean::SimulationConfig c;
-  c.sea.wind_sea.spectrum = {.model = ocean::SpectrumModel::jonswap, .wind_speed_mps = 12, .fetch_m = 4e4};
+  c.sea.wind_sea.spectrum = {
+      .model = ocean::SpectrumModel::jonswap, .wind_speed_mps = 12, .fetch_m = 4e4};
   c.resolution = 32;
   c.cascade_patch_sizes_m = {200, 47};
   c.seed = 3;
@@ -63,7 +62,9 @@ TEST(Bake, NpyMatchesTheSimulatorBitForBit) {
     const auto d = ocean::io::read_npy(dir.path / ("displacement_" + stem + ".npy"));
     ASSERT_TRUE(d.ok()) << d.status().message();
     EXPECT_EQ(d.value().shape, (std::vector<std::size_t>{32, 32, 3}));
-    EXPECT_EQ(std::memcmp(d.value().data.data(), expected.displacement.data(), expected.displacement.size() * 4), 0);
+    EXPECT_EQ(std::memcmp(d.value().data.data(), expected.displacement.data(),
+                          expected.displacement.size() * 4),
+              0);
     const auto foam = ocean::io::read_npy(dir.path / ("foam_" + stem + ".npy")).value();
     EXPECT_EQ(foam.data, expected.foam);
     const auto mip5 = ocean::io::read_npy(dir.path / ("nfs_" + stem + "_mip5.npy")).value();
@@ -78,8 +79,11 @@ TEST(Bake, NpyMatchesTheSimulatorBitForBit) {
 
 TEST(Bake, LoopWritesOnePeriodAndEveryFormatReadsBack) {
   TempDir dir("bake_loop_");
-  ASSERT_EQ(run("--resolution 16 --cascades 50 --loop-period 2 --loop --fps 3 --format png --format exr "
-                "--out " + dir.path.string()), 0);
+  ASSERT_EQ(
+      run("--resolution 16 --cascades 50 --loop-period 2 --loop --fps 3 --format png --format exr "
+          "--out " +
+          dir.path.string()),
+      0);
   std::ifstream manifest(dir.path / "manifest.json");
   EXPECT_EQ(nlohmann::json::parse(manifest)["frames"].size(), 6u);
   const auto png = ocean::io::read_png(dir.path / "nfs_c0_f00005_mip1.png");
@@ -98,9 +102,11 @@ TEST(Bake, PresetAndOverrides) {
   TempDir dir("bake_preset_");
   fs::create_directories(dir.path);
   const fs::path preset = dir.path / "p.json";
-  std::ofstream(preset) << R"({"resolution": 16, "cascades_m": [40.0], "sea": {"wind_sea": {"wind_speed_mps": 7}}})";
-  ASSERT_EQ(run("--preset " + preset.string() + " --set choppiness=0.5 --set normals=analytic --out " +
-                (dir.path / "o").string()), 0);
+  std::ofstream(preset)
+      << R"({"resolution": 16, "cascades_m": [40.0], "sea": {"wind_sea": {"wind_speed_mps": 7}}})";
+  ASSERT_EQ(run("--preset " + preset.string() +
+                " --set choppiness=0.5 --set normals=analytic --out " + (dir.path / "o").string()),
+            0);
   std::ifstream manifest(dir.path / "o" / "manifest.json");
   const auto m = nlohmann::json::parse(manifest);
   EXPECT_EQ(m["config"]["resolution"], 16);
@@ -131,10 +137,13 @@ TEST(Bake, BadInputFailsCleanly) {
       {"--out " + out.string() + " --resolution 100", 2, "resolution"},
       {"--out " + out.string() + " --fps 0", 2, "--fps"},
       {"--out " + out.string() + " --time nan", 2, "--time"},
-      {"--out " + out.string() + " --preset " + bad_key.string(), 2, "sea.wind_sea.windspeed: unknown key"},
-      {"--out " + out.string() + " --preset " + bad_type.string(), 2, "resolution: expected an integer"},
+      {"--out " + out.string() + " --preset " + bad_key.string(), 2,
+       "sea.wind_sea.windspeed: unknown key"},
+      {"--out " + out.string() + " --preset " + bad_type.string(), 2,
+       "resolution: expected an integer"},
       {"--out " + out.string() + " --preset " + bad_json.string(), 2, "not valid JSON"},
-      {"--out " + out.string() + " --preset " + (dir.path / "missing.json").string(), 1, "cannot read preset"},
+      {"--out " + out.string() + " --preset " + (dir.path / "missing.json").string(), 1,
+       "cannot read preset"},
       {"--out " + out.string() + " --set nokey", 2, "key=value"},
       {"--out " + out.string() + " --backend vulkan", 1, "built without"},
       {"--out " + (bad_key / "sub").string(), 1, "cannot"},

@@ -12,31 +12,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli/cli_run.hpp"
+
 namespace {
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-CliRun run(const std::string& args) {
-  const std::filesystem::path err_file =
-      std::filesystem::temp_directory_path() / ("ocean_cli_test_" + std::to_string(::getpid()));
-  const std::string command = std::string(OCEAN_CLI_PATH) + " " + args + " 2>" + err_file.string();
-  CliRun r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    r.out.append(buffer.data(), n);
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_file);
-  r.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
-  std::filesystem::remove(err_file);
-  return r;
-}
+using ocean_test::CliRun;
+const auto run = ocean_test::run_cli;
 
 // xdyn BretschneiderSpectrumTest.cpp: Hs = 1, Tp = 5, ω = 1 → 0.034510725921325.
 TEST(Cli, SpectrumJsonMatchesPublishedValue) {

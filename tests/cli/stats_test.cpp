@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/cli_run.hpp"
 #include "ocean/fft.hpp"
 #include "surface_stats.hpp"
 
@@ -260,41 +261,35 @@ TEST(SurfaceStats, RejectsBadArguments) {
 
 // --- The command line --------------------------------------------------------------------------
 
-struct CliRun {
-  int exit_code = -1;
-  std::string out, err;
-};
-
-CliRun run(const std::string& args) {
-  const std::filesystem::path err_file = std::filesystem::temp_directory_path() /
-                                         ("ocean_stats_test_" + std::to_string(::getpid()));
-  const std::string command = std::string(OCEAN_CLI_PATH) + " " + args + " 2>" + err_file.string();
-  CliRun r;
-  FILE* pipe = ::popen(command.c_str(), "r");
-  if (pipe == nullptr) return r;
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0)
-    r.out.append(buffer.data(), n);
-  const int status = ::pclose(pipe);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream err(err_file);
-  r.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
-  std::filesystem::remove(err_file);
-  return r;
-}
+using ocean_test::CliRun;
+const auto run = ocean_test::run_cli;
 
 TEST(CliStats, JsonHasEveryKey) {
-  const CliRun r = run(
-      "stats --json --model pierson-moskowitz --wind-speed 8 --patch-size 800 --resolution 64 "
-      "--seeds 2");
+  const CliRun r =
+      run("stats --json --model pierson-moskowitz --wind-speed 8 --patch-size 800 --resolution 64 "
+          "--seeds 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  for (const char* key :
-       {"hs_measured_m", "hs_spectrum_m", "hs_closed_form_m", "mean_height_m", "height_skewness",
-        "height_kurtosis", "mean_square_slope", "cox_munk_mss", "folded_fraction", "min_jacobian",
-        "foam_coverage", "mean_foam", "max_imaginary_rel_hs", "loop_error_rel_hs", "resolution",
-        "patch_size_m", "seeds", "time_s", "choppiness", "model"}) {
+  for (const char* key : {"hs_measured_m",
+                          "hs_spectrum_m",
+                          "hs_closed_form_m",
+                          "mean_height_m",
+                          "height_skewness",
+                          "height_kurtosis",
+                          "mean_square_slope",
+                          "cox_munk_mss",
+                          "folded_fraction",
+                          "min_jacobian",
+                          "foam_coverage",
+                          "mean_foam",
+                          "max_imaginary_rel_hs",
+                          "loop_error_rel_hs",
+                          "resolution",
+                          "patch_size_m",
+                          "seeds",
+                          "time_s",
+                          "choppiness",
+                          "model"}) {
     EXPECT_TRUE(j.contains(key)) << key;
   }
   EXPECT_EQ(j["resolution"].get<int>(), 64);
@@ -309,9 +304,9 @@ TEST(CliStats, JsonHasEveryKey) {
 
 TEST(CliStats, NullsAndDefaults) {
   // Hs/Tp sea: no wind speed, no Cox–Munk; no loop: no loop error. Default patch 1000 m.
-  const CliRun r = run(
-      "stats --json --model jonswap --hs 2 --tp 8 --resolution 32 --seeds 1 --loop-period 0 "
-      "--time 2.5");
+  const CliRun r =
+      run("stats --json --model jonswap --hs 2 --tp 8 --resolution 32 --seeds 1 --loop-period 0 "
+          "--time 2.5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["cox_munk_mss"].is_null());
