@@ -1,9 +1,11 @@
 // Runs the built `ocean` binary with arguments and captures its exit code, stdout and stderr.
 #pragma once
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -35,6 +37,15 @@ inline CliRun run_cli(const std::string& args) {
   r.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
   std::filesystem::remove(err_file);
   return r;
+}
+
+/// The bad-input contract: exit 2, nothing on stdout, one line on stderr that mentions `says`.
+inline void expect_usage_error(const std::string& args, const std::string& says) {
+  const CliRun r = run_cli(args);
+  EXPECT_EQ(r.exit_code, 2) << args;
+  EXPECT_TRUE(r.out.empty()) << args << " printed: " << r.out;
+  EXPECT_NE(r.err.find(says), std::string::npos) << args << " said: " << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << " said: " << r.err;
 }
 
 }  // namespace ocean_test

@@ -343,13 +343,7 @@ TEST(CliStats, BadInputExitsTwoWithOneLineAndNoStdout) {
       {"stats --model pierson-moskowitz --wind-speed=-3", "--wind-speed = -3"},
       {"stats --no-such-flag", "no-such-flag"},
   };
-  for (const Case& c : cases) {
-    const CliRun r = run(c.args);
-    EXPECT_EQ(r.exit_code, 2) << c.args;
-    EXPECT_TRUE(r.out.empty()) << c.args << " printed: " << r.out;
-    EXPECT_NE(r.err.find(c.mentions), std::string::npos) << c.args << " said: " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << c.args << " said: " << r.err;
-  }
+  for (const Case& c : cases) ocean_test::expect_usage_error(c.args, c.mentions);
 }
 
 }  // namespace
