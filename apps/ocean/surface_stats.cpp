@@ -52,20 +52,9 @@ double max_imaginary_height(const InitialSpectrum& spectrum, double time_s, doub
                             const fft::Plan2D& plan, TaskRunner& runner) {
   const std::size_t count = spectrum.packed.size();
   std::vector<float> re(count), im(count);
-  const bool looping = loop_period_s > 0.0;
-  const double omega0 = looping ? 2.0 * kPi / loop_period_s : 0.0;
-  const double cycles = looping ? time_s / loop_period_s : 0.0;
-  const double tau = cycles - std::floor(cycles);
+  const EvolutionPhase phase_of(time_s, loop_period_s);
   for (std::size_t i = 0; i < count; ++i) {
-    double phase = 0.0;
-    if (looping) {
-      const auto harmonic =
-          static_cast<std::int32_t>(std::lround(static_cast<double>(spectrum.omega[i]) / omega0));
-      const double turns = harmonic * tau;
-      phase = 2.0 * kPi * (turns - std::floor(turns));
-    } else {
-      phase = std::fmod(static_cast<double>(spectrum.omega[i]) * time_s, 2.0 * kPi);
-    }
+    const double phase = phase_of(spectrum.omega[i]);
     const auto c = static_cast<float>(std::cos(phase));
     const auto s = static_cast<float>(std::sin(phase));
     const auto& p = spectrum.packed[i];
@@ -193,14 +182,8 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
     }
 
     // Imaginary residue of the height transform, independent of the backend: cascade 0's
-    // spectrum exactly as CpuBackend::configure makes it (seed + 0x9e3779b9·0).
-    Result<InitialSpectrum> spectrum =
-        make_initial_spectrum(sea, {.grid = {.resolution = n, .patch_size_m = patch},
-                                    .seed = c.seed,
-                                    .convention = config.convention,
-                                    .loop_period_s = config.loop_period_s,
-                                    .k_min_radpm = band[0],
-                                    .k_max_radpm = band[1]});
+    // spectrum exactly as the backends generate it.
+    Result<InitialSpectrum> spectrum = make_initial_spectrum(sea, cascade_spectrum_params(c, 0));
     if (!spectrum.ok()) return spectrum.status();
     max_imag =
         std::max(max_imag, max_imaginary_height(spectrum.value(), time_s, config.loop_period_s,

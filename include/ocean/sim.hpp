@@ -87,6 +87,10 @@ Status validate(const SimulationConfig& config);
 /// at half of cascade c−1's Nyquist wavenumber π·N/L (M.7.1). Rad/m.
 std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& config);
 
+/// How cascade `index` generates its spectrum: its grid, its band, and its own seed
+/// (seed + 0x9e3779b9·index, so cascades are independent realisations).
+InitialSpectrumParams cascade_spectrum_params(const SimulationConfig& config, std::size_t index);
+
 /// Number of texels in mip levels 0..log2 N of an N×N map: (4N² − 1)/3.
 std::size_t mip_chain_texels(int resolution);
 /// Offset of mip level m in the contiguous chain (seed 000 eq. 55).

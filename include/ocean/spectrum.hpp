@@ -64,6 +64,21 @@ class Dispersion {
 /// Loop-period quantisation ω' = ⌊ω/ω0⌋·ω0, ω0 = 2π/T  (seed 000 eq. 16, M.2.4). T > 0.
 double quantize_omega(double omega, double loop_period_s);
 
+/// The evolution phase ω'·t of every wave vector at one time, exact for arbitrarily large t
+/// (M.7.3): with a loop period T, ω' = j·2π/T and the phase is 2π·frac(j·frac(t/T)) in double
+/// precision; without one, ω·t mod 2π.
+class EvolutionPhase {
+ public:
+  EvolutionPhase(double time_s, double loop_period_s);
+  /// Phase in [0, 2π) for a (quantised, when looping) angular frequency, rad.
+  [[nodiscard]] double operator()(double omega) const;
+
+ private:
+  double time_s_;
+  double omega0_ = 0.0;  // 2π/T, 0 without a loop
+  double tau_ = 0.0;     // frac(t/T)
+};
+
 // ---------------------------------------------------------------------------------------------
 // One-sided frequency spectra S(ω) (docs/math.md §3)
 // ---------------------------------------------------------------------------------------------

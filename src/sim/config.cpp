@@ -78,6 +78,16 @@ std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& c) {
   return bands;
 }
 
+InitialSpectrumParams cascade_spectrum_params(const SimulationConfig& c, std::size_t index) {
+  const std::array<double, 2> band = cascade_bands(c)[index];
+  return {.grid = {.resolution = c.resolution, .patch_size_m = c.cascade_patch_sizes_m[index]},
+          .seed = c.seed + 0x9e3779b9ULL * index,
+          .convention = c.convention,
+          .loop_period_s = c.loop_period_s,
+          .k_min_radpm = band[0],
+          .k_max_radpm = band[1]};
+}
+
 std::size_t mip_chain_texels(int resolution) {
   const auto n = static_cast<std::size_t>(resolution);
   return (4 * n * n - 1) / 3;

@@ -103,4 +103,22 @@ double quantize_omega(double omega, double loop_period_s) {
   return std::floor(omega / omega0) * omega0;
 }
 
+EvolutionPhase::EvolutionPhase(double time_s, double loop_period_s) : time_s_(time_s) {
+  if (loop_period_s > 0.0) {
+    omega0_ = 2.0 * kPi / loop_period_s;
+    const double cycles = time_s / loop_period_s;
+    tau_ = cycles - std::floor(cycles);
+  }
+}
+
+double EvolutionPhase::operator()(double omega) const {
+  if (omega0_ > 0.0) {
+    // ω' is an exact multiple j of ω0: keep the integer so the phase stays exact (M.7.3).
+    const double harmonic = static_cast<double>(std::lround(omega / omega0_));
+    const double turns = harmonic * tau_;
+    return 2.0 * kPi * (turns - std::floor(turns));
+  }
+  return std::fmod(omega * time_s_, 2.0 * kPi);
+}
+
 }  // namespace ocean

@@ -13,7 +13,6 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   if (!sea.ok()) return sea.status();
   Result<fft::Plan2D> plan = fft::Plan2D::make(config.resolution);
   if (!plan.ok()) return plan.status();
-  const auto bands = cascade_bands(config);
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
   const auto texels =
       static_cast<std::size_t>(config.resolution) * static_cast<std::size_t>(config.resolution);
@@ -21,28 +20,13 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
     CascadeState& state = cascades[c];
     state.resolution = config.resolution;
     state.patch_size_m = config.cascade_patch_sizes_m[c];
-    Result<InitialSpectrum> spectrum = make_initial_spectrum(
-        sea.value(), {.grid = {.resolution = config.resolution, .patch_size_m = state.patch_size_m},
-                      .seed = config.seed + 0x9e3779b9ULL * c,
-                      .convention = config.convention,
-                      .loop_period_s = config.loop_period_s,
-                      .k_min_radpm = bands[c][0],
-                      .k_max_radpm = bands[c][1]});
+    Result<InitialSpectrum> spectrum =
+        make_initial_spectrum(sea.value(), cascade_spectrum_params(config, c));
     if (!spectrum.ok()) {
       return Status(spectrum.status().code(),
                     "cascade " + std::to_string(c) + ": " + spectrum.status().message());
     }
     state.spectrum = std::move(spectrum).value();
-    if (config.loop_period_s > 0.0) {
-      // ω' is an exact multiple of ω0 = 2π/T: keep the integer so the phase stays exact for
-      // any t (M.7.3).
-      const double omega0 = 2.0 * kPi / config.loop_period_s;
-      state.harmonic.resize(texels);
-      for (std::size_t i = 0; i < texels; ++i) {
-        state.harmonic[i] =
-            static_cast<std::int32_t>(std::lround(state.spectrum.omega[i] / omega0));
-      }
-    }
     build_plane_factors(state, config.normals, config.choppiness);
     const auto planes = static_cast<std::size_t>(plane_count(config.normals));
     state.plane_re.assign(planes, std::vector<float>(texels));

@@ -15,7 +15,6 @@ struct CascadeState {
   int resolution = 0;
   double patch_size_m = 0.0;
   InitialSpectrum spectrum;
-  std::vector<std::int32_t> harmonic;  ///< ω'/ω0 per wave vector when looping
   /// plane p's spectrum is factor[p][i]·h̃(k_i, t): the fields packed two per complex plane.
   std::vector<std::vector<std::complex<float>>> factor;
   std::vector<std::vector<float>> plane_re, plane_im;

@@ -55,22 +55,13 @@ void build_plane_factors(CascadeState& state, NormalMethod method, double choppi
 
 void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner& runner) {
   const int n = state.resolution;
-  const bool looping = loop_period_s > 0.0;
-  // τ = frac(t/T) in double; the phase of harmonic j is 2π·frac(j·τ): exact after days (M.7.3).
-  const double cycles = looping ? time_s / loop_period_s : 0.0;
-  const double tau = cycles - std::floor(cycles);
+  const EvolutionPhase phase_of(time_s, loop_period_s);  // exact after days (M.7.3)
   const std::size_t planes = state.factor.size();
   runner.parallel_for(
       static_cast<std::size_t>(n), 8, [&](std::size_t row_begin, std::size_t row_end) {
         for (std::size_t i = row_begin * static_cast<std::size_t>(n);
              i < row_end * static_cast<std::size_t>(n); ++i) {
-          double phase = 0.0;
-          if (looping) {
-            const double turns = state.harmonic[i] * tau;
-            phase = 2.0 * kPi * (turns - std::floor(turns));
-          } else {
-            phase = std::fmod(static_cast<double>(state.spectrum.omega[i]) * time_s, 2.0 * kPi);
-          }
+          const double phase = phase_of(state.spectrum.omega[i]);
           const float c = static_cast<float>(std::cos(phase));
           const float s = static_cast<float>(std::sin(phase));
           const auto& p = state.spectrum.packed[i];
