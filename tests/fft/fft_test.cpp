@@ -11,32 +11,13 @@
 #include <random>
 #include <vector>
 
+#include "fft/fft_test_util.hpp"
+
 namespace {
 
 using ocean::fft::SplitComplex;
-
-struct Signal {
-  std::vector<float> re, im;
-  explicit Signal(std::size_t n, std::uint64_t seed) : re(n), im(n) {
-    std::mt19937_64 rng(seed);
-    std::normal_distribution<float> g(0.0f, 1.0f);
-    for (std::size_t i = 0; i < n; ++i) {
-      re[i] = g(rng);
-      im[i] = g(rng);
-    }
-  }
-  SplitComplex view() { return {re.data(), im.data()}; }
-};
-
-// Root-mean-square error of ours against a reference, relative to the reference's RMS.
-double relative_rms(const Signal& ours, const std::vector<std::complex<double>>& ref) {
-  double err = 0.0, norm = 0.0;
-  for (std::size_t i = 0; i < ref.size(); ++i) {
-    err += std::norm(std::complex<double>(ours.re[i], ours.im[i]) - ref[i]);
-    norm += std::norm(ref[i]);
-  }
-  return std::sqrt(err / norm);
-}
+using ocean::fft::test::relative_rms;
+using ocean::fft::test::Signal;
 
 TEST(Fft1D, MatchesNaiveDft) {
   for (int n : {2, 4, 8, 16, 32, 64, 128, 256, 512}) {
@@ -67,17 +48,8 @@ TEST(Fft2D, MatchesFftwAtEverySize) {
   for (int n = 16; n <= 2048; n *= 2) {
     const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
     Signal a(count, 3), b(count, 4);
-    std::vector<std::complex<double>> ref_a(count), ref_b(count);
-    for (std::size_t i = 0; i < count; ++i) {
-      ref_a[i] = {a.re[i], a.im[i]};
-      ref_b[i] = {b.re[i], b.im[i]};
-    }
-    for (auto* ref : {&ref_a, &ref_b}) {
-      auto* data = reinterpret_cast<fftw_complex*>(ref->data());
-      fftw_plan p = fftw_plan_dft_2d(n, n, data, data, FFTW_BACKWARD, FFTW_ESTIMATE);
-      fftw_execute(p);
-      fftw_destroy_plan(p);
-    }
+    const auto ref_a = ocean::fft::test::fftw_inverse_2d(a, n);
+    const auto ref_b = ocean::fft::test::fftw_inverse_2d(b, n);
     const auto plan = ocean::fft::Plan2D::make(n).value();
     const SplitComplex planes[] = {a.view(), b.view()};
     plan.inverse(planes, *runner, false);

@@ -1,0 +1,160 @@
+// SIMD kernels of the lane-blocked inverse FFT: mixed radix-4/2 Stockham autosort stages on 16
+// interleaved signals, and the 16-row transposes with the (−1)^(x+y) shift. Compiled once per
+// instruction set by Highway and dispatched at run time.
+//
+// This work is based on:
+//   - Stockham, T. G. (1966) High-speed convolution and correlation; Cochran, W. T. et al. (1967)
+//     What is the fast Fourier transform? Proc. IEEE 55(10) (the autosort formulation).
+//   - Govindaraju, N. K. et al. (2008) High performance discrete Fourier transforms on graphics
+//     processors, SC'08 (the per-element indexing of a mixed-radix Stockham stage).
+//   - Seed 000 §3.6: twiddles hoisted into tables, dual-spectrum processing, sign correction.
+// Convention: x[n] = Σ_k X[k]·e^{+2πi·k·n/N} (docs/conventions.md).
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "fft/lane_kernels.cpp"
+#include "fft/lane_kernels.hpp"
+
+#include <hwy/foreach_target.h>  // IWYU pragma: keep
+#include <hwy/highway.h>
+
+HWY_BEFORE_NAMESPACE();
+namespace ocean::fft::detail {
+namespace HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// One stage a → b. Element j of the input (j < N/R) with its R−1 partners at distance N/R is
+// twiddled by w^r, w = e^{+2πi·k/(ns·R)}, k = j mod ns, combined by an R-point inverse DFT and
+// written to (j − k)·R + k + r·ns.
+template <int R>
+void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer b) {
+  const hn::ScalableTag<float> d;
+  const std::size_t step = hn::Lanes(d);
+  const int quarter = t.n / R;
+  const auto mask = static_cast<std::size_t>(s.ns - 1);
+  for (int jj = 0; jj < quarter; ++jj) {
+    const auto j = static_cast<std::size_t>(jj);
+    const std::size_t k = j & mask;
+    const std::size_t out0 = (j - k) * R + k;
+    const float* wr = t.twiddle_re + s.twiddle + k * (R - 1);
+    const float* wi = t.twiddle_im + s.twiddle + k * (R - 1);
+    const float* in_re[R];
+    const float* in_im[R];
+    float* out_re[R];
+    float* out_im[R];
+    for (int r = 0; r < R; ++r) {
+      const std::size_t src = (j + static_cast<std::size_t>(r * quarter)) * a.stride;
+      const std::size_t dst = (out0 + static_cast<std::size_t>(r * s.ns)) * b.stride;
+      in_re[r] = a.re + src, in_im[r] = a.im + src;
+      out_re[r] = b.re + dst, out_im[r] = b.im + dst;
+    }
+    if constexpr (R == 4) {
+      const auto w1r = hn::Set(d, wr[0]), w1i = hn::Set(d, wi[0]);
+      const auto w2r = hn::Set(d, wr[1]), w2i = hn::Set(d, wi[1]);
+      const auto w3r = hn::Set(d, wr[2]), w3i = hn::Set(d, wi[2]);
+      for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
+        const auto v0r = hn::LoadU(d, in_re[0] + l), v0i = hn::LoadU(d, in_im[0] + l);
+        const auto v1r = hn::LoadU(d, in_re[1] + l), v1i = hn::LoadU(d, in_im[1] + l);
+        const auto v2r = hn::LoadU(d, in_re[2] + l), v2i = hn::LoadU(d, in_im[2] + l);
+        const auto v3r = hn::LoadU(d, in_re[3] + l), v3i = hn::LoadU(d, in_im[3] + l);
+        // t_r = v_r·w^r
+        const auto t1r = hn::MulSub(v1r, w1r, hn::Mul(v1i, w1i));
+        const auto t1i = hn::MulAdd(v1r, w1i, hn::Mul(v1i, w1r));
+        const auto t2r = hn::MulSub(v2r, w2r, hn::Mul(v2i, w2i));
+        const auto t2i = hn::MulAdd(v2r, w2i, hn::Mul(v2i, w2r));
+        const auto t3r = hn::MulSub(v3r, w3r, hn::Mul(v3i, w3i));
+        const auto t3i = hn::MulAdd(v3r, w3i, hn::Mul(v3i, w3r));
+        // 4-point inverse DFT: X_q = Σ_r t_r·i^{rq}.
+        const auto a0r = hn::Add(v0r, t2r), a0i = hn::Add(v0i, t2i);
+        const auto a1r = hn::Sub(v0r, t2r), a1i = hn::Sub(v0i, t2i);
+        const auto a2r = hn::Add(t1r, t3r), a2i = hn::Add(t1i, t3i);
+        const auto a3r = hn::Sub(t3i, t1i), a3i = hn::Sub(t1r, t3r);  // i·(t1 − t3)
+        hn::StoreU(hn::Add(a0r, a2r), d, out_re[0] + l);
+        hn::StoreU(hn::Add(a0i, a2i), d, out_im[0] + l);
+        hn::StoreU(hn::Add(a1r, a3r), d, out_re[1] + l);
+        hn::StoreU(hn::Add(a1i, a3i), d, out_im[1] + l);
+        hn::StoreU(hn::Sub(a0r, a2r), d, out_re[2] + l);
+        hn::StoreU(hn::Sub(a0i, a2i), d, out_im[2] + l);
+        hn::StoreU(hn::Sub(a1r, a3r), d, out_re[3] + l);
+        hn::StoreU(hn::Sub(a1i, a3i), d, out_im[3] + l);
+      }
+    } else {
+      const auto w1r = hn::Set(d, wr[0]), w1i = hn::Set(d, wi[0]);
+      for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
+        const auto v0r = hn::LoadU(d, in_re[0] + l), v0i = hn::LoadU(d, in_im[0] + l);
+        const auto v1r = hn::LoadU(d, in_re[1] + l), v1i = hn::LoadU(d, in_im[1] + l);
+        const auto t1r = hn::MulSub(v1r, w1r, hn::Mul(v1i, w1i));
+        const auto t1i = hn::MulAdd(v1r, w1i, hn::Mul(v1i, w1r));
+        hn::StoreU(hn::Add(v0r, t1r), d, out_re[0] + l);
+        hn::StoreU(hn::Add(v0i, t1i), d, out_im[0] + l);
+        hn::StoreU(hn::Sub(v0r, t1r), d, out_re[1] + l);
+        hn::StoreU(hn::Sub(v0i, t1i), d, out_im[1] + l);
+      }
+    }
+  }
+}
+
+bool Stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
+  for (int i = 0; i < table.count; ++i) {
+    const Stage& s = table.stages[i];
+    if (s.radix == 4) {
+      StockhamStage<4>(table, s, a, b);
+    } else {
+      StockhamStage<2>(table, s, a, b);
+    }
+    const LaneBuffer swap = a;
+    a = b, b = swap;
+  }
+  return (table.count & 1) != 0;
+}
+
+void RowsToLanes(const float* src, std::size_t row_stride, int n, float* dst) {
+  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
+    const float* row = src + l * row_stride;
+    for (std::size_t c = 0; c < static_cast<std::size_t>(n); ++c) dst[c * kLanes + l] = row[c];
+  }
+}
+
+void LanesToRows(const float* src, int n, float* dst, std::size_t row_stride, bool sign_correct,
+                 int parity) {
+  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
+    float* row = dst + l * row_stride;
+    if (!sign_correct) {
+      for (std::size_t c = 0; c < static_cast<std::size_t>(n); ++c) row[c] = src[c * kLanes + l];
+      continue;
+    }
+    // (−1)^(x+y): even columns keep the row's sign, odd columns flip it (eq. 43).
+    const float even = ((static_cast<std::size_t>(parity) + l) & 1u) ? -1.0f : 1.0f;
+    for (std::size_t c = 0; c < static_cast<std::size_t>(n); c += 2) {
+      row[c] = src[c * kLanes + l] * even;
+      row[c + 1] = -src[(c + 1) * kLanes + l] * even;
+    }
+  }
+}
+
+const char* DispatchedTarget() { return hwy::TargetName(HWY_TARGET); }
+
+}  // namespace HWY_NAMESPACE
+}  // namespace ocean::fft::detail
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace ocean::fft::detail {
+
+HWY_EXPORT(Stockham);
+HWY_EXPORT(RowsToLanes);
+HWY_EXPORT(LanesToRows);
+HWY_EXPORT(DispatchedTarget);
+
+bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
+  return HWY_DYNAMIC_DISPATCH(Stockham)(table, a, b);
+}
+void rows_to_lanes(const float* src, std::size_t row_stride, int n, float* dst) {
+  HWY_DYNAMIC_DISPATCH(RowsToLanes)(src, row_stride, n, dst);
+}
+void lanes_to_rows(const float* src, int n, float* dst, std::size_t row_stride, bool sign_correct,
+                   int parity) {
+  HWY_DYNAMIC_DISPATCH(LanesToRows)(src, n, dst, row_stride, sign_correct, parity);
+}
+const char* dispatched_target() { return HWY_DYNAMIC_DISPATCH(DispatchedTarget)(); }
+
+}  // namespace ocean::fft::detail
+#endif

@@ -1,0 +1,48 @@
+// Internal: the SIMD kernels of the lane-blocked FFT (Highway, dispatched at run time to the best
+// instruction set of the CPU). A "lane buffer" holds 16 independent signals interleaved: element
+// j of signal l is re[j·stride + l], im[j·stride + l], so one element of all 16 signals is one
+// 64-byte line and every butterfly is a plain vector operation with a broadcast twiddle.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "ocean/fft.hpp"
+
+namespace ocean::fft::detail {
+
+/// Signals transformed together by one kernel call (one AVX-512 vector, two AVX2 vectors).
+inline constexpr int kLanes = 16;
+
+struct LaneBuffer {
+  float* re;
+  float* im;
+  std::size_t stride;  ///< floats between consecutive elements (≥ kLanes)
+};
+
+// Stage (ocean/fft.hpp): radix 4 or 2 on sub-transforms of length ns (product of the radices
+// of the previous stages); twiddles w^r, r = 1..radix−1, for k ∈ [0, ns) start at `twiddle`.
+
+struct StageTable {
+  int n;
+  const Stage* stages;
+  int count;
+  const float* twiddle_re;  ///< e^{+2πi·r·k/(ns·radix)}, [(k·(radix−1) + r − 1)] per stage
+  const float* twiddle_im;
+};
+
+/// Runs every stage, reading `a` and writing `b`, then back (a → b → a → ...). Natural order in
+/// and out. Returns true when the result ended in `b`.
+bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b);
+
+/// dst[c·kLanes + l] = src[l·row_stride + c] for c < n, l < kLanes (16 rows → lane layout).
+void rows_to_lanes(const float* src, std::size_t row_stride, int n, float* dst);
+/// dst[l·row_stride + c] = src[c·kLanes + l]·(−1)^(parity + l + c) when sign_correct, else
+/// copies: the inverse of rows_to_lanes with the (−1)^(x+y) shift folded in.
+void lanes_to_rows(const float* src, int n, float* dst, std::size_t row_stride, bool sign_correct,
+                   int parity);
+
+/// Name of the instruction set the kernels dispatch to ("AVX3", "AVX2", "SSE4", "EMU128", ...).
+const char* dispatched_target();
+
+}  // namespace ocean::fft::detail

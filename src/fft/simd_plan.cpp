@@ -1,0 +1,170 @@
+// The lane-blocked 2D inverse FFT: plans (stage list, hoisted twiddles), the column and row
+// passes over 16-line blocks, and the SIMD target controls.
+//
+// This work is based on:
+//   - Stockham autosort / Govindaraju et al. (2008): see lane_kernels.cpp.
+//   - Seed 000 §3.6.5: per-thread local buffers on the stack; eqs. 42–43 (sign correction).
+// Convention: x[n] = Σ_k X[k]·e^{+2πi·k·n/N} (docs/conventions.md).
+#include <hwy/targets.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+
+#include "fft/lane_kernels.hpp"
+#include "ocean/fft.hpp"
+
+namespace ocean::fft {
+
+static_assert(SimdPlan2D::kBlock == detail::kLanes);
+
+Result<SimdPlan2D> SimdPlan2D::make(int n) {
+  if (n < kBlock || n > kMaxSimdSize || !std::has_single_bit(static_cast<unsigned>(n))) {
+    return invalid_argument("FFT size = " + std::to_string(n) +
+                            " is out of range for the SIMD plan: must be a power of two in [" +
+                            std::to_string(kBlock) + ", " + std::to_string(kMaxSimdSize) + "]");
+  }
+  SimdPlan2D plan;
+  plan.n_ = n;
+  // Radix-4 stages, then one radix-2 stage when log2 N is odd.
+  int ns = 1;
+  std::size_t offset = 0;
+  while (ns < n) {
+    const int radix = (n / ns) % 4 == 0 ? 4 : 2;
+    plan.stages_.push_back({radix, ns, offset});
+    for (int k = 0; k < ns; ++k) {
+      for (int r = 1; r < radix; ++r) {  // w^r, w = e^{+2πi·k/(ns·radix)}, in double
+        const double angle =
+            2.0 * 3.14159265358979323846 * r * k / (static_cast<double>(ns) * radix);
+        plan.twiddle_re_.push_back(static_cast<float>(std::cos(angle)));
+        plan.twiddle_im_.push_back(static_cast<float>(std::sin(angle)));
+      }
+    }
+    offset += static_cast<std::size_t>(ns * (radix - 1));
+    ns *= radix;
+  }
+  return plan;
+}
+
+namespace {
+detail::StageTable table_of(int n, const std::vector<detail::Stage>& stages,
+                            const std::vector<float>& re, const std::vector<float>& im) {
+  return {n, stages.data(), static_cast<int>(stages.size()), re.data(), im.data()};
+}
+}  // namespace
+
+void SimdPlan2D::columns(SplitComplex plane, int block) const {
+  constexpr std::size_t kLanes = detail::kLanes;
+  alignas(64) float lane_re[kLanes * kMaxSimdSize];
+  alignas(64) float lane_im[kLanes * kMaxSimdSize];
+  const std::size_t origin = static_cast<std::size_t>(block) * kLanes;
+  for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
+    std::memcpy(lane_re + j * kLanes, plane.re + origin + j * static_cast<std::size_t>(n_),
+                kLanes * sizeof(float));
+    std::memcpy(lane_im + j * kLanes, plane.im + origin + j * static_cast<std::size_t>(n_),
+                kLanes * sizeof(float));
+  }
+  columns_from_lanes(lane_re, lane_im, plane, block);
+}
+
+void SimdPlan2D::columns_from_lanes(float* lane_re, float* lane_im, SplitComplex plane,
+                                    int block) const {
+  const detail::StageTable table = table_of(n_, stages_, twiddle_re_, twiddle_im_);
+  constexpr std::size_t kLanes = detail::kLanes;
+  // Contiguous ping-pong buffers: a column block read in place would stride by N floats, and
+  // power-of-two strides alias in the caches.
+  alignas(64) float scratch_re[kLanes * kMaxSimdSize];
+  alignas(64) float scratch_im[kLanes * kMaxSimdSize];
+  const detail::LaneBuffer a{lane_re, lane_im, kLanes};
+  const detail::LaneBuffer b{scratch_re, scratch_im, kLanes};
+  const detail::LaneBuffer result = detail::stockham(table, a, b) ? b : a;
+  const std::size_t origin = static_cast<std::size_t>(block) * kLanes;
+  for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
+    std::memcpy(plane.re + origin + j * static_cast<std::size_t>(n_), result.re + j * kLanes,
+                kLanes * sizeof(float));
+    std::memcpy(plane.im + origin + j * static_cast<std::size_t>(n_), result.im + j * kLanes,
+                kLanes * sizeof(float));
+  }
+}
+
+void SimdPlan2D::rows(SplitComplex plane, int block, float* out_re, float* out_im) const {
+  const detail::StageTable table = table_of(n_, stages_, twiddle_re_, twiddle_im_);
+  constexpr std::size_t kLanes = detail::kLanes;
+  const std::size_t origin =
+      static_cast<std::size_t>(block) * kLanes * static_cast<std::size_t>(n_);
+  const auto row_stride = static_cast<std::size_t>(n_);
+  detail::rows_to_lanes(plane.re + origin, row_stride, n_, out_re);
+  detail::rows_to_lanes(plane.im + origin, row_stride, n_, out_im);
+  // The 16 rows (16·N contiguous floats) now serve as the second lane buffer.
+  const detail::LaneBuffer y{out_re, out_im, kLanes};
+  const detail::LaneBuffer x{plane.re + origin, plane.im + origin, kLanes};
+  if (!detail::stockham(table, y, x)) return;  // even stage count: result in out
+  std::memcpy(out_re, x.re, kLanes * row_stride * sizeof(float));
+  std::memcpy(out_im, x.im, kLanes * row_stride * sizeof(float));
+}
+
+void SimdPlan2D::store_rows(const float* lane_re, const float* lane_im, SplitComplex plane,
+                            int block, bool sign_correct) const {
+  const std::size_t origin =
+      static_cast<std::size_t>(block) * detail::kLanes * static_cast<std::size_t>(n_);
+  const auto row_stride = static_cast<std::size_t>(n_);
+  const int parity = (block * kBlock) & 1;
+  detail::lanes_to_rows(lane_re, n_, plane.re + origin, row_stride, sign_correct, parity);
+  detail::lanes_to_rows(lane_im, n_, plane.im + origin, row_stride, sign_correct, parity);
+}
+
+void SimdPlan2D::inverse(std::span<const SplitComplex> planes, TaskRunner& runner,
+                         bool sign_correct) const {
+  const std::size_t count = planes.size();
+  const auto block_count = static_cast<std::size_t>(blocks());
+  // Every (plane, block) pair is independent within a pass.
+  runner.parallel_for(count * block_count, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      columns(planes[i / block_count], static_cast<int>(i % block_count));
+  });
+  runner.parallel_for(count * block_count, 1, [&](std::size_t begin, std::size_t end) {
+    alignas(64) float lane_re[kBlock * kMaxSimdSize];
+    alignas(64) float lane_im[kBlock * kMaxSimdSize];
+    for (std::size_t i = begin; i < end; ++i) {
+      const SplitComplex& plane = planes[i / block_count];
+      const int block = static_cast<int>(i % block_count);
+      rows(plane, block, lane_re, lane_im);
+      store_rows(lane_re, lane_im, plane, block, sign_correct);
+    }
+  });
+}
+
+namespace {
+// The CPU's targets, read once before any forcing narrows what Highway reports.
+const std::vector<std::int64_t>& all_targets() {
+  static const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+  return targets;
+}
+}  // namespace
+
+std::vector<std::string> simd_targets() {
+  std::vector<std::string> names;
+  for (const std::int64_t target : all_targets()) names.emplace_back(hwy::TargetName(target));
+  return names;  // ascending bit = best first on x86 and Arm
+}
+
+std::string active_simd_target() { return detail::dispatched_target(); }
+
+Status force_simd_target(std::string_view name) {
+  if (name.empty()) {
+    hwy::SetSupportedTargetsForTest(0);
+    return {};
+  }
+  std::string known;
+  for (const std::int64_t target : all_targets()) {
+    if (name == hwy::TargetName(target)) {
+      hwy::SetSupportedTargetsForTest(target);
+      return {};
+    }
+    known += std::string(known.empty() ? "" : ", ") + hwy::TargetName(target);
+  }
+  return invalid_argument("SIMD target = '" + std::string(name) +
+                          "' is not available on this CPU: must be one of " + known);
+}
+
+}  // namespace ocean::fft
