@@ -1,4 +1,4 @@
-// The CPU reference pipeline stage by stage on hand-made spectra: one wave vector gives the
+// The CPU scalar reference pipeline stage by stage on hand-made spectra: one wave vector gives the
 // analytic cosine and trochoid, a flat sea gives J = 1, foam accumulates and decays as
 // published, packing and smoothness follow seed 000 eqs. 49–55.
 #include <gtest/gtest.h>
@@ -70,6 +70,7 @@ struct Pipeline {
       planes[p] = {state.plane_re[p].data(), state.plane_im[p].data()};
     }
     plan.inverse({planes, state.plane_re.size()}, *runner, true);
+    ocean::cpu::assemble_displacement_reference(state, frame, *runner);
     ocean::cpu::finalize(state, config, dt, reset, frame, *runner);
     ocean::cpu::build_mips(state, frame, *runner);
   }

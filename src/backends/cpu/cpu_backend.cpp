@@ -1,5 +1,8 @@
-// CPU reference backend: configuration (spectra per cascade band, plans, buffers) and the
-// per-frame stage chain evolve → FFT → finalize → mips (seed 000 §4.2).
+// CPU backend: configuration (spectra per cascade band, plans, buffers) and the per-frame stage
+// chain (seed 000 §4.2). The default pipeline fuses the SIMD evolution into the column FFT and
+// the displacement assembly into the row FFT, over all cascades' 16-line blocks at once; the
+// scalar reference pipeline (evolve → radix-2 FFT → assemble) is kept as the oracle and for
+// external FFT engines. Both then share finalize and the mips.
 #include "cpu_backend.hpp"
 
 #include <cmath>
@@ -7,12 +10,81 @@
 
 namespace ocean::cpu {
 
+// Structure-of-arrays copies of the spectrum for the SIMD kernels, and the phase rate of each
+// texel: the harmonic index j = ω'/ω0 when looping (exact phase, M.7.3), ω/2π otherwise.
+void build_kernel_inputs(CascadeState& state, double loop_period_s) {
+  const std::size_t texels = state.spectrum.packed.size();
+  state.rate.resize(texels);
+  for (auto& component : state.packed_soa) component.resize(texels);
+  const double omega0 = loop_period_s > 0.0 ? 2.0 * kPi / loop_period_s : 0.0;
+  for (std::size_t i = 0; i < texels; ++i) {
+    const double omega = state.spectrum.omega[i];
+    state.rate[i] =
+        omega0 > 0.0 ? static_cast<double>(std::lround(omega / omega0)) : omega / (2.0 * kPi);
+    for (std::size_t c = 0; c < 4; ++c) state.packed_soa[c][i] = state.spectrum.packed[i][c];
+  }
+  state.factor_re.assign(state.factor.size(), std::vector<float>(texels));
+  state.factor_im.assign(state.factor.size(), std::vector<float>(texels));
+  for (std::size_t p = 0; p < state.factor.size(); ++p) {
+    for (std::size_t i = 0; i < texels; ++i) {
+      state.factor_re[p][i] = state.factor[p][i].real();
+      state.factor_im[p][i] = state.factor[p][i].imag();
+    }
+  }
+}
+
+EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s) {
+  EvolveArgs args;
+  args.n = state.resolution;
+  args.rate = state.rate.data();
+  if (loop_period_s > 0.0) {
+    const double cycles = time_s / loop_period_s;
+    args.clock = cycles - std::floor(cycles);  // frac(t/T)
+  } else {
+    args.clock = time_s;
+  }
+  for (std::size_t c = 0; c < 4; ++c) args.packed[c] = state.packed_soa[c].data();
+  args.planes = static_cast<int>(state.factor_re.size());
+  for (std::size_t p = 0; p < state.factor_re.size(); ++p) {
+    args.factor_re[p] = state.factor_re[p].data();
+    args.factor_im[p] = state.factor_im[p].data();
+  }
+  return args;
+}
+
+namespace {
+
+// (−1)^(x+y) on every plane, for FFT engines that do not fold it in (eq. 43).
+void apply_sign(CascadeState& state, TaskRunner& runner) {
+  const auto n = static_cast<std::size_t>(state.resolution);
+  runner.parallel_for(n, 8, [&](std::size_t row_begin, std::size_t row_end) {
+    for (std::size_t p = 0; p < state.plane_re.size(); ++p) {
+      for (std::size_t row = row_begin; row < row_end; ++row) {
+        float* re = state.plane_re[p].data() + row * n;
+        float* im = state.plane_im[p].data() + row * n;
+        for (std::size_t col = (row + 1) & 1u; col < n; col += 2)
+          re[col] = -re[col], im[col] = -im[col];
+      }
+    }
+  });
+}
+
+fft::SplitComplex plane_of(CascadeState& state, std::size_t p) {
+  return {state.plane_re[p].data(), state.plane_im[p].data()};
+}
+
+}  // namespace
+
 Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner) {
   if (Status s = validate(config); !s.ok()) return s;
+  if (options_.pipeline == CpuPipeline::external_fft && options_.fft == nullptr)
+    return invalid_argument("CPU backend: the external FFT pipeline needs an FFT engine");
   Result<SeaState> sea = SeaState::make(config.sea);
   if (!sea.ok()) return sea.status();
   Result<fft::Plan2D> plan = fft::Plan2D::make(config.resolution);
   if (!plan.ok()) return plan.status();
+  Result<fft::SimdPlan2D> simd_plan = fft::SimdPlan2D::make(config.resolution);
+  if (!simd_plan.ok()) return simd_plan.status();
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
   const auto texels =
       static_cast<std::size_t>(config.resolution) * static_cast<std::size_t>(config.resolution);
@@ -28,6 +100,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
     }
     state.spectrum = std::move(spectrum).value();
     build_plane_factors(state, config.normals, config.choppiness);
+    build_kernel_inputs(state, config.loop_period_s);
     const auto planes = static_cast<std::size_t>(plane_count(config.normals));
     state.plane_re.assign(planes, std::vector<float>(texels));
     state.plane_im.assign(planes, std::vector<float>(texels));
@@ -37,6 +110,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   config_ = config;
   runner_ = &runner;
   plan_ = std::move(plan).value();
+  simd_plan_ = std::move(simd_plan).value();
   cascades_ = std::move(cascades);
   has_stepped_ = false;
   return {};
@@ -59,21 +133,86 @@ void CpuBackend::allocate(Frame& frame) const {
   }
 }
 
+void CpuBackend::synthesise_fused(double time_s, Frame& out) {
+  const int n = config_.resolution;
+  const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
+  const std::size_t items = cascades_.size() * blocks;
+  constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
+  // Columns: every (cascade, column block) evolves h̃ once, then each plane's spectrum goes
+  // through the column FFT without leaving the thread's stack buffers.
+  runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
+    alignas(64) float h_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float h_im[kLane * fft::kMaxSimdSize];
+    alignas(64) float lane_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float lane_im[kLane * fft::kMaxSimdSize];
+    for (std::size_t item = begin; item < end; ++item) {
+      CascadeState& state = cascades_[item / blocks];
+      const int block = static_cast<int>(item % blocks);
+      const EvolveArgs args = evolve_args(state, time_s, config_.loop_period_s);
+      evolve_lanes(args, block, h_re, h_im);
+      for (std::size_t p = 0; p < state.plane_re.size(); ++p) {
+        apply_factor(args, static_cast<int>(p), block, h_re, h_im, lane_re, lane_im);
+        simd_plan_.columns_from_lanes(lane_re, lane_im, plane_of(state, p), block);
+      }
+    }
+  });
+  // Rows: the row FFT of planes 0 (h + i·Dx) and 1 (Dz + i·…) feeds the displacement assembly
+  // with the sign folded in; gradient planes (analytic normals) go back to row-major order.
+  runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
+    alignas(64) float p0_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float p0_im[kLane * fft::kMaxSimdSize];
+    alignas(64) float p1_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float p1_im[kLane * fft::kMaxSimdSize];
+    for (std::size_t item = begin; item < end; ++item) {
+      const std::size_t c = item / blocks;
+      CascadeState& state = cascades_[c];
+      const int block = static_cast<int>(item % blocks);
+      simd_plan_.rows(plane_of(state, 0), block, p0_re, p0_im);
+      simd_plan_.rows(plane_of(state, 1), block, p1_re, p1_im);
+      CascadeFrame& frame = out.cascades[c];
+      assemble_displacement(p0_re, p0_im, p1_re, n, block, frame.displacement.data(),
+                            frame.displacement_half.data());
+      if (state.plane_re.size() > 2) {
+        simd_plan_.store_rows(p1_re, p1_im, plane_of(state, 1), block, true);
+        for (std::size_t p = 2; p < state.plane_re.size(); ++p) {
+          simd_plan_.rows(plane_of(state, p), block, p0_re, p0_im);
+          simd_plan_.store_rows(p0_re, p0_im, plane_of(state, p), block, true);
+        }
+      }
+    }
+  });
+}
+
+void CpuBackend::synthesise_unfused(double time_s, Frame& out) {
+  for (std::size_t c = 0; c < cascades_.size(); ++c) {
+    CascadeState& state = cascades_[c];
+    evolve(state, time_s, config_.loop_period_s, *runner_);
+    fft::SplitComplex planes[fft::kMaxPlanes];
+    for (std::size_t p = 0; p < state.plane_re.size(); ++p) planes[p] = plane_of(state, p);
+    const std::span<const fft::SplitComplex> view{planes, state.plane_re.size()};
+    if (options_.pipeline == CpuPipeline::external_fft) {
+      options_.fft->inverse(view);
+      apply_sign(state, *runner_);
+    } else {
+      plan_.inverse(view, *runner_, true);
+    }
+    assemble_displacement_reference(state, out.cascades[c], *runner_);
+  }
+}
+
 void CpuBackend::step(double time_s, Frame& out) {
   // Foam accumulates over the time since the previous step; a first step or a jump back in
   // time starts it afresh.
   const bool reset_foam = !has_stepped_ || time_s < last_time_s_;
   const double dt = reset_foam ? 0.0 : time_s - last_time_s_;
+  if (options_.pipeline == CpuPipeline::fused_simd) {
+    synthesise_fused(time_s, out);
+  } else {
+    synthesise_unfused(time_s, out);
+  }
   for (std::size_t c = 0; c < cascades_.size(); ++c) {
-    CascadeState& state = cascades_[c];
-    evolve(state, time_s, config_.loop_period_s, *runner_);
-    fft::SplitComplex planes[fft::kMaxPlanes];
-    for (std::size_t p = 0; p < state.plane_re.size(); ++p) {
-      planes[p] = {state.plane_re[p].data(), state.plane_im[p].data()};
-    }
-    plan_.inverse({planes, state.plane_re.size()}, *runner_, true);
-    finalize(state, config_, dt, reset_foam, out.cascades[c], *runner_);
-    build_mips(state, out.cascades[c], *runner_);
+    finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
+    build_mips(cascades_[c], out.cascades[c], *runner_);
   }
   out.time_s = time_s;
   ++out.index;

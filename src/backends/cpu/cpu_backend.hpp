@@ -3,8 +3,10 @@
 #pragma once
 
 #include <complex>
+#include <span>
 #include <vector>
 
+#include "kernels.hpp"
 #include "ocean/fft.hpp"
 #include "ocean/sim.hpp"
 
@@ -18,6 +20,10 @@ struct CascadeState {
   /// plane p's spectrum is factor[p][i]·h̃(k_i, t): the fields packed two per complex plane.
   std::vector<std::vector<std::complex<float>>> factor;
   std::vector<std::vector<float>> plane_re, plane_im;
+  // Structure-of-arrays copies for the SIMD kernels (kernels.hpp).
+  std::vector<double> rate;          ///< phase rate: harmonic index or ω/2π
+  std::vector<float> packed_soa[4];  ///< S' components
+  std::vector<std::vector<float>> factor_re, factor_im;
   std::vector<float> foam;      ///< accumulated foam carried between frames
   std::vector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
 };
@@ -26,9 +32,18 @@ struct CascadeState {
 int plane_count(NormalMethod method);
 /// Fills state.factor for the configured method and choppiness (M.7.2).
 void build_plane_factors(CascadeState& state, NormalMethod method, double choppiness);
+/// Fills the structure-of-arrays inputs of the SIMD kernels (rate, packed_soa, factor_re/im)
+/// from the spectrum and the plane factors.
+void build_kernel_inputs(CascadeState& state, double loop_period_s);
+/// The evolution kernels' arguments for time t (M.7.3).
+EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s);
 /// Evolves h̃(k, t) with exact phase (M.6.5, M.7.3) and writes every plane's spectrum.
 void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner& runner);
-/// Displacement, half texture, gradients, normal, Jacobian, foam, base-level packing.
+/// Displacement float3 and half4 from the transformed planes (scalar reference, eq. 44).
+void assemble_displacement_reference(const CascadeState& state, CascadeFrame& out,
+                                     TaskRunner& runner);
+/// Gradients, normal, Jacobian, foam, base-level packing, from out.displacement (and the
+/// gradient planes in analytic mode).
 void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
               CascadeFrame& out, TaskRunner& runner);
 /// Box-filtered mip chain with normal-length smoothness (seed 000 eqs. 52–55).
@@ -41,17 +56,42 @@ float normal_length_from_roughness(float roughness);
 /// Normal length → smoothness, seed 000 eq. 53.
 float smoothness_from_normal_length(float length);
 
+/// A third-party FFT engine for baseline measurements: unnormalised inverse 2D transforms of
+/// N×N split-complex planes in place, without the (−1)^(x+y) shift.
+class ExternalFft {
+ public:
+  virtual ~ExternalFft() = default;
+  virtual void inverse(std::span<const fft::SplitComplex> planes) = 0;
+};
+
+enum class CpuPipeline {
+  fused_simd,        ///< SIMD evolution fused into the column FFT, assembly into the row FFT
+  scalar_reference,  ///< scalar evolution, radix-2 FFT, scalar assembly: the oracle
+  external_fft,      ///< as scalar_reference with the FFT replaced by an ExternalFft
+};
+
+struct CpuOptions {
+  CpuPipeline pipeline = CpuPipeline::fused_simd;
+  ExternalFft* fft = nullptr;  ///< required for external_fft; not owned
+};
+
 class CpuBackend final : public Backend {
  public:
+  explicit CpuBackend(CpuOptions options = {}) : options_(options) {}
   [[nodiscard]] std::string_view name() const override { return "cpu"; }
   Status configure(const SimulationConfig& config, TaskRunner& runner) override;
   void allocate(Frame& frame) const override;
   void step(double time_s, Frame& out) override;
 
  private:
+  void synthesise_fused(double time_s, Frame& out);
+  void synthesise_unfused(double time_s, Frame& out);
+
+  CpuOptions options_;
   SimulationConfig config_;
   TaskRunner* runner_ = nullptr;
   fft::Plan2D plan_;
+  fft::SimdPlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
   double last_time_s_ = 0.0;
   bool has_stepped_ = false;

@@ -141,8 +141,8 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
 
 }  // namespace
 
-void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
-              CascadeFrame& out, TaskRunner& runner) {
+void assemble_displacement_reference(const CascadeState& state, CascadeFrame& out,
+                                     TaskRunner& runner) {
   const int n = state.resolution;
   // Displacement assembly (eq. 44): the FFT already applied the sign and λ is in the spectra.
   runner.parallel_for(
@@ -157,6 +157,10 @@ void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, 
           out.displacement_half[4 * i + 3] = 0;
         }
       });
+}
+
+void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
+              CascadeFrame& out, TaskRunner& runner) {
   switch (config.normals) {
     case NormalMethod::central_difference:
       gradients_pass<NormalMethod::central_difference>(state, config, dt_s, reset_foam, out,

@@ -1,0 +1,41 @@
+// Internal: the SIMD kernels of the CPU backend's fused passes (Highway, dispatched at run time):
+// spectrum evolution straight into a column block of the FFT, and the displacement assembly
+// from a row block. Lane layout as in src/fft/lane_kernels.hpp: 16 lines interleaved.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+namespace ocean::cpu {
+
+/// Inputs of the evolution of one cascade, structure of arrays over the N×N texels.
+struct EvolveArgs {
+  int n = 0;
+  /// Phase in turns is frac(rate[i]·clock): rate = harmonic index j and clock = frac(t/T) when
+  /// looping (exact, M.7.3), rate = ω/2π and clock = t otherwise.
+  const double* rate = nullptr;
+  double clock = 0.0;
+  const float* packed[4] = {};  ///< S' components (M.6.5)
+  int planes = 0;
+  const float* factor_re[4] = {};  ///< plane p's spectrum is factor[p]·h̃ (M.7.2)
+  const float* factor_im[4] = {};
+};
+
+/// Evolves h̃(k, t) on columns [16·block, 16·block + 16) into lane layout: h_re/h_im[row·16 + l]
+/// for column 16·block + l (N·16 floats each, 64-byte aligned).
+void evolve_lanes(const EvolveArgs& args, int block, float* h_re, float* h_im);
+/// Plane `plane`'s spectrum factor[plane]·h̃ for the same block, lane layout (aligned).
+void apply_factor(const EvolveArgs& args, int plane, int block, const float* h_re,
+                  const float* h_im, float* lane_re, float* lane_im);
+
+/// Reference evolution of one texel with the same phase recipe in double precision and
+/// std::cos/std::sin (the oracle the SIMD kernel is tested against).
+void evolve_texel_reference(const EvolveArgs& args, std::size_t i, float* re, float* im);
+
+/// From a row block's transformed planes in lane layout (plane 0 = h + i·Dx, plane 1 = Dz + i·…)
+/// writes rows [16·block, 16·block + 16) of the displacement float3 and half4 maps, applying
+/// (−1)^(x+y) (eq. 43).
+void assemble_displacement(const float* h, const float* dx, const float* dz, int n, int block,
+                           float* displacement, std::uint16_t* displacement_half);
+
+}  // namespace ocean::cpu

@@ -1,0 +1,184 @@
+// The fused SIMD pipeline of the CPU backend against its scalar reference pipeline, on every
+// instruction set this CPU runs: the evolution kernel texel by texel, then whole frames
+// (displacement, half maps, normals, Jacobian, foam, packed mips) within stated bounds.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "cpu/cpu_backend.hpp"
+#include "cpu/kernels.hpp"
+#include "ocean/half.hpp"
+
+namespace {
+
+using ocean::cpu::CpuBackend;
+using ocean::cpu::CpuOptions;
+using ocean::cpu::CpuPipeline;
+
+// Bounds, relative to the significant wave height Hs of the cascade set (4·sqrt(m0) of the
+// summed displacement variance). Both pipelines round in float: different FFT orders and the
+// polynomial sin/cos (< 3e-8 absolute) give measured maxima of 2.6e-7·Hs (displacement),
+// 2.1e-7 (normals), 3.6e-7 (J), 7.7e-7 (foam) on AVX3/AVX2/SSE4/SSSE3/SCALAR; the bounds
+// leave about 4× headroom.
+constexpr double kDisplacementBound = 1e-6;  // max |ΔD| / Hs
+constexpr double kNormalBound = 1e-6;        // max |Δn| (unit vectors)
+constexpr double kJacobianBound = 2e-6;      // max |ΔJ|
+constexpr double kFoamBound = 4e-6;          // max |Δfoam| (a ramp of width 0.3 in J)
+constexpr int kPackedBound = 1;              // RGBA8 channels differ by at most one step
+
+template <typename Body>
+void for_each_target(Body body) {
+  for (const std::string& target : ocean::fft::simd_targets()) {
+    ASSERT_TRUE(ocean::fft::force_simd_target(target).ok());
+    SCOPED_TRACE("target " + target);
+    body();
+  }
+  ASSERT_TRUE(ocean::fft::force_simd_target("").ok());
+}
+
+ocean::Frame run(const ocean::SimulationConfig& config, CpuPipeline pipeline, int steps) {
+  CpuBackend backend(CpuOptions{.pipeline = pipeline});
+  auto runner = ocean::make_tbb_runner();
+  EXPECT_TRUE(backend.configure(config, *runner).ok());
+  ocean::Frame frame;
+  backend.allocate(frame);
+  for (int s = 0; s < steps; ++s) backend.step(1234.5 + 0.25 * s, frame);
+  return frame;
+}
+
+double hs_of(const ocean::Frame& frame) {
+  double m0 = 0.0;
+  std::size_t count = 0;
+  for (const auto& c : frame.cascades) {
+    for (std::size_t i = 1; i < c.displacement.size(); i += 3)
+      m0 += double(c.displacement[i]) * c.displacement[i];
+    count += c.displacement.size() / 3;
+  }
+  return 4.0 * std::sqrt(m0 / double(count) * double(frame.cascades.size()));
+}
+
+int channel(std::uint32_t v, int c) { return static_cast<int>((v >> (8 * c)) & 0xffu); }
+
+void expect_frames_agree(const ocean::Frame& fast, const ocean::Frame& ref) {
+  const double hs = hs_of(ref);
+  ASSERT_GT(hs, 0.0);
+  double d_err = 0, n_err = 0, j_err = 0, f_err = 0;
+  int p_err = 0, half_ulps = 0;
+  for (std::size_t c = 0; c < ref.cascades.size(); ++c) {
+    const auto& a = fast.cascades[c];
+    const auto& b = ref.cascades[c];
+    for (std::size_t i = 0; i < b.displacement.size(); ++i) {
+      d_err = std::max(d_err, std::abs(double(a.displacement[i]) - b.displacement[i]));
+      n_err = std::max(n_err, std::abs(double(a.normal[i]) - b.normal[i]));
+    }
+    for (std::size_t i = 0; i < b.jacobian.size(); ++i) {
+      j_err = std::max(j_err, std::abs(double(a.jacobian[i]) - b.jacobian[i]));
+      f_err = std::max(f_err, std::abs(double(a.foam[i]) - b.foam[i]));
+    }
+    for (std::size_t i = 0; i < b.packed_mips.size(); ++i) {
+      for (int ch = 0; ch < 4; ++ch)
+        p_err = std::max(p_err,
+                         std::abs(channel(a.packed_mips[i], ch) - channel(b.packed_mips[i], ch)));
+    }
+    // The half map is the float map converted with round-to-nearest-even, on every target.
+    for (std::size_t i = 0; i < b.displacement.size() / 3; ++i) {
+      for (std::size_t k = 0; k < 3; ++k) {
+        if (a.displacement_half[4 * i + k] != ocean::float_to_half(a.displacement[3 * i + k]))
+          ++half_ulps;
+      }
+      if (a.displacement_half[4 * i + 3] != 0) ++half_ulps;
+    }
+  }
+  EXPECT_LT(d_err / hs, kDisplacementBound) << "Hs = " << hs;
+  EXPECT_LT(n_err, kNormalBound);
+  EXPECT_LT(j_err, kJacobianBound);
+  EXPECT_LT(f_err, kFoamBound);
+  EXPECT_LE(p_err, kPackedBound);
+  EXPECT_EQ(half_ulps, 0);
+}
+
+TEST(CpuFused, EvolutionKernelMatchesScalarPhaseRecipe) {
+  for_each_target([] {
+    ocean::SimulationConfig config;
+    config.resolution = 64;
+    config.cascade_patch_sizes_m = {250.0};
+    for (double period : {200.0, 0.0}) {
+      config.loop_period_s = period;
+      ocean::cpu::CascadeState state;
+      state.resolution = 64;
+      state.patch_size_m = 250.0;
+      state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
+                                                    ocean::cascade_spectrum_params(config, 0))
+                           .value();
+      ocean::cpu::build_plane_factors(state, config.normals, config.choppiness);
+      ocean::cpu::build_kernel_inputs(state, period);
+      double amplitude = 0.0;
+      for (const auto& packed : state.spectrum.packed)
+        for (float v : packed) amplitude = std::max(amplitude, double(std::abs(v)));
+      // A time three days in: frac(t/T) when looping, t itself otherwise.
+      const ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(state, 259200.7, period);
+      alignas(64) float h_re[16 * 64], h_im[16 * 64], l_re[16 * 64], l_im[16 * 64];
+      double err = 0.0;
+      for (int block = 0; block < 4; ++block) {
+        ocean::cpu::evolve_lanes(args, block, h_re, h_im);
+        for (int p = 0; p < 2; ++p) {
+          ocean::cpu::apply_factor(args, p, block, h_re, h_im, l_re, l_im);
+          for (std::size_t row = 0; row < 64; ++row) {
+            for (std::size_t l = 0; l < 16; ++l) {
+              float re[4], im[4];
+              ocean::cpu::evolve_texel_reference(args, row * 64 + 16 * std::size_t(block) + l, re,
+                                                 im);
+              const auto pp = static_cast<std::size_t>(p);
+              err = std::max(err, double(std::abs(l_re[row * 16 + l] - re[pp])));
+              err = std::max(err, double(std::abs(l_im[row * 16 + l] - im[pp])));
+            }
+          }
+        }
+      }
+      // sin/cos to < 3e-8 absolute plus float rounding of the products: measured ≤ 4e-7 of the
+      // largest packed amplitude.
+      EXPECT_LT(err, 2e-6 * amplitude) << "loop period " << period;
+    }
+  });
+}
+
+TEST(CpuFused, FramesMatchScalarReference) {
+  for_each_target([] {
+    for (auto normals : {ocean::NormalMethod::central_difference, ocean::NormalMethod::analytic}) {
+      ocean::SimulationConfig config;
+      config.resolution = 64;
+      config.normals = normals;
+      SCOPED_TRACE(std::string(ocean::to_string(normals)));
+      expect_frames_agree(run(config, CpuPipeline::fused_simd, 3),
+                          run(config, CpuPipeline::scalar_reference, 3));
+    }
+  });
+}
+
+TEST(CpuFused, LargerGridsAndOtherSpectraMatchScalarReference) {
+  ocean::SimulationConfig config;
+  config.resolution = 256;
+  config.sea.wind_sea.spectrum = {.model = ocean::SpectrumModel::phillips, .wind_speed_mps = 12.0};
+  config.loop_period_s = 0.0;  // the non-looping phase path
+  expect_frames_agree(run(config, CpuPipeline::fused_simd, 2),
+                      run(config, CpuPipeline::scalar_reference, 2));
+  config.resolution = 512;
+  config.cascade_patch_sizes_m = {700.0};
+  config.sea.wind_sea.spectrum = {
+      .model = ocean::SpectrumModel::tma, .wind_speed_mps = 10.0, .fetch_m = 50e3, .depth_m = 15.0};
+  config.loop_period_s = 100.0;
+  expect_frames_agree(run(config, CpuPipeline::fused_simd, 2),
+                      run(config, CpuPipeline::scalar_reference, 2));
+}
+
+TEST(CpuFused, ExternalPipelineNeedsAnEngine) {
+  CpuBackend backend(CpuOptions{.pipeline = CpuPipeline::external_fft});
+  auto runner = ocean::make_serial_runner();
+  const ocean::Status s = backend.configure(ocean::SimulationConfig{}, *runner);
+  ASSERT_FALSE(s.ok());
+  EXPECT_NE(s.message().find("needs an FFT engine"), std::string::npos);
+}
+
+}  // namespace
