@@ -135,5 +135,8 @@ std::string active_simd_target();
 /// Restricts dispatch to one of simd_targets() — for tests and benchmarks of each instruction
 /// set; "" restores the best. Not thread-safe: call while no simulation runs.
 Status force_simd_target(std::string_view name);
+/// Measured single-thread peak of fused multiply-adds at the active instruction set, in
+/// GFLOP/s (2 flops per lane per FMA), over about `seconds` of work. Benchmarks only.
+double measure_fma_peak_gflops(double seconds = 0.1);
 
 }  // namespace ocean::fft

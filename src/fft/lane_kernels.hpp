@@ -44,5 +44,8 @@ void lanes_to_rows(const float* src, int n, float* dst, std::size_t row_stride, 
 
 /// Name of the instruction set the kernels dispatch to ("AVX3", "AVX2", "SSE4", "EMU128", ...).
 const char* dispatched_target();
+/// Runs `iterations` of ten independent vector FMA chains; returns their sum (to keep the work
+/// observable) and the vector's lane count.
+double fma_loop(std::size_t iterations, std::size_t* lanes);
 
 }  // namespace ocean::fft::detail

@@ -7,7 +7,9 @@
 // Convention: x[n] = Σ_k X[k]·e^{+2πi·k·n/N} (docs/conventions.md).
 #include <hwy/targets.h>
 
+#include <algorithm>
 #include <bit>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 
@@ -165,6 +167,21 @@ Status force_simd_target(std::string_view name) {
   }
   return invalid_argument("SIMD target = '" + std::string(name) +
                           "' is not available on this CPU: must be one of " + known);
+}
+
+double measure_fma_peak_gflops(double seconds) {
+  using Clock = std::chrono::steady_clock;
+  std::size_t lanes = 0, iterations = 1 << 16;
+  double best = 0.0, sink = 0.0, spent = 0.0;
+  while (spent < seconds) {  // best of repeated runs, growing until each takes ≥ 10 ms
+    const Clock::time_point start = Clock::now();
+    sink += detail::fma_loop(iterations, &lanes);
+    const double elapsed = std::chrono::duration<double>(Clock::now() - start).count();
+    spent += elapsed;
+    best = std::max(best, 20.0 * double(lanes) * double(iterations) / elapsed * 1e-9);
+    if (elapsed < 0.01) iterations *= 2;
+  }
+  return sink == 0.12345 ? 0.0 : best;  // the comparison keeps the sum alive
 }
 
 }  // namespace ocean::fft

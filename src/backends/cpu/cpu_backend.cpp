@@ -5,6 +5,8 @@
 // external FFT engines. Both then share finalize and the mips.
 #include "cpu_backend.hpp"
 
+#include <bit>
+#include <chrono>
 #include <cmath>
 #include <string>
 
@@ -112,6 +114,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   plan_ = std::move(plan).value();
   simd_plan_ = std::move(simd_plan).value();
   cascades_ = std::move(cascades);
+  surface_args_.assign(cascades_.size(), SurfaceArgs{});
   has_stepped_ = false;
   return {};
 }
@@ -131,6 +134,20 @@ void CpuBackend::allocate(Frame& frame) const {
     f.foam.assign(texels, 0.0f);
     f.packed_mips.assign(mip_chain_texels(config_.resolution), 0u);
   }
+}
+
+std::size_t CpuBackend::state_bytes_per_cascade() const {
+  if (cascades_.empty()) return 0;
+  const CascadeState& s = cascades_.front();
+  const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
+  std::size_t total = bytes(s.spectrum.packed) + bytes(s.spectrum.omega) + bytes(s.spectrum.h0) +
+                      bytes(s.rate) + bytes(s.foam) + bytes(s.mip_work);
+  for (const auto& v : s.packed_soa) total += bytes(v);
+  for (std::size_t p = 0; p < s.factor.size(); ++p) {
+    total += bytes(s.factor[p]) + bytes(s.factor_re[p]) + bytes(s.factor_im[p]) +
+             bytes(s.plane_re[p]) + bytes(s.plane_im[p]);
+  }
+  return total;
 }
 
 void CpuBackend::synthesise_fused(double time_s, Frame& out) {
@@ -183,6 +200,53 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   });
 }
 
+void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
+  const int n = config_.resolution;
+  const float base_length = normal_length_from_roughness(static_cast<float>(config_.roughness));
+  std::vector<SurfaceArgs>& args = surface_args_;  // sized at configure: no allocation here
+  for (std::size_t c = 0; c < cascades_.size(); ++c) {
+    CascadeState& state = cascades_[c];
+    CascadeFrame& frame = out.cascades[c];
+    args[c] = {.n = n,
+               .displacement = frame.displacement.data(),
+               .inv_spacing = static_cast<float>(n / state.patch_size_m),  // eq. 45
+               .base_length = base_length,
+               .smoothness = smoothness_from_normal_length(base_length),
+               .jacobian_start = static_cast<float>(config_.foam.jacobian_start),
+               .jacobian_range =
+                   static_cast<float>(config_.foam.jacobian_start - config_.foam.jacobian_full),
+               .decay = static_cast<float>(config_.foam.decay_per_s * dt_s),
+               .reset_foam = reset_foam,
+               .blue_is_foam = config_.blue_channel == BlueChannel::foam,
+               .foam_state = state.foam.data(),
+               .jacobian = frame.jacobian.data(),
+               .foam = frame.foam.data(),
+               .normal = frame.normal.data(),
+               .mip_work = state.mip_work.data(),
+               .packed = frame.packed_mips.data()};
+  }
+  const auto rows = static_cast<std::size_t>(n);
+  runner_->parallel_for(cascades_.size() * rows, 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      surface_row_central(args[i / rows], static_cast<int>(i % rows));
+  });
+}
+
+void CpuBackend::mips_fused(Frame& out) {
+  const int n = config_.resolution;
+  const int levels = std::countr_zero(static_cast<unsigned>(n));
+  for (int level = 1; level <= levels; ++level) {  // each level reads the finished one above
+    const auto rows = static_cast<std::size_t>(n >> level);
+    runner_->parallel_for(cascades_.size() * rows, 8, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::size_t c = i / rows;
+        mip_row(n, level, static_cast<int>(i % rows), cascades_[c].mip_work.data(),
+                out.cascades[c].packed_mips.data());
+      }
+    });
+  }
+}
+
 void CpuBackend::synthesise_unfused(double time_s, Frame& out) {
   for (std::size_t c = 0; c < cascades_.size(); ++c) {
     CascadeState& state = cascades_[c];
@@ -205,15 +269,31 @@ void CpuBackend::step(double time_s, Frame& out) {
   // time starts it afresh.
   const bool reset_foam = !has_stepped_ || time_s < last_time_s_;
   const double dt = reset_foam ? 0.0 : time_s - last_time_s_;
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
   if (options_.pipeline == CpuPipeline::fused_simd) {
     synthesise_fused(time_s, out);
   } else {
     synthesise_unfused(time_s, out);
   }
-  for (std::size_t c = 0; c < cascades_.size(); ++c) {
-    finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
-    build_mips(cascades_[c], out.cascades[c], *runner_);
+  const Clock::time_point synthesised = Clock::now();
+  if (options_.pipeline == CpuPipeline::fused_simd &&
+      config_.normals == NormalMethod::central_difference) {
+    surface_fused(dt, reset_foam, out);
+  } else {
+    for (std::size_t c = 0; c < cascades_.size(); ++c)
+      finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
   }
+  const Clock::time_point finalized = Clock::now();
+  if (options_.pipeline == CpuPipeline::fused_simd) {
+    mips_fused(out);
+  } else {
+    for (std::size_t c = 0; c < cascades_.size(); ++c)
+      build_mips(cascades_[c], out.cascades[c], *runner_);
+  }
+  const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+  times_ = {seconds(synthesised - start), seconds(finalized - synthesised),
+            seconds(Clock::now() - finalized)};
   out.time_s = time_s;
   ++out.index;
   last_time_s_ = time_s;

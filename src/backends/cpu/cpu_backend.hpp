@@ -75,6 +75,13 @@ struct CpuOptions {
   ExternalFft* fft = nullptr;  ///< required for external_fft; not owned
 };
 
+/// Wall time of the stages of the last step, seconds.
+struct StageTimes {
+  double synthesis_s = 0.0;  ///< evolution + FFT + displacement assembly
+  double finalize_s = 0.0;   ///< gradients, normals, Jacobian, foam, base-level packing
+  double mips_s = 0.0;       ///< mip chain
+};
+
 class CpuBackend final : public Backend {
  public:
   explicit CpuBackend(CpuOptions options = {}) : options_(options) {}
@@ -82,10 +89,16 @@ class CpuBackend final : public Backend {
   Status configure(const SimulationConfig& config, TaskRunner& runner) override;
   void allocate(Frame& frame) const override;
   void step(double time_s, Frame& out) override;
+  [[nodiscard]] const StageTimes& last_stage_times() const { return times_; }
+  /// Bytes of the state kept for one cascade (spectra, kernel inputs, planes, foam, mip work),
+  /// not counting the frame the caller owns.
+  [[nodiscard]] std::size_t state_bytes_per_cascade() const;
 
  private:
   void synthesise_fused(double time_s, Frame& out);
   void synthesise_unfused(double time_s, Frame& out);
+  void surface_fused(double dt_s, bool reset_foam, Frame& out);
+  void mips_fused(Frame& out);
 
   CpuOptions options_;
   SimulationConfig config_;
@@ -93,6 +106,8 @@ class CpuBackend final : public Backend {
   fft::Plan2D plan_;
   fft::SimdPlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
+  std::vector<SurfaceArgs> surface_args_;
+  StageTimes times_;
   double last_time_s_ = 0.0;
   bool has_stepped_ = false;
 };

@@ -18,7 +18,9 @@
 
 #include <cmath>
 
+#include "cpu/cpu_backend.hpp"
 #include "ocean/half.hpp"
+#include "ocean/sim.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace ocean::cpu {
@@ -131,6 +133,145 @@ void AssembleDisplacement(const float* h, const float* dx, const float* dz, int 
   }
 }
 
+// Quantises [0, 1] to 8 bits as ⌊saturate(v)·255 + 0.5⌋ (eq. 50).
+template <class DF, class V>
+HWY_INLINE auto Quantise(DF df, V v) {
+  const auto clamped = hn::Min(hn::Max(v, hn::Zero(df)), hn::Set(df, 1.0f));
+  return hn::ConvertTo(hn::RebindToSigned<DF>(),
+                       hn::MulAdd(clamped, hn::Set(df, 255.0f), hn::Set(df, 0.5f)));
+}
+
+void SurfaceRowCentral(const SurfaceArgs& a, int row_int) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const std::size_t step = hn::Lanes(df);
+  const auto n = static_cast<std::size_t>(a.n);
+  const auto mask = static_cast<int>(n) - 1;
+  const auto row = static_cast<std::size_t>(row_int);
+  const float* up = a.displacement + 3 * n * static_cast<std::size_t>((row_int - 1) & mask);
+  const float* centre = a.displacement + 3 * n * row;
+  const float* down = a.displacement + 3 * n * static_cast<std::size_t>((row_int + 1) & mask);
+  // The centre row deinterleaved with one wrapped texel on each side (eq. 46).
+  alignas(64) float padded[3][2048 + 2];
+  for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t k = 0; k < 3; ++k) padded[k][c + 1] = centre[3 * c + k];
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    padded[k][0] = padded[k][n];
+    padded[k][n + 1] = padded[k][1];
+  }
+  const auto half_inv = hn::Set(df, 0.5f);
+  const auto inv = hn::Set(df, a.inv_spacing);
+  const auto one = hn::Set(df, 1.0f), zero = hn::Zero(df);
+  const auto base_length = hn::Set(df, a.base_length);
+  const auto j_start = hn::Set(df, a.jacobian_start), j_range = hn::Set(df, a.jacobian_range);
+  const auto decay = hn::Set(df, a.decay);
+  const auto alpha =
+      hn::ShiftLeft<24>(Quantise(df, hn::Set(df, a.smoothness)));  // constant smoothness
+  for (std::size_t c = 0; c < n; c += step) {
+    // ∂/∂x from the padded centre row, ∂/∂z from the rows above and below (eq. 45).
+    const auto gx = [&](std::size_t k) {
+      return hn::Mul(
+          hn::Mul(hn::Sub(hn::LoadU(df, padded[k] + c + 2), hn::LoadU(df, padded[k] + c)),
+                  half_inv),
+          inv);
+    };
+    decltype(hn::Zero(df)) u0, u1, u2, d0, d1, d2;
+    hn::LoadInterleaved3(df, up + 3 * c, u0, u1, u2);
+    hn::LoadInterleaved3(df, down + 3 * c, d0, d1, d2);
+    const auto dx_dx = gx(0), h_dx = gx(1), dz_dx = gx(2);
+    const auto dx_dz = hn::Mul(hn::Mul(hn::Sub(d0, u0), half_inv), inv);
+    const auto h_dz = hn::Mul(hn::Mul(hn::Sub(d1, u1), half_inv), inv);
+    const auto dz_dz = hn::Mul(hn::Mul(hn::Sub(d2, u2), half_inv), inv);
+    // Jacobian (eq. 48) and the normal of the displaced surface (M.7.5).
+    const auto jxx = hn::Add(one, dx_dx), jzz = hn::Add(one, dz_dz);
+    const auto jac = hn::Sub(hn::Mul(jxx, jzz), hn::Mul(dx_dz, dz_dx));
+    auto nx = hn::Sub(hn::Mul(h_dz, dz_dx), hn::Mul(jzz, h_dx));
+    auto ny = jac;
+    auto nz = hn::Sub(hn::Mul(dx_dz, h_dx), hn::Mul(h_dz, jxx));
+    const auto length =
+        hn::Sqrt(hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz)));
+    const auto valid = hn::Gt(length, zero);
+    const auto safe = hn::IfThenElse(valid, length, one);
+    nx = hn::IfThenElseZero(valid, hn::Div(nx, safe));
+    ny = hn::IfThenElse(valid, hn::Div(ny, safe), one);
+    nz = hn::IfThenElseZero(valid, hn::Div(nz, safe));
+    // Foam ramp and accumulation (M.7.4).
+    const std::size_t i = row * n + c;
+    const auto now = hn::Min(hn::Max(hn::Div(hn::Sub(j_start, jac), j_range), zero), one);
+    auto foam = now;
+    if (!a.reset_foam) {
+      const auto accumulated =
+          hn::Sub(hn::LoadU(df, a.foam_state + i), hn::Div(decay, hn::Max(now, hn::Set(df, 0.5f))));
+      foam = hn::Min(hn::Max(hn::Max(accumulated, now), zero), one);
+    }
+    hn::StoreU(foam, df, a.foam_state + i);
+    hn::StoreU(jac, df, a.jacobian + i);
+    hn::StoreU(foam, df, a.foam + i);
+    hn::StoreInterleaved3(nx, ny, nz, df, a.normal + 3 * i);
+    const auto blue =
+        a.blue_is_foam
+            ? foam
+            : hn::Min(hn::Max(hn::MulAdd(jac, hn::Set(df, 0.5f), hn::Set(df, 0.5f)), zero), one);
+    hn::StoreInterleaved4(hn::Mul(nx, base_length), hn::Mul(ny, base_length),
+                          hn::Mul(nz, base_length), blue, df, a.mip_work + 4 * i);
+    const auto rgba = hn::Or(
+        hn::Or(
+            Quantise(df, hn::MulAdd(nx, hn::Set(df, 0.5f), hn::Set(df, 0.5f))),
+            hn::ShiftLeft<8>(Quantise(df, hn::MulAdd(nz, hn::Set(df, 0.5f), hn::Set(df, 0.5f))))),
+        hn::Or(hn::ShiftLeft<16>(Quantise(df, blue)), alpha));
+    hn::StoreU(rgba, di, reinterpret_cast<std::int32_t*>(a.packed + i));
+  }
+}
+
+void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
+  const hn::ScalableTag<float> df;
+  const hn::RebindToSigned<decltype(df)> di;
+  const auto size = static_cast<std::size_t>(n >> level);
+  const auto row = static_cast<std::size_t>(row_int);
+  const std::size_t src_size = 2 * size;
+  const float* src0 = work + 4 * (mip_offset(n, level - 1) + 2 * row * src_size);
+  const float* src1 = src0 + 4 * src_size;
+  const std::size_t dst = mip_offset(n, level) + row * size;
+  // 2×2 sums (eq. 52), deinterleaved into structure-of-arrays for the vector part.
+  alignas(64) float sum[4][1024];
+  for (std::size_t c = 0; c < size; ++c) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      sum[k][c] = 0.25f * (((src0[8 * c + k] + src0[8 * c + 4 + k]) + src1[8 * c + k]) +
+                           src1[8 * c + 4 + k]);
+    }
+  }
+  const std::size_t step = hn::Lanes(df);
+  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), half = hn::Set(df, 0.5f);
+  std::size_t c = 0;
+  for (; c + step <= size; c += step) {
+    const auto x = hn::LoadU(df, sum[0] + c), y = hn::LoadU(df, sum[1] + c);
+    const auto z = hn::LoadU(df, sum[2] + c), b = hn::LoadU(df, sum[3] + c);
+    const auto length = hn::Sqrt(hn::MulAdd(x, x, hn::MulAdd(y, y, hn::Mul(z, z))));
+    // Smoothness from the length (eq. 53), as smoothness_from_normal_length().
+    const auto t =
+        hn::Min(hn::Max(hn::MulSub(hn::Set(df, 3.0f), length, hn::Set(df, 2.0f)), zero), one);
+    const auto r = hn::Mul(hn::Sub(one, t), hn::MulAdd(hn::Set(df, 0.15f), t, one));
+    const auto smoothness = hn::Sub(one, hn::Sqrt(r));
+    const auto valid = hn::Gt(length, zero);
+    const auto inv = hn::IfThenElseZero(valid, hn::Div(one, hn::IfThenElse(valid, length, one)));
+    const auto rgba = hn::Or(
+        hn::Or(Quantise(df, hn::MulAdd(hn::Mul(x, inv), half, half)),
+               hn::ShiftLeft<8>(Quantise(df, hn::MulAdd(hn::Mul(z, inv), half, half)))),
+        hn::Or(hn::ShiftLeft<16>(Quantise(df, b)), hn::ShiftLeft<24>(Quantise(df, smoothness))));
+    hn::StoreU(rgba, di, reinterpret_cast<std::int32_t*>(packed + dst + c));
+    hn::StoreInterleaved4(x, y, z, b, df, work + 4 * (dst + c));
+  }
+  for (; c < size; ++c) {  // rows narrower than a vector
+    float* v = work + 4 * (dst + c);
+    for (std::size_t k = 0; k < 4; ++k) v[k] = sum[k][c];
+    const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    const float inv = length > 0.0f ? 1.0f / length : 0.0f;
+    packed[dst + c] =
+        pack_rgba8(v[0] * inv, v[2] * inv, v[3], smoothness_from_normal_length(length));
+  }
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ocean::cpu
 HWY_AFTER_NAMESPACE();
@@ -141,6 +282,16 @@ namespace ocean::cpu {
 HWY_EXPORT(EvolveLanes);
 HWY_EXPORT(ApplyFactor);
 HWY_EXPORT(AssembleDisplacement);
+HWY_EXPORT(SurfaceRowCentral);
+HWY_EXPORT(MipRow);
+
+void mip_row(int n, int level, int row, float* work, std::uint32_t* packed) {
+  HWY_DYNAMIC_DISPATCH(MipRow)(n, level, row, work, packed);
+}
+
+void surface_row_central(const SurfaceArgs& args, int row) {
+  HWY_DYNAMIC_DISPATCH(SurfaceRowCentral)(args, row);
+}
 
 void evolve_lanes(const EvolveArgs& args, int block, float* h_re, float* h_im) {
   HWY_DYNAMIC_DISPATCH(EvolveLanes)(args, block, h_re, h_im);

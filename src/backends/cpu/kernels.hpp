@@ -38,4 +38,32 @@ void evolve_texel_reference(const EvolveArgs& args, std::size_t i, float* re, fl
 void assemble_displacement(const float* h, const float* dx, const float* dz, int n, int block,
                            float* displacement, std::uint16_t* displacement_half);
 
+/// Inputs and outputs of the surface pass (gradients by central differences, normal, Jacobian,
+/// foam, base level of the packed map) of one cascade.
+struct SurfaceArgs {
+  int n = 0;
+  const float* displacement = nullptr;  ///< float3 (Dx, h, Dz) per texel
+  float inv_spacing = 0.0f;             ///< N/L
+  float base_length = 1.0f;             ///< normal length for the base roughness (eq. 49)
+  float smoothness = 0.0f;              ///< smoothness of the base level (eq. 53)
+  float jacobian_start = 0.8f, jacobian_range = 0.3f, decay = 0.0f;  ///< foam ramp (M.7.4)
+  bool reset_foam = true;
+  bool blue_is_foam = true;
+  float* foam_state = nullptr;  ///< accumulated foam, read and written
+  float* jacobian = nullptr;
+  float* foam = nullptr;
+  float* normal = nullptr;          ///< float3
+  float* mip_work = nullptr;        ///< float4 level 0 (n·len, blue)
+  std::uint32_t* packed = nullptr;  ///< RGBA8 level 0
+};
+
+/// The surface pass for one row with central differences and toroidal wrap (eqs. 45–51), the
+/// SIMD twin of finalize()'s central-difference path.
+void surface_row_central(const SurfaceArgs& args, int row);
+
+/// One row of mip level `level` ≥ 1 from level − 1 (seed 000 eqs. 52–53): 2×2 box filter of the
+/// float4 work values (roughness-scaled normal, blue), smoothness from the filtered normal's
+/// length, RGBA8 packing. `work` and `packed` point at the start of the whole chains.
+void mip_row(int n, int level, int row, float* work, std::uint32_t* packed);
+
 }  // namespace ocean::cpu

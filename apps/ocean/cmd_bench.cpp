@@ -1,0 +1,318 @@
+// `ocean bench`: the CPU pipeline against the same pipeline with FFTW as its FFT engine and
+// against FFTW's transforms alone, in one process, for chosen resolutions, cascade counts and
+// thread counts: per-stage medians, min/max, ratios, pseudo-GFLOP/s and the fraction of this
+// machine's measured FMA peak. docs/performance.md explains the method.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "fftw_engine.hpp"
+#include "progress.hpp"
+
+namespace ocean::cli {
+
+namespace {
+
+struct BenchOptions {
+  std::string resolutions = "64,128,256,512,1024,2048";
+  std::string cascades = "1,4";
+  std::string threads = "1,all";
+  std::string min_time = "0.2";
+  std::string backend = "cpu";
+  bool json = false;
+};
+
+struct Stats {
+  double median_ms = 0.0, min_ms = 0.0, max_ms = 0.0;
+};
+
+Stats stats_of(std::vector<double> seconds) {
+  std::sort(seconds.begin(), seconds.end());
+  const std::size_t n = seconds.size();
+  const double median = n % 2 ? seconds[n / 2] : 0.5 * (seconds[n / 2 - 1] + seconds[n / 2]);
+  return {1e3 * median, 1e3 * seconds.front(), 1e3 * seconds.back()};
+}
+
+using Clock = std::chrono::steady_clock;
+
+// Times body() repeatedly: 2 warm-up runs, then at least 5 runs and about min_time seconds
+// (at most 500 runs).
+template <typename Body>
+std::vector<double> time_runs(double min_time, Body body) {
+  for (int i = 0; i < 2; ++i) body();
+  std::vector<double> samples;
+  double total = 0.0;
+  while ((samples.size() < 5 || total < min_time) && samples.size() < 500) {
+    const Clock::time_point start = Clock::now();
+    body();
+    samples.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    total += samples.back();
+  }
+  return samples;
+}
+
+struct PipelineResult {
+  Stats frame;
+  Stats synthesis, finalize, mips;
+  std::size_t frames = 0;
+  std::size_t state_bytes_per_cascade = 0;
+};
+
+Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
+                                    TaskRunner& runner, double min_time) {
+  cpu::CpuBackend backend(options);
+  if (Status s = backend.configure(config, runner); !s.ok()) return s;
+  Frame frame;
+  backend.allocate(frame);
+  double t = 0.0;
+  std::vector<double> synthesis, finalize, mips;
+  const std::vector<double> frames = time_runs(min_time, [&] {
+    backend.step(t, frame);
+    t += 1.0 / 90.0;
+    synthesis.push_back(backend.last_stage_times().synthesis_s);
+    finalize.push_back(backend.last_stage_times().finalize_s);
+    mips.push_back(backend.last_stage_times().mips_s);
+  });
+  const auto drop_warmup = [](std::vector<double>& v) { v.erase(v.begin(), v.begin() + 2); };
+  drop_warmup(synthesis), drop_warmup(finalize), drop_warmup(mips);
+  return PipelineResult{stats_of(frames), stats_of(synthesis), stats_of(finalize),
+                        stats_of(mips),   frames.size(),       backend.state_bytes_per_cascade()};
+}
+
+// Scratch planes for the FFT-only measurements: `count` N×N split-complex planes.
+struct Planes {
+  std::vector<std::vector<float>> re, im;
+  std::vector<fft::SplitComplex> views;
+  Planes(int n, std::size_t count) {
+    const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    re.assign(count, std::vector<float>(texels, 0.5f));
+    im.assign(count, std::vector<float>(texels, -0.25f));
+    for (std::size_t p = 0; p < count; ++p) views.push_back({re[p].data(), im[p].data()});
+  }
+};
+
+struct Row {
+  int resolution, cascades, threads;
+  PipelineResult ours, fftw;
+  int fftw_threads = 0;
+  Stats ours_fft, fftw_fft;
+  double fft_gflops = 0.0, peak_fraction = 0.0;
+  std::size_t memory_per_cascade = 0;
+  bool has_fftw = false;
+};
+
+nlohmann::ordered_json stage_json(const PipelineResult& r) {
+  return {{"synthesis", r.synthesis.median_ms},
+          {"finalize", r.finalize.median_ms},
+          {"mips", r.mips.median_ms}};
+}
+
+nlohmann::ordered_json to_json(const Row& r) {
+  const auto or_null = [&](double v) {
+    return r.has_fftw ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr);
+  };
+  nlohmann::ordered_json j;
+  j["resolution"] = r.resolution;
+  j["cascades"] = r.cascades;
+  j["threads"] = r.threads;
+  j["ours_ms"] = r.ours.frame.median_ms;
+  j["ours_min_ms"] = r.ours.frame.min_ms;
+  j["ours_max_ms"] = r.ours.frame.max_ms;
+  j["ours_stages_ms"] = stage_json(r.ours);
+  j["ours_fft_only_ms"] = r.ours_fft.median_ms;
+  j["fftw_pipeline_ms"] = or_null(r.fftw.frame.median_ms);
+  j["fftw_pipeline_min_ms"] = or_null(r.fftw.frame.min_ms);
+  j["fftw_pipeline_max_ms"] = or_null(r.fftw.frame.max_ms);
+  j["fftw_pipeline_threads"] = r.has_fftw ? nlohmann::ordered_json(r.fftw_threads) : nullptr;
+  j["fftw_stages_ms"] = r.has_fftw ? stage_json(r.fftw) : nlohmann::ordered_json(nullptr);
+  j["fftw_fft_only_ms"] = or_null(r.fftw_fft.median_ms);
+  j["ratio"] = or_null(r.ours.frame.median_ms / r.fftw.frame.median_ms);
+  j["fft_ratio"] = or_null(r.ours_fft.median_ms / r.fftw_fft.median_ms);
+  j["fft_gflops"] = r.fft_gflops;
+  j["fft_peak_fraction"] = r.peak_fraction;
+  j["memory_per_cascade_bytes"] = r.memory_per_cascade;
+  j["frames"] = r.ours.frames;
+  return j;
+}
+
+std::string fixed(double v, int digits) {
+  std::ostringstream s;
+  s << std::fixed << std::setprecision(digits) << v;
+  return s.str();
+}
+
+void print_table(const std::vector<Row>& rows, const std::string& target, double peak) {
+  std::cout << "SIMD target " << target << ", measured FMA peak " << fixed(peak, 1)
+            << " GFLOP/s per thread; times are medians in ms\n";
+  std::cout << std::setw(6) << "N" << std::setw(4) << "C" << std::setw(5) << "thr" << std::setw(10)
+            << "ours" << std::setw(10) << "fftw-pipe" << std::setw(7) << "ratio" << std::setw(10)
+            << "ours-fft" << std::setw(10) << "fftw-fft" << std::setw(9) << "GFLOP/s"
+            << std::setw(7) << "%peak" << std::setw(10) << "MiB/casc"
+            << "   stages synth/final/mips\n";
+  for (const Row& r : rows) {
+    const auto opt = [&](double v, int digits) { return r.has_fftw ? fixed(v, digits) : "-"; };
+    std::cout << std::setw(6) << r.resolution << std::setw(4) << r.cascades << std::setw(5)
+              << r.threads << std::setw(10) << fixed(r.ours.frame.median_ms, 3) << std::setw(10)
+              << opt(r.fftw.frame.median_ms, 3) << std::setw(7)
+              << opt(r.ours.frame.median_ms / r.fftw.frame.median_ms, 2) << std::setw(10)
+              << fixed(r.ours_fft.median_ms, 3) << std::setw(10) << opt(r.fftw_fft.median_ms, 3)
+              << std::setw(9) << fixed(r.fft_gflops, 1) << std::setw(7)
+              << fixed(100.0 * r.peak_fraction, 1) << std::setw(10)
+              << fixed(double(r.memory_per_cascade) / (1 << 20), 2) << "   "
+              << fixed(r.ours.synthesis.median_ms, 3) << "/" << fixed(r.ours.finalize.median_ms, 3)
+              << "/" << fixed(r.ours.mips.median_ms, 3) << "\n";
+  }
+}
+
+Result<std::vector<int>> parse_ints(std::string_view flag, const std::string& text, int lo, int hi,
+                                    bool allow_all) {
+  std::vector<int> out;
+  std::stringstream stream(text);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (allow_all && item == "all") {
+      out.push_back(0);
+      continue;
+    }
+    Result<double> v = parse_number(flag, item);
+    if (!v.ok()) return v.status();
+    if (v.value() != std::floor(v.value()) || v.value() < lo || v.value() > hi) {
+      return invalid_argument(std::string(flag) + " = '" + item +
+                              "' is out of range: must be an integer in [" + std::to_string(lo) +
+                              ", " + std::to_string(hi) + "]" + (allow_all ? " or 'all'" : ""));
+    }
+    out.push_back(static_cast<int>(v.value()));
+  }
+  if (out.empty()) return invalid_argument(std::string(flag) + " is empty");
+  return out;
+}
+
+int run_bench(const BenchOptions& o) {
+  if (o.backend != "cpu") {
+    return report(unsupported("ocean bench --backend " + o.backend +
+                              ": only the cpu backend is measured by this build"));
+  }
+  Result<std::vector<int>> resolutions = parse_ints("--resolution", o.resolutions, 16, 2048, false);
+  if (!resolutions.ok()) return report(resolutions.status());
+  for (int n : resolutions.value()) {
+    if (!std::has_single_bit(static_cast<unsigned>(n)))
+      return report(
+          invalid_argument("--resolution = " + std::to_string(n) + " is not a power of two"));
+  }
+  Result<std::vector<int>> cascades = parse_ints("--cascades", o.cascades, 1, 4, false);
+  if (!cascades.ok()) return report(cascades.status());
+  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  Result<std::vector<int>> threads = parse_ints("--threads", o.threads, 1, 256, true);
+  if (!threads.ok()) return report(threads.status());
+  Result<double> min_time = parse_number("--min-time", o.min_time);
+  if (!min_time.ok()) return report(min_time.status());
+  if (min_time.value() < 0.0 || min_time.value() > 60.0)
+    return report(
+        invalid_argument("--min-time = " + o.min_time + " is out of range: must be in [0, 60] s"));
+
+  const std::string target = fft::active_simd_target();
+  const double peak = fft::measure_fma_peak_gflops(0.2);
+  const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
+  std::vector<Row> rows;
+  std::string fftw_note;
+  Progress progress("bench",
+                    static_cast<long long>(resolutions.value().size() * cascades.value().size() *
+                                           threads.value().size()));
+  long long done = 0;
+  for (int n : resolutions.value()) {
+    for (int c : cascades.value()) {
+      for (int t_request : threads.value()) {
+        const int t = t_request == 0 ? hardware : t_request;
+        SimulationConfig config;  // the default sea, central differences: seed 000's outputs
+        config.resolution = n;
+        config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
+        std::shared_ptr<TaskRunner> runner = make_tbb_runner(t);
+        Row row{n, c, runner->concurrency(), {}, {}, 0, {}, {}, 0.0, 0.0, 0, false};
+        Result<PipelineResult> ours = run_pipeline(config, {}, *runner, min_time.value());
+        if (!ours.ok()) return report(ours.status());
+        row.ours = ours.value();
+        // The same transforms alone: two planes per cascade.
+        const std::size_t plane_count = 2 * static_cast<std::size_t>(c);
+        Planes planes(n, plane_count);
+        const fft::SimdPlan2D plan = fft::SimdPlan2D::make(n).value();
+        row.ours_fft = stats_of(
+            time_runs(min_time.value(), [&] { plan.inverse(planes.views, *runner, true); }));
+        const double flops = 5.0 * n * n * std::log2(double(n) * n) * double(plane_count);
+        row.fft_gflops = flops / (row.ours_fft.median_ms * 1e-3) * 1e-9;
+        row.peak_fraction = row.fft_gflops / (peak * row.threads);
+        // FFTW at its best: 1 thread, and all of the row's threads when more than one.
+        for (int ft : t > 1 ? std::vector<int>{1, t} : std::vector<int>{1}) {
+          Result<std::unique_ptr<FftwEngine>> engine = FftwEngine::make(n, ft);
+          if (!engine.ok()) {
+            fftw_note = engine.status().message();
+            continue;
+          }
+          Result<PipelineResult> fftw = run_pipeline(
+              config, {.pipeline = cpu::CpuPipeline::external_fft, .fft = engine.value().get()},
+              *runner, min_time.value());
+          if (!fftw.ok()) return report(fftw.status());
+          const Stats fft_only =
+              stats_of(time_runs(min_time.value(), [&] { engine.value()->inverse(planes.views); }));
+          if (!row.has_fftw || fftw.value().frame.median_ms < row.fftw.frame.median_ms) {
+            row.fftw = fftw.value();
+            row.fftw_threads = ft;
+          }
+          if (!row.has_fftw || fft_only.median_ms < row.fftw_fft.median_ms) row.fftw_fft = fft_only;
+          row.has_fftw = true;
+        }
+        // Memory: the backend's state per cascade plus one frame's arrays.
+        const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+        row.memory_per_cascade = row.ours.state_bytes_per_cascade + texels * (12 + 8 + 12 + 4 + 4) +
+                                 4 * mip_chain_texels(n);
+        rows.push_back(row);
+        progress.update(++done);
+      }
+    }
+  }
+  progress.finish();
+  if (!fftw_note.empty()) std::cerr << "ocean bench: " << fftw_note << "; FFTW columns omitted\n";
+  if (o.json) {
+    nlohmann::ordered_json out;
+    out["machine"] = {{"simd_target", target},
+                      {"simd_targets", fft::simd_targets()},
+                      {"fma_peak_gflops_per_thread", peak},
+                      {"hardware_threads", hardware}};
+    out["rows"] = nlohmann::ordered_json::array();
+    for (const Row& r : rows) out["rows"].push_back(to_json(r));
+    print_json(out);
+  } else {
+    print_table(rows, target, peak);
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_bench_command(CLI::App& app) {
+  auto options = std::make_shared<BenchOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench", "Time the CPU pipeline against the same pipeline on FFTW and FFTW alone");
+  cmd->add_option("--resolution", options->resolutions,
+                  "Comma-separated grid sizes N (powers of two, 16…2048)")
+      ->capture_default_str();
+  cmd->add_option("--cascades", options->cascades, "Comma-separated cascade counts (1…4)")
+      ->capture_default_str();
+  cmd->add_option("--threads", options->threads, "Comma-separated thread counts, or 'all'")
+      ->capture_default_str();
+  cmd->add_option("--min-time", options->min_time, "Seconds of timed runs per measurement")
+      ->capture_default_str();
+  cmd->add_option("--backend", options->backend, "Backend to measure")->capture_default_str();
+  cmd->add_flag("--json", options->json, "Print JSON instead of a table");
+  return {cmd, [options] { return run_bench(*options); }};
+}
+
+}  // namespace ocean::cli
