@@ -1,0 +1,59 @@
+// `ocean bench`: the JSON rows carry the documented fields with consistent values, the row
+// selection flags select, and bad input is one clear line with exit 2.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_run.hpp"
+
+namespace {
+
+TEST(BenchCli, JsonRowsHaveTheDocumentedFields) {
+  const ocean_test::CliRun r = ocean_test::run_cli(
+      "bench --json --resolution 16,32 --cascades 2 --threads 1 --min-time 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["machine"]["fma_peak_gflops_per_thread"].get<double>(), 0.0);
+  EXPECT_FALSE(j["machine"]["simd_target"].get<std::string>().empty());
+  const auto& rows = j["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const auto& row = rows[i];
+    EXPECT_EQ(row["resolution"].get<int>(), i == 0 ? 16 : 32);
+    EXPECT_EQ(row["cascades"].get<int>(), 2);
+    EXPECT_EQ(row["threads"].get<int>(), 1);
+    const double ours = row["ours_ms"].get<double>();
+    EXPECT_GT(ours, 0.0);
+    EXPECT_LE(row["ours_min_ms"].get<double>(), ours);
+    EXPECT_GE(row["ours_max_ms"].get<double>(), ours);
+    EXPECT_GT(row["ours_fft_only_ms"].get<double>(), 0.0);
+    // FFTW is installed wherever the tests build (libfftw3-dev): the baseline columns are set
+    // and the ratio is what it says.
+    const double fftw = row["fftw_pipeline_ms"].get<double>();
+    EXPECT_GT(fftw, 0.0);
+    EXPECT_GT(row["fftw_fft_only_ms"].get<double>(), 0.0);
+    EXPECT_DOUBLE_EQ(row["ratio"].get<double>(), ours / fftw);
+    EXPECT_GT(row["memory_per_cascade_bytes"].get<double>(), 16.0 * 16.0 * 40.0);
+    for (const char* stage : {"synthesis", "finalize", "mips"})
+      EXPECT_GE(row["ours_stages_ms"][stage].get<double>(), 0.0) << stage;
+  }
+}
+
+TEST(BenchCli, TableForPeople) {
+  const ocean_test::CliRun r =
+      ocean_test::run_cli("bench --resolution 16 --cascades 1 --threads 1 --min-time 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("fftw-pipe"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("FMA peak"), std::string::npos) << r.out;
+}
+
+TEST(BenchCli, BadInputIsOneLineAndExitTwo) {
+  ocean_test::expect_usage_error("bench --resolution 100", "not a power of two");
+  ocean_test::expect_usage_error("bench --resolution 4096", "--resolution");
+  ocean_test::expect_usage_error("bench --cascades 5", "--cascades");
+  ocean_test::expect_usage_error("bench --threads 0", "--threads");
+  ocean_test::expect_usage_error("bench --threads nan", "--threads");
+  ocean_test::expect_usage_error("bench --min-time -1", "--min-time");
+}
+
+}  // namespace
