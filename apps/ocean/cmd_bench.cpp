@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -140,6 +141,9 @@ nlohmann::ordered_json to_json(const Row& r) {
   j["fft_gflops"] = r.fft_gflops;
   j["fft_peak_fraction"] = r.peak_fraction;
   j["memory_per_cascade_bytes"] = r.memory_per_cascade;
+  // Every byte of state and output touched once per frame: a lower bound on the traffic.
+  const double touched = double(r.memory_per_cascade) * r.cascades;
+  j["touched_gbps"] = touched / (r.ours.frame.median_ms * 1e-3) * 1e-9;
   j["frames"] = r.ours.frames;
   return j;
 }
@@ -150,9 +154,11 @@ std::string fixed(double v, int digits) {
   return s.str();
 }
 
-void print_table(const std::vector<Row>& rows, const std::string& target, double peak) {
+void print_table(const std::vector<Row>& rows, const std::string& target, double peak,
+                 double bandwidth) {
   std::cout << "SIMD target " << target << ", measured FMA peak " << fixed(peak, 1)
-            << " GFLOP/s per thread; times are medians in ms\n";
+            << " GFLOP/s per thread, copy bandwidth " << fixed(bandwidth, 1)
+            << " GB/s; times are medians in ms\n";
   std::cout << std::setw(6) << "N" << std::setw(4) << "C" << std::setw(5) << "thr" << std::setw(10)
             << "ours" << std::setw(10) << "fftw-pipe" << std::setw(7) << "ratio" << std::setw(10)
             << "ours-fft" << std::setw(10) << "fftw-fft" << std::setw(9) << "GFLOP/s"
@@ -196,6 +202,22 @@ Result<std::vector<int>> parse_ints(std::string_view flag, const std::string& te
   return out;
 }
 
+// Best of three parallel copies of 256 MiB: read + write bytes per second, GB/s.
+double measure_copy_bandwidth_gbps(TaskRunner& runner) {
+  constexpr std::size_t kBytes = std::size_t{256} << 20, kChunk = std::size_t{1} << 20;
+  std::vector<char> from(kBytes, 1), to(kBytes, 0);
+  double best = 0.0;
+  for (int i = 0; i < 3; ++i) {
+    const Clock::time_point start = Clock::now();
+    runner.parallel_for(kBytes / kChunk, 1, [&](std::size_t begin, std::size_t end) {
+      std::memcpy(to.data() + begin * kChunk, from.data() + begin * kChunk, (end - begin) * kChunk);
+    });
+    const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    best = std::max(best, 2.0 * double(kBytes) / seconds * 1e-9);
+  }
+  return best;
+}
+
 int run_bench(const BenchOptions& o) {
   if (o.backend != "cpu") {
     return report(unsupported("ocean bench --backend " + o.backend +
@@ -221,6 +243,7 @@ int run_bench(const BenchOptions& o) {
 
   const std::string target = fft::active_simd_target();
   const double peak = fft::measure_fma_peak_gflops(0.2);
+  const double bandwidth = measure_copy_bandwidth_gbps(*make_tbb_runner());
   const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   std::vector<Row> rows;
   std::string fftw_note;
@@ -285,12 +308,13 @@ int run_bench(const BenchOptions& o) {
     out["machine"] = {{"simd_target", target},
                       {"simd_targets", fft::simd_targets()},
                       {"fma_peak_gflops_per_thread", peak},
+                      {"copy_bandwidth_gbps", bandwidth},
                       {"hardware_threads", hardware}};
     out["rows"] = nlohmann::ordered_json::array();
     for (const Row& r : rows) out["rows"].push_back(to_json(r));
     print_json(out);
   } else {
-    print_table(rows, target, peak);
+    print_table(rows, target, peak, bandwidth);
   }
   return kExitOk;
 }

@@ -3,11 +3,13 @@
 
 #include "cpu/cpu_backend.hpp"
 #include "ocean/backends.hpp"
+#include "ocean/fft.hpp"
 
 namespace ocean {
 
 std::vector<BackendInfo> list_backends() {
-  return {{"cpu", true, "reference backend: scalar radix-2 FFT, oneTBB task graph"},
+  return {{"cpu", true,
+           "SIMD pipeline (" + fft::active_simd_target() + "), radix-4 Stockham FFT, oneTBB"},
           {"vulkan", false,
            "built without Vulkan: the Vulkan compute backend is not part of this build"},
           {"cuda", false, "built without CUDA: the CUDA backend is not part of this build"}};
