@@ -99,37 +99,45 @@ void ApplyFactor(const EvolveArgs& a, int plane, int block, const float* h_re, c
 
 void AssembleDisplacement(const float* h, const float* dx, const float* dz, int n_int, int block,
                           float* displacement, std::uint16_t* displacement_half) {
+  const hn::ScalableTag<float> df;
+  const std::size_t step = hn::Lanes(df);
   const auto n = static_cast<std::size_t>(n_int);
   const std::size_t row0 = static_cast<std::size_t>(block) * kLanes;
-  alignas(64) float row_values[4 * 2048];
+  // (−1)^(x+y) for an even first column: +1, −1, +1, ... (eq. 43); odd rows flip it.
+  alignas(64) float alternate[kLanes];
+  for (std::size_t c = 0; c < kLanes; ++c) alternate[c] = (c & 1u) ? -1.0f : 1.0f;
+  alignas(64) float row_h[2048], row_dx[2048], row_dz[2048];
   for (std::size_t l = 0; l < kLanes; ++l) {
     const std::size_t row = row0 + l;
+    for (std::size_t c = 0; c < n; ++c) {  // lane layout → this row's values
+      row_h[c] = h[c * kLanes + l];
+      row_dx[c] = dx[c * kLanes + l];
+      row_dz[c] = dz[c * kLanes + l];
+    }
+    const float row_sign = (row & 1u) ? -1.0f : 1.0f;
     float* out = displacement + 3 * row * n;
-    // (−1)^(x+y): the row's sign on even columns, the opposite on odd ones (eq. 43).
-    const float even = (row & 1u) ? -1.0f : 1.0f;
-    for (std::size_t c = 0; c < n; ++c) {
-      const float sign = (c & 1u) ? -even : even;
-      const std::size_t s = c * kLanes + l;
-      out[3 * c + 0] = dx[s] * sign;
-      out[3 * c + 1] = h[s] * sign;
-      out[3 * c + 2] = dz[s] * sign;
-      row_values[4 * c + 0] = out[3 * c + 0];
-      row_values[4 * c + 1] = out[3 * c + 1];
-      row_values[4 * c + 2] = out[3 * c + 2];
-      row_values[4 * c + 3] = 0.0f;
-    }
     std::uint16_t* half = displacement_half + 4 * row * n;
+    for (std::size_t c = 0; c < n; c += step) {
+      // c is even unless a vector holds a single lane.
+      const auto sign = hn::Mul(hn::LoadU(df, alternate + (c & 1u)), hn::Set(df, row_sign));
+      const auto vx = hn::Mul(hn::Load(df, row_dx + c), sign);
+      const auto vh = hn::Mul(hn::Load(df, row_h + c), sign);
+      const auto vz = hn::Mul(hn::Load(df, row_dz + c), sign);
+      hn::StoreInterleaved3(vx, vh, vz, df, out + 3 * c);
 #if HWY_TARGET >= HWY_SSE4 || defined(HWY_DISABLE_F16C)
-    // No F16C: Highway's emulated conversion truncates; keep round-to-nearest-even.
-    for (std::size_t i = 0; i < 4 * n; ++i) half[i] = float_to_half(row_values[i]);
+      // No F16C: Highway's emulated conversion truncates; keep round-to-nearest-even.
+      for (std::size_t i = c; i < c + step; ++i) {
+        for (std::size_t k = 0; k < 3; ++k) half[4 * i + k] = float_to_half(out[3 * i + k]);
+        half[4 * i + 3] = 0;
+      }
 #else
-    const hn::ScalableTag<float> df;
-    const hn::Rebind<hwy::float16_t, decltype(df)> dh;
-    for (std::size_t i = 0; i < 4 * n; i += hn::Lanes(df)) {
-      hn::StoreU(hn::DemoteTo(dh, hn::Load(df, row_values + i)), dh,
-                 reinterpret_cast<hwy::float16_t*>(half + i));
-    }
+      const hn::Rebind<hwy::float16_t, decltype(df)> dh;
+      const hn::Rebind<std::uint16_t, decltype(df)> du;
+      hn::StoreInterleaved4(hn::BitCast(du, hn::DemoteTo(dh, vx)),
+                            hn::BitCast(du, hn::DemoteTo(dh, vh)),
+                            hn::BitCast(du, hn::DemoteTo(dh, vz)), hn::Zero(du), du, half + 4 * c);
 #endif
+    }
   }
 }
 
