@@ -1,0 +1,148 @@
+// Microbenchmarks of the CPU backend's SIMD kernels on every instruction set: evolution into a
+// column block, displacement assembly from a row block, the surface row and the mip chain, for
+// one 256² or 512² cascade. Run: build/release/bench/kernels_bench
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "cpu/cpu_backend.hpp"
+#include "cpu/kernels.hpp"
+
+namespace {
+
+struct Fixture {
+  ocean::cpu::CpuBackend backend;
+  ocean::Frame frame;
+  std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  ocean::cpu::CascadeState state;
+  explicit Fixture(int n) {
+    ocean::SimulationConfig config;
+    config.resolution = n;
+    config.cascade_patch_sizes_m = {500.0};
+    (void)backend.configure(config, *runner);
+    backend.allocate(frame);
+    backend.step(1.0, frame);
+    state.resolution = n;
+    state.patch_size_m = 500.0;
+    state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
+                                                  ocean::cascade_spectrum_params(config, 0))
+                         .value();
+    ocean::cpu::build_plane_factors(state, config.normals, config.choppiness);
+    ocean::cpu::build_kernel_inputs(state, config.loop_period_s);
+    state.foam.assign(static_cast<std::size_t>(n * n), 0.0f);
+    state.mip_work.assign(4 * ocean::mip_chain_texels(n), 0.1f);
+  }
+};
+
+bool select_target(benchmark::State& state, int index) {
+  const auto targets = ocean::fft::simd_targets();
+  if (static_cast<std::size_t>(index) >= targets.size()) {
+    state.SkipWithError("no such target on this CPU");
+    return false;
+  }
+  (void)ocean::fft::force_simd_target(targets[static_cast<std::size_t>(index)]);
+  state.SetLabel(targets[static_cast<std::size_t>(index)]);
+  return true;
+}
+
+void set_texels(benchmark::State& state, int n) {
+  state.counters["texels/s"] =
+      benchmark::Counter(double(n) * n, benchmark::Counter::kIsIterationInvariantRate);
+}
+
+void BM_EvolveAndFactors(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  if (!select_target(state, static_cast<int>(state.range(1)))) return;
+  Fixture f(n);
+  const ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(f.state, 1234.5, 200.0);
+  alignas(64) static float h_re[16 * 2048], h_im[16 * 2048], l_re[16 * 2048], l_im[16 * 2048];
+  for (auto _ : state) {
+    for (int block = 0; block < n / 16; ++block) {
+      ocean::cpu::evolve_lanes(args, block, h_re, h_im);
+      for (int p = 0; p < 2; ++p) ocean::cpu::apply_factor(args, p, block, h_re, h_im, l_re, l_im);
+    }
+    benchmark::ClobberMemory();
+  }
+  set_texels(state, n);
+}
+
+void BM_AssembleDisplacement(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  if (!select_target(state, static_cast<int>(state.range(1)))) return;
+  Fixture f(n);
+  alignas(64) static float lanes[3][16 * 2048];
+  for (auto& l : lanes) std::fill(l, l + 16 * n, 0.5f);
+  auto& c = f.frame.cascades[0];
+  for (auto _ : state) {
+    for (int block = 0; block < n / 16; ++block)
+      ocean::cpu::assemble_displacement(lanes[0], lanes[1], lanes[2], n, block,
+                                        c.displacement.data(), c.displacement_half.data());
+    benchmark::ClobberMemory();
+  }
+  set_texels(state, n);
+}
+
+void BM_SurfaceRows(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  if (!select_target(state, static_cast<int>(state.range(1)))) return;
+  Fixture f(n);
+  auto& c = f.frame.cascades[0];
+  ocean::cpu::SurfaceArgs args{.n = n,
+                               .displacement = c.displacement.data(),
+                               .inv_spacing = float(n) / 500.0f,
+                               .foam_state = f.state.foam.data(),
+                               .jacobian = c.jacobian.data(),
+                               .foam = c.foam.data(),
+                               .normal = c.normal.data(),
+                               .mip_work = f.state.mip_work.data(),
+                               .packed = c.packed_mips.data()};
+  for (auto _ : state) {
+    for (int row = 0; row < n; ++row) ocean::cpu::surface_row_central(args, row);
+    benchmark::ClobberMemory();
+  }
+  set_texels(state, n);
+}
+
+void BM_MipChain(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  if (!select_target(state, static_cast<int>(state.range(1)))) return;
+  Fixture f(n);
+  auto& c = f.frame.cascades[0];
+  for (auto _ : state) {
+    for (int level = 1; (n >> level) >= 1; ++level) {
+      for (int row = 0; row < (n >> level); ++row)
+        ocean::cpu::mip_row(n, level, row, f.state.mip_work.data(), c.packed_mips.data());
+    }
+    benchmark::ClobberMemory();
+  }
+  set_texels(state, n);
+}
+
+// The scalar reference stages on the same data, for the ratios.
+void BM_ReferenceSurfaceAndMips(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  Fixture f(n);
+  ocean::SimulationConfig config;
+  config.resolution = n;
+  f.state.plane_re.assign(2, std::vector<float>(static_cast<std::size_t>(n * n)));
+  f.state.plane_im.assign(2, std::vector<float>(static_cast<std::size_t>(n * n)));
+  auto& c = f.frame.cascades[0];
+  for (auto _ : state) {
+    ocean::cpu::finalize(f.state, config, 0.01, false, c, *f.runner);
+    ocean::cpu::build_mips(f.state, c, *f.runner);
+    benchmark::ClobberMemory();
+  }
+  set_texels(state, n);
+}
+
+BENCHMARK(BM_EvolveAndFactors)->ArgsProduct({{256, 512}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_AssembleDisplacement)
+    ->ArgsProduct({{256, 512}, {0, 1, 2}})
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_SurfaceRows)->ArgsProduct({{256, 512}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MipChain)->ArgsProduct({{256, 512}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_ReferenceSurfaceAndMips)->Arg(256)->Arg(512)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();
