@@ -17,6 +17,9 @@ Command add_dispersion_command(CLI::App& app);
 Command add_spreading_command(CLI::App& app);
 Command add_stats_command(CLI::App& app);
 Command add_bake_command(CLI::App& app);
+Command add_info_command(CLI::App& app);
+Command add_validate_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
+Command add_lod_command(CLI::App& app);
 
 }  // namespace ocean::cli

@@ -12,7 +12,9 @@ int main(int argc, char** argv) {
   const ocean::cli::Command commands[] = {
       ocean::cli::add_spectrum_command(app), ocean::cli::add_dispersion_command(app),
       ocean::cli::add_spreading_command(app), ocean::cli::add_stats_command(app),
-      ocean::cli::add_bake_command(app), ocean::cli::add_bench_command(app)};
+      ocean::cli::add_bake_command(app), ocean::cli::add_bench_command(app),
+      ocean::cli::add_info_command(app), ocean::cli::add_validate_command(app),
+      ocean::cli::add_lod_command(app)};
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -4,20 +4,51 @@
 #include "cpu/cpu_backend.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/fft.hpp"
+#ifdef OCEAN_HAS_VULKAN
+#include "ocean/vk/simulation.hpp"
+#endif
 
 namespace ocean {
+namespace {
 
-std::vector<BackendInfo> list_backends() {
+// With probe = false no Vulkan instance is created (make_backend for other names stays cheap).
+BackendInfo vulkan_info(bool probe) {
+#ifdef OCEAN_HAS_VULKAN
+  if (!probe) return {"vulkan", true, "Vulkan compute"};
+  Result<std::vector<vk::DeviceInfo>> devices = vk::list_devices();
+  if (!devices.ok()) return {"vulkan", false, devices.status().message()};
+  for (const vk::DeviceInfo& d : devices.value()) {
+    if (d.usable) return {"vulkan", true, "Vulkan compute on " + d.name + " (" + d.type + ")"};
+  }
+  return {"vulkan", false, "no usable Vulkan device (needs Vulkan 1.2 with compute)"};
+#else
+  (void)probe;
+  return {"vulkan", false,
+          "built without Vulkan: the Vulkan compute backend is not part of this build"};
+#endif
+}
+
+std::vector<BackendInfo> backend_table(bool probe) {
   return {{"cpu", true,
            "SIMD pipeline (" + fft::active_simd_target() + "), radix-4 Stockham FFT, oneTBB"},
-          {"vulkan", false,
-           "built without Vulkan: the Vulkan compute backend is not part of this build"},
+          vulkan_info(probe),
           {"cuda", false, "built without CUDA: the CUDA backend is not part of this build"}};
 }
 
+}  // namespace
+
+std::vector<BackendInfo> list_backends() { return backend_table(true); }
+
 Result<std::unique_ptr<Backend>> make_backend(std::string_view name) {
   if (name == "cpu") return std::unique_ptr<Backend>(std::make_unique<cpu::CpuBackend>());
-  for (const BackendInfo& info : list_backends()) {
+#ifdef OCEAN_HAS_VULKAN
+  if (name == "vulkan") {
+    Result<std::unique_ptr<vk::VulkanBackend>> b = vk::make_vulkan_backend();
+    if (!b.ok()) return b.status();
+    return std::unique_ptr<Backend>(std::move(b).value());
+  }
+#endif
+  for (const BackendInfo& info : backend_table(false)) {
     if (info.name == name)
       return unsupported("unsupported: backend '" + info.name + "' " + info.detail);
   }

@@ -209,10 +209,10 @@ TEST(Simulator, ValidatesConfiguration) {
 }
 
 TEST(Backends, UnavailableBackendsSaySo) {
-  const auto vulkan = ocean::make_backend("vulkan");
-  ASSERT_FALSE(vulkan.ok());
-  EXPECT_EQ(vulkan.status().code(), ocean::ErrorCode::unsupported);
-  EXPECT_NE(vulkan.status().message().find("built without"), std::string::npos);
+  const auto cuda = ocean::make_backend("cuda");  // vulkan depends on the build and the machine
+  ASSERT_FALSE(cuda.ok());
+  EXPECT_EQ(cuda.status().code(), ocean::ErrorCode::unsupported);
+  EXPECT_NE(cuda.status().message().find("built without"), std::string::npos);
   EXPECT_EQ(ocean::make_backend("metal").status().code(), ocean::ErrorCode::invalid_argument);
   EXPECT_TRUE(ocean::make_backend("cpu").ok());
 }

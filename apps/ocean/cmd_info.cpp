@@ -1,0 +1,75 @@
+// `ocean info`: the simulation backends of this build (available or why not) and the Vulkan
+// devices of this machine, as a table or JSON.
+#include <iostream>
+#include <memory>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "ocean/backends.hpp"
+#ifdef OCEAN_HAS_VULKAN
+#include "ocean/vk.hpp"
+#endif
+
+namespace ocean::cli {
+
+namespace {
+
+int run_info(bool json) {
+  nlohmann::ordered_json backends = nlohmann::ordered_json::array();
+  for (const BackendInfo& b : list_backends())
+    backends.push_back({{"name", b.name}, {"available", b.available}, {"detail", b.detail}});
+  nlohmann::ordered_json devices = nlohmann::ordered_json::array();
+  std::string vulkan_status = "built without Vulkan";
+#ifdef OCEAN_HAS_VULKAN
+  Result<std::vector<vk::DeviceInfo>> found = vk::list_devices();
+  if (found.ok()) {
+    vulkan_status = "ok";
+    for (std::size_t i = 0; i < found.value().size(); ++i) {
+      const vk::DeviceInfo& d = found.value()[i];
+      devices.push_back({{"index", i},
+                         {"name", d.name},
+                         {"type", d.type},
+                         {"api_version", d.api_version},
+                         {"driver", d.driver},
+                         {"usable", d.usable},
+                         {"reason", d.reason}});
+    }
+  } else {
+    vulkan_status = found.status().message();
+  }
+#endif
+  if (json) {
+    print_json(
+        {{"backends", backends}, {"vulkan", {{"status", vulkan_status}, {"devices", devices}}}});
+    return kExitOk;
+  }
+  std::cout << "backends:\n";
+  for (const auto& b : backends) {
+    std::cout << "  " << b["name"].get<std::string>() << "  "
+              << (b["available"].get<bool>() ? "available" : "unavailable") << "  "
+              << b["detail"].get<std::string>() << "\n";
+  }
+  std::cout << "vulkan devices:" << (devices.empty() ? " none (" + vulkan_status + ")" : "")
+            << "\n";
+  for (const auto& d : devices) {
+    std::cout << "  [" << d["index"].get<std::size_t>() << "] " << d["name"].get<std::string>()
+              << " (" << d["type"].get<std::string>() << ", Vulkan "
+              << d["api_version"].get<std::string>() << ", " << d["driver"].get<std::string>()
+              << ")"
+              << (d["usable"].get<bool>() ? "" : " unusable: " + d["reason"].get<std::string>())
+              << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_info_command(CLI::App& app) {
+  auto json = std::make_shared<bool>(false);
+  CLI::App* command =
+      app.add_subcommand("info", "list the simulation backends and the Vulkan devices");
+  command->add_flag("--json", *json, "print JSON");
+  return {command, [json] { return run_info(*json); }};
+}
+
+}  // namespace ocean::cli

@@ -1,0 +1,335 @@
+// `ocean lod`: the quadtree LOD selection for one camera (seed 000 §5): patch counts per level
+// and per stitching configuration, the selected mesh as OBJ (world space, undisplaced, skirt
+// excluded) and optionally a top-down PNG of the layout.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "io/atomic_file.hpp"
+#include "ocean/lod.hpp"
+#include "plot/plot.hpp"
+
+namespace ocean::cli {
+
+namespace {
+
+struct LodOptions {
+  std::string camera, target, centre;
+  std::string preset = "medium", ocean_size = "1024", fov = "60", aspect = "1.7778";
+  std::string out, png;
+  bool no_cull = false, json = false;
+};
+
+Result<lod::Vec3> parse_vec3(std::string_view flag, const std::string& text) {
+  Result<std::vector<double>> v = parse_number_list(flag, text);
+  if (!v.ok()) return v.status();
+  if (v.value().size() != 3) {
+    return invalid_argument(std::string(flag) + " = " + text + " must be three numbers X,Y,Z");
+  }
+  for (double c : v.value()) {
+    if (Status s = require_finite(flag, c); !s.ok()) return s;
+  }
+  return lod::Vec3{v.value()[0], v.value()[1], v.value()[2]};
+}
+
+struct Inputs {
+  lod::Camera camera;
+  lod::LodParams params;
+  lod::QualityPreset preset = lod::QualityPreset::medium;
+};
+
+Result<Inputs> parse_inputs(const LodOptions& o) {
+  Inputs in;
+  Result<lod::Vec3> eye = parse_vec3("--camera", o.camera);
+  if (!eye.ok()) return eye.status();
+  Result<lod::Vec3> target = parse_vec3("--target", o.target);
+  if (!target.ok()) return target.status();
+  Result<lod::QualityPreset> preset = lod::parse_preset(o.preset);
+  if (!preset.ok())
+    return invalid_argument("--preset = " + o.preset +
+                            " is not a preset: must be low, medium, high or ultra");
+  in.preset = preset.value();
+  Result<double> size = parse_number("--ocean-size", o.ocean_size);
+  if (!size.ok()) return size.status();
+  if (Status s = require_in_range("--ocean-size", size.value(), lod::kMinOceanSize_m,
+                                  lod::kMaxOceanSize_m);
+      !s.ok()) {
+    return s;
+  }
+  Result<double> fov = parse_number("--fov", o.fov);
+  if (!fov.ok()) return fov.status();
+  if (Status s = require_in_range("--fov", fov.value(), 1.0, 170.0); !s.ok()) return s;
+  Result<double> aspect = parse_number("--aspect", o.aspect);
+  if (!aspect.ok()) return aspect.status();
+  if (Status s = require_in_range("--aspect", aspect.value(), 0.05, 20.0); !s.ok()) return s;
+  in.camera = {.position_m = eye.value(),
+               .target_m = target.value(),
+               .fov_y_rad = fov.value() * std::numbers::pi / 180.0,
+               .aspect = aspect.value()};
+  if (Status s = lod::validate(in.camera); !s.ok()) {
+    if (s.message().find("equals") != std::string::npos) {
+      return invalid_argument("--target equals --camera: the view direction is undefined");
+    }
+    return s;
+  }
+  in.params = {.ocean_size_m = size.value(),
+               .quality = lod::quality_preset(in.preset),
+               .camera_position_m = eye.value(),
+               .frustum = lod::camera_frustum(in.camera),
+               .cull = !o.no_cull};
+  if (!o.centre.empty()) {
+    Result<std::vector<double>> c = parse_number_list("--center", o.centre);
+    if (!c.ok()) return c.status();
+    if (c.value().size() != 2 || !std::isfinite(c.value()[0]) || !std::isfinite(c.value()[1])) {
+      return invalid_argument("--center = " + o.centre + " must be two finite numbers X,Z");
+    }
+    in.params.follow_camera = false;
+    in.params.fixed_centre_x_m = c.value()[0];
+    in.params.fixed_centre_z_m = c.value()[1];
+  }
+  return in;
+}
+
+std::string config_name(int c) {
+  std::string s;
+  if (c & lod::kEast) s += 'E';
+  if (c & lod::kNorth) s += 'N';
+  if (c & lod::kWest) s += 'W';
+  if (c & lod::kSouth) s += 'S';
+  return s.empty() ? "-" : s;
+}
+
+// Welded OBJ: vertices are keyed on the finest lattice, so patches share their edge vertices.
+std::string obj_text(const lod::LodSelection& sel, const lod::PatchMeshes& meshes, double size,
+                     const std::string& header) {
+  const int v = meshes.vertices;
+  const std::int64_t m = (std::int64_t{1} << sel.max_level) * v;
+  const double unit = size / static_cast<double>(m);
+  const double x0 = sel.grid_centre_x_m - 0.5 * size, z0 = sel.grid_centre_z_m - 0.5 * size;
+  std::unordered_map<std::int64_t, std::uint32_t> index;
+  std::ostringstream verts, faces;
+  verts << std::setprecision(12);
+  for (const lod::PatchInstance& pi : sel.instances) {
+    const std::int64_t delta = std::int64_t{1} << (sel.max_level - pi.level);
+    const std::int64_t ox = pi.grid_x * delta * v, oz = pi.grid_y * delta * v;
+    const auto& idx = meshes.indices[pi.config];
+    for (std::size_t t = 0; t < idx.size(); t += 3) {
+      faces << 'f';
+      for (std::size_t k = 0; k < 3; ++k) {
+        const std::int64_t i = ox + (idx[t + k] % (v + 1)) * delta;
+        const std::int64_t j = oz + (idx[t + k] / (v + 1)) * delta;
+        const auto [it, added] =
+            index.try_emplace(i * (m + 1) + j, static_cast<std::uint32_t>(index.size() + 1));
+        if (added) {
+          verts << "v " << x0 + static_cast<double>(i) * unit << " 0 "
+                << z0 + static_cast<double>(j) * unit << "\n";
+        }
+        faces << ' ' << it->second;
+      }
+      faces << '\n';
+    }
+  }
+  return header + verts.str() + faces.str();
+}
+
+// ---- top-down PNG ------------------------------------------------------------------------------
+
+struct Raster {
+  plot::Image image;
+  double x_min, z_max, scale;  // world → pixel
+  void set(int px, int py, plot::Rgb c) {
+    if (px < 0 || py < 0 || px >= image.width || py >= image.height) return;
+    const auto o = static_cast<std::size_t>((py * image.width + px) * 3);
+    image.rgb[o] = c.r;
+    image.rgb[o + 1] = c.g;
+    image.rgb[o + 2] = c.b;
+  }
+  int px(double x) const { return static_cast<int>(std::floor((x - x_min) * scale)); }
+  int py(double z) const { return static_cast<int>(std::floor((z_max - z) * scale)); }
+  void rect(double xa, double za, double xb, double zb, plot::Rgb fill, plot::Rgb edge) {
+    const int x1 = px(xa), x2 = px(xb), y1 = py(zb), y2 = py(za);
+    for (int y = y1; y <= y2; ++y) {
+      for (int x = x1; x <= x2; ++x) set(x, y, (x == x1 || y == y1) ? edge : fill);
+    }
+  }
+  void line(double xa, double za, double xb, double zb, plot::Rgb c) {
+    const double len = std::hypot(xb - xa, zb - za) * scale;
+    const int n = std::max(1, static_cast<int>(len));
+    for (int k = 0; k <= n; ++k) {
+      const double t = static_cast<double>(k) / n;
+      const int x = px(xa + t * (xb - xa)), y = py(za + t * (zb - za));
+      for (int d = 0; d < 4; ++d) set(x + d % 2, y + d / 2, c);
+    }
+  }
+};
+
+Status write_layout_png(const std::string& path, const Inputs& in, const lod::LodSelection& sel) {
+  // All leaves (grey when culled) from a second, unculled selection.
+  lod::LodSelection all;
+  lod::LodParams p = in.params;
+  p.cull = false;
+  if (Status s = lod::select_patches(p, all); !s.ok()) return s;
+  const double half = 0.5 * p.ocean_size_m;
+  const lod::Vec3 eye = in.camera.position_m;
+  const double x_lo = std::min(sel.grid_centre_x_m - half, eye.x) - 0.05 * half;
+  const double x_hi = std::max(sel.grid_centre_x_m + half, eye.x) + 0.05 * half;
+  const double z_lo = std::min(sel.grid_centre_z_m - half, eye.z) - 0.05 * half;
+  const double z_hi = std::max(sel.grid_centre_z_m + half, eye.z) + 0.05 * half;
+  const int size_px = 900;
+  const double scale = size_px / std::max(x_hi - x_lo, z_hi - z_lo);
+  Raster r{
+      {size_px, size_px, std::vector<std::uint8_t>(size_px * size_px * 3, 255)}, x_lo, z_hi, scale};
+  static constexpr std::array<plot::Rgb, 9> kLevel = {{{49, 54, 149},
+                                                       {69, 117, 180},
+                                                       {116, 173, 209},
+                                                       {171, 217, 233},
+                                                       {254, 224, 144},
+                                                       {253, 174, 97},
+                                                       {244, 109, 67},
+                                                       {215, 48, 39},
+                                                       {165, 0, 38}}};
+  auto drawn = [&](const lod::PatchInstance& q) {
+    return std::any_of(sel.instances.begin(), sel.instances.end(), [&](const auto& s) {
+      return s.level == q.level && s.grid_x == q.grid_x && s.grid_y == q.grid_y;
+    });
+  };
+  for (const lod::PatchInstance& q : all.instances) {
+    const double h = 0.5 * q.size_m;
+    const plot::Rgb fill = drawn(q) ? kLevel[q.level] : plot::Rgb{225, 225, 225};
+    r.rect(q.centre_x_m - h, q.centre_z_m - h, q.centre_x_m + h, q.centre_z_m + h, fill,
+           {40, 40, 40});
+  }
+  // The horizontal field of view: the view direction ± half the horizontal angle.
+  const double yaw = std::atan2(in.camera.target_m.z - eye.z, in.camera.target_m.x - eye.x);
+  const double half_h = std::atan(std::tan(0.5 * in.camera.fov_y_rad) * in.camera.aspect);
+  const double reach = 2.0 * p.ocean_size_m;
+  const bool vertical = std::hypot(in.camera.target_m.x - eye.x, in.camera.target_m.z - eye.z) <
+                        1e-9 * std::abs(in.camera.target_m.y - eye.y);
+  if (!vertical) {
+    for (double a : {yaw - half_h, yaw + half_h}) {
+      r.line(eye.x, eye.z, eye.x + reach * std::cos(a), eye.z + reach * std::sin(a), {0, 0, 0});
+    }
+  }
+  for (int dy = -4; dy <= 4; ++dy) {
+    for (int dx = -4; dx <= 4; ++dx) {
+      if (dx * dx + dy * dy <= 16) r.set(r.px(eye.x) + dx, r.py(eye.z) + dy, {220, 0, 0});
+    }
+  }
+  return plot::write_png(r.image, path);
+}
+
+int run_lod(const LodOptions& o) {
+  Result<Inputs> inputs = parse_inputs(o);
+  if (!inputs.ok()) return report(inputs.status());
+  const Inputs& in = inputs.value();
+  lod::LodSelection sel;
+  if (Status s = lod::reserve_selection(sel, in.params.ocean_size_m); !s.ok()) return report(s);
+  if (Status s = lod::select_patches(in.params, sel); !s.ok()) return report(s);
+  Result<lod::PatchMeshes> meshes = lod::build_patch_meshes(in.params.quality.vertices);
+  if (!meshes.ok()) return report(meshes.status());
+  std::size_t triangles = 0;
+  for (const lod::Batch& b : sel.batches) {
+    triangles += b.count * meshes.value().indices[b.config].size() / 3;
+  }
+  if (!o.out.empty()) {
+    std::ostringstream header;
+    header << "# ocean lod: camera " << o.camera << ", target " << o.target << ", preset "
+           << o.preset << ", ocean size " << in.params.ocean_size_m << " m, "
+           << sel.instances.size() << " patches; world metres, y up, undisplaced\n";
+    const std::string text = obj_text(sel, meshes.value(), in.params.ocean_size_m, header.str());
+    const auto* bytes = reinterpret_cast<const std::byte*>(text.data());
+    if (Status s = io::write_bytes_atomically(o.out, {{bytes, text.size()}}); !s.ok()) {
+      return report(s);
+    }
+  }
+  if (!o.png.empty()) {
+    if (Status s = write_layout_png(o.png, in, sel); !s.ok()) return report(s);
+  }
+  const lod::Quality& q = in.params.quality;
+  if (o.json) {
+    nlohmann::ordered_json j;
+    j["ocean_size_m"] = in.params.ocean_size_m;
+    j["preset"] = std::string(lod::preset_name(in.preset));
+    j["vertices"] = q.vertices;
+    j["lod_scale"] = q.lod_scale;
+    j["cull_scale"] = q.cull_scale;
+    j["max_level"] = sel.max_level;
+    j["grid_centre_m"] = {sel.grid_centre_x_m, sel.grid_centre_z_m};
+    j["cull"] = in.params.cull;
+    j["patches"] = sel.instances.size();
+    j["triangles"] = triangles;
+    j["draws"] = sel.batches.size();
+    j["patches_per_level"] = std::vector<std::uint32_t>(
+        sel.patches_per_level.begin(), sel.patches_per_level.begin() + sel.max_level + 1);
+    j["patches_per_config"] = sel.patches_per_config;
+    nlohmann::ordered_json batches = nlohmann::ordered_json::array();
+    for (const lod::Batch& b : sel.batches) {
+      batches.push_back({{"config", b.config}, {"first", b.first}, {"count", b.count}});
+    }
+    j["batches"] = batches;
+    if (!o.out.empty()) j["obj"] = o.out;
+    if (!o.png.empty()) j["png"] = o.png;
+    print_json(j);
+    return kExitOk;
+  }
+  std::cout << "ocean " << in.params.ocean_size_m << " m, preset " << lod::preset_name(in.preset)
+            << " (V " << q.vertices << ", tau " << q.lod_scale << ", beta " << q.cull_scale
+            << "), L_max " << sel.max_level << ", grid centre (" << sel.grid_centre_x_m << ", "
+            << sel.grid_centre_z_m << ") m\n"
+            << sel.instances.size() << " patches, " << triangles << " triangles, "
+            << sel.batches.size() << " instanced draws" << (in.params.cull ? "" : " (no culling)")
+            << "\n\nlevel  size_m      patches\n";
+  for (int l = 0; l <= sel.max_level; ++l) {
+    std::cout << std::left << std::setw(7) << l << std::setw(12)
+              << in.params.ocean_size_m / (1 << l)
+              << sel.patches_per_level[static_cast<std::size_t>(l)] << "\n";
+  }
+  std::cout << "\nconfig  coarser_edges  patches\n";
+  for (int c = 0; c < lod::kConfigurations; ++c) {
+    std::cout << std::setw(8) << c << std::setw(15) << config_name(c)
+              << sel.patches_per_config[static_cast<std::size_t>(c)] << "\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_lod_command(CLI::App& app) {
+  auto options = std::make_shared<LodOptions>();
+  CLI::App* command = app.add_subcommand(
+      "lod",
+      "Quadtree LOD patches for one camera: counts per level and stitching configuration, "
+      "the mesh as OBJ");
+  command->add_option("--camera", options->camera, "camera position X,Y,Z, m (Y up)")->required();
+  command->add_option("--target", options->target, "point the camera looks at X,Y,Z, m")
+      ->required();
+  command->add_option("--preset", options->preset, "quality: low, medium, high or ultra")
+      ->capture_default_str();
+  command->add_option("--ocean-size", options->ocean_size, "side S of the ocean square, m")
+      ->capture_default_str();
+  command->add_option("--center", options->centre,
+                      "fix the grid centre at X,Z, m (default: the camera, snapped)");
+  command->add_option("--fov", options->fov, "vertical field of view, degrees")
+      ->capture_default_str();
+  command->add_option("--aspect", options->aspect, "width/height")->capture_default_str();
+  command->add_flag("--no-cull", options->no_cull,
+                    "keep patches outside the view frustum (the whole square)");
+  command->add_option("--out", options->out,
+                      "write the selected mesh as OBJ (world m, undisplaced, no skirt)");
+  command->add_option("--png", options->png, "write a top-down PNG of the patch layout");
+  command->add_flag("--json", options->json, "print JSON instead of tables");
+  return {command, [options] { return run_lod(*options); }};
+}
+
+}  // namespace ocean::cli

@@ -1,0 +1,172 @@
+// ocean/vk.hpp — the small Vulkan layer shared by the compute backend and the renderer: instance
+// (optionally with the Khronos validation layer), device enumeration and selection, one compute
+// queue, buffers and images with memory-type selection, compute pipelines from SPIR-V words,
+// one-shot command submission and timestamp queries.
+//
+// Style: plain C API of <vulkan/vulkan.h>, POD structs and free functions (after zeux/niagara).
+// Every function that can fail for environmental reasons (no driver, out of memory, device lost)
+// returns Status/Result with a one-line message that says what to do; misuse asserts.
+//
+// Threading: a Context may be shared; its queue must be used from one thread at a time.
+#pragma once
+
+#include <vulkan/vulkan.h>
+
+#include <atomic>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "ocean/core.hpp"
+
+namespace ocean::vk {
+
+/// A physical device as `ocean info` lists it.
+struct DeviceInfo {
+  std::string name;         ///< VkPhysicalDeviceProperties::deviceName
+  std::string type;         ///< "discrete", "integrated", "virtual", "cpu" or "other"
+  std::string api_version;  ///< "1.3.230"
+  std::string driver;       ///< driver name and version where known
+  bool usable = false;      ///< Vulkan ≥ 1.1 with a compute queue
+  std::string reason;       ///< why not usable (empty when usable)
+};
+
+struct ContextParams {
+  /// Enables VK_LAYER_KHRONOS_validation and a debug messenger that counts its messages.
+  /// The environment variable OCEAN_VK_VALIDATION=1 turns it on as well.
+  bool validation = false;
+  /// Index into list_devices(); −1 picks the best usable one (discrete > integrated > cpu).
+  int device_index = -1;
+};
+
+/// An instance, a logical device and its compute queue.
+struct Context {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;
+  VkDevice device = VK_NULL_HANDLE;
+  VkQueue queue = VK_NULL_HANDLE;
+  std::uint32_t queue_family = 0;
+  VkPhysicalDeviceProperties properties{};
+  VkPhysicalDeviceMemoryProperties memory{};
+  DeviceInfo info;
+  bool validation = false;  ///< the validation layer is active
+  bool timestamps = false;  ///< the compute queue supports timestamp queries
+  double timestamp_period_ns = 1.0;
+  /// Validation warnings and errors reported so far (tests assert zero); performance advice
+  /// is not counted.
+  std::atomic<std::uint32_t> validation_messages{0};
+  /// The last validation message, for test failure output.
+  std::string last_validation_message;
+
+  Context() = default;
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
+  ~Context();
+};
+
+/// Every physical device of the Vulkan loader; an `unsupported` Status when there is no loader
+/// or no device ("no Vulkan device: install mesa-vulkan-drivers or a GPU driver").
+Result<std::vector<DeviceInfo>> list_devices();
+/// Creates instance, device and queue. Unusable or absent devices give `unsupported`.
+Result<std::unique_ptr<Context>> create_context(const ContextParams& params = {});
+
+/// Maps a failed VkResult to a Status: out of memory and device lost get messages that say what
+/// to do; `what` names the operation ("vkQueueSubmit").
+Status check(VkResult result, const char* what);
+
+/// A buffer and its own memory allocation. `mapped` is non-null for host-visible buffers.
+struct Buffer {
+  VkBuffer buffer = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkDeviceSize size = 0;
+  void* mapped = nullptr;
+};
+enum class MemoryUse {
+  device,    ///< device-local, not mapped
+  upload,    ///< host-visible and coherent, mapped (CPU writes, GPU reads)
+  readback,  ///< host-visible, coherent (cached where possible), mapped (GPU writes, CPU reads)
+};
+Result<Buffer> create_buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                             MemoryUse use);
+void destroy_buffer(const Context& ctx, Buffer& buffer);
+
+/// A 2D array image with a full-image view and one view per mip level (for storage writes).
+struct Image {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;   ///< all mips and layers (for sampling)
+  std::vector<VkImageView> mip_views;  ///< level m, all layers (for imageStore)
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  std::uint32_t size = 0, layers = 0, mips = 0;
+};
+Result<Image> create_image_array(const Context& ctx, VkFormat format, std::uint32_t size,
+                                 std::uint32_t layers, std::uint32_t mips, VkImageUsageFlags usage);
+void destroy_image(const Context& ctx, Image& image);
+
+/// A compute pipeline, its layout and its shader module.
+struct ComputePipeline {
+  VkShaderModule module = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+};
+/// Builds a pipeline from SPIR-V words; `specialization` sets constant_id 0, 1, ... in order.
+Result<ComputePipeline> create_compute_pipeline(const Context& ctx,
+                                                std::span<const std::uint32_t> spirv,
+                                                VkPipelineLayout layout,
+                                                std::span<const std::uint32_t> specialization = {});
+void destroy_pipeline(const Context& ctx, ComputePipeline& pipeline);
+
+/// A command pool with one primary command buffer and a fence.
+struct Commands {
+  VkCommandPool pool = VK_NULL_HANDLE;
+  VkCommandBuffer buffer = VK_NULL_HANDLE;
+  VkFence fence = VK_NULL_HANDLE;
+};
+Result<Commands> create_commands(const Context& ctx);
+void destroy_commands(const Context& ctx, Commands& commands);
+/// Submits commands.buffer (already recorded) and returns without waiting.
+Status submit(const Context& ctx, const Commands& commands);
+/// Waits for the last submit (timeout in ns) and resets the fence.
+Status wait(const Context& ctx, const Commands& commands,
+            std::uint64_t timeout_ns = 10'000'000'000);
+/// Records with `record`, submits and waits: for uploads and other one-off work.
+template <typename F>
+Status run_once(const Context& ctx, const Commands& commands, F&& record);
+
+/// A global memory barrier from the writes of `src` stages to the reads and writes of `dst`
+/// stages (compute, transfer, host): coarse and correct.
+void barrier(VkCommandBuffer cmd, VkPipelineStageFlags src = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+             VkPipelineStageFlags dst = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+
+/// A timestamp query pool of `count` queries.
+struct Timestamps {
+  VkQueryPool pool = VK_NULL_HANDLE;
+  std::uint32_t count = 0;
+};
+Result<Timestamps> create_timestamps(const Context& ctx, std::uint32_t count);
+void destroy_timestamps(const Context& ctx, Timestamps& timestamps);
+/// Reads every query (after the work finished) as milliseconds since query 0.
+Status read_timestamps_ms(const Context& ctx, const Timestamps& timestamps,
+                          std::span<double> out_ms);
+
+// ---------------------------------------------------------------------------------------------
+
+template <typename F>
+Status run_once(const Context& ctx, const Commands& commands, F&& record) {
+  if (Status s = check(vkResetCommandBuffer(commands.buffer, 0), "vkResetCommandBuffer"); !s.ok())
+    return s;
+  const VkCommandBufferBeginInfo begin{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
+                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
+  if (Status s = check(vkBeginCommandBuffer(commands.buffer, &begin), "vkBeginCommandBuffer");
+      !s.ok())
+    return s;
+  record(commands.buffer);
+  if (Status s = check(vkEndCommandBuffer(commands.buffer), "vkEndCommandBuffer"); !s.ok())
+    return s;
+  if (Status s = submit(ctx, commands); !s.ok()) return s;
+  return wait(ctx, commands);
+}
+
+}  // namespace ocean::vk

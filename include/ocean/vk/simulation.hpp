@@ -1,0 +1,95 @@
+// ocean/vk/simulation.hpp — the Vulkan compute simulation backend: the CPU reference pipeline
+// (evolution, inverse FFT, displacement, normals, Jacobian, foam, packed mips) as compute
+// shaders, all cascades in one dispatch per stage, results in GPU images for the renderer and
+// read back into the Frame arrays for queries and tests.
+//
+// Conformance (tests/backends/conformance_test.cpp, src/backends/vulkan/README.md): every output
+// matches the CPU backend for the same configuration; displacement within 1e-4·Hs.
+//
+// Contract: configure() allocates every buffer, image, pipeline and the pre-recorded command
+// buffer; step()/submit()/read() allocate nothing and create nothing. A device lost or a timeout
+// during a frame leaves the Frame arrays unchanged and is reported by status() with a one-line
+// message; configure() reports out-of-memory and unsupported limits the same way.
+// Threading: one thread drives a backend at a time (the Simulator guarantees this).
+#pragma once
+
+#include <memory>
+
+#include "ocean/sim.hpp"
+#include "ocean/vk.hpp"
+
+namespace ocean::vk {
+
+namespace detail {
+struct GpuState;  // every Vulkan object of a configured simulation (src/backends/vulkan)
+}
+
+/// GPU time of each stage of one frame, from timestamp queries, milliseconds.
+struct StageTimings {
+  double evolve_fft_rows_ms = 0.0;  ///< evolution fused into the first FFT axis
+  double fft_columns_ms = 0.0;      ///< second FFT axis and the (−1)^(x+y) sign
+  double finalize_ms = 0.0;         ///< displacement, normals, Jacobian, foam, base packing
+  double mips_ms = 0.0;             ///< mip chain of the packed map, every level
+  double readback_ms = 0.0;         ///< copies of every output into host-visible memory
+  double total_ms = 0.0;            ///< first to last timestamp
+};
+
+/// The simulation's GPU images, valid until the next configure() or destruction. Both stay in
+/// VK_IMAGE_LAYOUT_GENERAL; a frame's writes are complete when step() or read() returns.
+struct SimulationImages {
+  VkImage displacement = VK_NULL_HANDLE;  ///< RGBA16F (Dx, h, Dz, 0), one array layer per cascade
+  VkImageView displacement_view = VK_NULL_HANDLE;
+  VkImage normal_foam = VK_NULL_HANDLE;  ///< RGBA8 unorm (n_x, n_z, blue, smoothness), all mips
+  VkImageView normal_foam_view = VK_NULL_HANDLE;
+  std::uint32_t size = 0, layers = 0, mips = 0;
+};
+
+class VulkanBackend final : public Backend {
+ public:
+  /// Uses `context` (shared with a renderer, for instance); see make_vulkan_backend.
+  explicit VulkanBackend(std::shared_ptr<Context> context);
+  ~VulkanBackend() override;
+  VulkanBackend(const VulkanBackend&) = delete;
+  VulkanBackend& operator=(const VulkanBackend&) = delete;
+
+  [[nodiscard]] std::string_view name() const override { return "vulkan"; }
+  /// Unsupported configurations (a resolution beyond the device's shared memory or storage-buffer
+  /// range) answer `unsupported` with a message naming the limit.
+  Status configure(const SimulationConfig& config, TaskRunner& runner) override;
+  void allocate(Frame& frame) const override;
+  /// submit(time_s) then read(out).
+  void step(double time_s, Frame& out) override;
+
+  /// Asynchronous use: submit() starts the frame at time_s and returns; read() waits for it and
+  /// copies the outputs into `out`. The GPU images are complete once read() returns.
+  Status submit(double time_s);
+  Status read(Frame& out);
+
+  /// The first failure of a frame since configure(); ok while everything works.
+  [[nodiscard]] const Status& status() const { return status_; }
+  /// Stage times of the last completed frame (zeros when the device has no timestamps).
+  [[nodiscard]] const StageTimings& timings() const { return timings_; }
+  [[nodiscard]] SimulationImages images() const;
+  [[nodiscard]] const Context& context() const { return *context_; }
+
+ private:
+  std::shared_ptr<Context> context_;
+  std::unique_ptr<detail::GpuState> gpu_;
+  SimulationConfig config_;
+  Status status_;
+  StageTimings timings_;
+  double last_time_s_ = 0.0;
+  bool has_stepped_ = false;
+  bool pending_ = false;
+  double pending_time_s_ = 0.0;
+};
+
+/// Creates a context (see ContextParams) and a backend on it.
+Result<std::unique_ptr<VulkanBackend>> make_vulkan_backend(const ContextParams& params = {});
+
+/// Runs `frames` frames (after one warm-up frame) of `config` and returns the mean GPU time of
+/// each stage. `unsupported` when no device or no timestamps.
+Result<StageTimings> benchmark(const SimulationConfig& config, int frames,
+                               const ContextParams& params = {});
+
+}  // namespace ocean::vk

@@ -1,0 +1,80 @@
+// ocean_shared.h — constants and layouts shared by the C++ Vulkan backend and the GLSL compute
+// shaders (one source of truth, after zeux/niagara). Included by both languages: keep to #define
+// constants and structs of 32-bit scalars whose std430 layout equals the C++ layout.
+#ifndef OCEAN_SHARED_H
+#define OCEAN_SHARED_H
+
+#ifdef __cplusplus
+#include <cstdint>
+namespace ocean::vk::shader {
+using uint = std::uint32_t;
+#endif
+
+// Limits. kMaxCascades mirrors validate(SimulationConfig); 2048² is the largest resolution.
+#define OCEAN_MAX_CASCADES 8
+#define OCEAN_MAX_MIPS 12
+#define OCEAN_MAX_PLANES 4
+// Side of the square workgroup of the per-texel kernels (finalize, mips).
+#define OCEAN_TILE 8
+
+// Descriptor bindings of the single descriptor set (set 0).
+#define OCEAN_BINDING_PARAMS 0       // SimParams, std430, host-written each frame
+#define OCEAN_BINDING_SPECTRUM 1     // vec4 packed S' per texel, all cascades (M.6.5)
+#define OCEAN_BINDING_PHASE_RATE 2   // float per texel: loop harmonic j, or ω without a loop
+#define OCEAN_BINDING_TWIDDLE 3      // vec2 e^{+2πi·t/N}, t ∈ [0, N)
+#define OCEAN_BINDING_PLANES 4       // vec2 per texel per plane per cascade (FFT work)
+#define OCEAN_BINDING_DISPLACEMENT 5 // float3 per texel (Dx, h, Dz)
+#define OCEAN_BINDING_DISP_HALF 6    // uint2 per texel: half4 (Dx, h, Dz, 0)
+#define OCEAN_BINDING_NORMAL 7       // float3 per texel
+#define OCEAN_BINDING_JACOBIAN 8     // float per texel
+#define OCEAN_BINDING_FOAM 9         // float per texel; also the accumulated foam state
+#define OCEAN_BINDING_MIP_WORK 10    // vec4 (n·|n|, blue) per mip texel
+#define OCEAN_BINDING_PACKED 11      // uint RGBA8 per mip texel (seed 000 eq. 51)
+#define OCEAN_BINDING_DISP_IMAGE 12  // image2DArray rgba16f, one layer per cascade
+#define OCEAN_BINDING_NORMAL_IMAGE 13 // image2DArray rgba8[OCEAN_MAX_MIPS], one view per mip
+#define OCEAN_BINDING_COUNT 14
+
+// SimParams::normal_method
+#define OCEAN_NORMALS_CENTRAL 0
+#define OCEAN_NORMALS_SOBEL 1
+#define OCEAN_NORMALS_ANALYTIC 2
+
+// Everything the kernels read besides the data arrays. Per-frame fields are rewritten by the
+// host before each submit; the rest is set at configure().
+struct SimParams {
+  uint cascades;
+  uint planes;         // complex planes per cascade: 2, or 4 for analytic normals (M.7.2)
+  uint normal_method;  // OCEAN_NORMALS_*
+  uint blue_is_foam;   // 1: blue = foam, 0: blue = saturate(J/2 + 1/2)
+  // Per frame: the phase turns = frac(phase_rate·a) with a = phase_hi + phase_mid + phase_lo,
+  // split so that every partial product is exact in FP32 (M.7.3).
+  float phase_hi;
+  float phase_mid;
+  float phase_lo;
+  float foam_decay;  // per frame: decay_per_s·dt
+  uint reset_foam;   // per frame: 1 on the first step or after a jump back in time
+  float choppiness;  // λ
+  float j_start;     // foam ramp (M.7.4)
+  float j_range;     // jacobian_start − jacobian_full
+  float base_length;      // normal length from roughness (seed 000 eq. 49)
+  float base_smoothness;  // smoothness of base_length (eq. 53)
+  uint pad0;
+  uint pad1;
+  float dk[OCEAN_MAX_CASCADES];           // 2π/L, rad/m
+  float inv_spacing[OCEAN_MAX_CASCADES];  // N/L, 1/m
+  uint mip_offset[OCEAN_MAX_MIPS + 4];    // mip_offset(N, m) (eq. 55)
+};
+
+// Push constants of the mip kernel.
+struct MipPush {
+  uint level;  // destination level ≥ 1
+  uint size;   // N >> level
+  uint pad0;
+  uint pad1;
+};
+
+#ifdef __cplusplus
+}  // namespace ocean::vk::shader
+#endif
+
+#endif  // OCEAN_SHARED_H

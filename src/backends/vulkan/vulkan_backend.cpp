@@ -1,0 +1,273 @@
+// The Vulkan compute backend: host side. configure() generates every cascade's spectrum with the
+// CPU code (on demand: again at each reconfigure), converts ω into the exact phase rate of M.7.3
+// and uploads it once; a frame writes the per-frame parameters, resubmits the pre-recorded
+// command buffer and copies the read-back outputs into the Frame.
+//
+// This work is based on: seed 000 §4.2 (stage chain), §4.2.1 (spectrum regenerated on demand);
+// docs/math.md (M.7.3) for the exact looping phase.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "gpu_state.hpp"
+#include "ocean/vk/simulation.hpp"
+
+namespace ocean::vk {
+namespace {
+
+// x truncated to 12 significant bits, so that products with another 12-bit value are exact.
+float truncate12(double x) {
+  if (x == 0.0) return 0.0f;
+  int e = 0;
+  const double m = std::frexp(x, &e);
+  return static_cast<float>(std::ldexp(std::trunc(m * 4096.0) / 4096.0, e));
+}
+
+// Splits a ≥ 0 into hi + mid + lo (hi, mid with 12 significant bits) for phase_turns (M.7.3).
+void split_phase(double a, shader::SimParams& p) {
+  p.phase_hi = truncate12(a);
+  const double rest = a - static_cast<double>(p.phase_hi);
+  p.phase_mid = truncate12(rest);
+  p.phase_lo = static_cast<float>(rest - static_cast<double>(p.phase_mid));
+}
+
+Status limit(bool ok, const std::string& what) {
+  return ok ? Status{} : unsupported("unsupported on this Vulkan device: " + what);
+}
+
+}  // namespace
+
+VulkanBackend::VulkanBackend(std::shared_ptr<Context> context) : context_(std::move(context)) {}
+VulkanBackend::~VulkanBackend() = default;
+
+Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*runner*/) {
+  if (Status s = validate(config); !s.ok()) return s;
+  Result<SeaState> sea = SeaState::make(config.sea);
+  if (!sea.ok()) return sea.status();
+  const auto n = static_cast<std::uint32_t>(config.resolution);
+  const auto cascades = static_cast<std::uint32_t>(config.cascade_patch_sizes_m.size());
+  const std::uint32_t planes = config.normals == NormalMethod::analytic ? 4u : 2u;
+  const std::size_t texels = std::size_t{n} * n;
+  const VkPhysicalDeviceLimits& lim = context_->properties.limits;
+  const std::string res = "resolution " + std::to_string(n);
+  if (Status s =
+          limit(n * 8 <= lim.maxComputeSharedMemorySize,
+                res + " needs " + std::to_string(n * 8) + " bytes of shared memory, device has " +
+                    std::to_string(lim.maxComputeSharedMemorySize) + ": lower resolution");
+      !s.ok())
+    return s;
+  if (Status s = limit(
+          n / 4 <= lim.maxComputeWorkGroupInvocations && n / 4 <= lim.maxComputeWorkGroupSize[0],
+          res + " needs workgroups of " + std::to_string(n / 4) + " invocations");
+      !s.ok())
+    return s;
+  const double plane_bytes = 8.0 * cascades * planes * static_cast<double>(texels);
+  if (Status s = limit(plane_bytes <= lim.maxStorageBufferRange,
+                       res + " with " + std::to_string(cascades) + " cascades and " +
+                           std::to_string(planes) + " planes needs a " +
+                           std::to_string(static_cast<long long>(plane_bytes) >> 20) +
+                           " MiB storage buffer, device allows " +
+                           std::to_string(lim.maxStorageBufferRange >> 20) +
+                           " MiB: lower resolution or cascades");
+      !s.ok())
+    return s;
+
+  // Spectra on the host (the CPU reference code), phase rates for exact evolution (M.7.3): with
+  // a loop the integer harmonic j = ω'/ω0, else ω itself.
+  std::vector<float> spectrum(4 * cascades * texels), phase_rate(cascades * texels);
+  const double omega0 = config.loop_period_s > 0.0 ? 2.0 * kPi / config.loop_period_s : 0.0;
+  for (std::uint32_t c = 0; c < cascades; ++c) {
+    Result<InitialSpectrum> h0 =
+        make_initial_spectrum(sea.value(), cascade_spectrum_params(config, c));
+    if (!h0.ok())
+      return Status(h0.status().code(),
+                    "cascade " + std::to_string(c) + ": " + h0.status().message());
+    std::memcpy(&spectrum[4 * c * texels], h0.value().packed.data(), 16 * texels);
+    for (std::size_t i = 0; i < texels; ++i) {
+      const double omega = h0.value().omega[i];
+      phase_rate[c * texels + i] = omega0 > 0.0 ? static_cast<float>(std::lround(omega / omega0))
+                                                : static_cast<float>(omega);
+    }
+  }
+  std::vector<float> twiddle(2 * n);
+  for (std::uint32_t t = 0; t < n; ++t) {  // e^{+2πi·t/N}, double precision then float
+    const double angle = 2.0 * kPi * t / n;
+    twiddle[2 * t] = static_cast<float>(std::cos(angle));
+    twiddle[2 * t + 1] = static_cast<float>(std::sin(angle));
+  }
+
+  shader::SimParams p{};
+  p.cascades = cascades;
+  p.planes = planes;
+  p.normal_method = config.normals == NormalMethod::analytic ? OCEAN_NORMALS_ANALYTIC
+                    : config.normals == NormalMethod::sobel  ? OCEAN_NORMALS_SOBEL
+                                                             : OCEAN_NORMALS_CENTRAL;
+  p.blue_is_foam = config.blue_channel == BlueChannel::foam ? 1u : 0u;
+  p.reset_foam = 1u;
+  p.choppiness = static_cast<float>(config.choppiness);
+  p.j_start = static_cast<float>(config.foam.jacobian_start);
+  p.j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
+  const float r = static_cast<float>(config.roughness);
+  p.base_length = 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));      // seed 000 eq. 49
+  const float t = std::clamp(3.0f * p.base_length - 2.0f, 0.0f, 1.0f);  // eq. 53
+  p.base_smoothness = 1.0f - std::sqrt((1.0f - t) * (1.0f + 0.15f * t));
+  for (std::uint32_t c = 0; c < cascades; ++c) {
+    const double L = config.cascade_patch_sizes_m[c];
+    p.dk[c] = static_cast<float>(2.0 * kPi / L);
+    p.inv_spacing[c] = static_cast<float>(n / L);
+  }
+  const int levels = std::countr_zero(n);
+  for (int m = 0; m <= levels; ++m)
+    p.mip_offset[m] = static_cast<std::uint32_t>(mip_offset(config.resolution, m));
+  p.mip_offset[levels + 1] = static_cast<std::uint32_t>(mip_chain_texels(config.resolution));
+
+  gpu_.reset();  // frees the previous configuration first (lower peak memory)
+  auto gpu = std::make_unique<detail::GpuState>();
+  if (Status s = detail::create_gpu_state(*gpu, *context_, n, cascades, planes,
+                                          {spectrum, phase_rate, twiddle}, p);
+      !s.ok())
+    return s;
+  gpu_ = std::move(gpu);
+  config_ = config;
+  status_ = {};
+  timings_ = {};
+  has_stepped_ = false;
+  pending_ = false;
+  return {};
+}
+
+void VulkanBackend::allocate(Frame& frame) const {
+  const std::size_t texels =
+      static_cast<std::size_t>(config_.resolution) * static_cast<std::size_t>(config_.resolution);
+  frame.cascades.resize(config_.cascade_patch_sizes_m.size());
+  for (std::size_t c = 0; c < frame.cascades.size(); ++c) {
+    CascadeFrame& f = frame.cascades[c];
+    f.resolution = config_.resolution;
+    f.patch_size_m = config_.cascade_patch_sizes_m[c];
+    f.displacement.assign(3 * texels, 0.0f);
+    f.displacement_half.assign(4 * texels, 0);
+    f.normal.assign(3 * texels, 0.0f);
+    f.jacobian.assign(texels, 1.0f);
+    f.foam.assign(texels, 0.0f);
+    f.packed_mips.assign(mip_chain_texels(config_.resolution), 0u);
+  }
+}
+
+Status VulkanBackend::submit(double time_s) {
+  if (!status_.ok()) return status_;
+  // Foam accumulates over the time since the previous step; a first step or a jump back in
+  // time starts it afresh (as the CPU backend).
+  const bool reset_foam = !has_stepped_ || time_s < last_time_s_;
+  const double dt = reset_foam ? 0.0 : time_s - last_time_s_;
+  auto* p = static_cast<shader::SimParams*>(gpu_->params.mapped);
+  if (config_.loop_period_s > 0.0) {
+    const double cycles = time_s / config_.loop_period_s;  // as EvolutionPhase: τ = frac(t/T)
+    split_phase(cycles - std::floor(cycles), *p);
+  } else {
+    split_phase(time_s / (2.0 * kPi), *p);
+  }
+  p->foam_decay = static_cast<float>(config_.foam.decay_per_s * dt);
+  p->reset_foam = reset_foam ? 1u : 0u;
+  if (Status s = vk::submit(*context_, gpu_->frame); !s.ok()) {
+    status_ = s;
+    return s;
+  }
+  pending_ = true;
+  pending_time_s_ = time_s;
+  last_time_s_ = time_s;
+  has_stepped_ = true;
+  return {};
+}
+
+Status VulkanBackend::read(Frame& out) {
+  if (!pending_) return status_;
+  pending_ = false;
+  if (Status s = wait(*context_, gpu_->frame); !s.ok()) {
+    status_ = s;
+    return s;
+  }
+  for (std::size_t c = 0; c < out.cascades.size(); ++c) {
+    CascadeFrame& f = out.cascades[c];
+    void* dst[detail::kOutputs] = {f.displacement.data(), f.displacement_half.data(),
+                                   f.normal.data(),       f.jacobian.data(),
+                                   f.foam.data(),         f.packed_mips.data()};
+    for (std::size_t o = 0; o < detail::kOutputs; ++o) {
+      const std::size_t bytes = gpu_->bytes_per_cascade[o];
+      std::memcpy(dst[o], static_cast<const char*>(gpu_->host[o].mapped) + c * bytes, bytes);
+    }
+  }
+  if (gpu_->stamps.pool != VK_NULL_HANDLE) {
+    double ms[detail::kStamps];
+    if (Status s = read_timestamps_ms(*context_, gpu_->stamps, ms); !s.ok()) {
+      status_ = s;
+      return s;
+    }
+    timings_ = {.evolve_fft_rows_ms = ms[detail::rows] - ms[detail::start],
+                .fft_columns_ms = ms[detail::columns] - ms[detail::rows],
+                .finalize_ms = ms[detail::finalized] - ms[detail::columns],
+                .mips_ms = ms[detail::mipped] - ms[detail::finalized],
+                .readback_ms = ms[detail::copied] - ms[detail::mipped],
+                .total_ms = ms[detail::copied] - ms[detail::start]};
+  }
+  out.time_s = pending_time_s_;
+  ++out.index;
+  return {};
+}
+
+void VulkanBackend::step(double time_s, Frame& out) {
+  if (submit(time_s).ok()) (void)read(out);
+}
+
+SimulationImages VulkanBackend::images() const {
+  if (!gpu_) return {};
+  return {.displacement = gpu_->displacement_image.image,
+          .displacement_view = gpu_->displacement_image.view,
+          .normal_foam = gpu_->normal_image.image,
+          .normal_foam_view = gpu_->normal_image.view,
+          .size = gpu_->resolution,
+          .layers = gpu_->cascades,
+          .mips = gpu_->normal_image.mips};
+}
+
+Result<std::unique_ptr<VulkanBackend>> make_vulkan_backend(const ContextParams& params) {
+  Result<std::unique_ptr<Context>> ctx = create_context(params);
+  if (!ctx.ok()) return ctx.status();
+  return std::make_unique<VulkanBackend>(std::shared_ptr<Context>(std::move(ctx).value()));
+}
+
+Result<StageTimings> benchmark(const SimulationConfig& config, int frames,
+                               const ContextParams& params) {
+  if (frames < 1) return invalid_argument("frames = " + std::to_string(frames) + " must be ≥ 1");
+  Result<std::unique_ptr<VulkanBackend>> backend = make_vulkan_backend(params);
+  if (!backend.ok()) return backend.status();
+  VulkanBackend& b = *backend.value();
+  if (!b.context().timestamps)
+    return unsupported("Vulkan device '" + b.context().info.name + "' has no compute timestamps");
+  std::unique_ptr<TaskRunner> runner = make_serial_runner();
+  if (Status s = b.configure(config, *runner); !s.ok()) return s;
+  Frame frame;
+  b.allocate(frame);
+  b.step(0.0, frame);  // warm-up
+  StageTimings sum;
+  for (int i = 0; i < frames; ++i) {
+    b.step((i + 1) / 60.0, frame);
+    if (!b.status().ok()) return b.status();
+    const StageTimings& t = b.timings();
+    sum.evolve_fft_rows_ms += t.evolve_fft_rows_ms;
+    sum.fft_columns_ms += t.fft_columns_ms;
+    sum.finalize_ms += t.finalize_ms;
+    sum.mips_ms += t.mips_ms;
+    sum.readback_ms += t.readback_ms;
+    sum.total_ms += t.total_ms;
+  }
+  const double inv = 1.0 / frames;
+  for (double* v : {&sum.evolve_fft_rows_ms, &sum.fft_columns_ms, &sum.finalize_ms, &sum.mips_ms,
+                    &sum.readback_ms, &sum.total_ms})
+    *v *= inv;
+  return sum;
+}
+
+}  // namespace ocean::vk

@@ -1,0 +1,275 @@
+// Instance, validation messenger, physical-device enumeration and selection, logical device with
+// one compute queue, and VkResult → Status mapping.
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <mutex>
+#include <string>
+
+#include "ocean/vk.hpp"
+
+namespace ocean::vk {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+constexpr const char* kNoDevice = "no Vulkan device: install mesa-vulkan-drivers or a GPU driver";
+
+std::mutex g_message_mutex;  // guards Context::last_validation_message across callbacks
+
+std::string version_string(std::uint32_t v) {
+  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
+         "." + std::to_string(VK_API_VERSION_PATCH(v));
+}
+
+const char* type_name(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+    default: return "other";
+  }
+}
+
+// Preference when choosing automatically: discrete > integrated > virtual > cpu > other.
+int type_rank(VkPhysicalDeviceType type) {
+  switch (type) {
+    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+    case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
+    default: return 0;
+  }
+}
+
+bool has_layer(const char* name) {
+  std::uint32_t count = 0;
+  if (vkEnumerateInstanceLayerProperties(&count, nullptr) != VK_SUCCESS) return false;
+  std::vector<VkLayerProperties> layers(count);
+  if (vkEnumerateInstanceLayerProperties(&count, layers.data()) != VK_SUCCESS) return false;
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) {
+    return std::strcmp(l.layerName, name) == 0;
+  });
+}
+
+VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                          VkDebugUtilsMessageTypeFlagsEXT /*types*/,
+                                          const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                          void* user) {
+  auto* ctx = static_cast<Context*>(user);
+  if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT && ctx != nullptr) {
+    ctx->validation_messages.fetch_add(1);
+    const std::lock_guard lock(g_message_mutex);
+    ctx->last_validation_message = data->pMessage != nullptr ? data->pMessage : "";
+  }
+  return VK_FALSE;
+}
+
+Status create_instance(Context& ctx, bool validation) {
+  const VkApplicationInfo app{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
+                              .pApplicationName = "ocean",
+                              .applicationVersion = VK_MAKE_API_VERSION(0, 0, 1, 0),
+                              .pEngineName = "ocean",
+                              .engineVersion = VK_MAKE_API_VERSION(0, 0, 1, 0),
+                              .apiVersion = VK_API_VERSION_1_2};
+  const char* layers[] = {kValidationLayer};
+  const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+  const VkDebugUtilsMessengerCreateInfoEXT messenger_info{
+      .sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
+      .messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                         VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
+      // Performance advice (e.g. "prefer TRANSFER_SRC_OPTIMAL over GENERAL") is not counted: the
+      // simulation's images stay in GENERAL on purpose, shared by compute, copies and sampling.
+      .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                     VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT,
+      .pfnUserCallback = on_message,
+      .pUserData = &ctx};
+  const VkInstanceCreateInfo info{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
+                                  .pNext = validation ? &messenger_info : nullptr,
+                                  .pApplicationInfo = &app,
+                                  .enabledLayerCount = validation ? 1u : 0u,
+                                  .ppEnabledLayerNames = validation ? layers : nullptr,
+                                  .enabledExtensionCount = validation ? 1u : 0u,
+                                  .ppEnabledExtensionNames = validation ? extensions : nullptr};
+  const VkResult r = vkCreateInstance(&info, nullptr, &ctx.instance);
+  if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
+    return unsupported(kNoDevice);
+  if (Status s = check(r, "vkCreateInstance"); !s.ok()) return s;
+  if (validation) {
+    auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(ctx.instance, "vkCreateDebugUtilsMessengerEXT"));
+    if (create == nullptr) return unsupported("the Vulkan loader lacks VK_EXT_debug_utils");
+    if (Status s = check(create(ctx.instance, &messenger_info, nullptr, &ctx.messenger),
+                         "vkCreateDebugUtilsMessengerEXT");
+        !s.ok())
+      return s;
+  }
+  ctx.validation = validation;
+  return {};
+}
+
+// The first queue family with compute (a graphics+compute family is fine).
+bool find_compute_family(VkPhysicalDevice physical, std::uint32_t& family, bool& timestamps) {
+  std::uint32_t count = 0;
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
+  std::vector<VkQueueFamilyProperties> families(count);
+  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+  for (std::uint32_t i = 0; i < count; ++i) {
+    if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) != 0) {
+      family = i;
+      timestamps = families[i].timestampValidBits > 0;
+      return true;
+    }
+  }
+  return false;
+}
+
+DeviceInfo describe(VkPhysicalDevice physical) {
+  VkPhysicalDeviceDriverProperties driver{.sType =
+                                              VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+  VkPhysicalDeviceProperties2 props{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
+                                    .pNext = &driver};
+  vkGetPhysicalDeviceProperties2(physical, &props);
+  DeviceInfo info;
+  info.name = props.properties.deviceName;
+  info.type = type_name(props.properties.deviceType);
+  info.api_version = version_string(props.properties.apiVersion);
+  info.driver = std::string(driver.driverName) + " " + driver.driverInfo;
+  std::uint32_t family = 0;
+  bool timestamps = false;
+  if (props.properties.apiVersion < VK_API_VERSION_1_2) {
+    info.reason = "Vulkan " + info.api_version + " < 1.2: update the driver";
+  } else if (!find_compute_family(physical, family, timestamps)) {
+    info.reason = "no compute queue";
+  } else {
+    info.usable = true;
+  }
+  return info;
+}
+
+Result<std::vector<VkPhysicalDevice>> physical_devices(VkInstance instance) {
+  std::uint32_t count = 0;
+  if (Status s = check(vkEnumeratePhysicalDevices(instance, &count, nullptr),
+                       "vkEnumeratePhysicalDevices");
+      !s.ok())
+    return s;
+  std::vector<VkPhysicalDevice> devices(count);
+  if (Status s = check(vkEnumeratePhysicalDevices(instance, &count, devices.data()),
+                       "vkEnumeratePhysicalDevices");
+      !s.ok())
+    return s;
+  devices.resize(count);
+  if (devices.empty()) return unsupported(kNoDevice);
+  return devices;
+}
+
+}  // namespace
+
+Status check(VkResult result, const char* what) {
+  if (result == VK_SUCCESS) return {};
+  const std::string op(what);
+  switch (result) {
+    case VK_ERROR_OUT_OF_HOST_MEMORY:
+      return {ErrorCode::internal,
+              op + ": out of host memory: free memory or lower the resolution"};
+    case VK_ERROR_OUT_OF_DEVICE_MEMORY:
+      return {ErrorCode::internal,
+              op + ": out of device memory: lower the resolution or the number of cascades"};
+    case VK_ERROR_DEVICE_LOST:
+      return {ErrorCode::internal,
+              op + ": Vulkan device lost (driver reset or crash): restart, or use --backend cpu"};
+    case VK_ERROR_LAYER_NOT_PRESENT:
+      return unsupported(op + ": Vulkan validation layer missing: install vulkan-validationlayers");
+    case VK_ERROR_INCOMPATIBLE_DRIVER:
+    case VK_ERROR_INITIALIZATION_FAILED: return unsupported(op + ": " + kNoDevice);
+    case VK_TIMEOUT:
+      return {ErrorCode::internal, op + ": timed out waiting for the GPU (hung device?)"};
+    default: return {ErrorCode::internal, op + " failed with VkResult " + std::to_string(result)};
+  }
+}
+
+Context::~Context() {
+  if (device != VK_NULL_HANDLE) {
+    vkDeviceWaitIdle(device);
+    vkDestroyDevice(device, nullptr);
+  }
+  if (messenger != VK_NULL_HANDLE) {
+    auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+        vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+    if (destroy != nullptr) destroy(instance, messenger, nullptr);
+  }
+  if (instance != VK_NULL_HANDLE) vkDestroyInstance(instance, nullptr);
+}
+
+Result<std::vector<DeviceInfo>> list_devices() {
+  Context ctx;
+  if (Status s = create_instance(ctx, false); !s.ok()) return s;
+  Result<std::vector<VkPhysicalDevice>> devices = physical_devices(ctx.instance);
+  if (!devices.ok()) return devices.status();
+  std::vector<DeviceInfo> out;
+  for (VkPhysicalDevice d : devices.value()) out.push_back(describe(d));
+  return out;
+}
+
+Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
+  auto ctx = std::make_unique<Context>();
+  const char* env = std::getenv("OCEAN_VK_VALIDATION");
+  const bool validation = params.validation || (env != nullptr && std::strcmp(env, "1") == 0);
+  if (validation && !has_layer(kValidationLayer))
+    return unsupported("Vulkan validation requested but " + std::string(kValidationLayer) +
+                       " is missing: install vulkan-validationlayers");
+  if (Status s = create_instance(*ctx, validation); !s.ok()) return s;
+  Result<std::vector<VkPhysicalDevice>> devices = physical_devices(ctx->instance);
+  if (!devices.ok()) return devices.status();
+
+  int chosen = -1;
+  if (params.device_index >= 0) {
+    if (static_cast<std::size_t>(params.device_index) >= devices.value().size())
+      return invalid_argument("device = " + std::to_string(params.device_index) +
+                              " is out of range: must be < " +
+                              std::to_string(devices.value().size()) + " (see ocean info)");
+    const DeviceInfo info =
+        describe(devices.value()[static_cast<std::size_t>(params.device_index)]);
+    if (!info.usable)
+      return unsupported("Vulkan device '" + info.name + "' is not usable: " + info.reason);
+    chosen = params.device_index;
+  } else {
+    int best_rank = -1;
+    for (std::size_t i = 0; i < devices.value().size(); ++i) {
+      if (!describe(devices.value()[i]).usable) continue;
+      VkPhysicalDeviceProperties p;
+      vkGetPhysicalDeviceProperties(devices.value()[i], &p);
+      if (type_rank(p.deviceType) > best_rank) {
+        best_rank = type_rank(p.deviceType);
+        chosen = static_cast<int>(i);
+      }
+    }
+    if (chosen < 0)
+      return unsupported("no usable Vulkan device (needs Vulkan 1.2 with compute): " +
+                         std::string(kNoDevice));
+  }
+  ctx->physical = devices.value()[static_cast<std::size_t>(chosen)];
+  ctx->info = describe(ctx->physical);
+  vkGetPhysicalDeviceProperties(ctx->physical, &ctx->properties);
+  vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memory);
+  find_compute_family(ctx->physical, ctx->queue_family, ctx->timestamps);
+  ctx->timestamps = ctx->timestamps && ctx->properties.limits.timestampComputeAndGraphics;
+  ctx->timestamp_period_ns = static_cast<double>(ctx->properties.limits.timestampPeriod);
+
+  const float priority = 1.0f;
+  const VkDeviceQueueCreateInfo queue{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
+                                      .queueFamilyIndex = ctx->queue_family,
+                                      .queueCount = 1,
+                                      .pQueuePriorities = &priority};
+  const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+                                .queueCreateInfoCount = 1,
+                                .pQueueCreateInfos = &queue};
+  if (Status s =
+          check(vkCreateDevice(ctx->physical, &info, nullptr, &ctx->device), "vkCreateDevice");
+      !s.ok())
+    return s;
+  vkGetDeviceQueue(ctx->device, ctx->queue_family, 0, &ctx->queue);
+  return ctx;
+}
+
+}  // namespace ocean::vk

@@ -1,0 +1,287 @@
+// Buffers and images with memory-type selection, compute pipelines from SPIR-V, command
+// submission, barriers and timestamp queries.
+#include <cassert>
+#include <string>
+
+#include "ocean/vk.hpp"
+
+namespace ocean::vk {
+namespace {
+
+// The first memory type allowed by `bits` that has all of `required`, preferring `preferred`.
+int find_memory_type(const Context& ctx, std::uint32_t bits, VkMemoryPropertyFlags required,
+                     VkMemoryPropertyFlags preferred) {
+  int fallback = -1;
+  for (std::uint32_t i = 0; i < ctx.memory.memoryTypeCount; ++i) {
+    const VkMemoryPropertyFlags flags = ctx.memory.memoryTypes[i].propertyFlags;
+    if ((bits & (1u << i)) == 0 || (flags & required) != required) continue;
+    if ((flags & preferred) == preferred) return static_cast<int>(i);
+    if (fallback < 0) fallback = static_cast<int>(i);
+  }
+  return fallback;
+}
+
+Result<VkDeviceMemory> allocate(const Context& ctx, const VkMemoryRequirements& req,
+                                VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) {
+  const int type = find_memory_type(ctx, req.memoryTypeBits, required, preferred);
+  if (type < 0)
+    return unsupported("Vulkan device '" + ctx.info.name + "' has no suitable memory type");
+  const VkMemoryAllocateInfo info{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO,
+                                  .allocationSize = req.size,
+                                  .memoryTypeIndex = static_cast<std::uint32_t>(type)};
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  if (Status s = check(vkAllocateMemory(ctx.device, &info, nullptr, &memory),
+                       ("vkAllocateMemory (" + std::to_string(req.size >> 20) + " MiB)").c_str());
+      !s.ok())
+    return s;
+  return memory;
+}
+
+}  // namespace
+
+Result<Buffer> create_buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
+                             MemoryUse use) {
+  assert(size > 0);
+  Buffer b;
+  b.size = size;
+  const VkBufferCreateInfo info{.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
+                                .size = size,
+                                .usage = usage,
+                                .sharingMode = VK_SHARING_MODE_EXCLUSIVE};
+  if (Status s = check(vkCreateBuffer(ctx.device, &info, nullptr, &b.buffer), "vkCreateBuffer");
+      !s.ok())
+    return s;
+  VkMemoryRequirements req;
+  vkGetBufferMemoryRequirements(ctx.device, b.buffer, &req);
+  const VkMemoryPropertyFlags host =
+      VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
+  VkMemoryPropertyFlags required = 0, preferred = VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+  if (use == MemoryUse::upload) required = host;
+  if (use == MemoryUse::readback) required = host, preferred = VK_MEMORY_PROPERTY_HOST_CACHED_BIT;
+  Result<VkDeviceMemory> memory = allocate(ctx, req, required, preferred);
+  if (!memory.ok()) {
+    vkDestroyBuffer(ctx.device, b.buffer, nullptr);
+    return memory.status();
+  }
+  b.memory = memory.value();
+  Status s = check(vkBindBufferMemory(ctx.device, b.buffer, b.memory, 0), "vkBindBufferMemory");
+  if (s.ok() && use != MemoryUse::device)
+    s = check(vkMapMemory(ctx.device, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
+  if (!s.ok()) {
+    destroy_buffer(ctx, b);
+    return s;
+  }
+  return b;
+}
+
+void destroy_buffer(const Context& ctx, Buffer& b) {
+  if (b.buffer != VK_NULL_HANDLE) vkDestroyBuffer(ctx.device, b.buffer, nullptr);
+  if (b.memory != VK_NULL_HANDLE) vkFreeMemory(ctx.device, b.memory, nullptr);
+  b = {};
+}
+
+Result<Image> create_image_array(const Context& ctx, VkFormat format, std::uint32_t size,
+                                 std::uint32_t layers, std::uint32_t mips,
+                                 VkImageUsageFlags usage) {
+  Image im;
+  im.format = format, im.size = size, im.layers = layers, im.mips = mips;
+  const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+                               .imageType = VK_IMAGE_TYPE_2D,
+                               .format = format,
+                               .extent = {size, size, 1},
+                               .mipLevels = mips,
+                               .arrayLayers = layers,
+                               .samples = VK_SAMPLE_COUNT_1_BIT,
+                               .tiling = VK_IMAGE_TILING_OPTIMAL,
+                               .usage = usage,
+                               .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+                               .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+  if (Status s = check(vkCreateImage(ctx.device, &info, nullptr, &im.image), "vkCreateImage");
+      !s.ok())
+    return s;
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(ctx.device, im.image, &req);
+  Result<VkDeviceMemory> memory = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+  if (!memory.ok()) {
+    vkDestroyImage(ctx.device, im.image, nullptr);
+    return memory.status();
+  }
+  im.memory = memory.value();
+  Status s = check(vkBindImageMemory(ctx.device, im.image, im.memory, 0), "vkBindImageMemory");
+  const auto make_view = [&](std::uint32_t base, std::uint32_t count, VkImageView& view) {
+    const VkImageViewCreateInfo v{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .image = im.image,
+        .viewType = VK_IMAGE_VIEW_TYPE_2D_ARRAY,
+        .format = format,
+        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, base, count, 0, layers}};
+    return check(vkCreateImageView(ctx.device, &v, nullptr, &view), "vkCreateImageView");
+  };
+  if (s.ok()) s = make_view(0, mips, im.view);
+  im.mip_views.assign(mips, VK_NULL_HANDLE);
+  for (std::uint32_t m = 0; m < mips && s.ok(); ++m) s = make_view(m, 1, im.mip_views[m]);
+  if (!s.ok()) {
+    destroy_image(ctx, im);
+    return s;
+  }
+  return im;
+}
+
+void destroy_image(const Context& ctx, Image& im) {
+  for (VkImageView v : im.mip_views)
+    if (v != VK_NULL_HANDLE) vkDestroyImageView(ctx.device, v, nullptr);
+  if (im.view != VK_NULL_HANDLE) vkDestroyImageView(ctx.device, im.view, nullptr);
+  if (im.image != VK_NULL_HANDLE) vkDestroyImage(ctx.device, im.image, nullptr);
+  if (im.memory != VK_NULL_HANDLE) vkFreeMemory(ctx.device, im.memory, nullptr);
+  im = {};
+}
+
+Result<ComputePipeline> create_compute_pipeline(const Context& ctx,
+                                                std::span<const std::uint32_t> spirv,
+                                                VkPipelineLayout layout,
+                                                std::span<const std::uint32_t> specialization) {
+  ComputePipeline p;
+  const VkShaderModuleCreateInfo module{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+                                        .codeSize = spirv.size_bytes(),
+                                        .pCode = spirv.data()};
+  if (Status s = check(vkCreateShaderModule(ctx.device, &module, nullptr, &p.module),
+                       "vkCreateShaderModule");
+      !s.ok())
+    return s;
+  std::vector<VkSpecializationMapEntry> entries(specialization.size());
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    entries[i] = {static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(4 * i), 4};
+  }
+  const VkSpecializationInfo spec{.mapEntryCount = static_cast<std::uint32_t>(entries.size()),
+                                  .pMapEntries = entries.data(),
+                                  .dataSize = specialization.size_bytes(),
+                                  .pData = specialization.data()};
+  const VkComputePipelineCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+      .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                .stage = VK_SHADER_STAGE_COMPUTE_BIT,
+                .module = p.module,
+                .pName = "main",
+                .pSpecializationInfo = entries.empty() ? nullptr : &spec},
+      .layout = layout};
+  if (Status s = check(
+          vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &p.pipeline),
+          "vkCreateComputePipelines");
+      !s.ok()) {
+    destroy_pipeline(ctx, p);
+    return s;
+  }
+  return p;
+}
+
+void destroy_pipeline(const Context& ctx, ComputePipeline& p) {
+  if (p.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(ctx.device, p.pipeline, nullptr);
+  if (p.module != VK_NULL_HANDLE) vkDestroyShaderModule(ctx.device, p.module, nullptr);
+  p = {};
+}
+
+Result<Commands> create_commands(const Context& ctx) {
+  Commands c;
+  const VkCommandPoolCreateInfo pool{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
+                                     .flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
+                                     .queueFamilyIndex = ctx.queue_family};
+  Status s = check(vkCreateCommandPool(ctx.device, &pool, nullptr, &c.pool), "vkCreateCommandPool");
+  if (s.ok()) {
+    const VkCommandBufferAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                            .commandPool = c.pool,
+                                            .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                            .commandBufferCount = 1};
+    s = check(vkAllocateCommandBuffers(ctx.device, &alloc, &c.buffer), "vkAllocateCommandBuffers");
+  }
+  if (s.ok()) {
+    const VkFenceCreateInfo fence{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    s = check(vkCreateFence(ctx.device, &fence, nullptr, &c.fence), "vkCreateFence");
+  }
+  if (!s.ok()) {
+    destroy_commands(ctx, c);
+    return s;
+  }
+  return c;
+}
+
+void destroy_commands(const Context& ctx, Commands& c) {
+  if (c.fence != VK_NULL_HANDLE) vkDestroyFence(ctx.device, c.fence, nullptr);
+  if (c.pool != VK_NULL_HANDLE) vkDestroyCommandPool(ctx.device, c.pool, nullptr);
+  c = {};
+}
+
+Status submit(const Context& ctx, const Commands& c) {
+  const VkSubmitInfo info{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
+                          .commandBufferCount = 1,
+                          .pCommandBuffers = &c.buffer};
+  return check(vkQueueSubmit(ctx.queue, 1, &info, c.fence), "vkQueueSubmit");
+}
+
+Status wait(const Context& ctx, const Commands& c, std::uint64_t timeout_ns) {
+  if (Status s =
+          check(vkWaitForFences(ctx.device, 1, &c.fence, VK_TRUE, timeout_ns), "vkWaitForFences");
+      !s.ok())
+    return s;
+  return check(vkResetFences(ctx.device, 1, &c.fence), "vkResetFences");
+}
+
+namespace {
+// The accesses a set of stages can perform (only those the stages support, as validation requires).
+VkAccessFlags accesses(VkPipelineStageFlags stages, bool writes_only) {
+  VkAccessFlags a = 0;
+  if ((stages & VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT) != 0)
+    a |= writes_only ? VK_ACCESS_SHADER_WRITE_BIT
+                     : VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+  if ((stages & VK_PIPELINE_STAGE_TRANSFER_BIT) != 0)
+    a |= writes_only ? VK_ACCESS_TRANSFER_WRITE_BIT
+                     : VK_ACCESS_TRANSFER_READ_BIT | VK_ACCESS_TRANSFER_WRITE_BIT;
+  if ((stages & VK_PIPELINE_STAGE_HOST_BIT) != 0)
+    a |=
+        writes_only ? VK_ACCESS_HOST_WRITE_BIT : VK_ACCESS_HOST_READ_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  return a;
+}
+}  // namespace
+
+void barrier(VkCommandBuffer cmd, VkPipelineStageFlags src, VkPipelineStageFlags dst) {
+  const VkMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                          .srcAccessMask = accesses(src, true),
+                          .dstAccessMask = accesses(dst, false)};
+  vkCmdPipelineBarrier(cmd, src, dst, 0, 1, &b, 0, nullptr, 0, nullptr);
+}
+
+Result<Timestamps> create_timestamps(const Context& ctx, std::uint32_t count) {
+  if (!ctx.timestamps)
+    return unsupported("Vulkan device '" + ctx.info.name + "' has no compute timestamps");
+  Timestamps t;
+  t.count = count;
+  const VkQueryPoolCreateInfo info{.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
+                                   .queryType = VK_QUERY_TYPE_TIMESTAMP,
+                                   .queryCount = count};
+  if (Status s = check(vkCreateQueryPool(ctx.device, &info, nullptr, &t.pool), "vkCreateQueryPool");
+      !s.ok())
+    return s;
+  return t;
+}
+
+void destroy_timestamps(const Context& ctx, Timestamps& t) {
+  if (t.pool != VK_NULL_HANDLE) vkDestroyQueryPool(ctx.device, t.pool, nullptr);
+  t = {};
+}
+
+Status read_timestamps_ms(const Context& ctx, const Timestamps& t, std::span<double> out_ms) {
+  assert(out_ms.size() <= t.count);
+  std::uint64_t ticks[64];
+  assert(out_ms.size() <= 64);
+  const auto n = static_cast<std::uint32_t>(out_ms.size());
+  if (Status s = check(vkGetQueryPoolResults(ctx.device, t.pool, 0, n, sizeof(ticks), ticks,
+                                             sizeof(std::uint64_t), VK_QUERY_RESULT_64_BIT),
+                       "vkGetQueryPoolResults");
+      !s.ok())
+    return s;
+  for (std::uint32_t i = 0; i < n; ++i) {
+    out_ms[i] = static_cast<double>(ticks[i] - ticks[0]) * ctx.timestamp_period_ns * 1e-6;
+  }
+  return {};
+}
+
+}  // namespace ocean::vk

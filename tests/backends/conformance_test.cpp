@@ -1,0 +1,321 @@
+// Backend conformance: one test body, run against every backend of the table (cpu always, vulkan
+// where a device exists), compares each output with the CPU reference backend for the same
+// configuration. The Vulkan backend runs with the Khronos validation layer and must produce zero
+// messages.
+//
+// Bounds (also in src/backends/vulkan/README.md), relative to Hs = 4·√(Σ_c var h_c):
+//   displacement (FP32)       max |ΔD| ≤ 1e-4·Hs
+//   displacement (FP16 half4) max |ΔD| ≤ 2^-10·|D| + 1e-4·Hs (one half ulp plus the FP32 bound)
+//   normal                    max |Δn| ≤ 1e-4 (unit vector components)
+//   Jacobian                  max |ΔJ| ≤ 1e-4
+//   foam                      max |Δfoam| ≤ 1e-4
+//   packed RGBA8 (all mips)   every channel within 1 LSB; ≤ 0.1 % of texels differ at all
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include "ocean/backends.hpp"
+#include "ocean/half.hpp"
+#ifdef OCEAN_HAS_VULKAN
+#include "ocean/vk/simulation.hpp"
+#endif
+
+namespace {
+
+// Validation on for every Vulkan context these tests create (read by vk::create_context).
+const int kValidationOn = setenv("OCEAN_VK_VALIDATION", "1", 0);
+
+constexpr double kDisplacementBound = 1e-4;  // × Hs, FP32 storage
+constexpr double kNormalBound = 1e-4;
+constexpr double kJacobianBound = 1e-4;
+constexpr double kFoamBound = 1e-4;
+constexpr int kPackedLsbBound = 1;
+constexpr double kPackedFractionBound = 1e-3;
+
+struct Case {
+  std::string name;
+  int resolution;
+  std::vector<double> patches_m;
+  ocean::SpectrumModel model;
+  ocean::NormalMethod normals;
+  double loop_period_s;
+  std::vector<double> times_s;  // consecutive frames (foam accumulates between them)
+};
+
+ocean::SimulationConfig make_config(const Case& c) {
+  ocean::SimulationConfig config;
+  config.resolution = c.resolution;
+  config.cascade_patch_sizes_m = c.patches_m;
+  config.normals = c.normals;
+  config.loop_period_s = c.loop_period_s;
+  config.choppiness = 1.2;
+  ocean::FrequencySpectrumParams& s = config.sea.wind_sea.spectrum;
+  s.model = c.model;
+  s.wind_speed_mps = 14.0;
+  s.fetch_m = c.model == ocean::SpectrumModel::phillips ? ocean::kUnset : 80e3;
+  if (c.model == ocean::SpectrumModel::tma) {
+    s.depth_m = 20.0;
+    config.sea.dispersion.depth_m = 20.0;
+  }
+  return config;
+}
+
+// Every case runs against each backend; kept small enough for lavapipe on two cores.
+std::vector<Case> cases() {
+  using M = ocean::SpectrumModel;
+  using N = ocean::NormalMethod;
+  const double day3 = 3 * 86400.0 + 17.25;  // exact looping phase long after the start
+  return {
+      {"64_phillips_3cascades_central",
+       64,
+       {800.0, 190.0, 47.0},
+       M::phillips,
+       N::central_difference,
+       200.0,
+       {0.0, 0.5, 1.0}},
+      {"256_jonswap_2cascades_central",
+       256,
+       {1000.0, 233.0},
+       M::jonswap,
+       N::central_difference,
+       200.0,
+       {day3, day3 + 1.0 / 30}},
+      {"256_tma_3cascades_sobel", 256, {600.0, 140.0, 33.0}, M::tma, N::sobel, 200.0, {2.0, 2.1}},
+      {"128_jonswap_2cascades_analytic_noloop",
+       128,
+       {500.0, 110.0},
+       M::jonswap,
+       N::analytic,
+       0.0,
+       {1000.0, 1000.05}},
+      {"1024_jonswap_1cascade_central",
+       1024,
+       {1000.0},
+       M::jonswap,
+       N::central_difference,
+       200.0,
+       {7.5}},
+  };
+}
+
+struct Errors {
+  double displacement_rel_hs = 0, half_excess = 0, normal = 0, jacobian = 0, foam = 0;
+  int packed_lsb = 0;
+  double packed_fraction = 0;
+};
+
+double significant_height(const ocean::Frame& f) {
+  double var = 0.0;
+  for (const ocean::CascadeFrame& c : f.cascades) {
+    double sum = 0.0, sum2 = 0.0;
+    const std::size_t texels = c.jacobian.size();
+    for (std::size_t i = 0; i < texels; ++i) {
+      const double h = c.displacement[3 * i + 1];
+      sum += h, sum2 += h * h;
+    }
+    const double mean = sum / static_cast<double>(texels);
+    var += sum2 / static_cast<double>(texels) - mean * mean;
+  }
+  return 4.0 * std::sqrt(var);
+}
+
+double max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
+  double m = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    m = std::max(m, std::abs(static_cast<double>(a[i]) - static_cast<double>(b[i])));
+  return m;
+}
+
+Errors compare(const ocean::Frame& ref, const ocean::Frame& got) {
+  Errors e;
+  const double hs = significant_height(ref);
+  std::size_t packed_total = 0, packed_differ = 0;
+  for (std::size_t c = 0; c < ref.cascades.size(); ++c) {
+    const ocean::CascadeFrame& r = ref.cascades[c];
+    const ocean::CascadeFrame& g = got.cascades[c];
+    e.displacement_rel_hs =
+        std::max(e.displacement_rel_hs, max_abs_diff(r.displacement, g.displacement) / hs);
+    e.normal = std::max(e.normal, max_abs_diff(r.normal, g.normal));
+    e.jacobian = std::max(e.jacobian, max_abs_diff(r.jacobian, g.jacobian));
+    e.foam = std::max(e.foam, max_abs_diff(r.foam, g.foam));
+    for (std::size_t i = 0; i < r.displacement_half.size(); ++i) {
+      const double a = ocean::half_to_float(r.displacement_half[i]);
+      const double b = ocean::half_to_float(g.displacement_half[i]);
+      const double allowed = std::ldexp(std::abs(a), -10) + kDisplacementBound * hs;
+      e.half_excess = std::max(e.half_excess, std::abs(a - b) / allowed);
+    }
+    for (std::size_t i = 0; i < r.packed_mips.size(); ++i) {
+      int worst = 0;
+      for (int shift = 0; shift < 32; shift += 8) {
+        const int a = static_cast<int>((r.packed_mips[i] >> shift) & 0xffu);
+        const int b = static_cast<int>((g.packed_mips[i] >> shift) & 0xffu);
+        worst = std::max(worst, std::abs(a - b));
+      }
+      e.packed_lsb = std::max(e.packed_lsb, worst);
+      packed_differ += worst > 0 ? 1 : 0;
+    }
+    packed_total += r.packed_mips.size();
+  }
+  e.packed_fraction = static_cast<double>(packed_differ) / static_cast<double>(packed_total);
+  return e;
+}
+
+class Conformance : public ::testing::TestWithParam<std::string> {
+ protected:
+  void SetUp() override {
+    ASSERT_EQ(kValidationOn, 0);
+    for (const ocean::BackendInfo& info : ocean::list_backends()) {
+      if (info.name == GetParam() && !info.available)
+        GTEST_SKIP() << "backend '" << GetParam() << "' unavailable: " << info.detail;
+    }
+  }
+};
+
+TEST_P(Conformance, EveryOutputMatchesTheCpuReference) {
+  std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  for (const Case& c : cases()) {
+    SCOPED_TRACE(c.name);
+    const ocean::SimulationConfig config = make_config(c);
+    auto reference = ocean::make_backend("cpu");
+    auto backend = ocean::make_backend(GetParam());
+    ASSERT_TRUE(reference.ok()) << reference.status().message();
+    ASSERT_TRUE(backend.ok()) << backend.status().message();
+    ASSERT_TRUE(reference.value()->configure(config, *runner).ok());
+    const ocean::Status configured = backend.value()->configure(config, *runner);
+    ASSERT_TRUE(configured.ok()) << configured.message();
+    ocean::Frame ref, got;
+    reference.value()->allocate(ref);
+    backend.value()->allocate(got);
+    for (double t : c.times_s) {
+      reference.value()->step(t, ref);
+      backend.value()->step(t, got);
+      const Errors e = compare(ref, got);
+      std::printf(
+          "[%s] %s t=%.3f: displacement %.3g Hs, half %.3g of bound, normal %.3g, "
+          "jacobian %.3g, foam %.3g, packed %d LSB on %.3g%% of texels\n",
+          GetParam().c_str(), c.name.c_str(), t, e.displacement_rel_hs, e.half_excess, e.normal,
+          e.jacobian, e.foam, e.packed_lsb, 100.0 * e.packed_fraction);
+      EXPECT_LE(e.displacement_rel_hs, kDisplacementBound) << "t = " << t;
+      EXPECT_LE(e.half_excess, 1.0) << "t = " << t;
+      EXPECT_LE(e.normal, kNormalBound) << "t = " << t;
+      EXPECT_LE(e.jacobian, kJacobianBound) << "t = " << t;
+      EXPECT_LE(e.foam, kFoamBound) << "t = " << t;
+      EXPECT_LE(e.packed_lsb, kPackedLsbBound) << "t = " << t;
+      EXPECT_LE(e.packed_fraction, kPackedFractionBound) << "t = " << t;
+      EXPECT_EQ(got.time_s, t);
+    }
+#ifdef OCEAN_HAS_VULKAN
+    if (auto* vk = dynamic_cast<ocean::vk::VulkanBackend*>(backend.value().get())) {
+      EXPECT_TRUE(vk->status().ok()) << vk->status().message();
+      EXPECT_TRUE(vk->context().validation);
+      EXPECT_EQ(vk->context().validation_messages.load(), 0u)
+          << vk->context().last_validation_message;
+    }
+#endif
+  }
+}
+
+#ifdef OCEAN_HAS_VULKAN
+// The GPU images the renderer samples hold the same values as the read-back arrays: displacement
+// RGBA16F within one half ulp, every mip of the RGBA8 map within 1 LSB (the unorm conversion of
+// imageStore may round differently from pack_rgba8). Stage timings come from timestamps.
+TEST(VulkanImages, HoldTheReadBackOutputs) {
+  auto made = ocean::vk::make_vulkan_backend({.validation = true});
+  if (!made.ok()) GTEST_SKIP() << made.status().message();
+  ocean::vk::VulkanBackend& backend = *made.value();
+  const ocean::vk::Context& ctx = backend.context();
+  std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  ocean::SimulationConfig config;
+  config.resolution = 64;
+  config.cascade_patch_sizes_m = {300.0, 70.0};
+  ASSERT_TRUE(backend.configure(config, *runner).ok());
+  ocean::Frame frame;
+  backend.allocate(frame);
+  backend.step(1.0, frame);
+  ASSERT_TRUE(backend.status().ok()) << backend.status().message();
+  if (ctx.timestamps) {
+    EXPECT_GT(backend.timings().total_ms, 0.0);
+  }
+
+  const ocean::vk::SimulationImages images = backend.images();
+  ASSERT_EQ(images.layers, 2u);
+  ASSERT_EQ(images.mips, 7u);
+  const std::size_t n = 64, chain = ocean::mip_chain_texels(64);
+  const VkDeviceSize disp_bytes = 2 * n * n * 8, nfs_bytes = 2 * chain * 4;
+  auto buffer =
+      ocean::vk::create_buffer(ctx, disp_bytes + nfs_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                               ocean::vk::MemoryUse::readback);
+  auto cmds = ocean::vk::create_commands(ctx);
+  ASSERT_TRUE(buffer.ok() && cmds.ok());
+  const ocean::Status copied = ocean::vk::run_once(ctx, cmds.value(), [&](VkCommandBuffer cmd) {
+    const VkBufferImageCopy disp{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 2},
+                                 .imageExtent = {64, 64, 1}};
+    vkCmdCopyImageToBuffer(cmd, images.displacement, VK_IMAGE_LAYOUT_GENERAL, buffer.value().buffer,
+                           1, &disp);
+    VkDeviceSize offset = disp_bytes;
+    for (std::uint32_t layer = 0; layer < 2; ++layer) {
+      for (std::uint32_t m = 0; m < images.mips; ++m) {
+        const std::uint32_t size = 64u >> m;
+        const VkBufferImageCopy nfs{.bufferOffset = offset,
+                                    .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, layer, 1},
+                                    .imageExtent = {size, size, 1}};
+        vkCmdCopyImageToBuffer(cmd, images.normal_foam, VK_IMAGE_LAYOUT_GENERAL,
+                               buffer.value().buffer, 1, &nfs);
+        offset += VkDeviceSize{size} * size * 4;
+      }
+    }
+    ocean::vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
+  });
+  ASSERT_TRUE(copied.ok()) << copied.message();
+  const auto* halves = static_cast<const std::uint16_t*>(buffer.value().mapped);
+  const auto* texels = reinterpret_cast<const std::uint32_t*>(
+      static_cast<const char*>(buffer.value().mapped) + disp_bytes);
+  int disp_ulps = 0, lsb = 0;
+  for (std::size_t c = 0; c < 2; ++c) {
+    const ocean::CascadeFrame& f = frame.cascades[c];
+    for (std::size_t i = 0; i < 4 * n * n; ++i) {
+      // Half bits as signed magnitudes: neighbours differ by one.
+      const auto ordinal = [](std::uint16_t h) {
+        return (h & 0x8000u) != 0 ? -static_cast<int>(h & 0x7fffu) : static_cast<int>(h);
+      };
+      disp_ulps = std::max(disp_ulps, std::abs(ordinal(f.displacement_half[i]) -
+                                               ordinal(halves[c * 4 * n * n + i])));
+    }
+    for (std::size_t i = 0; i < chain; ++i) {
+      for (int shift = 0; shift < 32; shift += 8) {
+        const int a = static_cast<int>((f.packed_mips[i] >> shift) & 0xffu);
+        const int b = static_cast<int>((texels[c * chain + i] >> shift) & 0xffu);
+        lsb = std::max(lsb, std::abs(a - b));
+      }
+    }
+  }
+  EXPECT_LE(disp_ulps, 1);
+  EXPECT_LE(lsb, 1);
+  ocean::vk::destroy_buffer(ctx, buffer.value());
+  ocean::vk::destroy_commands(ctx, cmds.value());
+  EXPECT_EQ(ctx.validation_messages.load(), 0u) << ctx.last_validation_message;
+}
+
+TEST(VulkanBenchmark, ReportsEveryStage) {
+  ocean::SimulationConfig config;
+  config.resolution = 64;
+  auto t = ocean::vk::benchmark(config, 3, {.validation = true});
+  if (!t.ok()) GTEST_SKIP() << t.status().message();
+  EXPECT_GT(t.value().total_ms, 0.0);
+  EXPECT_GE(t.value().evolve_fft_rows_ms, 0.0);
+  EXPECT_LE(t.value().evolve_fft_rows_ms + t.value().fft_columns_ms + t.value().finalize_ms +
+                t.value().mips_ms + t.value().readback_ms,
+            t.value().total_ms * 1.000001);
+}
+#endif
+
+INSTANTIATE_TEST_SUITE_P(Backends, Conformance, ::testing::Values("cpu", "vulkan"),
+                         [](const ::testing::TestParamInfo<std::string>& param) {
+                           return param.param;
+                         });
+
+}  // namespace

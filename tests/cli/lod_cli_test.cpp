@@ -1,0 +1,115 @@
+// `ocean lod`: counts, the OBJ export (watertight, only the square's boundary is open) and the
+// usage and runtime error contracts.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cli/cli_run.hpp"
+
+namespace {
+
+using ocean_test::expect_usage_error;
+using ocean_test::run_cli;
+
+std::filesystem::path temp_file(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         ("ocean_lod_" + std::to_string(::getpid()) + "_" + name);
+}
+
+TEST(CliLod, JsonCountsAreConsistent) {
+  const auto r = run_cli("lod --camera 0,30,0 --target 100,0,100 --preset high --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["max_level"], 4);
+  EXPECT_EQ(j["vertices"], 64);
+  const auto per_level = j["patches_per_level"].get<std::vector<int>>();
+  const auto per_config = j["patches_per_config"].get<std::vector<int>>();
+  int sum_level = 0, sum_config = 0;
+  for (int n : per_level) sum_level += n;
+  for (int n : per_config) sum_config += n;
+  EXPECT_GT(j["patches"].get<int>(), 0);
+  EXPECT_EQ(sum_level, j["patches"].get<int>());
+  EXPECT_EQ(sum_config, j["patches"].get<int>());
+  EXPECT_LE(j["batches"].size(), 16u);
+  EXPECT_EQ(j["draws"], j["batches"].size());
+  // Without culling there are more patches.
+  const auto all = run_cli("lod --camera 0,30,0 --target 100,0,100 --preset high --json --no-cull");
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  EXPECT_GT(nlohmann::json::parse(all.out)["patches"].get<int>(), j["patches"].get<int>());
+}
+
+TEST(CliLod, ObjOfTheWholeSquareIsWatertight) {
+  const auto path = temp_file("all.obj");
+  const auto r = run_cli(
+      "lod --camera 130,12,-70 --target 400,0,0 --preset low --ocean-size 2048 "
+      "--center 0,0 --no-cull --out " +
+      path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("patches"), std::string::npos);
+  std::ifstream in(path);
+  std::vector<std::pair<double, double>> v;
+  std::map<std::pair<int, int>, int> edges;
+  std::string line;
+  std::size_t faces = 0;
+  while (std::getline(in, line)) {
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      double x = 0, y = 1, z = 0;
+      s >> x >> y >> z;
+      EXPECT_EQ(y, 0.0);
+      EXPECT_LE(std::max(std::abs(x), std::abs(z)), 1024.0);
+      v.emplace_back(x, z);
+    } else if (tag == "f") {
+      int a[3];
+      s >> a[0] >> a[1] >> a[2];
+      ++faces;
+      for (int k = 0; k < 3; ++k) {
+        const int p = a[k], q = a[(k + 1) % 3];
+        ++edges[{std::min(p, q), std::max(p, q)}];
+      }
+    }
+  }
+  ASSERT_GT(faces, 0u);
+  for (const auto& [e, n] : edges) {
+    const auto [x0, z0] = v[static_cast<std::size_t>(e.first - 1)];
+    const auto [x1, z1] = v[static_cast<std::size_t>(e.second - 1)];
+    const bool boundary =
+        (x0 == x1 && std::abs(x0) == 1024.0) || (z0 == z1 && std::abs(z0) == 1024.0);
+    ASSERT_EQ(n, boundary ? 1 : 2) << x0 << "," << z0 << " - " << x1 << "," << z1;
+  }
+  std::filesystem::remove(path);
+}
+
+TEST(CliLod, UsageErrors) {
+  expect_usage_error("lod --camera 1,2,3 --target 1,2,3", "--target equals --camera");
+  expect_usage_error("lod --camera nan,2,3 --target 0,0,0", "--camera");
+  expect_usage_error("lod --camera inf,2,3 --target 0,0,0", "--camera");
+  expect_usage_error("lod --camera 1,2 --target 0,0,0", "--camera");
+  expect_usage_error("lod --camera 0,10,0 --target 1,0,0 --preset extreme", "--preset");
+  expect_usage_error("lod --camera 0,10,0 --target 1,0,0 --ocean-size 100", "--ocean-size");
+  expect_usage_error("lod --camera 0,10,0 --target 1,0,0 --fov 0", "--fov");
+  expect_usage_error("lod --camera 0,10,0 --target 1,0,0 --center 1", "--center");
+  expect_usage_error("lod --target 1,0,0", "--camera");
+}
+
+TEST(CliLod, UnwritableOutputFailsWithoutAPartialFile) {
+  const auto path = temp_file("missing_dir") / "x.obj";
+  const auto r = run_cli("lod --camera 0,10,0 --target 1,0,0 --out " + path.string());
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_TRUE(r.out.empty());
+  EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(path));
+}
+
+}  // namespace

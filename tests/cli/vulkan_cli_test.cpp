@@ -1,0 +1,99 @@
+// The Vulkan backend from the command line: `ocean info` lists it and its devices, `ocean
+// validate --backend vulkan --json` passes, and `ocean bake --backend vulkan` writes .npy files
+// that agree with `--backend cpu` within the conformance bounds (displacement ≤ 1e-4·Hs, normal,
+// Jacobian and foam ≤ 1e-4, packed maps within 1 LSB). Skips where no Vulkan device exists.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_run.hpp"
+#include "io/npy.hpp"
+#include "ocean/backends.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool vulkan_available(std::string* why) {
+  for (const ocean::BackendInfo& b : ocean::list_backends()) {
+    if (b.name == "vulkan") {
+      *why = b.detail;
+      return b.available;
+    }
+  }
+  return false;
+}
+
+TEST(VulkanCli, InfoListsBackendsAndDevices) {
+  const ocean_test::CliRun r = ocean_test::run_cli("info --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  bool listed = false;
+  for (const auto& b : j["backends"]) listed = listed || b["name"] == "vulkan";
+  EXPECT_TRUE(listed);
+  std::string why;
+  if (vulkan_available(&why)) {
+    EXPECT_FALSE(j["vulkan"]["devices"].empty());
+  }
+}
+
+TEST(VulkanCli, ValidatePassesAndReportsTheError) {
+  std::string why;
+  if (!vulkan_available(&why)) {
+    const ocean_test::CliRun r = ocean_test::run_cli("validate --backend vulkan --json");
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_TRUE(r.out.empty());
+    EXPECT_NE(r.err.find("vulkan"), std::string::npos) << r.err;
+    GTEST_SKIP() << "vulkan unavailable: " << why;
+  }
+  const ocean_test::CliRun r = ocean_test::run_cli("validate --backend vulkan --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["pass"].get<bool>());
+  EXPECT_FALSE(j["device"].get<std::string>().empty());
+  EXPECT_LE(j["max_error_rel_hs"].get<double>(), 1e-4);
+}
+
+TEST(VulkanCli, BakeAgreesWithTheCpuBackend) {
+  std::string why;
+  if (!vulkan_available(&why)) GTEST_SKIP() << "vulkan unavailable: " << why;
+  const fs::path root = fs::temp_directory_path() / ("vulkan_bake_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  const std::string flags =
+      "bake --wind-speed 12 --fetch 40000 --resolution 64 --cascades 300,70 --seed 5 "
+      "--frames 3 --fps 10 --time 2 --set choppiness=1.1 --out ";
+  for (const char* backend : {"cpu", "vulkan"}) {
+    const ocean_test::CliRun r =
+        ocean_test::run_cli(flags + (root / backend).string() + " --backend " + backend);
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  int compared = 0;
+  for (const auto& entry : fs::directory_iterator(root / "cpu")) {
+    const std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".npy") continue;
+    const auto a = ocean::io::read_npy(entry.path());
+    const auto b = ocean::io::read_npy(root / "vulkan" / name);
+    ASSERT_TRUE(a.ok() && b.ok()) << name;
+    ASSERT_EQ(a.value().shape, b.value().shape) << name;
+    double max_diff = 0.0, sum2 = 0.0;
+    for (std::size_t i = 0; i < a.value().data.size(); ++i) {
+      max_diff =
+          std::max(max_diff, static_cast<double>(std::abs(a.value().data[i] - b.value().data[i])));
+      sum2 += static_cast<double>(a.value().data[i]) * a.value().data[i];
+    }
+    double bound = 1e-4;                                       // normal, Jacobian, foam
+    if (name.rfind("nfs_", 0) == 0) bound = 1.0 / 255 + 1e-6;  // 1 LSB of the RGBA8 map
+    if (name.rfind("displacement_", 0) == 0)  // 1e-4·Hs, Hs ≤ 4·rms of all components
+      bound = 1e-4 * 4.0 * std::sqrt(sum2 / static_cast<double>(a.value().data.size()));
+    EXPECT_LE(max_diff, bound) << name;
+    ++compared;
+  }
+  EXPECT_GT(compared, 20);
+  fs::remove_all(root);
+}
+
+}  // namespace

@@ -1,0 +1,102 @@
+// The shared Vulkan layer: device enumeration, context creation with validation, device
+// selection errors, buffer round trip through a copy, timestamps. Skips where no device exists.
+#include "ocean/vk.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+namespace {
+
+bool have_device() {
+  auto devices = ocean::vk::list_devices();
+  if (!devices.ok()) return false;
+  for (const auto& d : devices.value())
+    if (d.usable) return true;
+  return false;
+}
+
+TEST(Vk, ListDevicesNamesEveryDeviceOrSaysWhatToInstall) {
+  auto devices = ocean::vk::list_devices();
+  if (!devices.ok()) {
+    EXPECT_EQ(devices.status().code(), ocean::ErrorCode::unsupported);
+    EXPECT_NE(devices.status().message().find("install"), std::string::npos);
+    return;
+  }
+  for (const auto& d : devices.value()) {
+    EXPECT_FALSE(d.name.empty());
+    EXPECT_FALSE(d.type.empty());
+    EXPECT_EQ(d.usable, d.reason.empty());
+  }
+}
+
+TEST(Vk, BadDeviceIndexIsAClearError) {
+  if (!have_device()) GTEST_SKIP() << "no Vulkan device";
+  auto ctx = ocean::vk::create_context({.device_index = 99});
+  ASSERT_FALSE(ctx.ok());
+  EXPECT_EQ(ctx.status().code(), ocean::ErrorCode::invalid_argument);
+  EXPECT_NE(ctx.status().message().find("ocean info"), std::string::npos);
+}
+
+TEST(Vk, BufferCopyRoundTripsWithZeroValidationMessages) {
+  if (!have_device()) GTEST_SKIP() << "no Vulkan device";
+  auto created = ocean::vk::create_context({.validation = true});
+  ASSERT_TRUE(created.ok()) << created.status().message();
+  ocean::vk::Context& ctx = *created.value();
+  EXPECT_TRUE(ctx.validation);
+  {
+    std::vector<float> data(1000);
+    std::iota(data.begin(), data.end(), 0.5f);
+    const VkDeviceSize bytes = data.size() * sizeof(float);
+    auto up = ocean::vk::create_buffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                       ocean::vk::MemoryUse::upload);
+    auto dev = ocean::vk::create_buffer(
+        ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+        ocean::vk::MemoryUse::device);
+    auto down = ocean::vk::create_buffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                         ocean::vk::MemoryUse::readback);
+    auto cmds = ocean::vk::create_commands(ctx);
+    auto stamps = ocean::vk::create_timestamps(ctx, 2);
+    ASSERT_TRUE(up.ok() && dev.ok() && down.ok() && cmds.ok());
+    std::memcpy(up.value().mapped, data.data(), bytes);
+    const ocean::Status s = ocean::vk::run_once(ctx, cmds.value(), [&](VkCommandBuffer cmd) {
+      if (stamps.ok()) {
+        vkCmdResetQueryPool(cmd, stamps.value().pool, 0, 2);
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, stamps.value().pool, 0);
+      }
+      const VkBufferCopy region{0, 0, bytes};
+      vkCmdCopyBuffer(cmd, up.value().buffer, dev.value().buffer, 1, &region);
+      ocean::vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
+      vkCmdCopyBuffer(cmd, dev.value().buffer, down.value().buffer, 1, &region);
+      if (stamps.ok())
+        vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, stamps.value().pool, 1);
+    });
+    ASSERT_TRUE(s.ok()) << s.message();
+    EXPECT_EQ(std::memcmp(down.value().mapped, data.data(), bytes), 0);
+    if (stamps.ok()) {
+      double ms[2];
+      ASSERT_TRUE(ocean::vk::read_timestamps_ms(ctx, stamps.value(), ms).ok());
+      EXPECT_EQ(ms[0], 0.0);
+      EXPECT_GE(ms[1], 0.0);
+      ocean::vk::destroy_timestamps(ctx, stamps.value());
+    }
+    ocean::vk::destroy_commands(ctx, cmds.value());
+    ocean::vk::destroy_buffer(ctx, up.value());
+    ocean::vk::destroy_buffer(ctx, dev.value());
+    ocean::vk::destroy_buffer(ctx, down.value());
+  }
+  EXPECT_EQ(ctx.validation_messages.load(), 0u) << ctx.last_validation_message;
+}
+
+TEST(Vk, CheckTurnsDeviceLossAndOutOfMemoryIntoClearMessages) {
+  const ocean::Status lost = ocean::vk::check(VK_ERROR_DEVICE_LOST, "vkQueueSubmit");
+  EXPECT_NE(lost.message().find("device lost"), std::string::npos);
+  EXPECT_NE(lost.message().find("--backend cpu"), std::string::npos);
+  const ocean::Status oom = ocean::vk::check(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory");
+  EXPECT_NE(oom.message().find("lower the resolution"), std::string::npos);
+  EXPECT_TRUE(ocean::vk::check(VK_SUCCESS, "x").ok());
+}
+
+}  // namespace
