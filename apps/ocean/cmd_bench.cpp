@@ -18,6 +18,9 @@
 #include "commands.hpp"
 #include "fftw_engine.hpp"
 #include "progress.hpp"
+#ifdef OCEAN_HAS_VULKAN
+#include "ocean/vk/simulation.hpp"
+#endif
 
 namespace ocean::cli {
 
@@ -218,10 +221,66 @@ double measure_copy_bandwidth_gbps(TaskRunner& runner) {
   return best;
 }
 
+// `--backend vulkan`: GPU time per stage from timestamp queries, mean over the frames.
+int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>& cascades,
+                     bool json) {
+#ifdef OCEAN_HAS_VULKAN
+  const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  Progress progress("bench", static_cast<long long>(resolutions.size() * cascades.size()));
+  long long done = 0;
+  for (int n : resolutions) {
+    for (int c : cascades) {
+      SimulationConfig config;
+      config.resolution = n;
+      config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
+      Result<vk::StageTimings> t = vk::benchmark(config, 20);
+      if (!t.ok()) return report(t.status());
+      const vk::StageTimings& v = t.value();
+      rows.push_back({{"resolution", n},
+                      {"cascades", c},
+                      {"backend", "vulkan"},
+                      {"gpu_total_ms", v.total_ms},
+                      {"gpu_stages_ms",
+                       {{"evolve_fft_rows", v.evolve_fft_rows_ms},
+                        {"fft_columns", v.fft_columns_ms},
+                        {"finalize", v.finalize_ms},
+                        {"mips", v.mips_ms},
+                        {"readback", v.readback_ms}}}});
+      progress.update(++done);
+    }
+  }
+  progress.finish();
+  if (json) {
+    print_json({{"rows", rows}});
+  } else {
+    std::cout << "GPU time per frame from timestamp queries, mean of 20 frames, ms\n"
+              << std::setw(6) << "N" << std::setw(4) << "C" << std::setw(10) << "total"
+              << std::setw(14) << "evolve+rows" << std::setw(10) << "columns" << std::setw(10)
+              << "finalize" << std::setw(8) << "mips" << std::setw(10) << "readback\n";
+    for (const auto& r : rows) {
+      const auto& st = r["gpu_stages_ms"];
+      std::cout << std::setw(6) << r["resolution"].get<int>() << std::setw(4)
+                << r["cascades"].get<int>() << std::setw(10)
+                << fixed(r["gpu_total_ms"].get<double>(), 3) << std::setw(14)
+                << fixed(st["evolve_fft_rows"].get<double>(), 3) << std::setw(10)
+                << fixed(st["fft_columns"].get<double>(), 3) << std::setw(10)
+                << fixed(st["finalize"].get<double>(), 3) << std::setw(8)
+                << fixed(st["mips"].get<double>(), 3) << std::setw(10)
+                << fixed(st["readback"].get<double>(), 3) << "\n";
+    }
+  }
+  return kExitOk;
+#else
+  (void)resolutions, (void)cascades, (void)json;
+  return report(unsupported("ocean bench --backend vulkan: built without Vulkan"));
+#endif
+}
+
 int run_bench(const BenchOptions& o) {
-  if (o.backend != "cpu") {
-    return report(unsupported("ocean bench --backend " + o.backend +
-                              ": only the cpu backend is measured by this build"));
+  if (o.backend != "cpu" && o.backend != "vulkan") {
+    return report(
+        invalid_argument("--backend = '" + o.backend + "' is unknown: must be one of cpu, vulkan"));
   }
   Result<std::vector<int>> resolutions = parse_ints("--resolution", o.resolutions, 16, 2048, false);
   if (!resolutions.ok()) return report(resolutions.status());
@@ -235,6 +294,7 @@ int run_bench(const BenchOptions& o) {
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Result<std::vector<int>> threads = parse_ints("--threads", o.threads, 1, 256, true);
   if (!threads.ok()) return report(threads.status());
+  if (o.backend == "vulkan") return run_vulkan_bench(resolutions.value(), cascades.value(), o.json);
   Result<double> min_time = parse_number("--min-time", o.min_time);
   if (!min_time.ok()) return report(min_time.status());
   if (min_time.value() < 0.0 || min_time.value() > 60.0)

@@ -97,3 +97,28 @@ TEST(VulkanCli, BakeAgreesWithTheCpuBackend) {
 }
 
 }  // namespace
+
+namespace {
+
+// `ocean bench --backend vulkan` reports every GPU stage from timestamp queries.
+TEST(VulkanCli, BenchReportsGpuStages) {
+  std::string why;
+  if (!vulkan_available(&why)) GTEST_SKIP() << "vulkan unavailable: " << why;
+  const ocean_test::CliRun r =
+      ocean_test::run_cli("bench --backend vulkan --json --resolution 32 --cascades 2");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["rows"].size(), 1u);
+  const auto& row = j["rows"][0];
+  EXPECT_EQ(row["resolution"].get<int>(), 32);
+  EXPECT_EQ(row["cascades"].get<int>(), 2);
+  double sum = 0.0;
+  for (const char* stage : {"evolve_fft_rows", "fft_columns", "finalize", "mips", "readback"}) {
+    const double ms = row["gpu_stages_ms"][stage].get<double>();
+    EXPECT_GT(ms, 0.0) << stage;
+    sum += ms;
+  }
+  EXPECT_NEAR(sum, row["gpu_total_ms"].get<double>(), 0.05 * sum + 1e-3);
+}
+
+}  // namespace
