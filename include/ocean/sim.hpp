@@ -115,6 +115,10 @@ struct Frame {
   std::vector<CascadeFrame> cascades;
 };
 
+/// Sizes every array of `frame` for `config` (one CascadeFrame per cascade, mips included) and
+/// resets the values: displacement, normal and foam 0, Jacobian 1. What Backend::allocate does.
+void allocate_frame(const SimulationConfig& config, Frame& frame);
+
 /// A simulation implementation. configure() allocates and plans; step() never allocates,
 /// never throws and writes every field of `out` (whose arrays configure() sized).
 class Backend {

@@ -73,6 +73,12 @@ class EvolutionPhase {
   /// Phase in [0, 2π) for a (quantised, when looping) angular frequency, rad.
   [[nodiscard]] double operator()(double omega) const;
 
+  // The same recipe split for vectorised evaluation: phase = 2π·frac(rate(ω, T)·clock()).
+  /// Turns per unit of clock(): the integer harmonic j = ω'/ω0 when looping, ω/2π otherwise.
+  [[nodiscard]] static double rate(double omega, double loop_period_s);
+  /// frac(t/T) when looping, t otherwise.
+  [[nodiscard]] double clock() const { return omega0_ > 0.0 ? tau_ : time_s_; }
+
  private:
   double time_s_;
   double omega0_ = 0.0;  // 2π/T, 0 without a loop

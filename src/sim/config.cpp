@@ -88,6 +88,23 @@ InitialSpectrumParams cascade_spectrum_params(const SimulationConfig& c, std::si
           .k_max_radpm = band[1]};
 }
 
+void allocate_frame(const SimulationConfig& config, Frame& frame) {
+  const auto texels =
+      static_cast<std::size_t>(config.resolution) * static_cast<std::size_t>(config.resolution);
+  frame.cascades.resize(config.cascade_patch_sizes_m.size());
+  for (std::size_t c = 0; c < frame.cascades.size(); ++c) {
+    CascadeFrame& f = frame.cascades[c];
+    f.resolution = config.resolution;
+    f.patch_size_m = config.cascade_patch_sizes_m[c];
+    f.displacement.assign(3 * texels, 0.0f);
+    f.displacement_half.assign(4 * texels, 0);
+    f.normal.assign(3 * texels, 0.0f);
+    f.jacobian.assign(texels, 1.0f);
+    f.foam.assign(texels, 0.0f);
+    f.packed_mips.assign(mip_chain_texels(config.resolution), 0u);
+  }
+}
+
 std::size_t mip_chain_texels(int resolution) {
   const auto n = static_cast<std::size_t>(resolution);
   return (4 * n * n - 1) / 3;

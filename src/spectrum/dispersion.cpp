@@ -111,11 +111,20 @@ EvolutionPhase::EvolutionPhase(double time_s, double loop_period_s) : time_s_(ti
   }
 }
 
+namespace {
+// ω' is an exact multiple j of ω0: keep the integer so the phase stays exact (M.7.3).
+double harmonic(double omega, double omega0) {
+  return static_cast<double>(std::lround(omega / omega0));
+}
+}  // namespace
+
+double EvolutionPhase::rate(double omega, double loop_period_s) {
+  return loop_period_s > 0.0 ? harmonic(omega, 2.0 * kPi / loop_period_s) : omega / (2.0 * kPi);
+}
+
 double EvolutionPhase::operator()(double omega) const {
   if (omega0_ > 0.0) {
-    // ω' is an exact multiple j of ω0: keep the integer so the phase stays exact (M.7.3).
-    const double harmonic = static_cast<double>(std::lround(omega / omega0_));
-    const double turns = harmonic * tau_;
+    const double turns = harmonic(omega, omega0_) * tau_;
     return 2.0 * kPi * (turns - std::floor(turns));
   }
   return std::fmod(omega * time_s_, 2.0 * kPi);

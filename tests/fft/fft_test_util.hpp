@@ -6,6 +6,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <vector>
 
@@ -46,6 +47,23 @@ inline std::vector<std::complex<double>> fftw_inverse_2d(const Signal& s, int n)
   fftw_execute(p);
   fftw_destroy_plan(p);
   return ref;
+}
+
+// Transforms the same 128×128 signal with a serial and a two-thread runner and expects the same
+// bits (the plans' determinism contract).
+template <typename Plan>
+void expect_bit_identical_across_runners() {
+  const int n = 128;
+  const std::size_t count = 128 * 128;
+  Signal a(count, 8), b(count, 8);
+  const auto plan = Plan::make(n).value();
+  auto serial = ocean::make_serial_runner();
+  auto tbb = ocean::make_tbb_runner(2);
+  const SplitComplex pa = a.view(), pb = b.view();
+  plan.inverse({&pa, 1}, *serial, true);
+  plan.inverse({&pb, 1}, *tbb, true);
+  EXPECT_EQ(std::memcmp(a.re.data(), b.re.data(), count * sizeof(float)), 0);
+  EXPECT_EQ(std::memcmp(a.im.data(), b.im.data(), count * sizeof(float)), 0);
 }
 
 }  // namespace ocean::fft::test

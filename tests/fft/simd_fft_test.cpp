@@ -67,19 +67,8 @@ TEST(SimdFft2D, MatchesScalarReferenceWithSignCorrection) {
 }
 
 TEST(SimdFft2D, BitIdenticalForAnyRunner) {
-  for_each_target([&](bool) {
-    const int n = 128;
-    const std::size_t count = 128 * 128;
-    Signal a(count, 8), b(count, 8);
-    const auto plan = SimdPlan2D::make(n).value();
-    auto serial = ocean::make_serial_runner();
-    auto tbb = ocean::make_tbb_runner(2);
-    const SplitComplex pa = a.view(), pb = b.view();
-    plan.inverse({&pa, 1}, *serial, true);
-    plan.inverse({&pb, 1}, *tbb, true);
-    EXPECT_EQ(std::memcmp(a.re.data(), b.re.data(), count * sizeof(float)), 0);
-    EXPECT_EQ(std::memcmp(a.im.data(), b.im.data(), count * sizeof(float)), 0);
-  });
+  for_each_target(
+      [](bool) { ocean::fft::test::expect_bit_identical_across_runners<SimdPlan2D>(); });
 }
 
 TEST(SimdFft2D, RejectsBadSizesAndTargets) {

@@ -18,11 +18,8 @@ void build_kernel_inputs(CascadeState& state, double loop_period_s) {
   const std::size_t texels = state.spectrum.packed.size();
   state.rate.resize(texels);
   for (auto& component : state.packed_soa) component.resize(texels);
-  const double omega0 = loop_period_s > 0.0 ? 2.0 * kPi / loop_period_s : 0.0;
   for (std::size_t i = 0; i < texels; ++i) {
-    const double omega = state.spectrum.omega[i];
-    state.rate[i] =
-        omega0 > 0.0 ? static_cast<double>(std::lround(omega / omega0)) : omega / (2.0 * kPi);
+    state.rate[i] = EvolutionPhase::rate(state.spectrum.omega[i], loop_period_s);
     for (std::size_t c = 0; c < 4; ++c) state.packed_soa[c][i] = state.spectrum.packed[i][c];
   }
   state.factor_re.assign(state.factor.size(), std::vector<float>(texels));
@@ -39,12 +36,7 @@ EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_per
   EvolveArgs args;
   args.n = state.resolution;
   args.rate = state.rate.data();
-  if (loop_period_s > 0.0) {
-    const double cycles = time_s / loop_period_s;
-    args.clock = cycles - std::floor(cycles);  // frac(t/T)
-  } else {
-    args.clock = time_s;
-  }
+  args.clock = EvolutionPhase(time_s, loop_period_s).clock();  // frac(t/T), or t
   for (std::size_t c = 0; c < 4; ++c) args.packed[c] = state.packed_soa[c].data();
   args.planes = static_cast<int>(state.factor_re.size());
   for (std::size_t p = 0; p < state.factor_re.size(); ++p) {
@@ -119,22 +111,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   return {};
 }
 
-void CpuBackend::allocate(Frame& frame) const {
-  frame.cascades.resize(cascades_.size());
-  for (std::size_t c = 0; c < cascades_.size(); ++c) {
-    CascadeFrame& f = frame.cascades[c];
-    const auto texels =
-        static_cast<std::size_t>(config_.resolution) * static_cast<std::size_t>(config_.resolution);
-    f.resolution = config_.resolution;
-    f.patch_size_m = cascades_[c].patch_size_m;
-    f.displacement.assign(3 * texels, 0.0f);
-    f.displacement_half.assign(4 * texels, 0);
-    f.normal.assign(3 * texels, 0.0f);
-    f.jacobian.assign(texels, 1.0f);
-    f.foam.assign(texels, 0.0f);
-    f.packed_mips.assign(mip_chain_texels(config_.resolution), 0u);
-  }
-}
+void CpuBackend::allocate(Frame& frame) const { allocate_frame(config_, frame); }
 
 std::size_t CpuBackend::state_bytes_per_cascade() const {
   if (cascades_.empty()) return 0;

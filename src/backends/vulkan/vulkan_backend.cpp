@@ -78,7 +78,6 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
   // Spectra on the host (the CPU reference code), phase rates for exact evolution (M.7.3): with
   // a loop the integer harmonic j = ω'/ω0, else ω itself.
   std::vector<float> spectrum(4 * cascades * texels), phase_rate(cascades * texels);
-  const double omega0 = config.loop_period_s > 0.0 ? 2.0 * kPi / config.loop_period_s : 0.0;
   for (std::uint32_t c = 0; c < cascades; ++c) {
     Result<InitialSpectrum> h0 =
         make_initial_spectrum(sea.value(), cascade_spectrum_params(config, c));
@@ -88,8 +87,8 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
     std::memcpy(&spectrum[4 * c * texels], h0.value().packed.data(), 16 * texels);
     for (std::size_t i = 0; i < texels; ++i) {
       const double omega = h0.value().omega[i];
-      phase_rate[c * texels + i] = omega0 > 0.0 ? static_cast<float>(std::lround(omega / omega0))
-                                                : static_cast<float>(omega);
+      phase_rate[c * texels + i] = static_cast<float>(
+          config.loop_period_s > 0.0 ? EvolutionPhase::rate(omega, config.loop_period_s) : omega);
     }
   }
   std::vector<float> twiddle(2 * n);
@@ -139,22 +138,7 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
   return {};
 }
 
-void VulkanBackend::allocate(Frame& frame) const {
-  const std::size_t texels =
-      static_cast<std::size_t>(config_.resolution) * static_cast<std::size_t>(config_.resolution);
-  frame.cascades.resize(config_.cascade_patch_sizes_m.size());
-  for (std::size_t c = 0; c < frame.cascades.size(); ++c) {
-    CascadeFrame& f = frame.cascades[c];
-    f.resolution = config_.resolution;
-    f.patch_size_m = config_.cascade_patch_sizes_m[c];
-    f.displacement.assign(3 * texels, 0.0f);
-    f.displacement_half.assign(4 * texels, 0);
-    f.normal.assign(3 * texels, 0.0f);
-    f.jacobian.assign(texels, 1.0f);
-    f.foam.assign(texels, 0.0f);
-    f.packed_mips.assign(mip_chain_texels(config_.resolution), 0u);
-  }
-}
+void VulkanBackend::allocate(Frame& frame) const { allocate_frame(config_, frame); }
 
 Status VulkanBackend::submit(double time_s) {
   if (!status_.ok()) return status_;
@@ -164,8 +148,7 @@ Status VulkanBackend::submit(double time_s) {
   const double dt = reset_foam ? 0.0 : time_s - last_time_s_;
   auto* p = static_cast<shader::SimParams*>(gpu_->params.mapped);
   if (config_.loop_period_s > 0.0) {
-    const double cycles = time_s / config_.loop_period_s;  // as EvolutionPhase: τ = frac(t/T)
-    split_phase(cycles - std::floor(cycles), *p);
+    split_phase(EvolutionPhase(time_s, config_.loop_period_s).clock(), *p);  // τ = frac(t/T)
   } else {
     split_phase(time_s / (2.0 * kPi), *p);
   }
