@@ -77,6 +77,18 @@ Result<std::vector<double>> parse_number_list(std::string_view flag, const std::
   return values;
 }
 
+Result<std::array<double, 3>> parse_triple(std::string_view flag, const std::string& text) {
+  Result<std::vector<double>> v = parse_number_list(flag, text);
+  if (!v.ok()) return v.status();
+  if (v.value().size() != 3) {
+    return invalid_argument(std::string(flag) + " = " + text + " must be three numbers X,Y,Z");
+  }
+  for (double c : v.value()) {
+    if (Status s = require_finite(flag, c); !s.ok()) return s;
+  }
+  return std::array<double, 3>{v.value()[0], v.value()[1], v.value()[2]};
+}
+
 void add_spectrum_flags(CLI::App& command, SpectrumFlags& f) {
   command.add_option("--model", f.model, "pierson-moskowitz | jonswap | tma | phillips")
       ->capture_default_str();

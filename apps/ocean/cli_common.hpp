@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <array>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ int report(const Status& status);
 Result<double> parse_number(std::string_view flag, const std::string& text);
 /// Parses a comma-separated list of numbers; empty lists and empty items are errors.
 Result<std::vector<double>> parse_number_list(std::string_view flag, const std::string& text);
+
+/// Parses "X,Y,Z": exactly three finite numbers. The error names the flag.
+Result<std::array<double, 3>> parse_triple(std::string_view flag, const std::string& text);
 
 /// The sea-state flags of `ocean spectrum`, reused by later subcommands.
 struct SpectrumFlags {

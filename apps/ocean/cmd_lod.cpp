@@ -32,14 +32,8 @@ struct LodOptions {
 };
 
 Result<lod::Vec3> parse_vec3(std::string_view flag, const std::string& text) {
-  Result<std::vector<double>> v = parse_number_list(flag, text);
+  Result<std::array<double, 3>> v = parse_triple(flag, text);
   if (!v.ok()) return v.status();
-  if (v.value().size() != 3) {
-    return invalid_argument(std::string(flag) + " = " + text + " must be three numbers X,Y,Z");
-  }
-  for (double c : v.value()) {
-    if (Status s = require_finite(flag, c); !s.ok()) return s;
-  }
   return lod::Vec3{v.value()[0], v.value()[1], v.value()[2]};
 }
 

@@ -21,5 +21,6 @@ Command add_info_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_lod_command(CLI::App& app);
+Command add_render_command(CLI::App& app);  // Vulkan builds only
 
 }  // namespace ocean::cli

@@ -1,6 +1,7 @@
 // The ocean command-line tool: one subcommand per file (cmd_*.cpp).
 #include <CLI/CLI.hpp>
 #include <iostream>
+#include <vector>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -9,12 +10,16 @@ int main(int argc, char** argv) {
   CLI::App app{"ocean — spectral ocean surface simulation: spectra, dispersion, spreading"};
   app.name("ocean");
   app.require_subcommand(1);
-  const ocean::cli::Command commands[] = {
+  const std::vector<ocean::cli::Command> commands = {
       ocean::cli::add_spectrum_command(app), ocean::cli::add_dispersion_command(app),
       ocean::cli::add_spreading_command(app), ocean::cli::add_stats_command(app),
       ocean::cli::add_bake_command(app), ocean::cli::add_bench_command(app),
       ocean::cli::add_info_command(app), ocean::cli::add_validate_command(app),
-      ocean::cli::add_lod_command(app)};
+      ocean::cli::add_lod_command(app),
+#ifdef OCEAN_HAS_VULKAN
+      ocean::cli::add_render_command(app),
+#endif
+  };
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,6 +1,8 @@
 // Simulation presets (see preset.hpp).
 #include "preset.hpp"
 
+#include "builtin_presets.hpp"
+
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -280,7 +282,8 @@ Result<SimulationConfig> from_json(const nlohmann::ordered_json& document) {
 }
 
 void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
-  command.add_option("--preset", f.preset_path, "preset JSON file (see presets/)");
+  command.add_option("--preset", f.preset_path,
+                     "calm, moderate, storm or a preset JSON file (see presets/)");
   command.add_option("--set", f.set, "override a preset key: --set sea.wind_sea.fetch_m=5e4");
   add_spectrum_flags(command, f.sea);
   command.add_option("--resolution", f.resolution,
@@ -295,6 +298,16 @@ void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
 namespace {
 
 Result<Json> read_preset(const std::filesystem::path& path) {
+  // A bare name that is not a file selects a compiled-in preset.
+  std::error_code ec;
+  if (!path.has_parent_path() && !path.has_extension() && !std::filesystem::exists(path, ec)) {
+    for (const BuiltinPreset& p : builtin_presets()) {
+      if (path.string() == p.name) return Json::parse(p.json);
+    }
+    return invalid_argument("--preset = " + path.string() +
+                            " is neither a file nor a preset: must be calm, moderate, storm or "
+                            "a JSON file");
+  }
   std::ifstream in(path);
   if (!in) {
     return io_error("cannot read preset '" + path.string() + "': " + std::strerror(errno));

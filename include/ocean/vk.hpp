@@ -39,6 +39,13 @@ struct ContextParams {
   bool validation = false;
   /// Index into list_devices(); −1 picks the best usable one (discrete > integrated > cpu).
   int device_index = -1;
+  /// The queue must do graphics as well as compute (the renderer): Vulkan 1.3 with dynamic
+  /// rendering, and fillModeNonSolid / samplerAnisotropy where the device has them.
+  bool graphics = false;
+  /// Extra instance extensions (a window system's surface extensions, e.g. from GLFW).
+  std::vector<const char*> instance_extensions;
+  /// Enables VK_KHR_swapchain on the device (presenting to a window).
+  bool swapchain = false;
 };
 
 /// An instance, a logical device and its compute queue.
@@ -54,6 +61,9 @@ struct Context {
   DeviceInfo info;
   bool validation = false;  ///< the validation layer is active
   bool timestamps = false;  ///< the compute queue supports timestamp queries
+  bool graphics = false;    ///< the queue does graphics too (ContextParams::graphics)
+  bool wireframe = false;   ///< fillModeNonSolid is enabled
+  float max_anisotropy = 1.0f;  ///< > 1 when samplerAnisotropy is enabled
   double timestamp_period_ns = 1.0;
   /// Validation warnings and errors reported so far (tests assert zero); performance advice
   /// is not counted.
@@ -106,6 +116,19 @@ Result<Image> create_image_array(const Context& ctx, VkFormat format, std::uint3
                                  std::uint32_t layers, std::uint32_t mips, VkImageUsageFlags usage);
 void destroy_image(const Context& ctx, Image& image);
 
+/// A single 2D image with one view over its only mip level (render targets).
+struct Image2D {
+  VkImage image = VK_NULL_HANDLE;
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  VkImageView view = VK_NULL_HANDLE;
+  VkFormat format = VK_FORMAT_UNDEFINED;
+  std::uint32_t width = 0, height = 0;
+};
+Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32_t width,
+                                std::uint32_t height, VkImageUsageFlags usage,
+                                VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
+void destroy_image(const Context& ctx, Image2D& image);
+
 /// A compute pipeline, its layout and its shader module.
 struct ComputePipeline {
   VkShaderModule module = VK_NULL_HANDLE;
@@ -130,10 +153,13 @@ void destroy_commands(const Context& ctx, Commands& commands);
 Status submit(const Context& ctx, const Commands& commands);
 /// Waits for the last submit (timeout in ns) and resets the fence.
 Status wait(const Context& ctx, const Commands& commands,
-            std::uint64_t timeout_ns = 10'000'000'000);
+            std::uint64_t timeout_ns = 60'000'000'000);
 /// Records with `record`, submits and waits: for uploads and other one-off work.
 template <typename F>
 Status run_once(const Context& ctx, const Commands& commands, F&& record);
+/// A buffer in device-local memory filled with `bytes` through a staging copy on `commands`.
+Result<Buffer> create_static_buffer(const Context& ctx, const Commands& commands,
+                                    std::span<const std::byte> bytes, VkBufferUsageFlags usage);
 
 /// A global memory barrier from the writes of `src` stages to the reads and writes of `dst`
 /// stages (compute, transfer, host): coarse and correct.

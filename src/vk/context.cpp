@@ -1,6 +1,7 @@
 // Instance, validation messenger, physical-device enumeration and selection, logical device with
 // one compute queue, and VkResult → Status mapping.
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <mutex>
@@ -60,20 +61,24 @@ VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT
   if (severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT && ctx != nullptr) {
     ctx->validation_messages.fetch_add(1);
     const std::lock_guard lock(g_message_mutex);
+    static const bool verbose = std::getenv("OCEAN_VK_VERBOSE") != nullptr;
+    if (verbose && data->pMessage != nullptr) std::fprintf(stderr, "vulkan: %s\n", data->pMessage);
     ctx->last_validation_message = data->pMessage != nullptr ? data->pMessage : "";
   }
   return VK_FALSE;
 }
 
-Status create_instance(Context& ctx, bool validation) {
+Status create_instance(Context& ctx, bool validation,
+                       const std::vector<const char*>& extra_extensions = {}) {
   const VkApplicationInfo app{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
                               .pApplicationName = "ocean",
                               .applicationVersion = VK_MAKE_API_VERSION(0, 0, 1, 0),
                               .pEngineName = "ocean",
                               .engineVersion = VK_MAKE_API_VERSION(0, 0, 1, 0),
-                              .apiVersion = VK_API_VERSION_1_2};
+                              .apiVersion = VK_API_VERSION_1_3};
   const char* layers[] = {kValidationLayer};
-  const char* extensions[] = {VK_EXT_DEBUG_UTILS_EXTENSION_NAME};
+  std::vector<const char*> extensions = extra_extensions;
+  if (validation) extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
   const VkDebugUtilsMessengerCreateInfoEXT messenger_info{
       .sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
       .messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
@@ -89,11 +94,14 @@ Status create_instance(Context& ctx, bool validation) {
                                   .pApplicationInfo = &app,
                                   .enabledLayerCount = validation ? 1u : 0u,
                                   .ppEnabledLayerNames = validation ? layers : nullptr,
-                                  .enabledExtensionCount = validation ? 1u : 0u,
-                                  .ppEnabledExtensionNames = validation ? extensions : nullptr};
+                                  .enabledExtensionCount =
+                                      static_cast<std::uint32_t>(extensions.size()),
+                                  .ppEnabledExtensionNames = extensions.data()};
   const VkResult r = vkCreateInstance(&info, nullptr, &ctx.instance);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
     return unsupported(kNoDevice);
+  if (r == VK_ERROR_EXTENSION_NOT_PRESENT)
+    return unsupported("the Vulkan loader lacks a window-system extension (no display?)");
   if (Status s = check(r, "vkCreateInstance"); !s.ok()) return s;
   if (validation) {
     auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
@@ -108,14 +116,17 @@ Status create_instance(Context& ctx, bool validation) {
   return {};
 }
 
-// The first queue family with compute (a graphics+compute family is fine).
-bool find_compute_family(VkPhysicalDevice physical, std::uint32_t& family, bool& timestamps) {
+// The first queue family with compute (a graphics+compute family is fine); with `graphics`, the
+// first that has both.
+bool find_compute_family(VkPhysicalDevice physical, std::uint32_t& family, bool& timestamps,
+                         bool graphics = false) {
   std::uint32_t count = 0;
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
   std::vector<VkQueueFamilyProperties> families(count);
   vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
+  const VkQueueFlags need = VK_QUEUE_COMPUTE_BIT | (graphics ? VK_QUEUE_GRAPHICS_BIT : 0);
   for (std::uint32_t i = 0; i < count; ++i) {
-    if ((families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) != 0) {
+    if ((families[i].queueFlags & need) == need) {
       family = i;
       timestamps = families[i].timestampValidBits > 0;
       return true;
@@ -218,7 +229,7 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
   if (validation && !has_layer(kValidationLayer))
     return unsupported("Vulkan validation requested but " + std::string(kValidationLayer) +
                        " is missing: install vulkan-validationlayers");
-  if (Status s = create_instance(*ctx, validation); !s.ok()) return s;
+  if (Status s = create_instance(*ctx, validation, params.instance_extensions); !s.ok()) return s;
   Result<std::vector<VkPhysicalDevice>> devices = physical_devices(ctx->instance);
   if (!devices.ok()) return devices.status();
 
@@ -252,18 +263,58 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
   ctx->info = describe(ctx->physical);
   vkGetPhysicalDeviceProperties(ctx->physical, &ctx->properties);
   vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memory);
-  find_compute_family(ctx->physical, ctx->queue_family, ctx->timestamps);
+  if (!find_compute_family(ctx->physical, ctx->queue_family, ctx->timestamps, params.graphics))
+    return unsupported("Vulkan device '" + ctx->info.name + "' has no graphics queue");
   ctx->timestamps = ctx->timestamps && ctx->properties.limits.timestampComputeAndGraphics;
   ctx->timestamp_period_ns = static_cast<double>(ctx->properties.limits.timestampPeriod);
+
+  // The renderer's features: dynamic rendering (core 1.3), wireframe and anisotropic filtering
+  // where present.
+  VkPhysicalDeviceVulkan13Features features13{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  VkPhysicalDeviceFeatures2 supported{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                      .pNext = &features13};
+  VkPhysicalDeviceFeatures2 enabled{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  VkPhysicalDeviceVulkan13Features enabled13{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+  std::vector<const char*> device_extensions;
+  if (params.graphics) {
+    if (ctx->properties.apiVersion < VK_API_VERSION_1_3)
+      return unsupported("Vulkan device '" + ctx->info.name + "' has Vulkan " +
+                         ctx->info.api_version + "; the renderer needs 1.3: update the driver");
+    vkGetPhysicalDeviceFeatures2(ctx->physical, &supported);
+    if (features13.dynamicRendering != VK_TRUE)
+      return unsupported("Vulkan device '" + ctx->info.name + "' lacks dynamic rendering");
+    enabled13.dynamicRendering = VK_TRUE;
+    enabled.pNext = &enabled13;
+    enabled.features.fillModeNonSolid = supported.features.fillModeNonSolid;
+    enabled.features.samplerAnisotropy = supported.features.samplerAnisotropy;
+    ctx->graphics = true;
+    ctx->wireframe = supported.features.fillModeNonSolid == VK_TRUE;
+    if (supported.features.samplerAnisotropy == VK_TRUE)
+      ctx->max_anisotropy = std::min(16.0f, ctx->properties.limits.maxSamplerAnisotropy);
+    // Software rasterisers (lavapipe) filter anisotropically ~20× slower than trilinearly:
+    // off there unless OCEAN_VK_ANISOTROPY asks for it.
+    if (ctx->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) ctx->max_anisotropy = 1.0f;
+    if (const char* a = std::getenv("OCEAN_VK_ANISOTROPY");
+        a != nullptr && supported.features.samplerAnisotropy == VK_TRUE)
+      ctx->max_anisotropy = std::clamp(static_cast<float>(std::atof(a)), 1.0f,
+                                       std::min(16.0f, ctx->properties.limits.maxSamplerAnisotropy));
+  }
+  if (params.swapchain) device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
 
   const float priority = 1.0f;
   const VkDeviceQueueCreateInfo queue{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
                                       .queueFamilyIndex = ctx->queue_family,
                                       .queueCount = 1,
                                       .pQueuePriorities = &priority};
-  const VkDeviceCreateInfo info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-                                .queueCreateInfoCount = 1,
-                                .pQueueCreateInfos = &queue};
+  const VkDeviceCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+      .pNext = params.graphics ? &enabled : nullptr,
+      .queueCreateInfoCount = 1,
+      .pQueueCreateInfos = &queue,
+      .enabledExtensionCount = static_cast<std::uint32_t>(device_extensions.size()),
+      .ppEnabledExtensionNames = device_extensions.data()};
   if (Status s =
           check(vkCreateDevice(ctx->physical, &info, nullptr, &ctx->device), "vkCreateDevice");
       !s.ok())

@@ -1,6 +1,7 @@
 // Buffers and images with memory-type selection, compute pipelines from SPIR-V, command
 // submission, barriers and timestamp queries.
 #include <cassert>
+#include <cstring>
 #include <string>
 
 #include "ocean/vk.hpp"
@@ -136,6 +137,83 @@ void destroy_image(const Context& ctx, Image& im) {
   im = {};
 }
 
+Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32_t width,
+                                std::uint32_t height, VkImageUsageFlags usage,
+                                VkImageAspectFlags aspect) {
+  Image2D im;
+  im.format = format, im.width = width, im.height = height;
+  const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+                               .imageType = VK_IMAGE_TYPE_2D,
+                               .format = format,
+                               .extent = {width, height, 1},
+                               .mipLevels = 1,
+                               .arrayLayers = 1,
+                               .samples = VK_SAMPLE_COUNT_1_BIT,
+                               .tiling = VK_IMAGE_TILING_OPTIMAL,
+                               .usage = usage,
+                               .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+                               .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+  if (Status s = check(vkCreateImage(ctx.device, &info, nullptr, &im.image), "vkCreateImage");
+      !s.ok())
+    return s;
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(ctx.device, im.image, &req);
+  Result<VkDeviceMemory> memory = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+  if (!memory.ok()) {
+    vkDestroyImage(ctx.device, im.image, nullptr);
+    return memory.status();
+  }
+  im.memory = memory.value();
+  Status s = check(vkBindImageMemory(ctx.device, im.image, im.memory, 0), "vkBindImageMemory");
+  if (s.ok()) {
+    const VkImageViewCreateInfo v{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                                  .image = im.image,
+                                  .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                                  .format = format,
+                                  .subresourceRange = {aspect, 0, 1, 0, 1}};
+    s = check(vkCreateImageView(ctx.device, &v, nullptr, &im.view), "vkCreateImageView");
+  }
+  if (!s.ok()) {
+    destroy_image(ctx, im);
+    return s;
+  }
+  return im;
+}
+
+void destroy_image(const Context& ctx, Image2D& im) {
+  if (im.view != VK_NULL_HANDLE) vkDestroyImageView(ctx.device, im.view, nullptr);
+  if (im.image != VK_NULL_HANDLE) vkDestroyImage(ctx.device, im.image, nullptr);
+  if (im.memory != VK_NULL_HANDLE) vkFreeMemory(ctx.device, im.memory, nullptr);
+  im = {};
+}
+
+Result<Buffer> create_static_buffer(const Context& ctx, const Commands& commands,
+                                    std::span<const std::byte> bytes, VkBufferUsageFlags usage) {
+  Result<Buffer> staging = create_buffer(ctx, bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                         MemoryUse::upload);
+  if (!staging.ok()) return staging.status();
+  Buffer up = staging.value();
+  std::memcpy(up.mapped, bytes.data(), bytes.size());
+  Result<Buffer> buffer = create_buffer(ctx, bytes.size(), usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                        MemoryUse::device);
+  if (!buffer.ok()) {
+    destroy_buffer(ctx, up);
+    return buffer.status();
+  }
+  Buffer out = buffer.value();
+  const Status s = run_once(ctx, commands, [&](VkCommandBuffer cmd) {
+    const VkBufferCopy region{0, 0, bytes.size()};
+    vkCmdCopyBuffer(cmd, up.buffer, out.buffer, 1, &region);
+    barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT);
+  });
+  destroy_buffer(ctx, up);
+  if (!s.ok()) {
+    destroy_buffer(ctx, out);
+    return s;
+  }
+  return out;
+}
+
 Result<ComputePipeline> create_compute_pipeline(const Context& ctx,
                                                 std::span<const std::uint32_t> spirv,
                                                 VkPipelineLayout layout,
@@ -238,6 +316,15 @@ VkAccessFlags accesses(VkPipelineStageFlags stages, bool writes_only) {
   if ((stages & VK_PIPELINE_STAGE_HOST_BIT) != 0)
     a |=
         writes_only ? VK_ACCESS_HOST_WRITE_BIT : VK_ACCESS_HOST_READ_BIT | VK_ACCESS_HOST_WRITE_BIT;
+  if (!writes_only) {  // graphics stages are only ever read by the barriers of this project
+    if ((stages & VK_PIPELINE_STAGE_VERTEX_INPUT_BIT) != 0)
+      a |= VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT;
+    if ((stages & (VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT)) !=
+        0)
+      a |= VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_UNIFORM_READ_BIT;
+    if ((stages & VK_PIPELINE_STAGE_ALL_COMMANDS_BIT) != 0)
+      a |= VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT;
+  }
   return a;
 }
 }  // namespace

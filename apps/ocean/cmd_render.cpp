@@ -1,0 +1,360 @@
+// `ocean render`: a picture (PNG, or linear HDR EXR), an image sequence or an MP4 (through the
+// ffmpeg program) of a sea state from a camera, headless on any Vulkan device (lavapipe
+// included). With no arguments it writes ocean.png: the moderate sea at eye level towards a
+// low sun.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <numbers>
+#include <string>
+#include <unistd.h>
+#include <vector>
+
+#include "cli_common.hpp"
+#include "commands.hpp"
+#include "io/atomic_file.hpp"
+#include "io/exr.hpp"
+#include "io/png_image.hpp"
+#include "preset.hpp"
+#include "progress.hpp"
+#include "scene.hpp"
+
+namespace ocean::cli {
+
+namespace {
+
+struct RenderOptions {
+  SimulationFlags sim;
+  std::string out = "ocean.png";
+  std::string width = "1280", height = "720";
+  std::string camera = "0,6,0", target = "300,-2,60", fov = "55";
+  std::string time = "20", frames = "1", fps = "30", warmup = "4";
+  std::string quality = "high", ocean_size = "4096", view = "shaded";
+  std::string sun_elevation, sun_azimuth, exposure;
+  std::string backend = "cpu";
+  bool validation = false, json = false;
+};
+
+enum class OutputKind { png, exr, mp4 };
+
+struct Inputs {
+  SceneParams scene;
+  render::View view;
+  OutputKind kind = OutputKind::png;
+  double time_s = 0.0, fps = 30.0, warmup_s = 0.0;
+  long long frames = 1;
+};
+
+Result<double> number_in(std::string_view flag, const std::string& text, double lo, double hi) {
+  Result<double> v = parse_number(flag, text);
+  if (!v.ok()) return v.status();
+  if (Status s = require_in_range(flag, v.value(), lo, hi); !s.ok()) return s;
+  return v.value();
+}
+
+Result<Inputs> parse_inputs(const RenderOptions& o) {
+  Inputs in;
+  Result<SimulationConfig> config = resolve_config(o.sim);
+  if (!config.ok()) return config.status();
+  in.scene.config = std::move(config).value();
+  in.scene.backend = o.backend;
+  in.scene.validation = o.validation;
+  Result<double> w = number_in("--width", o.width, 1, 16384);
+  if (!w.ok()) return w.status();
+  Result<double> h = number_in("--height", o.height, 1, 16384);
+  if (!h.ok()) return h.status();
+  if (w.value() != std::floor(w.value()) || h.value() != std::floor(h.value()))
+    return invalid_argument("--width and --height must be whole numbers of pixels");
+  in.scene.width = static_cast<int>(w.value());
+  in.scene.height = static_cast<int>(h.value());
+  Result<std::array<double, 3>> eye = parse_triple("--camera", o.camera);
+  if (!eye.ok()) return eye.status();
+  Result<std::array<double, 3>> target = parse_triple("--target", o.target);
+  if (!target.ok()) return target.status();
+  Result<double> fov = number_in("--fov", o.fov, 1.0, 170.0);
+  if (!fov.ok()) return fov.status();
+  render::View& v = in.view;
+  v.camera = {.position_m = {eye.value()[0], eye.value()[1], eye.value()[2]},
+              .target_m = {target.value()[0], target.value()[1], target.value()[2]},
+              .fov_y_rad = fov.value() * std::numbers::pi / 180.0,
+              .aspect = w.value() / h.value(),
+              .near_m = 0.2,
+              .far_m = 2.0e5};
+  if (eye.value()[1] <= 0.0)
+    return invalid_argument("--camera = " + o.camera + ": the camera must be above the sea (Y > 0)");
+  if (Status s = lod::validate(v.camera); !s.ok())
+    return invalid_argument("--camera/--target: " + s.message());
+  Result<lod::QualityPreset> preset = lod::parse_preset(o.quality);
+  if (!preset.ok())
+    return invalid_argument("--quality = " + o.quality +
+                            " is not a quality: must be low, medium, high or ultra");
+  v.quality = lod::quality_preset(preset.value());
+  Result<double> size =
+      number_in("--ocean-size", o.ocean_size, lod::kMinOceanSize_m, lod::kMaxOceanSize_m);
+  if (!size.ok()) return size.status();
+  v.ocean_size_m = size.value();
+  Result<render::DebugView> debug = render::parse_debug_view(o.view);
+  if (!debug.ok()) return invalid_argument("--view = " + o.view +
+                                           " is not a view: must be shaded, lod or wireframe");
+  v.debug = debug.value();
+  if (!o.sun_elevation.empty()) {
+    Result<double> e = number_in("--sun-elevation", o.sun_elevation, -10.0, 90.0);
+    if (!e.ok()) return e.status();
+    v.shading.sun_elevation_deg = e.value();
+  }
+  if (!o.sun_azimuth.empty()) {
+    Result<double> a = number_in("--sun-azimuth", o.sun_azimuth, -360.0, 360.0);
+    if (!a.ok()) return a.status();
+    v.shading.sun_azimuth_deg = a.value();
+  }
+  if (!o.exposure.empty()) {
+    Result<double> e = number_in("--exposure", o.exposure, 1e-3, 1e3);
+    if (!e.ok()) return e.status();
+    v.shading.exposure = e.value();
+  }
+  Result<double> t = number_in("--time", o.time, 0.0, 1e9);
+  if (!t.ok()) return t.status();
+  in.time_s = t.value();
+  Result<double> frames = number_in("--frames", o.frames, 1, 1e6);
+  if (!frames.ok()) return frames.status();
+  if (frames.value() != std::floor(frames.value()))
+    return invalid_argument("--frames = " + o.frames + " must be a whole number");
+  in.frames = static_cast<long long>(frames.value());
+  Result<double> fps = number_in("--fps", o.fps, 1e-3, 1000.0);
+  if (!fps.ok()) return fps.status();
+  in.fps = fps.value();
+  Result<double> warmup = number_in("--warmup", o.warmup, 0.0, 600.0);
+  if (!warmup.ok()) return warmup.status();
+  in.warmup_s = warmup.value();
+  const std::string ext = std::filesystem::path(o.out).extension().string();
+  if (ext == ".png") {
+    in.kind = OutputKind::png;
+  } else if (ext == ".exr") {
+    in.kind = OutputKind::exr;
+  } else if (ext == ".mp4") {
+    in.kind = OutputKind::mp4;
+  } else {
+    return invalid_argument("--out = " + o.out + ": the name must end in .png, .exr or .mp4");
+  }
+  return in;
+}
+
+// Frame f of a sequence: "%04d"-style patterns are filled in; otherwise _00000 goes before the
+// extension. A single frame is written under the name given.
+std::filesystem::path frame_path(const std::string& out, long long frame, long long frames) {
+  if (frames == 1) return out;
+  if (out.find('%') != std::string::npos) {
+    char name[4096];
+    std::snprintf(name, sizeof name, out.c_str(), static_cast<int>(frame));
+    return name;
+  }
+  std::filesystem::path p(out);
+  char index[24];
+  std::snprintf(index, sizeof index, "_%05lld", frame);
+  return p.parent_path() / (p.stem().string() + index + p.extension().string());
+}
+
+bool on_path(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (path == nullptr) return false;
+  std::string dirs(path);
+  std::size_t start = 0;
+  while (start <= dirs.size()) {
+    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
+    const std::filesystem::path candidate =
+        std::filesystem::path(dirs.substr(start, end - start)) / program;
+    if (access(candidate.c_str(), X_OK) == 0) return true;
+    start = end + 1;
+  }
+  return false;
+}
+
+Status write_png(const std::filesystem::path& path, int w, int h,
+                 const std::vector<std::uint8_t>& rgba) {
+  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w) * h * 3);
+  for (std::size_t i = 0, n = static_cast<std::size_t>(w) * h; i < n; ++i)
+    for (int c = 0; c < 3; ++c) rgb[3 * i + static_cast<std::size_t>(c)] = rgba[4 * i + static_cast<std::size_t>(c)];
+  return io::write_png8(path, w, h, 3, rgb.data());
+}
+
+Status write_hdr_exr(const std::filesystem::path& path, int w, int h,
+                     const std::vector<float>& rgba) {
+  const std::size_t n = static_cast<std::size_t>(w) * h;
+  std::vector<float> planes(3 * n);
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t c = 0; c < 3; ++c) planes[c * n + i] = rgba[4 * i + c];
+  const io::ExrChannel channels[] = {
+      {"R", planes.data()}, {"G", planes.data() + n}, {"B", planes.data() + 2 * n}};
+  return io::write_exr(path, w, h, channels, io::ExrPixelType::half);
+}
+
+// ffmpeg reading raw RGBA frames on its standard input, writing H.264 into a temporary beside
+// the output that is renamed once ffmpeg succeeds.
+class VideoWriter {
+ public:
+  Status open(const std::filesystem::path& out, int w, int h, double fps) {
+    out_ = out;
+    temp_ = out.parent_path() / ("." + out.filename().string() + ".tmp-" +
+                                 std::to_string(getpid()) + ".mp4");
+    char command[8192];
+    std::snprintf(command, sizeof command,
+                  "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s %dx%d -r %.6g -i - "
+                  "-c:v libx264 -pix_fmt yuv420p -crf 18 '%s'",
+                  w, h, fps, temp_.c_str());
+    pipe_ = popen(command, "w");
+    if (pipe_ == nullptr)
+      return io_error("cannot start ffmpeg for '" + out.string() + "': " +
+                      io::errno_message(errno));
+    return {};
+  }
+  Status write(const std::vector<std::uint8_t>& rgba) {
+    if (std::fwrite(rgba.data(), 1, rgba.size(), pipe_) != rgba.size())
+      return io_error("cannot write '" + out_.string() + "': ffmpeg stopped reading");
+    return {};
+  }
+  Status close() {
+    const int rc = pclose(pipe_);
+    pipe_ = nullptr;
+    std::error_code ec;
+    if (rc != 0) {
+      std::filesystem::remove(temp_, ec);
+      return io_error("cannot write '" + out_.string() + "': ffmpeg failed (exit " +
+                      std::to_string(rc) + ")");
+    }
+    std::filesystem::rename(temp_, out_, ec);
+    if (ec) {
+      std::filesystem::remove(temp_, ec);
+      return io_error("cannot write '" + out_.string() + "': " + ec.message());
+    }
+    return {};
+  }
+  ~VideoWriter() {
+    if (pipe_ != nullptr) {
+      pclose(pipe_);
+      std::error_code ec;
+      std::filesystem::remove(temp_, ec);
+    }
+  }
+
+ private:
+  std::filesystem::path out_, temp_;
+  FILE* pipe_ = nullptr;
+};
+
+int run_render(const RenderOptions& o) {
+  Result<Inputs> parsed = parse_inputs(o);
+  if (!parsed.ok()) return report(parsed.status());
+  const Inputs& in = parsed.value();
+  // Fail before any work when the output cannot be written.
+  const std::filesystem::path first = frame_path(o.out, 0, in.frames);
+  const std::filesystem::path dir =
+      first.parent_path().empty() ? std::filesystem::path(".") : first.parent_path();
+  std::error_code ec;
+  if (!std::filesystem::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0)
+    return report(io_error("cannot write '" + first.string() + "': " +
+                           (std::filesystem::exists(dir, ec) ? "Permission denied"
+                                                             : "No such file or directory")));
+  if (in.kind == OutputKind::mp4 && !on_path("ffmpeg"))
+    return report(unsupported("--out " + o.out +
+                              ": MP4 needs the ffmpeg program (apt-get install ffmpeg); "
+                              "or write a PNG sequence"));
+  Result<std::unique_ptr<Scene>> made = Scene::make(in.scene);
+  if (!made.ok()) return report(made.status());
+  Scene& scene = *made.value();
+  render::Renderer& renderer = scene.renderer();
+  const int w = in.scene.width, h = in.scene.height;
+
+  VideoWriter video;
+  if (in.kind == OutputKind::mp4) {
+    if (Status s = video.open(o.out, w, h, in.fps); !s.ok()) return report(s);
+  }
+  std::vector<std::uint8_t> srgb;
+  std::vector<float> hdr;
+  Progress progress("render", in.frames);
+  for (long long f = 0; f < in.frames; ++f) {
+    const double t = in.time_s + static_cast<double>(f) / in.fps;
+    const Status stepped = f == 0 ? scene.warm_up(t, in.warmup_s) : scene.step(t);
+    if (!stepped.ok()) return report(stepped);
+    if (Status s = renderer.draw(in.view); !s.ok()) return report(s);
+    const std::filesystem::path path = frame_path(o.out, f, in.frames);
+    Status written;
+    if (in.kind == OutputKind::exr) {
+      if (Status s = renderer.read_hdr(hdr); !s.ok()) return report(s);
+      written = write_hdr_exr(path, w, h, hdr);
+    } else {
+      if (Status s = renderer.read_srgb(srgb); !s.ok()) return report(s);
+      written = in.kind == OutputKind::png ? write_png(path, w, h, srgb) : video.write(srgb);
+    }
+    if (!written.ok()) return report(written);
+    if (in.frames > 1) progress.update(f + 1);
+  }
+  if (in.frames > 1) progress.finish();
+  if (in.kind == OutputKind::mp4) {
+    if (Status s = video.close(); !s.ok()) return report(s);
+  }
+  if (scene.context()->validation && scene.context()->validation_messages.load() != 0)
+    return report(Status(ErrorCode::internal,
+                         "Vulkan validation reported " +
+                             std::to_string(scene.context()->validation_messages.load()) +
+                             " messages; last: " + scene.context()->last_validation_message));
+  const render::RenderStats& st = renderer.stats();
+  if (o.json) {
+    nlohmann::ordered_json j = {{"out", o.out},
+                                {"width", w},
+                                {"height", h},
+                                {"frames", in.frames},
+                                {"device", scene.context()->info.name},
+                                {"backend", in.scene.backend},
+                                {"patches", st.patches},
+                                {"draw_calls", st.draw_calls},
+                                {"triangles", st.triangles},
+                                {"lod_select_ms", st.cpu_select_ms},
+                                {"gpu_ms", st.gpu_ms}};
+    print_json(j);
+  } else {
+    std::cout << "wrote " << o.out << " (" << w << "x" << h << ", " << in.frames << " frame"
+              << (in.frames == 1 ? "" : "s") << ") on " << scene.context()->info.name << ": "
+              << st.patches << " patches, " << st.triangles << " triangles, " << st.draw_calls
+              << " draws, GPU " << st.gpu_ms << " ms per frame\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& app) {
+  auto o = std::make_shared<RenderOptions>();
+  CLI::App* command =
+      app.add_subcommand("render", "render the ocean to a PNG/EXR image, a sequence or an MP4");
+  add_simulation_flags(*command, o->sim);
+  command->add_option("--out", o->out,
+                      "output .png (sRGB), .exr (linear HDR) or .mp4 (needs ffmpeg); sequences "
+                      "number PNG/EXR frames (name_00000.png or a %05d pattern); default ocean.png");
+  command->add_option("--width", o->width, "image width, pixels (default 1280)");
+  command->add_option("--height", o->height, "image height, pixels (default 720)");
+  command->add_option("--camera", o->camera, "eye X,Y,Z in metres, Y up (default 0,6,0)");
+  command->add_option("--target", o->target, "a point the camera looks at (default 300,-2,60)");
+  command->add_option("--fov", o->fov, "vertical field of view, degrees (default 55)");
+  command->add_option("--time", o->time, "simulated time of the first frame, s (default 20)");
+  command->add_option("--frames", o->frames, "number of frames (default 1)");
+  command->add_option("--fps", o->fps, "frames per second of a sequence (default 30)");
+  command->add_option("--warmup", o->warmup,
+                      "seconds simulated before the first frame so foam builds up (default 4)");
+  command->add_option("--quality", o->quality, "LOD quality: low, medium, high, ultra");
+  command->add_option("--ocean-size", o->ocean_size,
+                      "side of the LOD square around the camera, m (256..8192, default 4096)");
+  command->add_option("--view", o->view, "shaded, lod (colours by level) or wireframe");
+  command->add_option("--sun-elevation", o->sun_elevation, "sun above the horizon, degrees");
+  command->add_option("--sun-azimuth", o->sun_azimuth, "sun azimuth from +x towards +z, degrees");
+  command->add_option("--exposure", o->exposure, "exposure before tone mapping (default 0.7)");
+  command->add_option("--backend", o->backend, "simulation backend: cpu or vulkan");
+  command->add_flag("--validation", o->validation,
+                    "enable the Khronos validation layer; fail if it reports anything");
+  command->add_flag("--json", o->json, "print the statistics as JSON");
+  return {command, [o] { return run_render(*o); }};
+}
+
+}  // namespace ocean::cli

@@ -1,0 +1,38 @@
+# ocean_embed_shaders(OUT_VAR SHADERS file... DEPENDS include...)
+# Compiles each GLSL file of shaders/ with glslc (stage from the extension) and embeds the SPIR-V
+# as a word array (cmake/EmbedSpirv.cmake). The symbol is ocean_spv_<stem> for compute shaders
+# and ocean_spv_<stem>_<ext> for graphics stages (ocean.vert → ocean_spv_ocean_vert). OUT_VAR
+# receives the generated .cpp files.
+function(ocean_embed_shaders out_var)
+  cmake_parse_arguments(ARG "" "" "SHADERS;DEPENDS" ${ARGN})
+  set(shader_dir ${PROJECT_SOURCE_DIR}/shaders)
+  set(generated)
+  foreach(file ${ARG_SHADERS})
+    get_filename_component(stem ${file} NAME_WE)
+    get_filename_component(ext ${file} LAST_EXT)
+    string(SUBSTRING ${ext} 1 -1 ext)
+    if(ext STREQUAL "comp")
+      set(name ${stem})
+    else()
+      set(name ${stem}_${ext})
+    endif()
+    set(spv ${CMAKE_CURRENT_BINARY_DIR}/shaders/${name}.spv)
+    set(cpp ${CMAKE_CURRENT_BINARY_DIR}/shaders/${name}.spv.cpp)
+    set(deps)
+    foreach(dep ${ARG_DEPENDS})
+      list(APPEND deps ${shader_dir}/${dep})
+    endforeach()
+    add_custom_command(
+      OUTPUT ${cpp}
+      COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_CURRENT_BINARY_DIR}/shaders
+      COMMAND ${OCEAN_GLSLC} --target-env=vulkan1.2 -O -Werror -I ${shader_dir}
+              ${shader_dir}/${file} -o ${spv}
+      COMMAND ${CMAKE_COMMAND} -DINPUT=${spv} -DOUTPUT=${cpp} -DNAME=ocean_spv_${name}
+              -P ${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake
+      DEPENDS ${shader_dir}/${file} ${deps} ${PROJECT_SOURCE_DIR}/cmake/EmbedSpirv.cmake
+      COMMENT "glslc ${file} → embedded SPIR-V"
+      VERBATIM)
+    list(APPEND generated ${cpp})
+  endforeach()
+  set(${out_var} ${generated} PARENT_SCOPE)
+endfunction()

@@ -1,0 +1,168 @@
+// ocean/render.hpp — the Vulkan ocean renderer: the quadtree LOD mesh (ocean/lod.hpp) displaced
+// by the simulation's cascades, shaded with sky reflection, Fresnel, sun specular, scattering,
+// foam and horizon fog into a linear HDR image, then tone-mapped into an sRGB image.
+//
+// Inputs: either a CPU Frame (upload(): its half-float displacement and packed RGBA8 mips are
+// copied into the renderer's own images at the start of the next draw, as seed 000 applies
+// them), or the GPU images of a VulkanBackend on the same Context (use_simulation_images(): no
+// copy). Outputs: the HDR and the sRGB image, on the device or read back.
+//
+// Contract: make() and configure() allocate; draw()/record() allocate nothing. Every failure is
+// a Status with a one-line message ("no Vulkan device: ...", out of device memory, ...).
+// Threading: one thread drives a renderer; it shares the Context's queue with the backend.
+// Equations (R.n): docs/rendering.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string_view>
+#include <vector>
+
+#include "ocean/lod.hpp"
+#include "ocean/sim.hpp"
+#include "ocean/vk.hpp"
+#include "ocean/vk/simulation.hpp"
+
+namespace ocean::render {
+
+/// What the shading and the sky depend on. Radiometric quantities are in one relative unit
+/// (the sun's irradiance at the top of the atmosphere is `sun_irradiance`); exposure maps it to
+/// the display.
+struct ShadingParams {
+  double sun_azimuth_deg = 20.0;    ///< direction towards the sun, clockwise from +x towards +z
+  double sun_elevation_deg = 14.0;  ///< above the horizon, (−90, 90]
+  double sun_irradiance = 20.0;     ///< > 0
+  double sky_brightness = 1.0;      ///< scale of the sky's radiance, ≥ 0
+  double aerosol = 1.0;             ///< Mie density relative to a clear day (haze), ≥ 0
+  double aerosol_g = 0.76;          ///< Henyey–Greenstein asymmetry of the haze, [0, 0.99)
+  /// Single-scattering albedo of the water body (deep Atlantic blue-green by default), [0, 1].
+  std::array<double, 3> water_colour = {0.004, 0.016, 0.028};
+  double crest_scatter = 0.9;       ///< gain of the light through thin wave crests, ≥ 0
+  double foam_brightness = 1.0;     ///< foam albedo scale, ≥ 0
+  double roughness = 0.08;          ///< base microfacet α of the calm surface, (0, 1]
+  double fog_density_per_m = 6e-5;  ///< ρ of the horizon fog (R.8), ≥ 0
+  double exposure = 0.7;            ///< multiplies the HDR image before tone mapping, > 0
+};
+/// invalid_argument naming the field for non-finite values or values outside the ranges above.
+Status validate(const ShadingParams& params);
+
+enum class DebugView : std::uint8_t {
+  shaded,       ///< the water as it looks
+  lod_colours,  ///< shading tinted by quadtree level
+  wireframe,    ///< the LOD mesh's edges only (needs fillModeNonSolid)
+};
+std::string_view to_string(DebugView view);
+Result<DebugView> parse_debug_view(std::string_view name);
+
+/// One picture's camera, mesh and look.
+struct View {
+  lod::Camera camera;
+  lod::Quality quality = lod::quality_preset(lod::QualityPreset::high);
+  double ocean_size_m = 4096.0;  ///< side S of the quadtree square, [256, 8192]
+  /// Outer half-extent of the horizon skirt, m; ≤ 0: 10·S.
+  double skirt_half_extent_m = -1.0;
+  ShadingParams shading;
+  DebugView debug = DebugView::shaded;
+};
+Status validate(const View& view);
+
+/// What the last draw did.
+struct RenderStats {
+  std::uint32_t patches = 0;      ///< instances drawn (skirt excluded)
+  std::uint32_t draw_calls = 0;   ///< instanced draws of patches + the skirt + sky + tone map
+  std::uint64_t triangles = 0;    ///< patch and skirt triangles submitted
+  std::array<std::uint32_t, lod::kMaxLevels + 1> patches_per_level{};
+  double cpu_select_ms = 0.0;     ///< LOD selection
+  double gpu_ms = 0.0;            ///< GPU time of the whole draw (0 without timestamps)
+};
+
+struct RendererParams {
+  int width = 1280;   ///< [1, 16384]
+  int height = 720;   ///< [1, 16384]
+};
+
+class Renderer {
+ public:
+  /// Builds pipelines, targets and the patch meshes. The context must have been created with
+  /// ContextParams::graphics (unsupported otherwise).
+  static Result<std::unique_ptr<Renderer>> make(std::shared_ptr<vk::Context> context,
+                                                const RendererParams& params);
+  ~Renderer();
+  Renderer(const Renderer&) = delete;
+  Renderer& operator=(const Renderer&) = delete;
+
+  /// New target size (allocates).
+  Status resize(int width, int height);
+  /// Sizes the cascade images for `config` (the CPU upload path) and reads the cascade sizes,
+  /// bands and Hs the shaders need. Call again after the simulation is reconfigured.
+  Status configure(const SimulationConfig& config);
+  /// CPU path: copies `frame` (configured as above) into a staging buffer; the next draw copies
+  /// it into the images first.
+  Status upload(const Frame& frame);
+  /// GPU path: samples these images (a VulkanBackend's on the same context) from now on, until
+  /// upload() or configure() is called. The images must stay alive while they are in use.
+  void use_simulation_images(const vk::SimulationImages& images);
+
+  /// Records the frame into `cmd` (outside any render pass): pending uploads, the HDR pass (sky,
+  /// patches, skirt), the tone-map pass. Afterwards the sRGB image is in TRANSFER_SRC_OPTIMAL.
+  Status record(VkCommandBuffer cmd, const View& view);
+  /// record() on the renderer's own command buffer, submitted and waited for.
+  Status draw(const View& view);
+  /// The last draw's sRGB pixels, RGBA8, top row first (width·height·4 bytes).
+  Status read_srgb(std::vector<std::uint8_t>& rgba);
+  /// The last draw's linear HDR pixels, RGBA float, top row first (width·height·4 floats).
+  Status read_hdr(std::vector<float>& rgba);
+
+  [[nodiscard]] VkImage srgb_image() const;
+  [[nodiscard]] int width() const;
+  [[nodiscard]] int height() const;
+  [[nodiscard]] const RenderStats& stats() const { return stats_; }
+  [[nodiscard]] const vk::Context& context() const { return *context_; }
+
+  struct State;  // Vulkan objects (src/render/renderer.cpp)
+
+ private:
+  Renderer() = default;
+  std::shared_ptr<vk::Context> context_;
+  std::unique_ptr<State> state_;
+  RenderStats stats_;
+};
+
+/// The sun's unit direction for azimuth/elevation (world, Y up).
+std::array<double, 3> sun_direction(double azimuth_deg, double elevation_deg);
+
+}  // namespace ocean::render
+
+namespace ocean::render {
+
+/// The analytic sky of the renderer (docs/rendering.md R.1–R.4): single scattering by air
+/// (Rayleigh) and haze (Mie, Henyey–Greenstein) in a plane-parallel exponential atmosphere, sun
+/// light attenuated along the Kasten–Young air mass, plus an isotropic multiple-scattering
+/// share. Linear radiance in the unit of ShadingParams::sun_irradiance, per RGB channel.
+struct Sky {
+  explicit Sky(const ShadingParams& params);
+  /// Radiance arriving from the unit direction `dir` (world, Y up); directions below the
+  /// horizon give the horizon's radiance.
+  [[nodiscard]] std::array<double, 3> radiance(std::array<double, 3> dir) const;
+  /// Sun irradiance reaching sea level on a plane facing the sun.
+  [[nodiscard]] std::array<double, 3> sun_irradiance_ground() const;
+  /// Irradiance from the whole sky dome on a horizontal plane (∫ L cosθ dω, numerically).
+  [[nodiscard]] std::array<double, 3> sky_irradiance_horizontal() const;
+
+  /// The sky-view table the shaders sample: kLutWidth × kLutHeight RGBA float texels, row-major,
+  /// u = azimuth/2π (azimuth from +x towards +z), v = √(elevation/(π/2)) of the texel centre.
+  static constexpr int kLutWidth = 128;
+  static constexpr int kLutHeight = 64;
+  void fill_lut(std::span<float> rgba) const;
+
+  ShadingParams params;
+  std::array<double, 3> sun;  ///< unit direction towards the sun
+};
+
+/// Relative optical air mass of Kasten & Young (1989) for a zenith cosine μ ∈ [0, 1] (R.3):
+/// 1 at the zenith, ≈ 38 at the horizon.
+double air_mass(double mu);
+
+}  // namespace ocean::render

@@ -1,0 +1,114 @@
+#version 450
+// Water shading (docs/rendering.md R.5–R.8, R.11): per-pixel normals, foam and roughness from the
+// cascades' mipped maps, sky reflection with Schlick's Fresnel (F0 = 0.02, seed 004), the sun's
+// specular from a GGX microfacet lobe whose roughness the mips encode (seed 000 eqs. 49, 53),
+// light scattered out of the water body and through thin crests, foam, and seed 002's
+// composition fog(s·(1 − r) + r·(env + sun)) with seed 004's horizon fog.
+//
+// Sources: Walter et al. (2007) "Microfacet models for refraction through rough surfaces" (GGX
+// distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano
+// & Baker (2010) "LEAN mapping" (slope variance adds across layers and filtering, R.5).
+#include "render_common.glsl"
+
+layout(location = 0) in vec2 world_xz;
+layout(location = 1) in vec3 world_pos;
+layout(location = 2) flat in uint level;
+layout(location = 0) out vec4 colour;
+
+const vec3 kLevelColours[9] = vec3[](vec3(0.9, 0.1, 0.1), vec3(0.95, 0.55, 0.1),
+    vec3(0.9, 0.9, 0.1), vec3(0.3, 0.85, 0.2), vec3(0.1, 0.8, 0.8), vec3(0.2, 0.4, 0.95),
+    vec3(0.55, 0.25, 0.9), vec3(0.9, 0.3, 0.75), vec3(0.95, 0.95, 0.95));
+
+// Roughness α² of a stored smoothness: r = (1 − smoothness)² (inverse of eq. 53's last step).
+float alpha_squared(float smoothness) {
+  float r = (1.0 - smoothness);
+  r *= r;
+  return r * r;
+}
+
+void main() {
+  int cascades = int(u.lod.w);
+  float alpha0_sq = u.params.y * u.params.y;
+  vec2 slope = vec2(0.0);  // Σ of the cascades' surface gradients, as normal x/y and z/y
+  float variance = alpha0_sq;
+  float no_foam = 1.0;
+  // Pixel footprint on the sea, m: beyond an eighth of a cascade's dominant wavelength per pixel
+  // its normals would alias; they fade into roughness instead (R.5).
+  vec2 dx = dFdx(world_xz), dy = dFdy(world_xz);
+  float footprint = max(length(dx), length(dy));
+  for (int c = 0; c < cascades; ++c) {
+    vec2 uv = world_xz / u.cascades[c].x + 0.5 / u.cascades[c].y;
+    vec4 t = texture(normal_map, vec3(uv, float(c)));
+    vec2 n = t.xy * 2.0 - 1.0;
+    float ny = sqrt(max(1.0 - dot(n, n), 0.05));
+    float w = clamp(2.0 - 16.0 * footprint / u.cascades[c].z, 0.0, 1.0);
+    slope += w * n / ny;
+    float extra = max(alpha_squared(t.w) - alpha0_sq, 0.0);
+    if (w < 1.0) {  // the cascade's whole slope variance, from its 1×1 mip
+      vec4 coarsest = textureLod(normal_map, vec3(0.5, 0.5, float(c)), u.cascades[c].w);
+      extra = mix(max(alpha_squared(coarsest.w) - alpha0_sq, 0.0), extra, w);
+    }
+    variance += extra;
+    no_foam *= 1.0 - t.z;
+  }
+  vec3 N = normalize(vec3(slope.x, 1.0, slope.y));
+  float alpha_sq = clamp(variance, 2.5e-4, 1.0);
+  float foam = 1.0 - no_foam;
+
+  vec3 to_camera = u.camera_pos.xyz - world_pos;
+  float distance_m = length(to_camera);
+  vec3 V = to_camera / distance_m;
+  vec3 L = u.sun_dir.xyz;
+  // Normals that face away from the viewer (grazing views of steep waves) are bent back.
+  float n_dot_v = dot(N, V);
+  if (n_dot_v < 1e-3) {
+    N = normalize(N + (1e-3 - n_dot_v) * V);
+    n_dot_v = 1e-3;
+  }
+
+  // Reflection of the sky (R.6).
+  vec3 R = reflect(-V, N);
+  vec3 env = sky_radiance(R);
+  float fresnel = fresnel_schlick(n_dot_v);
+
+  // Sun specular: GGX with height-correlated Smith masking (R.7), radiance reflected = BRDF·E·cos.
+  vec3 sun_e = u.sun_ground.rgb;
+  vec3 H = normalize(V + L);
+  float n_dot_l = max(dot(N, L), 0.0);
+  float n_dot_h = max(dot(N, H), 0.0);
+  float dd = n_dot_h * n_dot_h * (alpha_sq - 1.0) + 1.0;
+  float D = alpha_sq / (PI * dd * dd);
+  float lambda_v = sqrt(alpha_sq + (1.0 - alpha_sq) * n_dot_v * n_dot_v) * n_dot_l;
+  float lambda_l = sqrt(alpha_sq + (1.0 - alpha_sq) * n_dot_l * n_dot_l) * n_dot_v;
+  float G_over = 0.5 / max(lambda_v + lambda_l, 1e-6);  // G/(4·NdotL·NdotV)
+  float fresnel_h = fresnel_schlick(max(dot(V, H), 0.0));
+  vec3 sun = sun_e * (D * G_over * fresnel_h * n_dot_l) / max(fresnel, 1e-4);
+
+  // Light scattered out of the water body (R.11): the water's albedo lit by the sun through the
+  // surface and by the sky, plus forward scattering through crests lit from behind.
+  vec3 sky_e = u.sky_ambient.rgb;
+  float sun_in = max(L.y, 0.0) * (1.0 - fresnel_schlick(max(L.y, 0.0)));
+  vec3 body = u.water_colour.rgb * (sun_e * sun_in + sky_e) / PI;
+  float crest = clamp(world_pos.y / max(0.5 * u.sky.x, 0.05), 0.0, 2.0);  // height over Hs/2
+  float g = 0.6, mu = dot(-L, V), hg_d = 1.0 + g * g - 2.0 * g * mu;
+  float forward = (1.0 - g * g) / (4.0 * PI * hg_d * sqrt(hg_d));  // Henyey–Greenstein
+  vec3 through = u.water_colour.a * u.water_colour.rgb * sun_e * forward * crest *
+                 pow(clamp(0.5 - 0.5 * dot(L, N), 0.0, 1.0), 2.0);
+  vec3 s = body + through;
+
+  // Seed 002: s·(1 − r) + r·(env + sun).
+  vec3 c = s * (1.0 - fresnel) + fresnel * (env + sun);
+
+  // Foam: a bright diffuse layer over the water (R.11).
+  vec3 foam_colour = 0.85 * u.params.x * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
+  c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
+
+  // Horizon fog (seed 004, R.8).
+  c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+
+  if (u.lod.z == 1.0) {  // LOD colours
+    vec3 lc = level < 9u ? kLevelColours[level] : vec3(0.5);
+    c = mix(c, lc * (0.4 + 0.6 * max(dot(N, L), 0.0)) * 0.5, 0.6);
+  }
+  colour = vec4(c, 1.0);
+}

@@ -1,0 +1,50 @@
+#version 450
+// The ocean patches of the quadtree LOD (seed 000 §5, eq. 70) and the horizon skirt: the unit
+// patch mesh scaled and moved per instance, displaced by the sum of the cascades' displacement
+// maps (seed 000 eq. 44; sampling M.7.6). Each cascade's displacement fades out where the mesh
+// is too coarse to carry its dominant wavelength, and all of it fades out towards the border of
+// the ocean square, where the flat skirt begins (docs/rendering.md R.9, R.10). Both weights are
+// functions of the world position and the camera alone, so vertices that two patches share get
+// the same displacement and the stitched mesh stays closed.
+#include "render_common.glsl"
+
+layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)
+layout(location = 1) in vec3 a_instance;  // centre x, centre z, size (skirt: 0, 0, 1)
+layout(location = 2) in uvec4 a_meta;     // grid x, grid y, level (255: skirt), configuration
+
+layout(location = 0) out vec2 world_xz;     // undisplaced position: where the maps are read
+layout(location = 1) out vec3 world_pos;    // displaced position
+layout(location = 2) flat out uint level;
+
+float geometry_weight(int c, float spacing_m) {
+  // Full while the vertex spacing is below a quarter of the cascade's dominant wavelength, none
+  // at half of it (the mesh's Nyquist limit) (R.9).
+  return clamp(2.0 - 4.0 * spacing_m / u.cascades[c].z, 0.0, 1.0);
+}
+
+void main() {
+  vec2 xz = a_instance.xy + a_position * a_instance.z;
+  vec2 rel = xz - u.grid.xy;
+  float half_size = 0.5 * u.grid.z;
+  float border = max(abs(rel.x), abs(rel.y));
+  float border_weight = clamp((half_size - border) / u.grid.w, 0.0, 1.0);  // R.10
+  // The spacing a patch at this distance has at most: a node splits while the camera is closer
+  // than τ·s (eq. 57), so a leaf at distance d has s ≤ d/τ·2 and spacing s/V.
+  float d = length(vec3(xz.x, 0.0, xz.y) - u.camera_pos.xyz);
+  float spacing = max(2.0 * d / (u.lod.x * u.lod.y), 1e-3);
+  vec3 displacement = vec3(0.0);
+  int cascades = int(u.lod.w);
+  if (border_weight > 0.0) {
+    for (int c = 0; c < cascades; ++c) {
+      float w = geometry_weight(c, spacing);
+      if (w <= 0.0) continue;
+      vec2 uv = xz / u.cascades[c].x + 0.5 / u.cascades[c].y;
+      displacement += w * textureLod(displacement_map, vec3(uv, float(c)), 0.0).xyz;
+    }
+    displacement *= border_weight;
+  }
+  world_xz = xz;
+  world_pos = vec3(xz.x + displacement.x, displacement.y, xz.y + displacement.z);
+  level = a_meta.z;
+  gl_Position = u.view_proj * vec4(world_pos, 1.0);
+}

@@ -1,0 +1,27 @@
+#version 450
+// The sky behind the ocean: sky radiance along each pixel's view ray, the sun's disc, and the
+// horizon fog that the water fades into (docs/rendering.md R.1–R.4, R.8).
+#include "render_common.glsl"
+
+layout(location = 0) in vec2 ndc;
+layout(location = 0) out vec4 colour;
+layout(push_constant) uniform Push { mat4 inverse_view_proj; } push;
+
+void main() {
+  // Vulkan's framebuffer y runs down; the projection is unflipped and the viewport negative,
+  // so ndc.y here already points up.
+  vec4 far_point = push.inverse_view_proj * vec4(ndc, 1.0, 1.0);
+  vec3 v = normalize(far_point.xyz / far_point.w - u.camera_pos.xyz);
+  vec3 c = sky_radiance(v);
+  // Sun disc, angular radius 0.27°, limb-darkened edge over a pixel or so.
+  float cos_sun = dot(v, u.sun_dir.xyz);
+  float radius = radians(0.27);
+  float solid_angle = PI * radius * radius;
+  float edge = smoothstep(cos(radius * 1.3), cos(radius), cos_sun);
+  // The disc's true radiance (E/Ω) would saturate any exposure; 2 % of it keeps a visible
+  // limb in the EXR output.
+  if (v.y > 0.0) c += edge * u.sun_ground.rgb / solid_angle * 0.02;
+  float f = horizon_fog(1e9, v.y);
+  c = mix(c, fog_colour(v), f);
+  colour = vec4(c, 1.0);
+}

@@ -1,0 +1,25 @@
+// The renderer's shaders as SPIR-V words, compiled from shaders/*.vert|frag by glslc at build
+// time and embedded by cmake/OceanShaders.cmake.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#define OCEAN_RENDER_SPIRV(name)                    \
+  extern const std::uint32_t ocean_spv_##name[];    \
+  extern const std::size_t ocean_spv_##name##_words; \
+  namespace ocean::render::spirv {                  \
+  inline std::span<const std::uint32_t> name() {     \
+    return {ocean_spv_##name, ocean_spv_##name##_words}; \
+  }                                                 \
+  }
+
+OCEAN_RENDER_SPIRV(sky_vert)
+OCEAN_RENDER_SPIRV(sky_frag)
+OCEAN_RENDER_SPIRV(ocean_vert)
+OCEAN_RENDER_SPIRV(ocean_frag)
+OCEAN_RENDER_SPIRV(wire_frag)
+OCEAN_RENDER_SPIRV(tonemap_frag)
+
+#undef OCEAN_RENDER_SPIRV
