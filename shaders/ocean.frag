@@ -49,7 +49,9 @@ void main() {
       extra = mix(max(alpha_squared(coarsest.w) - alpha0_sq, 0.0), extra, w);
     }
     variance += extra;
-    no_foam *= 1.0 - t.z;
+    // Whitecaps are the long waves' breaking crests; the short cascades' foam is weighted down
+    // so it reads as streaks and speckle rather than snow (R.11).
+    no_foam *= 1.0 - t.z / (1.0 + 0.6 * float(c));
   }
   vec3 N = normalize(vec3(slope.x, 1.0, slope.y));
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);

@@ -1,6 +1,6 @@
 #version 450
-// The sky behind the ocean: sky radiance along each pixel's view ray, the sun's disc, and the
-// horizon fog that the water fades into (docs/rendering.md R.1–R.4, R.8).
+// The sky behind the ocean: sky radiance along each pixel's view ray and the sun's disc
+// (docs/rendering.md R.1–R.4).
 #include "render_common.glsl"
 
 layout(location = 0) in vec2 ndc;
@@ -21,7 +21,6 @@ void main() {
   // The disc's true radiance (E/Ω) would saturate any exposure; 2 % of it keeps a visible
   // limb in the EXR output.
   if (v.y > 0.0) c += edge * u.sun_ground.rgb / solid_angle * 0.02;
-  float f = horizon_fog(1e9, v.y);
-  c = mix(c, fog_colour(v), f);
+  // No fog on the sky itself: at the horizon it already is the fog's colour (R.8).
   colour = vec4(c, 1.0);
 }

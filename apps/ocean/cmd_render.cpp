@@ -57,7 +57,9 @@ Result<double> number_in(std::string_view flag, const std::string& text, double 
 
 Result<Inputs> parse_inputs(const RenderOptions& o) {
   Inputs in;
-  Result<SimulationConfig> config = resolve_config(o.sim);
+  SimulationFlags sim = o.sim;
+  if (sim.preset_path.empty()) sim.preset_path = "moderate";  // the picture of `./dev main`
+  Result<SimulationConfig> config = resolve_config(sim);
   if (!config.ok()) return config.status();
   in.scene.config = std::move(config).value();
   in.scene.backend = o.backend;

@@ -31,8 +31,8 @@ namespace ocean::render {
 /// (the sun's irradiance at the top of the atmosphere is `sun_irradiance`); exposure maps it to
 /// the display.
 struct ShadingParams {
-  double sun_azimuth_deg = 20.0;    ///< direction towards the sun, clockwise from +x towards +z
-  double sun_elevation_deg = 14.0;  ///< above the horizon, (−90, 90]
+  double sun_azimuth_deg = 35.0;    ///< direction towards the sun, clockwise from +x towards +z
+  double sun_elevation_deg = 20.0;  ///< above the horizon, (−90, 90]
   double sun_irradiance = 20.0;     ///< > 0
   double sky_brightness = 1.0;      ///< scale of the sky's radiance, ≥ 0
   double aerosol = 1.0;             ///< Mie density relative to a clear day (haze), ≥ 0
@@ -43,7 +43,7 @@ struct ShadingParams {
   double foam_brightness = 1.0;     ///< foam albedo scale, ≥ 0
   double roughness = 0.08;          ///< base microfacet α of the calm surface, (0, 1]
   double fog_density_per_m = 6e-5;  ///< ρ of the horizon fog (R.8), ≥ 0
-  double exposure = 0.7;            ///< multiplies the HDR image before tone mapping, > 0
+  double exposure = 0.6;            ///< multiplies the HDR image before tone mapping, > 0
 };
 /// invalid_argument naming the field for non-finite values or values outside the ranges above.
 Status validate(const ShadingParams& params);

@@ -167,11 +167,6 @@ Status validate(const View& view) {
   return validate(view.shading);
 }
 
-std::array<double, 3> sun_direction(double azimuth_deg, double elevation_deg) {
-  const double a = azimuth_deg * std::numbers::pi / 180.0;
-  const double e = elevation_deg * std::numbers::pi / 180.0;
-  return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
-}
 
 // ---- state --------------------------------------------------------------------------------------
 

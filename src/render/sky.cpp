@@ -36,6 +36,12 @@ double henyey_greenstein(double mu, double g) {
 
 }  // namespace
 
+std::array<double, 3> sun_direction(double azimuth_deg, double elevation_deg) {
+  const double a = azimuth_deg * std::numbers::pi / 180.0;
+  const double e = elevation_deg * std::numbers::pi / 180.0;
+  return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
+}
+
 double air_mass(double mu) {
   mu = std::clamp(mu, 0.0, 1.0);
   const double zenith_deg = std::acos(mu) * 180.0 / kPi;

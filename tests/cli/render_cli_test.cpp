@@ -1,0 +1,134 @@
+// `ocean render` from the command line: PNG and EXR output of the right size and content, image
+// sequences, the statistics as JSON, and bad input (unknown preset, zero-size image, unwritable
+// output, unknown extension, MP4 without ffmpeg, no Vulkan device): one line, non-zero exit,
+// nothing written. Skips the rendering cases where no Vulkan device exists.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli/cli_run.hpp"
+#include "io/exr.hpp"
+#include "io/png_image.hpp"
+#include "ocean/vk.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+bool have_vulkan() { return ocean::vk::list_devices().ok(); }
+
+fs::path scratch(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("ocean_render_cli_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  return dir / name;
+}
+
+const std::string kSmall =
+    " --width 80 --height 45 --quality low --resolution 64 --warmup 0 --validation";
+
+TEST(RenderCli, WritesAPngOfTheRequestedSize) {
+  if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
+  const fs::path out = scratch("a.png");
+  const ocean_test::CliRun r = ocean_test::run_cli("render --out " + out.string() + kSmall + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["patches"].get<int>(), 0);
+  EXPECT_LE(j["draw_calls"].get<int>(), 19);
+  auto png = ocean::io::read_png(out);
+  ASSERT_TRUE(png.ok()) << png.status().message();
+  EXPECT_EQ(png.value().width, 80);
+  EXPECT_EQ(png.value().height, 45);
+  EXPECT_EQ(png.value().channels, 3);
+  // Sky on top brighter in blue than the dark water at the bottom.
+  const auto& px = png.value().samples;
+  const auto blue = [&](int x, int y) { return px[static_cast<std::size_t>((y * 80 + x) * 3 + 2)]; };
+  EXPECT_GT(blue(5, 2), blue(5, 43));
+}
+
+TEST(RenderCli, WritesLinearHdrExrAndSequences) {
+  if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
+  const fs::path exr = scratch("b.exr");
+  ocean_test::CliRun r = ocean_test::run_cli("render --out " + exr.string() + kSmall);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto image = ocean::io::read_exr(exr);
+  ASSERT_TRUE(image.ok()) << image.status().message();
+  EXPECT_EQ(image.value().width, 80);
+  ASSERT_EQ(image.value().channels.size(), 3u);  // B, G, R
+  float max_value = 0.0f;
+  for (const auto& plane : image.value().planes)
+    for (float v : plane) {
+      ASSERT_TRUE(std::isfinite(v));
+      max_value = std::max(max_value, v);
+    }
+  EXPECT_GT(max_value, 0.0f);
+
+  const fs::path seq = scratch("seq.png");
+  r = ocean_test::run_cli("render --out " + seq.string() + kSmall + " --frames 3 --fps 10");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (int f = 0; f < 3; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "seq_%05d.png", f);
+    EXPECT_TRUE(fs::exists(seq.parent_path() / name)) << name;
+  }
+  EXPECT_FALSE(fs::exists(seq));
+}
+
+TEST(RenderCli, BadInputSaysWhatIsWrong) {
+  ocean_test::expect_usage_error("render --preset hurricane", "hurricane");
+  ocean_test::expect_usage_error("render --width 0", "--width");
+  ocean_test::expect_usage_error("render --height -5", "--height");
+  ocean_test::expect_usage_error("render --out picture.jpg", ".png, .exr or .mp4");
+  ocean_test::expect_usage_error("render --camera 0,-3,0", "above the sea");
+  ocean_test::expect_usage_error("render --camera 1,2", "--camera");
+  ocean_test::expect_usage_error("render --quality extreme", "--quality");
+  ocean_test::expect_usage_error("render --view xray", "--view");
+  ocean_test::expect_usage_error("render --frames 1.5", "--frames");
+  ocean_test::expect_usage_error("render --exposure nan", "--exposure");
+}
+
+TEST(RenderCli, UnwritableOutputFailsBeforeRendering) {
+  const ocean_test::CliRun r = ocean_test::run_cli("render --out /nonexistent/dir/x.png");
+  EXPECT_EQ(r.exit_code, 1);
+  EXPECT_NE(r.err.find("cannot write '/nonexistent/dir/x.png'"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists("/nonexistent/dir/x.png"));
+}
+
+TEST(RenderCli, Mp4NeedsFfmpegOrIsWritten) {
+  const fs::path out = scratch("c.mp4");
+  const bool ffmpeg = std::system("command -v ffmpeg >/dev/null 2>&1") == 0;
+  const ocean_test::CliRun r =
+      ocean_test::run_cli("render --out " + out.string() + kSmall + " --frames 2");
+  if (!ffmpeg) {
+    EXPECT_EQ(r.exit_code, 1);
+    EXPECT_NE(r.err.find("ffmpeg"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+  } else if (have_vulkan()) {
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_GT(fs::file_size(out), 0u);
+  }
+}
+
+TEST(RenderCli, NoVulkanDeviceIsOneLine) {
+  const fs::path out = scratch("none.png");
+  // Point the loader at no driver at all.
+  const std::string env = "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json ";
+  const std::string cmd = env + OCEAN_CLI_PATH + std::string(" render --out ") + out.string() +
+                          " --width 8 --height 8 2>&1";
+  FILE* pipe = popen(cmd.c_str(), "r");
+  ASSERT_NE(pipe, nullptr);
+  std::string text;
+  char buf[512];
+  while (std::fgets(buf, sizeof buf, pipe) != nullptr) text += buf;
+  const int status = pclose(pipe);
+  EXPECT_EQ(WEXITSTATUS(status), 1) << text;
+  EXPECT_NE(text.find("Vulkan"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+}  // namespace
