@@ -19,6 +19,7 @@
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
 #include "preset.hpp"
+#include "plot/plot_internal.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
 
@@ -33,7 +34,8 @@ struct RenderOptions {
   std::string camera = "0,6,0", target = "300,-2,60", fov = "55";
   std::string time = "20", frames = "1", fps = "30", warmup = "4";
   std::string quality = "high", ocean_size = "4096", view = "shaded";
-  std::string sun_elevation, sun_azimuth, exposure;
+  std::string sun_elevation, sun_azimuth, exposure, sky;
+  std::string contact_sheet;
   std::string backend = "cpu";
   bool validation = false, json = false;
 };
@@ -98,6 +100,14 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
       number_in("--ocean-size", o.ocean_size, lod::kMinOceanSize_m, lod::kMaxOceanSize_m);
   if (!size.ok()) return size.status();
   v.ocean_size_m = size.value();
+  // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.
+  std::string sky = o.sky;
+  if (sky.empty()) sky = o.sim.preset_path == "storm" ? "overcast" : "clear";
+  Result<render::ShadingParams> shading = render::sky_preset(sky);
+  if (!shading.ok())
+    return invalid_argument("--sky = " + sky +
+                            " is not a sky: must be clear, hazy, overcast or sunset");
+  v.shading = shading.value();
   Result<render::DebugView> debug = render::parse_debug_view(o.view);
   if (!debug.ok()) return invalid_argument("--view = " + o.view +
                                            " is not a view: must be shaded, lod or wireframe");
@@ -246,7 +256,81 @@ class VideoWriter {
   FILE* pipe_ = nullptr;
 };
 
+// The contact sheet of the documentation: calm, moderate and storm seas from a low grazing, an
+// eye-level and a high view, one labelled tile each.
+struct SheetView {
+  const char* name;
+  std::array<double, 3> eye, target;
+};
+// Heights are above the crests: the sea's Hs is added to the first two.
+constexpr SheetView kSheetViews[] = {{"low grazing (Hs + 1.5 m)", {0, 1.5, 0}, {300, 0.5, 60}},
+                                     {"eye level (Hs + 8 m)", {0, 8, 0}, {300, -4, 60}},
+                                     {"high (120 m)", {0, 120, 0}, {500, 0, 250}}};
+constexpr const char* kSheetSeas[] = {"calm", "moderate", "storm"};
+
+int run_contact_sheet(const RenderOptions& o) {
+  RenderOptions tile = o;
+  if (o.width == RenderOptions{}.width && o.height == RenderOptions{}.height)
+    tile.width = "480", tile.height = "270";
+  tile.out = "tile.png";
+  tile.sim.preset_path = kSheetSeas[0];
+  Result<Inputs> first = parse_inputs(tile);
+  if (!first.ok()) return report(first.status());
+  const int w = first.value().scene.width, h = first.value().scene.height;
+  constexpr int kMargin = 12, kLabel = 26, kTitle = 44;
+  const int cols = 3, rows = 3;
+  plot::detail::Canvas canvas(kMargin + cols * (w + kMargin),
+                              kTitle + rows * (kLabel + h + kMargin), {250, 250, 250});
+  const plot::Rgb ink{30, 30, 30};
+  plot::detail::draw_text(canvas, kMargin, 12, "ocean render: calm, moderate, storm", 2.0, ink,
+                          plot::detail::TextDir::horizontal, true);
+  Result<std::unique_ptr<Scene>> made = Scene::make(first.value().scene);
+  if (!made.ok()) return report(made.status());
+  Scene& scene = *made.value();
+  Progress progress("contact sheet", rows * cols);
+  std::vector<std::uint8_t> rgba;
+  for (int r = 0; r < rows; ++r) {
+    tile.sim.preset_path = kSheetSeas[r];
+    tile.sky.clear();
+    Result<Inputs> in = parse_inputs(tile);
+    if (!in.ok()) return report(in.status());
+    if (Status s = scene.reconfigure(in.value().scene.config); !s.ok()) return report(s);
+    if (Status s = scene.warm_up(in.value().time_s, in.value().warmup_s); !s.ok())
+      return report(s);
+    const double hs = 4.0 * std::sqrt(SeaState::make(in.value().scene.config.sea).value().variance_m2());
+    for (int c = 0; c < cols; ++c) {
+      render::View view = in.value().view;
+      const SheetView& sv = kSheetViews[c];
+      const double lift = c < 2 ? hs : 0.0;
+      view.camera.position_m = {sv.eye[0], sv.eye[1] + lift, sv.eye[2]};
+      view.camera.target_m = {sv.target[0], sv.target[1] + lift, sv.target[2]};
+      if (Status s = scene.renderer().draw(view); !s.ok()) return report(s);
+      if (Status s = scene.renderer().read_srgb(rgba); !s.ok()) return report(s);
+      const int x0 = kMargin + c * (w + kMargin);
+      const int y0 = kTitle + r * (kLabel + h + kMargin) + kLabel;
+      char label[160];
+      std::snprintf(label, sizeof label, "%s, Hs %.1f m, %s", kSheetSeas[r], hs, sv.name);
+      plot::detail::draw_text(canvas, x0, y0 - 20, label, 1.5, ink);
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const std::uint8_t* p = &rgba[static_cast<std::size_t>(4 * (y * w + x))];
+          canvas.blend(x0 + x, y0 + y, {p[0], p[1], p[2]}, 1.0f);
+        }
+      progress.update(r * cols + c + 1);
+    }
+  }
+  progress.finish();
+  const plot::Image image = std::move(canvas).take();
+  if (Status s = io::write_png8(o.contact_sheet, image.width, image.height, 3, image.rgb.data());
+      !s.ok())
+    return report(s);
+  std::cout << "wrote " << o.contact_sheet << " (" << image.width << "x" << image.height
+            << ", 9 views on " << scene.context()->info.name << ")\n";
+  return kExitOk;
+}
+
 int run_render(const RenderOptions& o) {
+  if (!o.contact_sheet.empty()) return run_contact_sheet(o);
   Result<Inputs> parsed = parse_inputs(o);
   if (!parsed.ok()) return report(parsed.status());
   const Inputs& in = parsed.value();
@@ -352,6 +436,13 @@ Command add_render_command(CLI::App& app) {
   command->add_option("--sun-elevation", o->sun_elevation, "sun above the horizon, degrees");
   command->add_option("--sun-azimuth", o->sun_azimuth, "sun azimuth from +x towards +z, degrees");
   command->add_option("--exposure", o->exposure, "exposure before tone mapping (default 0.7)");
+  command->add_option("--sky", o->sky,
+                      "clear, hazy, overcast or sunset (default: overcast for --preset storm, "
+                      "else clear); the --sun-* and --exposure flags adjust it");
+  command->add_option("--contact-sheet", o->contact_sheet,
+                      "instead of one picture: a PNG of the calm, moderate and storm presets from "
+                      "a low grazing, an eye-level and a high camera (tiles --width x --height, "
+                      "default 480x270)");
   command->add_option("--backend", o->backend, "simulation backend: cpu or vulkan");
   command->add_flag("--validation", o->validation,
                     "enable the Khronos validation layer; fail if it reports anything");

@@ -47,6 +47,9 @@ struct ShadingParams {
 };
 /// invalid_argument naming the field for non-finite values or values outside the ranges above.
 Status validate(const ShadingParams& params);
+/// Looks for the sky: "clear" (the defaults), "hazy", "overcast" (thick haze, no visible sun
+/// disc, grey water: storms), "sunset" (sun 4° up). invalid_argument for other names.
+Result<ShadingParams> sky_preset(std::string_view name);
 
 enum class DebugView : std::uint8_t {
   shaded,       ///< the water as it looks

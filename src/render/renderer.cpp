@@ -808,28 +808,30 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd) {
   const std::uint32_t n = st.sim_size;
   const VkDeviceSize texels = static_cast<VkDeviceSize>(n) * n;
   VkDeviceSize offset = 0;
-  std::vector<VkBufferImageCopy> regions;  // ≤ 8 cascades × 12 mips; allocated per upload only
+  // ≤ 8 cascades × 12 mip levels (N ≤ 2048): on the stack, no allocation per frame.
+  std::array<VkBufferImageCopy, kMaxCascades * 12> regions{};
+  std::uint32_t count = 0;
   for (std::uint32_t c = 0; c < st.sim_layers; ++c) {
-    regions.push_back({.bufferOffset = offset,
-                       .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, c, 1},
-                       .imageExtent = {n, n, 1}});
+    regions[count++] = {.bufferOffset = offset,
+                        .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, c, 1},
+                        .imageExtent = {n, n, 1}};
     offset += texels * 8;
   }
   vkCmdCopyBufferToImage(cmd, st.staging.buffer, st.displacement.image, VK_IMAGE_LAYOUT_GENERAL,
-                         static_cast<std::uint32_t>(regions.size()), regions.data());
-  regions.clear();
+                         count, regions.data());
+  count = 0;
   for (std::uint32_t c = 0; c < st.sim_layers; ++c) {
     for (std::uint32_t m = 0; m < st.sim_mips; ++m) {
       const std::uint32_t s = n >> m;
-      regions.push_back({.bufferOffset = offset + mip_offset(static_cast<int>(n),
-                                                             static_cast<int>(m)) * 4,
-                         .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, c, 1},
-                         .imageExtent = {s, s, 1}});
+      regions[count++] = {.bufferOffset = offset + mip_offset(static_cast<int>(n),
+                                                              static_cast<int>(m)) * 4,
+                          .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, c, 1},
+                          .imageExtent = {s, s, 1}};
     }
     offset += mip_chain_texels(static_cast<int>(n)) * 4;
   }
   vkCmdCopyBufferToImage(cmd, st.staging.buffer, st.normal_foam.image, VK_IMAGE_LAYOUT_GENERAL,
-                         static_cast<std::uint32_t>(regions.size()), regions.data());
+                         count, regions.data());
   vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
               VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 }

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "ocean/render.hpp"
 
@@ -40,6 +41,35 @@ std::array<double, 3> sun_direction(double azimuth_deg, double elevation_deg) {
   const double a = azimuth_deg * std::numbers::pi / 180.0;
   const double e = elevation_deg * std::numbers::pi / 180.0;
   return {std::cos(e) * std::cos(a), std::sin(e), std::cos(e) * std::sin(a)};
+}
+
+Result<ShadingParams> sky_preset(std::string_view name) {
+  ShadingParams p;
+  if (name == "clear") return p;
+  if (name == "hazy") {
+    p.aerosol = 6.0;
+    p.fog_density_per_m = 1.2e-4;
+    return p;
+  }
+  if (name == "overcast") {  // a thick, forward-scattering-poor layer: diffuse grey light
+    p.sun_elevation_deg = 55.0;
+    p.aerosol = 40.0;
+    p.aerosol_g = 0.3;
+    p.sky_brightness = 1.0;
+    p.fog_density_per_m = 1.5e-4;
+    p.exposure = 0.55;
+    p.water_colour = {0.008, 0.014, 0.016};
+    return p;
+  }
+  if (name == "sunset") {
+    p.sun_elevation_deg = 4.0;
+    p.sun_azimuth_deg = 15.0;
+    p.aerosol = 2.0;
+    p.exposure = 1.1;
+    return p;
+  }
+  return invalid_argument("sky = " + std::string(name) +
+                          " is not a sky: must be clear, hazy, overcast or sunset");
 }
 
 double air_mass(double mu) {
