@@ -4,12 +4,14 @@
 // low sun.
 #include <array>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <numbers>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <vector>
 
@@ -214,8 +216,9 @@ class VideoWriter {
     char command[8192];
     std::snprintf(command, sizeof command,
                   "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s %dx%d -r %.6g -i - "
-                  "-c:v libx264 -pix_fmt yuv420p -crf 18 '%s'",
+                  "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -pix_fmt yuv420p -crf 18 '%s'",
                   w, h, fps, temp_.c_str());
+    std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give a write error, not kill us
     pipe_ = popen(command, "w");
     if (pipe_ == nullptr)
       return io_error("cannot start ffmpeg for '" + out.string() + "': " +
@@ -234,7 +237,7 @@ class VideoWriter {
     if (rc != 0) {
       std::filesystem::remove(temp_, ec);
       return io_error("cannot write '" + out_.string() + "': ffmpeg failed (exit " +
-                      std::to_string(rc) + ")");
+                      std::to_string(WIFEXITED(rc) ? WEXITSTATUS(rc) : rc) + ")");
     }
     std::filesystem::rename(temp_, out_, ec);
     if (ec) {

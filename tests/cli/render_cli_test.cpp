@@ -58,7 +58,7 @@ TEST(RenderCli, WritesLinearHdrExrAndSequences) {
   auto image = ocean::io::read_exr(exr);
   ASSERT_TRUE(image.ok()) << image.status().message();
   EXPECT_EQ(image.value().width, 80);
-  ASSERT_EQ(image.value().channels.size(), 3u);  // B, G, R
+  ASSERT_EQ(image.value().channel_names.size(), 3u);  // B, G, R
   float max_value = 0.0f;
   for (const auto& plane : image.value().planes)
     for (float v : plane) {
