@@ -166,6 +166,13 @@ Result<Buffer> create_static_buffer(const Context& ctx, const Commands& commands
 void barrier(VkCommandBuffer cmd, VkPipelineStageFlags src = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
              VkPipelineStageFlags dst = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
 
+/// A layout transition of every mip level and layer of `image`, with explicit stages and
+/// accesses (render targets, swapchain images).
+void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
+                   VkPipelineStageFlags src_stage, VkAccessFlags src_access,
+                   VkPipelineStageFlags dst_stage, VkAccessFlags dst_access,
+                   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
+
 /// A timestamp query pool of `count` queries.
 struct Timestamps {
   VkQueryPool pool = VK_NULL_HANDLE;

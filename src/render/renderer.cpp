@@ -91,22 +91,6 @@ std::array<double, 16> inverse(const std::array<double, 16>& m) {
   return inv;
 }
 
-void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
-                   VkPipelineStageFlags src_stage, VkAccessFlags src_access,
-                   VkPipelineStageFlags dst_stage, VkAccessFlags dst_access,
-                   VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT) {
-  const VkImageMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
-                               .srcAccessMask = src_access,
-                               .dstAccessMask = dst_access,
-                               .oldLayout = from,
-                               .newLayout = to,
-                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                               .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                               .image = image,
-                               .subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0,
-                                                    VK_REMAINING_ARRAY_LAYERS}};
-  vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
-}
 
 }  // namespace
 
@@ -802,7 +786,7 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd) {
   // Staging → images (GENERAL); the first use transitions them from UNDEFINED.
   static_assert(sizeof(std::uint16_t) * 4 == 8);
   for (vk::Image* im : {&st.displacement, &st.normal_foam})
-    image_barrier(cmd, im->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+    vk::image_barrier(cmd, im->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                   VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   const std::uint32_t n = st.sim_size;
@@ -950,7 +934,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, st.timestamps.pool, 0);
   }
   if (st.lut_pending) {
-    image_barrier(cmd, st.sky_lut.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+    vk::image_barrier(cmd, st.sky_lut.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
                   VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkBufferImageCopy region{
@@ -974,12 +958,12 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 
   const std::uint32_t w = st.hdr.width, h = st.hdr.height;
-  image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_UNDEFINED,
+  vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_UNDEFINED,
                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
                 VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-  image_barrier(cmd, st.depth.image, VK_IMAGE_LAYOUT_UNDEFINED,
+  vk::image_barrier(cmd, st.depth.image, VK_IMAGE_LAYOUT_UNDEFINED,
                 VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                 VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
                 VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
@@ -1041,12 +1025,12 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdEndRendering(cmd);
 
   // Tone map HDR → sRGB.
-  image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                 VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                 VK_ACCESS_SHADER_READ_BIT);
-  image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_UNDEFINED,
+  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_UNDEFINED,
                 VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
@@ -1074,7 +1058,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdDraw(cmd, 3, 1, 0, 0);
   ++stats_.draw_calls;
   vkCmdEndRendering(cmd);
-  image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                 VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -1124,7 +1108,7 @@ Status Renderer::read_hdr(std::vector<float>& rgba) {
   State& st = *state_;
   const std::uint32_t w = st.hdr.width, h = st.hdr.height;
   const Status s = vk::run_once(*st.ctx, st.commands, [&](VkCommandBuffer cmd) {
-    image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+    vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                   VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
@@ -1132,7 +1116,7 @@ Status Renderer::read_hdr(std::vector<float>& rgba) {
     vkCmdCopyImageToBuffer(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            st.readback.buffer, 1, &region);
     vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
-    image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+    vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                   VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0);
   });

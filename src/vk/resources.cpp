@@ -38,6 +38,36 @@ Result<VkDeviceMemory> allocate(const Context& ctx, const VkMemoryRequirements& 
   return memory;
 }
 
+// A device-local 2D image (array) of `layers` layers and `mips` levels with its memory bound.
+Status create_device_image(const Context& ctx, VkFormat format, std::uint32_t width,
+                           std::uint32_t height, std::uint32_t layers, std::uint32_t mips,
+                           VkImageUsageFlags usage, VkImage& image, VkDeviceMemory& memory) {
+  const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+                               .imageType = VK_IMAGE_TYPE_2D,
+                               .format = format,
+                               .extent = {width, height, 1},
+                               .mipLevels = mips,
+                               .arrayLayers = layers,
+                               .samples = VK_SAMPLE_COUNT_1_BIT,
+                               .tiling = VK_IMAGE_TILING_OPTIMAL,
+                               .usage = usage,
+                               .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+                               .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+  if (Status s = check(vkCreateImage(ctx.device, &info, nullptr, &image), "vkCreateImage");
+      !s.ok())
+    return s;
+  VkMemoryRequirements req;
+  vkGetImageMemoryRequirements(ctx.device, image, &req);
+  Result<VkDeviceMemory> m = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
+  if (!m.ok()) {
+    vkDestroyImage(ctx.device, image, nullptr);
+    image = VK_NULL_HANDLE;
+    return m.status();
+  }
+  memory = m.value();
+  return check(vkBindImageMemory(ctx.device, image, memory, 0), "vkBindImageMemory");
+}
+
 }  // namespace
 
 Result<Buffer> create_buffer(const Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage,
@@ -86,29 +116,7 @@ Result<Image> create_image_array(const Context& ctx, VkFormat format, std::uint3
                                  VkImageUsageFlags usage) {
   Image im;
   im.format = format, im.size = size, im.layers = layers, im.mips = mips;
-  const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
-                               .imageType = VK_IMAGE_TYPE_2D,
-                               .format = format,
-                               .extent = {size, size, 1},
-                               .mipLevels = mips,
-                               .arrayLayers = layers,
-                               .samples = VK_SAMPLE_COUNT_1_BIT,
-                               .tiling = VK_IMAGE_TILING_OPTIMAL,
-                               .usage = usage,
-                               .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
-                               .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
-  if (Status s = check(vkCreateImage(ctx.device, &info, nullptr, &im.image), "vkCreateImage");
-      !s.ok())
-    return s;
-  VkMemoryRequirements req;
-  vkGetImageMemoryRequirements(ctx.device, im.image, &req);
-  Result<VkDeviceMemory> memory = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
-  if (!memory.ok()) {
-    vkDestroyImage(ctx.device, im.image, nullptr);
-    return memory.status();
-  }
-  im.memory = memory.value();
-  Status s = check(vkBindImageMemory(ctx.device, im.image, im.memory, 0), "vkBindImageMemory");
+  Status s = create_device_image(ctx, format, size, size, layers, mips, usage, im.image, im.memory);
   const auto make_view = [&](std::uint32_t base, std::uint32_t count, VkImageView& view) {
     const VkImageViewCreateInfo v{
         .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
@@ -142,29 +150,7 @@ Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32
                                 VkImageAspectFlags aspect) {
   Image2D im;
   im.format = format, im.width = width, im.height = height;
-  const VkImageCreateInfo info{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
-                               .imageType = VK_IMAGE_TYPE_2D,
-                               .format = format,
-                               .extent = {width, height, 1},
-                               .mipLevels = 1,
-                               .arrayLayers = 1,
-                               .samples = VK_SAMPLE_COUNT_1_BIT,
-                               .tiling = VK_IMAGE_TILING_OPTIMAL,
-                               .usage = usage,
-                               .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
-                               .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
-  if (Status s = check(vkCreateImage(ctx.device, &info, nullptr, &im.image), "vkCreateImage");
-      !s.ok())
-    return s;
-  VkMemoryRequirements req;
-  vkGetImageMemoryRequirements(ctx.device, im.image, &req);
-  Result<VkDeviceMemory> memory = allocate(ctx, req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT, 0);
-  if (!memory.ok()) {
-    vkDestroyImage(ctx.device, im.image, nullptr);
-    return memory.status();
-  }
-  im.memory = memory.value();
-  Status s = check(vkBindImageMemory(ctx.device, im.image, im.memory, 0), "vkBindImageMemory");
+  Status s = create_device_image(ctx, format, width, height, 1, 1, usage, im.image, im.memory);
   if (s.ok()) {
     const VkImageViewCreateInfo v{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
                                   .image = im.image,
@@ -334,6 +320,23 @@ void barrier(VkCommandBuffer cmd, VkPipelineStageFlags src, VkPipelineStageFlags
                           .srcAccessMask = accesses(src, true),
                           .dstAccessMask = accesses(dst, false)};
   vkCmdPipelineBarrier(cmd, src, dst, 0, 1, &b, 0, nullptr, 0, nullptr);
+}
+
+void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkImageLayout to,
+                   VkPipelineStageFlags src_stage, VkAccessFlags src_access,
+                   VkPipelineStageFlags dst_stage, VkAccessFlags dst_access,
+                   VkImageAspectFlags aspect) {
+  const VkImageMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
+                               .srcAccessMask = src_access,
+                               .dstAccessMask = dst_access,
+                               .oldLayout = from,
+                               .newLayout = to,
+                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                               .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                               .image = image,
+                               .subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0,
+                                                    VK_REMAINING_ARRAY_LAYERS}};
+  vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 
 Result<Timestamps> create_timestamps(const Context& ctx, std::uint32_t count) {
