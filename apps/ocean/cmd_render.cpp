@@ -24,6 +24,7 @@
 #include "plot/plot_internal.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
+#include "view_flags.hpp"
 
 namespace ocean::cli {
 
@@ -32,14 +33,11 @@ namespace {
 struct RenderOptions {
   SimulationFlags sim;
   std::string out = "ocean.png";
-  std::string width = "1280", height = "720";
-  std::string camera = "0,6,0", target = "300,-2,60", fov = "55";
+  ViewFlags picture;
   std::string time = "20", frames = "1", fps = "30", warmup = "4";
-  std::string quality = "high", ocean_size = "4096", view = "shaded";
   std::string sun_elevation, sun_azimuth, exposure, sky;
   std::string contact_sheet;
-  std::string backend = "cpu";
-  bool validation = false, json = false;
+  bool json = false;
 };
 
 enum class OutputKind { png, exr, mp4 };
@@ -52,13 +50,6 @@ struct Inputs {
   long long frames = 1;
 };
 
-Result<double> number_in(std::string_view flag, const std::string& text, double lo, double hi) {
-  Result<double> v = parse_number(flag, text);
-  if (!v.ok()) return v.status();
-  if (Status s = require_in_range(flag, v.value(), lo, hi); !s.ok()) return s;
-  return v.value();
-}
-
 Result<Inputs> parse_inputs(const RenderOptions& o) {
   Inputs in;
   SimulationFlags sim = o.sim;
@@ -66,42 +57,8 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   Result<SimulationConfig> config = resolve_config(sim);
   if (!config.ok()) return config.status();
   in.scene.config = std::move(config).value();
-  in.scene.backend = o.backend;
-  in.scene.validation = o.validation;
-  Result<double> w = number_in("--width", o.width, 1, 16384);
-  if (!w.ok()) return w.status();
-  Result<double> h = number_in("--height", o.height, 1, 16384);
-  if (!h.ok()) return h.status();
-  if (w.value() != std::floor(w.value()) || h.value() != std::floor(h.value()))
-    return invalid_argument("--width and --height must be whole numbers of pixels");
-  in.scene.width = static_cast<int>(w.value());
-  in.scene.height = static_cast<int>(h.value());
-  Result<std::array<double, 3>> eye = parse_triple("--camera", o.camera);
-  if (!eye.ok()) return eye.status();
-  Result<std::array<double, 3>> target = parse_triple("--target", o.target);
-  if (!target.ok()) return target.status();
-  Result<double> fov = number_in("--fov", o.fov, 1.0, 170.0);
-  if (!fov.ok()) return fov.status();
+  if (Status s = parse_view_flags(o.picture, 1, in.scene, in.view); !s.ok()) return s;
   render::View& v = in.view;
-  v.camera = {.position_m = {eye.value()[0], eye.value()[1], eye.value()[2]},
-              .target_m = {target.value()[0], target.value()[1], target.value()[2]},
-              .fov_y_rad = fov.value() * std::numbers::pi / 180.0,
-              .aspect = w.value() / h.value(),
-              .near_m = 0.2,
-              .far_m = 2.0e5};
-  if (eye.value()[1] <= 0.0)
-    return invalid_argument("--camera = " + o.camera + ": the camera must be above the sea (Y > 0)");
-  if (Status s = lod::validate(v.camera); !s.ok())
-    return invalid_argument("--camera/--target: " + s.message());
-  Result<lod::QualityPreset> preset = lod::parse_preset(o.quality);
-  if (!preset.ok())
-    return invalid_argument("--quality = " + o.quality +
-                            " is not a quality: must be low, medium, high or ultra");
-  v.quality = lod::quality_preset(preset.value());
-  Result<double> size =
-      number_in("--ocean-size", o.ocean_size, lod::kMinOceanSize_m, lod::kMaxOceanSize_m);
-  if (!size.ok()) return size.status();
-  v.ocean_size_m = size.value();
   // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.
   std::string sky = o.sky;
   if (sky.empty()) sky = o.sim.preset_path == "storm" ? "overcast" : "clear";
@@ -110,10 +67,6 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
     return invalid_argument("--sky = " + sky +
                             " is not a sky: must be clear, hazy, overcast or sunset");
   v.shading = shading.value();
-  Result<render::DebugView> debug = render::parse_debug_view(o.view);
-  if (!debug.ok()) return invalid_argument("--view = " + o.view +
-                                           " is not a view: must be shaded, lod or wireframe");
-  v.debug = debug.value();
   if (!o.sun_elevation.empty()) {
     Result<double> e = number_in("--sun-elevation", o.sun_elevation, -10.0, 90.0);
     if (!e.ok()) return e.status();
@@ -273,8 +226,8 @@ constexpr const char* kSheetSeas[] = {"calm", "moderate", "storm"};
 
 int run_contact_sheet(const RenderOptions& o) {
   RenderOptions tile = o;
-  if (o.width == RenderOptions{}.width && o.height == RenderOptions{}.height)
-    tile.width = "480", tile.height = "270";
+  if (o.picture.width == ViewFlags{}.width && o.picture.height == ViewFlags{}.height)
+    tile.picture.width = "480", tile.picture.height = "270";
   tile.out = "tile.png";
   tile.sim.preset_path = kSheetSeas[0];
   Result<Inputs> first = parse_inputs(tile);
@@ -419,26 +372,18 @@ Command add_render_command(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("render", "render the ocean to a PNG/EXR image, a sequence or an MP4");
   add_simulation_flags(*command, o->sim);
+  add_view_flags(*command, o->picture, "image");
   command->add_option("--out", o->out,
                       "output .png (sRGB), .exr (linear HDR) or .mp4 (needs ffmpeg); sequences "
                       "number PNG/EXR frames (name_00000.png or a %05d pattern); default ocean.png");
-  command->add_option("--width", o->width, "image width, pixels (default 1280)");
-  command->add_option("--height", o->height, "image height, pixels (default 720)");
-  command->add_option("--camera", o->camera, "eye X,Y,Z in metres, Y up (default 0,6,0)");
-  command->add_option("--target", o->target, "a point the camera looks at (default 300,-2,60)");
-  command->add_option("--fov", o->fov, "vertical field of view, degrees (default 55)");
   command->add_option("--time", o->time, "simulated time of the first frame, s (default 20)");
   command->add_option("--frames", o->frames, "number of frames (default 1)");
   command->add_option("--fps", o->fps, "frames per second of a sequence (default 30)");
   command->add_option("--warmup", o->warmup,
                       "seconds simulated before the first frame so foam builds up (default 4)");
-  command->add_option("--quality", o->quality, "LOD quality: low, medium, high, ultra");
-  command->add_option("--ocean-size", o->ocean_size,
-                      "side of the LOD square around the camera, m (256..8192, default 4096)");
-  command->add_option("--view", o->view, "shaded, lod (colours by level) or wireframe");
   command->add_option("--sun-elevation", o->sun_elevation, "sun above the horizon, degrees");
   command->add_option("--sun-azimuth", o->sun_azimuth, "sun azimuth from +x towards +z, degrees");
-  command->add_option("--exposure", o->exposure, "exposure before tone mapping (default 0.7)");
+  command->add_option("--exposure", o->exposure, "exposure before tone mapping (default 0.6)");
   command->add_option("--sky", o->sky,
                       "clear, hazy, overcast or sunset (default: overcast for --preset storm, "
                       "else clear); the --sun-* and --exposure flags adjust it");
@@ -446,9 +391,6 @@ Command add_render_command(CLI::App& app) {
                       "instead of one picture: a PNG of the calm, moderate and storm presets from "
                       "a low grazing, an eye-level and a high camera (tiles --width x --height, "
                       "default 480x270)");
-  command->add_option("--backend", o->backend, "simulation backend: cpu or vulkan");
-  command->add_flag("--validation", o->validation,
-                    "enable the Khronos validation layer; fail if it reports anything");
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};
 }

@@ -22,5 +22,6 @@ Command add_validate_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_lod_command(CLI::App& app);
 Command add_render_command(CLI::App& app);  // Vulkan builds only
+Command add_view_command(CLI::App& app);    // builds with GLFW and Dear ImGui only
 
 }  // namespace ocean::cli

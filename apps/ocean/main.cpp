@@ -19,6 +19,9 @@ int main(int argc, char** argv) {
 #ifdef OCEAN_HAS_VULKAN
       ocean::cli::add_render_command(app),
 #endif
+#ifdef OCEAN_HAS_VIEW
+      ocean::cli::add_view_command(app),
+#endif
   };
   try {
     app.parse(argc, argv);

@@ -111,8 +111,15 @@ class Renderer {
   /// Records the frame into `cmd` (outside any render pass): pending uploads, the HDR pass (sky,
   /// patches, skirt), the tone-map pass. Afterwards the sRGB image is in TRANSFER_SRC_OPTIMAL.
   Status record(VkCommandBuffer cmd, const View& view);
+  /// Builds what `view` needs before recording: the patch mesh when the quality's V changed
+  /// (uploaded through the renderer's own command buffer). record() does it too when needed;
+  /// calling it first keeps the upload out of a frame. draw() calls it.
+  Status prepare(const View& view);
   /// record() on the renderer's own command buffer, submitted and waited for.
   Status draw(const View& view);
+  /// After the submission holding a record()ed frame has completed: that frame's GPU time, ms
+  /// (0 on devices without timestamps). draw() fills stats().gpu_ms itself.
+  Result<double> read_gpu_ms();
   /// The last draw's sRGB pixels, RGBA8, top row first (width·height·4 bytes).
   Status read_srgb(std::vector<std::uint8_t>& rgba);
   /// The last draw's linear HDR pixels, RGBA float, top row first (width·height·4 floats).

@@ -882,9 +882,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   State& st = *state_;
   if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
-  if (view.quality.vertices != st.vertices) {
-    if (Status s = build_patch_buffers(st, view.quality.vertices); !s.ok()) return s;
-  }
+  if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
   // LOD selection (seed 000 §5) with culling boxes that include the waves' reach.
   const auto t0 = std::chrono::steady_clock::now();
   lod::LodParams lp;
@@ -1068,24 +1066,32 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   return {};
 }
 
+Status Renderer::prepare(const View& view) {
+  State& st = *state_;
+  if (view.quality.vertices == st.vertices) return {};
+  if (Status s = lod::validate(view.quality); !s.ok()) return s;
+  return build_patch_buffers(st, view.quality.vertices);
+}
+
+Result<double> Renderer::read_gpu_ms() {
+  State& st = *state_;
+  if (!st.has_timestamps) return 0.0;
+  double ms[2];
+  if (Status s = vk::read_timestamps_ms(*st.ctx, st.timestamps, ms); !s.ok()) return s;
+  stats_.gpu_ms = ms[1];
+  return ms[1];
+}
+
 Status Renderer::draw(const View& view) {
   State& st = *state_;
   // Mesh changes upload through the renderer's own command buffer: before recording into it.
-  if (view.quality.vertices != st.vertices) {
-    if (Status s = lod::validate(view.quality); !s.ok()) return s;
-    if (Status s = build_patch_buffers(st, view.quality.vertices); !s.ok()) return s;
-  }
+  if (Status s = prepare(view); !s.ok()) return s;
   Status recorded;
   const Status run = vk::run_once(*st.ctx, st.commands,
                                   [&](VkCommandBuffer cmd) { recorded = record(cmd, view); });
   if (!recorded.ok()) return recorded;
   if (!run.ok()) return run;
-  if (st.has_timestamps) {
-    double ms[2];
-    if (Status s = vk::read_timestamps_ms(*st.ctx, st.timestamps, ms); !s.ok()) return s;
-    stats_.gpu_ms = ms[1];
-  }
-  return {};
+  return read_gpu_ms().status();
 }
 
 Status Renderer::read_srgb(std::vector<std::uint8_t>& rgba) {

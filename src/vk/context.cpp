@@ -301,7 +301,19 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
       ctx->max_anisotropy = std::clamp(static_cast<float>(std::atof(a)), 1.0f,
                                        std::min(16.0f, ctx->properties.limits.maxSamplerAnisotropy));
   }
-  if (params.swapchain) device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  if (params.swapchain) {
+    std::uint32_t count = 0;
+    vkEnumerateDeviceExtensionProperties(ctx->physical, nullptr, &count, nullptr);
+    std::vector<VkExtensionProperties> extensions(count);
+    vkEnumerateDeviceExtensionProperties(ctx->physical, nullptr, &count, extensions.data());
+    const bool present = std::any_of(extensions.begin(), extensions.end(), [](const auto& e) {
+      return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
+    });
+    if (!present)
+      return unsupported("Vulkan device '" + ctx->info.name +
+                         "' cannot present to a window (no VK_KHR_swapchain)");
+    device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  }
 
   const float priority = 1.0f;
   const VkDeviceQueueCreateInfo queue{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,

@@ -1,0 +1,31 @@
+// The picture flags `ocean render` and `ocean view` share: image size, camera, LOD quality,
+// ocean size, debug view, backend and validation, parsed into the Scene and View they drive.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "ocean/render.hpp"
+#include "scene.hpp"
+
+namespace ocean::cli {
+
+struct ViewFlags {
+  std::string width = "1280", height = "720";
+  std::string camera = "0,6,0", target = "300,-2,60", fov = "55";
+  std::string quality = "high", ocean_size = "4096", view = "shaded";
+  std::string backend = "cpu";
+  bool validation = false;
+};
+/// Registers the flags; `what` names the image ("image" or "window") in the help.
+void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what);
+
+/// A number flag within [lo, hi]; the error names the flag.
+Result<double> number_in(std::string_view flag, const std::string& text, double lo, double hi);
+
+/// Size, backend and validation into `scene`; camera, quality, ocean size and debug view into
+/// `view` (its shading is left alone). `min_size` is the smallest width/height accepted.
+Status parse_view_flags(const ViewFlags& flags, int min_size, SceneParams& scene,
+                        render::View& view);
+
+}  // namespace ocean::cli
