@@ -383,7 +383,7 @@ Command add_render_command(CLI::App& app) {
                       "seconds simulated before the first frame so foam builds up (default 4)");
   command->add_option("--sun-elevation", o->sun_elevation, "sun above the horizon, degrees");
   command->add_option("--sun-azimuth", o->sun_azimuth, "sun azimuth from +x towards +z, degrees");
-  command->add_option("--exposure", o->exposure, "exposure before tone mapping (default 0.6)");
+  command->add_option("--exposure", o->exposure, "exposure before tone mapping (default 0.45)");
   command->add_option("--sky", o->sky,
                       "clear, hazy, overcast or sunset (default: overcast for --preset storm, "
                       "else clear); the --sun-* and --exposure flags adjust it");

@@ -43,7 +43,7 @@ struct ShadingParams {
   double foam_brightness = 1.0;     ///< foam albedo scale, ≥ 0
   double roughness = 0.08;          ///< base microfacet α of the calm surface, (0, 1]
   double fog_density_per_m = 6e-5;  ///< ρ of the horizon fog (R.8), ≥ 0
-  double exposure = 0.6;            ///< multiplies the HDR image before tone mapping, > 0
+  double exposure = 0.45;           ///< multiplies the HDR image before tone mapping, > 0
 };
 /// invalid_argument naming the field for non-finite values or values outside the ranges above.
 Status validate(const ShadingParams& params);

@@ -65,7 +65,7 @@ Result<ShadingParams> sky_preset(std::string_view name) {
     p.sun_elevation_deg = 4.0;
     p.sun_azimuth_deg = 15.0;
     p.aerosol = 2.0;
-    p.exposure = 1.1;
+    p.exposure = 0.6;
     return p;
   }
   return invalid_argument("sky = " + std::string(name) +
@@ -101,7 +101,15 @@ std::array<double, 3> Sky::radiance(std::array<double, 3> v) const {
                          tau;
     const double multiple = 0.25 * tau_r / tau / (4.0 * kPi);  // R.4
     const double scattered = 1.0 - std::exp(-tau * m_view);   // R.1
-    const double sun_light = params.sun_irradiance * std::exp(-tau * m_sun) * sun_visible;  // R.3
+    // R.3: scatterers at height z see the sun through exp(−a·e^(−z/H)) of the column's depth a;
+    // averaged over the exponential density of scatterers that is (1 − e^(−a))/a. A view ray
+    // near the horizon scatters mostly low down, where the sun crosses the whole column: the
+    // two are blended by √μ_v.
+    const double a = tau * m_sun;
+    const double column_mean = a > 1e-9 ? -std::expm1(-a) / a : 1.0;
+    const double w = std::sqrt(std::clamp(v[1], 0.0, 1.0));
+    const double through = w * column_mean + (1.0 - w) * std::exp(-a);
+    const double sun_light = params.sun_irradiance * through * sun_visible;
     out[c] = params.sky_brightness * sun_light * scattered * (phase + multiple);
   }
   return out;
