@@ -19,8 +19,7 @@ layout(set = 0, binding = 0, std140) uniform FrameUniforms {
   vec4 sun_ground;     // rgb sun irradiance at sea level (plane facing the sun)
   vec4 sky_ambient;    // rgb sky irradiance on a horizontal plane
   vec4 water_colour;   // rgb single-scattering albedo of the water body, w = crest scatter gain
-  vec4 params;         // x = foam brightness, y = base roughness α0, z = fog density 1/m,
-                       // w = exposure
+  vec4 params;         // x = foam brightness, y = base roughness α0, z = fog density 1/m, w = 0
   vec4 grid;           // xy grid centre (world x, z), z = ocean size S, w = border fade width
   vec4 lod;            // x = τ, y = V, z = debug view (0 shaded, 1 LOD colours, 2 wireframe),
                        // w = cascade count

@@ -139,14 +139,6 @@ bool on_path(const std::string& program) {
   return false;
 }
 
-Status write_png(const std::filesystem::path& path, int w, int h,
-                 const std::vector<std::uint8_t>& rgba) {
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w) * h * 3);
-  for (std::size_t i = 0, n = static_cast<std::size_t>(w) * h; i < n; ++i)
-    for (int c = 0; c < 3; ++c) rgb[3 * i + static_cast<std::size_t>(c)] = rgba[4 * i + static_cast<std::size_t>(c)];
-  return io::write_png8(path, w, h, 3, rgb.data());
-}
-
 Status write_hdr_exr(const std::filesystem::path& path, int w, int h,
                      const std::vector<float>& rgba) {
   const std::size_t n = static_cast<std::size_t>(w) * h;
@@ -253,7 +245,7 @@ int run_contact_sheet(const RenderOptions& o) {
     if (Status s = scene.reconfigure(in.value().scene.config); !s.ok()) return report(s);
     if (Status s = scene.warm_up(in.value().time_s, in.value().warmup_s); !s.ok())
       return report(s);
-    const double hs = 4.0 * std::sqrt(SeaState::make(in.value().scene.config.sea).value().variance_m2());
+    const double hs = scene.renderer().significant_wave_height_m();
     for (int c = 0; c < cols; ++c) {
       render::View view = in.value().view;
       const SheetView& sv = kSheetViews[c];
@@ -292,13 +284,7 @@ int run_render(const RenderOptions& o) {
   const Inputs& in = parsed.value();
   // Fail before any work when the output cannot be written.
   const std::filesystem::path first = frame_path(o.out, 0, in.frames);
-  const std::filesystem::path dir =
-      first.parent_path().empty() ? std::filesystem::path(".") : first.parent_path();
-  std::error_code ec;
-  if (!std::filesystem::is_directory(dir, ec) || access(dir.c_str(), W_OK) != 0)
-    return report(io_error("cannot write '" + first.string() + "': " +
-                           (std::filesystem::exists(dir, ec) ? "Permission denied"
-                                                             : "No such file or directory")));
+  if (Status s = io::check_parent_writable(first); !s.ok()) return report(s);
   if (in.kind == OutputKind::mp4 && !on_path("ffmpeg"))
     return report(unsupported("--out " + o.out +
                               ": MP4 needs the ffmpeg program (apt-get install ffmpeg); "
@@ -328,7 +314,7 @@ int run_render(const RenderOptions& o) {
       written = write_hdr_exr(path, w, h, hdr);
     } else {
       if (Status s = renderer.read_srgb(srgb); !s.ok()) return report(s);
-      written = in.kind == OutputKind::png ? write_png(path, w, h, srgb) : video.write(srgb);
+      written = in.kind == OutputKind::png ? write_srgb_png(path, w, h, srgb) : video.write(srgb);
     }
     if (!written.ok()) return report(written);
     if (in.frames > 1) progress.update(f + 1);
@@ -337,11 +323,7 @@ int run_render(const RenderOptions& o) {
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.close(); !s.ok()) return report(s);
   }
-  if (scene.context()->validation && scene.context()->validation_messages.load() != 0)
-    return report(Status(ErrorCode::internal,
-                         "Vulkan validation reported " +
-                             std::to_string(scene.context()->validation_messages.load()) +
-                             " messages; last: " + scene.context()->last_validation_message));
+  if (Status s = validation_status(*scene.context()); !s.ok()) return report(s);
   const render::RenderStats& st = renderer.stats();
   if (o.json) {
     nlohmann::ordered_json j = {{"out", o.out},

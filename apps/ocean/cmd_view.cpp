@@ -19,6 +19,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "io/atomic_file.hpp"
 #include "io/png_image.hpp"
 #include "preset.hpp"
 #include "scene.hpp"
@@ -75,16 +76,6 @@ Result<Inputs> parse_inputs(const ViewOptions& o) {
   return in;
 }
 
-Status writable_parent(const std::filesystem::path& file) {
-  const std::filesystem::path dir =
-      file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-  std::error_code ec;
-  if (std::filesystem::is_directory(dir, ec) && access(dir.c_str(), W_OK) == 0) return {};
-  return io_error(
-      "cannot write '" + file.string() + "': " +
-      (std::filesystem::exists(dir, ec) ? "Permission denied" : "No such file or directory"));
-}
-
 // The mouse as the camera sees it: a right-button drag that did not start over the panel.
 struct MouseDrag {
   bool active = false;
@@ -134,11 +125,7 @@ struct KeyEdge {
 Status write_screenshot(render::Renderer& renderer, const std::filesystem::path& path) {
   std::vector<std::uint8_t> rgba;
   if (Status s = renderer.read_srgb(rgba); !s.ok()) return s;
-  const int w = renderer.width(), h = renderer.height();
-  std::vector<std::uint8_t> rgb(static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 3);
-  for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
-    for (std::size_t c = 0; c < 3; ++c) rgb[3 * i + c] = rgba[4 * i + c];
-  return io::write_png8(path, w, h, 3, rgb.data());
+  return write_srgb_png(path, renderer.width(), renderer.height(), rgba);
 }
 
 int run_view(const ViewOptions& o) {
@@ -146,7 +133,7 @@ int run_view(const ViewOptions& o) {
   if (!parsed.ok()) return report(parsed.status());
   Inputs in = std::move(parsed).value();
   if (!o.screenshot.empty()) {
-    if (Status s = writable_parent(o.screenshot); !s.ok()) return report(s);
+    if (Status s = io::check_parent_writable(o.screenshot); !s.ok()) return report(s);
   }
 
   // Declaration order is destruction order in reverse: ImGui, swapchain and surface go before
@@ -287,11 +274,7 @@ int run_view(const ViewOptions& o) {
               << ", 3D view after " << frame << " frame" << (frame == 1 ? "" : "s") << ") on "
               << ctx.info.name << "\n";
   }
-  if (ctx.validation && ctx.validation_messages.load() != 0)
-    return report(
-        Status(ErrorCode::internal, "Vulkan validation reported " +
-                                        std::to_string(ctx.validation_messages.load()) +
-                                        " messages; last: " + ctx.last_validation_message));
+  if (Status s = validation_status(ctx); !s.ok()) return report(s);
   return kExitOk;
 }
 

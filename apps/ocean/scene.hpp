@@ -3,6 +3,8 @@
 // sampled where they are, with no copy.
 #pragma once
 
+#include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
@@ -44,5 +46,13 @@ class Scene {
   vk::VulkanBackend* gpu_ = nullptr;  // owned by simulator_ when the backend is vulkan
   std::unique_ptr<render::Renderer> renderer_;
 };
+
+/// The renderer's sRGB pixels (RGBA8, alpha opaque) as an RGB PNG, written atomically.
+Status write_srgb_png(const std::filesystem::path& path, int width, int height,
+                      const std::vector<std::uint8_t>& rgba);
+
+/// ok unless the context runs the validation layer and it reported something: then one line
+/// with the count and the last message (`--validation` fails on any message).
+Status validation_status(const vk::Context& context);
 
 }  // namespace ocean::cli

@@ -126,6 +126,8 @@ class Renderer {
   Status read_hdr(std::vector<float>& rgba);
 
   [[nodiscard]] VkImage srgb_image() const;
+  /// Hs = 4·√m0 of the configured sea state, m (what the culling boxes and crest light use).
+  [[nodiscard]] double significant_wave_height_m() const;
   [[nodiscard]] int width() const;
   [[nodiscard]] int height() const;
   [[nodiscard]] const RenderStats& stats() const { return stats_; }

@@ -161,8 +161,9 @@ Status run_once(const Context& ctx, const Commands& commands, F&& record);
 Result<Buffer> create_static_buffer(const Context& ctx, const Commands& commands,
                                     std::span<const std::byte> bytes, VkBufferUsageFlags usage);
 
-/// A global memory barrier from the writes of `src` stages to the reads and writes of `dst`
-/// stages (compute, transfer, host): coarse and correct.
+/// A global memory barrier from the writes of `src` stages (compute, transfer, host) to the
+/// accesses of `dst` stages (those, plus vertex input, vertex/fragment shader reads and all
+/// commands): coarse and correct.
 void barrier(VkCommandBuffer cmd, VkPipelineStageFlags src = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
              VkPipelineStageFlags dst = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
 

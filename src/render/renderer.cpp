@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "ocean/half.hpp"
@@ -41,15 +42,7 @@ struct FrameUniforms {
 
 struct TonemapPush {
   float exposure;
-  float wireframe;
 };
-
-Status range(std::string_view name, double v, double lo, double hi) {
-  if (!std::isfinite(v) || v < lo || v > hi)
-    return invalid_argument(std::string(name) + " = " + std::to_string(v) + " must be in [" +
-                            std::to_string(lo) + ", " + std::to_string(hi) + "]");
-  return {};
-}
 
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m) {
@@ -114,7 +107,7 @@ Status validate(const ShadingParams& p) {
       {"exposure", {p.exposure, 1e-6, 1e6}},
   };
   for (const auto& [name, c] : checks) {
-    if (Status s = range(name, c[0], c[1], c[2]); !s.ok()) return s;
+    if (Status s = require_in_range(name, c[0], c[1], c[2]); !s.ok()) return s;
   }
   return {};
 }
@@ -139,8 +132,8 @@ Result<DebugView> parse_debug_view(std::string_view name) {
 Status validate(const View& view) {
   if (Status s = lod::validate(view.camera); !s.ok()) return s;
   if (Status s = lod::validate(view.quality); !s.ok()) return s;
-  if (Status s = range("ocean_size_m", view.ocean_size_m, lod::kMinOceanSize_m,
-                       lod::kMaxOceanSize_m);
+  if (Status s = require_in_range("ocean_size_m", view.ocean_size_m, lod::kMinOceanSize_m,
+                                  lod::kMaxOceanSize_m);
       !s.ok())
     return s;
   if (!std::isfinite(view.skirt_half_extent_m))
@@ -173,8 +166,8 @@ struct Renderer::State {
   // The sky-view table (R.1–R.4) and what it was computed for.
   vk::Image2D sky_lut;
   vk::Buffer lut_staging;
-  bool lut_pending = false, lut_valid = false;
-  ShadingParams lut_params;
+  bool lut_pending = false;
+  std::optional<ShadingParams> lut_params;  // what the table holds; none before the first draw
   std::array<double, 3> sun_ground{}, sky_ambient{};
   VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
@@ -682,6 +675,7 @@ Status Renderer::resize(int width, int height) {
 int Renderer::width() const { return static_cast<int>(state_->hdr.width); }
 int Renderer::height() const { return static_cast<int>(state_->hdr.height); }
 VkImage Renderer::srgb_image() const { return state_->srgb.image; }
+double Renderer::significant_wave_height_m() const { return state_->hs_m; }
 
 Status Renderer::configure(const SimulationConfig& config) {
   if (Status s = ocean::validate(config); !s.ok()) return s;
@@ -828,14 +822,13 @@ bool same_sky(const ShadingParams& a, const ShadingParams& b) {
 
 // Recomputes the sky-view table and the irradiances when the sky's parameters change.
 void update_sky(Renderer::State& st, const ShadingParams& shading) {
-  if (st.lut_valid && same_sky(st.lut_params, shading)) return;
+  if (st.lut_params && same_sky(*st.lut_params, shading)) return;
   const Sky sky(shading);
   sky.fill_lut({static_cast<float*>(st.lut_staging.mapped),
                 static_cast<std::size_t>(Sky::kLutWidth * Sky::kLutHeight * 4)});
   st.sun_ground = sky.sun_irradiance_ground();
   st.sky_ambient = sky.sky_irradiance_horizontal();
   st.lut_params = shading;
-  st.lut_valid = true;
   st.lut_pending = true;
 }
 
@@ -860,7 +853,6 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.params[0] = static_cast<float>(sh.foam_brightness);
   u.params[1] = static_cast<float>(sh.roughness);
   u.params[2] = static_cast<float>(sh.fog_density_per_m);
-  u.params[3] = static_cast<float>(sh.exposure);
   u.grid[0] = static_cast<float>(sel.grid_centre_x_m);
   u.grid[1] = static_cast<float>(sel.grid_centre_z_m);
   u.grid[2] = static_cast<float>(view.ocean_size_m);
@@ -1049,8 +1041,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap_pipeline_layout, 0, 1,
                           &st.tonemap_set, 0, nullptr);
-  const TonemapPush push{static_cast<float>(view.shading.exposure),
-                         view.debug == DebugView::wireframe ? 1.0f : 0.0f};
+  const TonemapPush push{static_cast<float>(view.shading.exposure)};
   vkCmdPushConstants(cmd, st.tonemap_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(push), &push);
   vkCmdDraw(cmd, 3, 1, 0, 0);

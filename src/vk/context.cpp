@@ -291,15 +291,15 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
     enabled.features.samplerAnisotropy = supported.features.samplerAnisotropy;
     ctx->graphics = true;
     ctx->wireframe = supported.features.fillModeNonSolid == VK_TRUE;
-    if (supported.features.samplerAnisotropy == VK_TRUE)
-      ctx->max_anisotropy = std::min(16.0f, ctx->properties.limits.maxSamplerAnisotropy);
-    // Software rasterisers (lavapipe) filter anisotropically ~20× slower than trilinearly:
-    // off there unless OCEAN_VK_ANISOTROPY asks for it.
-    if (ctx->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) ctx->max_anisotropy = 1.0f;
-    if (const char* a = std::getenv("OCEAN_VK_ANISOTROPY");
-        a != nullptr && supported.features.samplerAnisotropy == VK_TRUE)
-      ctx->max_anisotropy = std::clamp(static_cast<float>(std::atof(a)), 1.0f,
-                                       std::min(16.0f, ctx->properties.limits.maxSamplerAnisotropy));
+    if (supported.features.samplerAnisotropy == VK_TRUE) {
+      const float most = std::min(16.0f, ctx->properties.limits.maxSamplerAnisotropy);
+      // Software rasterisers (lavapipe) filter anisotropically ~20× slower than trilinearly:
+      // off there unless OCEAN_VK_ANISOTROPY asks for it.
+      const bool cpu = ctx->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+      ctx->max_anisotropy = cpu ? 1.0f : most;
+      if (const char* a = std::getenv("OCEAN_VK_ANISOTROPY"); a != nullptr)
+        ctx->max_anisotropy = std::clamp(static_cast<float>(std::atof(a)), 1.0f, most);
+    }
   }
   if (params.swapchain) {
     std::uint32_t count = 0;

@@ -203,4 +203,14 @@ Status ensure_directory(const std::filesystem::path& dir) {
   }
 }
 
+Status check_parent_writable(const std::filesystem::path& path) {
+  const std::filesystem::path dir =
+      path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
+  std::error_code ec;
+  if (std::filesystem::is_directory(dir, ec) && ::access(dir.c_str(), W_OK) == 0) return {};
+  return io_error(
+      "cannot write '" + path.string() + "': " +
+      (std::filesystem::exists(dir, ec) ? "Permission denied" : "No such file or directory"));
+}
+
 }  // namespace ocean::io

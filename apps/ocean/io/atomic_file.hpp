@@ -50,6 +50,11 @@ ocean::Status write_bytes_atomically(const std::filesystem::path& path,
 /// and is not a directory" or "Permission denied". Never throws.
 ocean::Status ensure_directory(const std::filesystem::path& dir);
 
+/// Checks, before long work, that a file could be created at `path`: its directory (the
+/// current one when `path` has none) exists and is writable. io_error "cannot write '<path>':
+/// No such file or directory" or "...: Permission denied" otherwise. Never throws.
+ocean::Status check_parent_writable(const std::filesystem::path& path);
+
 /// The strerror text for an errno value, e.g. "No such file or directory". Never throws (returns
 /// an empty string if even building the message fails).
 std::string errno_message(int err) noexcept;
