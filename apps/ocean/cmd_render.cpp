@@ -2,6 +2,9 @@
 // ffmpeg program) of a sea state from a camera, headless on any Vulkan device (lavapipe
 // included). With no arguments it writes ocean.png: the moderate sea at eye level towards a
 // low sun.
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <array>
 #include <cmath>
 #include <csignal>
@@ -11,8 +14,6 @@
 #include <iostream>
 #include <numbers>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 #include "cli_common.hpp"
@@ -20,8 +21,8 @@
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
-#include "preset.hpp"
 #include "plot/plot_internal.hpp"
+#include "preset.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
 #include "view_flags.hpp"
@@ -156,8 +157,8 @@ class VideoWriter {
  public:
   Status open(const std::filesystem::path& out, int w, int h, double fps) {
     out_ = out;
-    temp_ = out.parent_path() / ("." + out.filename().string() + ".tmp-" +
-                                 std::to_string(getpid()) + ".mp4");
+    temp_ = out.parent_path() /
+            ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()) + ".mp4");
     char command[8192];
     std::snprintf(command, sizeof command,
                   "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s %dx%d -r %.6g -i - "
@@ -166,8 +167,8 @@ class VideoWriter {
     std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give a write error, not kill us
     pipe_ = popen(command, "w");
     if (pipe_ == nullptr)
-      return io_error("cannot start ffmpeg for '" + out.string() + "': " +
-                      io::errno_message(errno));
+      return io_error("cannot start ffmpeg for '" + out.string() +
+                      "': " + io::errno_message(errno));
     return {};
   }
   Status write(const std::vector<std::uint8_t>& rgba) {
@@ -243,8 +244,7 @@ int run_contact_sheet(const RenderOptions& o) {
     Result<Inputs> in = parse_inputs(tile);
     if (!in.ok()) return report(in.status());
     if (Status s = scene.reconfigure(in.value().scene.config); !s.ok()) return report(s);
-    if (Status s = scene.warm_up(in.value().time_s, in.value().warmup_s); !s.ok())
-      return report(s);
+    if (Status s = scene.warm_up(in.value().time_s, in.value().warmup_s); !s.ok()) return report(s);
     const double hs = scene.renderer().significant_wave_height_m();
     for (int c = 0; c < cols; ++c) {
       render::View view = in.value().view;
@@ -355,9 +355,10 @@ Command add_render_command(CLI::App& app) {
       app.add_subcommand("render", "render the ocean to a PNG/EXR image, a sequence or an MP4");
   add_simulation_flags(*command, o->sim);
   add_view_flags(*command, o->picture, "image");
-  command->add_option("--out", o->out,
-                      "output .png (sRGB), .exr (linear HDR) or .mp4 (needs ffmpeg); sequences "
-                      "number PNG/EXR frames (name_00000.png or a %05d pattern); default ocean.png");
+  command->add_option(
+      "--out", o->out,
+      "output .png (sRGB), .exr (linear HDR) or .mp4 (needs ffmpeg); sequences "
+      "number PNG/EXR frames (name_00000.png or a %05d pattern); default ocean.png");
   command->add_option("--time", o->time, "simulated time of the first frame, s (default 20)");
   command->add_option("--frames", o->frames, "number of frames (default 1)");
   command->add_option("--fps", o->fps, "frames per second of a sequence (default 30)");

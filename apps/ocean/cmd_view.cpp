@@ -23,13 +23,13 @@
 #include "io/png_image.hpp"
 #include "preset.hpp"
 #include "scene.hpp"
-#include "view_flags.hpp"
 #include "view/frame_times.hpp"
 #include "view/free_camera.hpp"
 #include "view/imgui_layer.hpp"
 #include "view/panel.hpp"
 #include "view/presenter.hpp"
 #include "view/sea_controls.hpp"
+#include "view_flags.hpp"
 
 namespace ocean::cli {
 

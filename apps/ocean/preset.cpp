@@ -1,12 +1,12 @@
 // Simulation presets (see preset.hpp).
 #include "preset.hpp"
 
-#include "builtin_presets.hpp"
-
 #include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
+
+#include "builtin_presets.hpp"
 
 namespace ocean::cli {
 

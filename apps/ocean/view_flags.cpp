@@ -17,9 +17,9 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
   command.add_option("--fov", f.fov, "vertical field of view, degrees (default " + f.fov + ")");
   command.add_option("--quality", f.quality,
                      "LOD quality: low, medium, high, ultra (default " + f.quality + ")");
-  command.add_option("--ocean-size", f.ocean_size,
-                     "side of the LOD square around the camera, m (256..8192, default " +
-                         f.ocean_size + ")");
+  command.add_option(
+      "--ocean-size", f.ocean_size,
+      "side of the LOD square around the camera, m (256..8192, default " + f.ocean_size + ")");
   command.add_option("--view", f.view, "shaded, lod (colours by level) or wireframe");
   command.add_option("--backend", f.backend,
                      "simulation backend: cpu, or vulkan (its images are rendered with no copy)");
@@ -34,8 +34,7 @@ Result<double> number_in(std::string_view flag, const std::string& text, double 
   return v.value();
 }
 
-Status parse_view_flags(const ViewFlags& f, int min_size, SceneParams& scene,
-                        render::View& v) {
+Status parse_view_flags(const ViewFlags& f, int min_size, SceneParams& scene, render::View& v) {
   if (f.backend != "cpu" && f.backend != "vulkan")
     return invalid_argument("--backend = " + f.backend + " cannot render: must be cpu or vulkan");
   scene.backend = f.backend;

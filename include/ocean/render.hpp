@@ -73,17 +73,17 @@ Status validate(const View& view);
 
 /// What the last draw did.
 struct RenderStats {
-  std::uint32_t patches = 0;      ///< instances drawn (skirt excluded)
-  std::uint32_t draw_calls = 0;   ///< instanced draws of patches + the skirt + sky + tone map
-  std::uint64_t triangles = 0;    ///< patch and skirt triangles submitted
+  std::uint32_t patches = 0;     ///< instances drawn (skirt excluded)
+  std::uint32_t draw_calls = 0;  ///< instanced draws of patches + the skirt + sky + tone map
+  std::uint64_t triangles = 0;   ///< patch and skirt triangles submitted
   std::array<std::uint32_t, lod::kMaxLevels + 1> patches_per_level{};
-  double cpu_select_ms = 0.0;     ///< LOD selection
-  double gpu_ms = 0.0;            ///< GPU time of the whole draw (0 without timestamps)
+  double cpu_select_ms = 0.0;  ///< LOD selection
+  double gpu_ms = 0.0;         ///< GPU time of the whole draw (0 without timestamps)
 };
 
 struct RendererParams {
-  int width = 1280;   ///< [1, 16384]
-  int height = 720;   ///< [1, 16384]
+  int width = 1280;  ///< [1, 16384]
+  int height = 720;  ///< [1, 16384]
 };
 
 class Renderer {

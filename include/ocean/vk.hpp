@@ -59,10 +59,10 @@ struct Context {
   VkPhysicalDeviceProperties properties{};
   VkPhysicalDeviceMemoryProperties memory{};
   DeviceInfo info;
-  bool validation = false;  ///< the validation layer is active
-  bool timestamps = false;  ///< the compute queue supports timestamp queries
-  bool graphics = false;    ///< the queue does graphics too (ContextParams::graphics)
-  bool wireframe = false;   ///< fillModeNonSolid is enabled
+  bool validation = false;      ///< the validation layer is active
+  bool timestamps = false;      ///< the compute queue supports timestamp queries
+  bool graphics = false;        ///< the queue does graphics too (ContextParams::graphics)
+  bool wireframe = false;       ///< fillModeNonSolid is enabled
   float max_anisotropy = 1.0f;  ///< > 1 when samplerAnisotropy is enabled
   double timestamp_period_ns = 1.0;
   /// Validation warnings and errors reported so far (tests assert zero); performance advice

@@ -1,8 +1,6 @@
 // The Vulkan ocean renderer (ocean/render.hpp): targets, pipelines, the LOD mesh's buffers, the
 // per-frame uniforms and the recorded frame. Shaders: shaders/ocean.*, sky.*, tonemap.frag,
 // wire.frag; equations R.n in docs/rendering.md.
-#include "ocean/render.hpp"
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -12,6 +10,7 @@
 #include <string>
 
 #include "ocean/half.hpp"
+#include "ocean/render.hpp"
 #include "spirv.hpp"
 
 namespace ocean::render {
@@ -47,43 +46,42 @@ struct TonemapPush {
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m) {
   std::array<double, 16> inv{};
-  inv[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] +
-           m[9] * m[7] * m[14] + m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
+  inv[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] + m[9] * m[7] * m[14] +
+           m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
   inv[4] = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] + m[8] * m[6] * m[15] -
            m[8] * m[7] * m[14] - m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
-  inv[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] +
-           m[8] * m[7] * m[13] + m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
+  inv[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] + m[8] * m[7] * m[13] +
+           m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
   inv[12] = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] + m[8] * m[5] * m[14] -
             m[8] * m[6] * m[13] - m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
   inv[1] = -m[1] * m[10] * m[15] + m[1] * m[11] * m[14] + m[9] * m[2] * m[15] -
            m[9] * m[3] * m[14] - m[13] * m[2] * m[11] + m[13] * m[3] * m[10];
-  inv[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] +
-           m[8] * m[3] * m[14] + m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
-  inv[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] -
-           m[8] * m[3] * m[13] - m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
-  inv[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] +
-            m[8] * m[2] * m[13] + m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
-  inv[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] +
-           m[5] * m[3] * m[14] + m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
-  inv[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] -
-           m[4] * m[3] * m[14] - m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
-  inv[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] +
-            m[4] * m[3] * m[13] + m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
-  inv[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] -
-            m[4] * m[2] * m[13] - m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
-  inv[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] -
-           m[5] * m[3] * m[10] - m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
-  inv[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] +
-           m[4] * m[3] * m[10] + m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
-  inv[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] -
-            m[4] * m[3] * m[9] - m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
-  inv[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] +
-            m[4] * m[2] * m[9] + m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
+  inv[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] + m[8] * m[3] * m[14] +
+           m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
+  inv[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] - m[8] * m[3] * m[13] -
+           m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
+  inv[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] + m[8] * m[2] * m[13] +
+            m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
+  inv[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] + m[5] * m[3] * m[14] +
+           m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
+  inv[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] - m[4] * m[3] * m[14] -
+           m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
+  inv[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] + m[4] * m[3] * m[13] +
+            m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
+  inv[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] - m[4] * m[2] * m[13] -
+            m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
+  inv[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] - m[5] * m[3] * m[10] -
+           m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
+  inv[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] + m[4] * m[3] * m[10] +
+           m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
+  inv[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] - m[4] * m[3] * m[9] -
+            m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
+  inv[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] + m[4] * m[2] * m[9] +
+            m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
   const double det = m[0] * inv[0] + m[1] * inv[4] + m[2] * inv[8] + m[3] * inv[12];
   for (double& v : inv) v /= det;
   return inv;
 }
-
 
 }  // namespace
 
@@ -144,7 +142,6 @@ Status validate(const View& view) {
   return validate(view.shading);
 }
 
-
 // ---- state --------------------------------------------------------------------------------------
 
 struct Renderer::State {
@@ -172,15 +169,14 @@ struct Renderer::State {
   VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkDescriptorSet scene_set = VK_NULL_HANDLE, tonemap_set = VK_NULL_HANDLE;
-  VkPipelineLayout scene_pipeline_layout = VK_NULL_HANDLE,
-                   tonemap_pipeline_layout = VK_NULL_HANDLE;
+  VkPipelineLayout scene_pipeline_layout = VK_NULL_HANDLE, tonemap_pipeline_layout = VK_NULL_HANDLE;
   VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE,
              tonemap = VK_NULL_HANDLE;
   std::vector<VkShaderModule> modules;
   vk::Buffer uniforms;
   // Geometry.
-  int vertices = 0;                     // V of the patch mesh now built
-  vk::Buffer patch_vertices, indices;   // static
+  int vertices = 0;                    // V of the patch mesh now built
+  vk::Buffer patch_vertices, indices;  // static
   std::array<std::uint32_t, lod::kConfigurations> index_first{}, index_count{};
   std::uint32_t skirt_first = 0, skirt_count = 0;
   vk::Buffer instances, skirt_vertices;  // per frame, host-visible
@@ -323,24 +319,23 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
       .colorAttachmentCount = 1,
       .pColorAttachmentFormats = &d.colour,
       .depthAttachmentFormat = d.depth ? kDepthFormat : VK_FORMAT_UNDEFINED};
-  const VkGraphicsPipelineCreateInfo info{
-      .sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-      .pNext = &rendering,
-      .stageCount = 2,
-      .pStages = stages,
-      .pVertexInputState = &input,
-      .pInputAssemblyState = &assembly,
-      .pViewportState = &viewport,
-      .pRasterizationState = &raster,
-      .pMultisampleState = &multisample,
-      .pDepthStencilState = d.depth ? &depth : nullptr,
-      .pColorBlendState = &blend,
-      .pDynamicState = &dynamic,
-      .layout = d.layout};
+  const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                          .pNext = &rendering,
+                                          .stageCount = 2,
+                                          .pStages = stages,
+                                          .pVertexInputState = &input,
+                                          .pInputAssemblyState = &assembly,
+                                          .pViewportState = &viewport,
+                                          .pRasterizationState = &raster,
+                                          .pMultisampleState = &multisample,
+                                          .pDepthStencilState = d.depth ? &depth : nullptr,
+                                          .pColorBlendState = &blend,
+                                          .pDynamicState = &dynamic,
+                                          .layout = d.layout};
   VkPipeline p = VK_NULL_HANDLE;
-  if (Status s = vk::check(
-          vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &p),
-          "vkCreateGraphicsPipelines");
+  if (Status s =
+          vk::check(vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &p),
+                    "vkCreateGraphicsPipelines");
       !s.ok())
     return s;
   return p;
@@ -350,8 +345,7 @@ Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, b
                                float anisotropy, bool repeat_v_too = true) {
   const VkSamplerAddressMode mode =
       repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-  const VkSamplerAddressMode mode_v =
-      repeat_v_too ? mode : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  const VkSamplerAddressMode mode_v = repeat_v_too ? mode : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   const VkFilter filter = linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
   const VkSamplerCreateInfo info{
       .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
@@ -374,20 +368,20 @@ Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, b
 
 Status create_targets(Renderer::State& st, int width, int height) {
   const auto w = static_cast<std::uint32_t>(width), h = static_cast<std::uint32_t>(height);
-  Result<vk::Image2D> hdr = vk::create_image_2d(
-      *st.ctx, kHdrFormat, w, h,
-      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-          VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  Result<vk::Image2D> hdr =
+      vk::create_image_2d(*st.ctx, kHdrFormat, w, h,
+                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
   if (!hdr.ok()) return hdr.status();
   st.hdr = hdr.value();
-  Result<vk::Image2D> depth = vk::create_image_2d(
-      *st.ctx, kDepthFormat, w, h, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-      VK_IMAGE_ASPECT_DEPTH_BIT);
+  Result<vk::Image2D> depth =
+      vk::create_image_2d(*st.ctx, kDepthFormat, w, h, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                          VK_IMAGE_ASPECT_DEPTH_BIT);
   if (!depth.ok()) return depth.status();
   st.depth = depth.value();
-  Result<vk::Image2D> srgb = vk::create_image_2d(
-      *st.ctx, kSrgbFormat, w, h,
-      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  Result<vk::Image2D> srgb =
+      vk::create_image_2d(*st.ctx, kSrgbFormat, w, h,
+                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
   if (!srgb.ok()) return srgb.status();
   st.srgb = srgb.value();
   Result<vk::Buffer> rb =
@@ -413,31 +407,30 @@ void write_scene_images(Renderer::State& st) {
                                    VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo normal{st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo lut{st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet writes[4] = {
-      {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-       .dstSet = st.scene_set,
-       .dstBinding = 3,
-       .descriptorCount = 1,
-       .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-       .pImageInfo = &lut},
-      {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-       .dstSet = st.scene_set,
-       .dstBinding = 0,
-       .descriptorCount = 1,
-       .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-       .pBufferInfo = &ubo},
-      {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-       .dstSet = st.scene_set,
-       .dstBinding = 1,
-       .descriptorCount = 1,
-       .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-       .pImageInfo = &disp},
-      {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-       .dstSet = st.scene_set,
-       .dstBinding = 2,
-       .descriptorCount = 1,
-       .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-       .pImageInfo = &normal}};
+  VkWriteDescriptorSet writes[4] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = 3,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &lut},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = 0,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                     .pBufferInfo = &ubo},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = 1,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &disp},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = 2,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &normal}};
   const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 4u : 2u;
   vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
 }
@@ -467,13 +460,13 @@ Status create_descriptors_and_pipelines(Renderer::State& st) {
       .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
       .bindingCount = 4,
       .pBindings = scene_bindings};
-  if (Status s = vk::check(
-          vkCreateDescriptorSetLayout(ctx.device, &scene_info, nullptr, &st.scene_layout),
-          "vkCreateDescriptorSetLayout");
+  if (Status s =
+          vk::check(vkCreateDescriptorSetLayout(ctx.device, &scene_info, nullptr, &st.scene_layout),
+                    "vkCreateDescriptorSetLayout");
       !s.ok())
     return s;
-  const VkDescriptorSetLayoutBinding tonemap_binding{
-      0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  const VkDescriptorSetLayoutBinding tonemap_binding{0, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                                     1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
   const VkDescriptorSetLayoutCreateInfo tonemap_info{
       .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
       .bindingCount = 1,
@@ -499,8 +492,8 @@ Status create_descriptors_and_pipelines(Renderer::State& st) {
                                           .descriptorPool = st.pool,
                                           .descriptorSetCount = 2,
                                           .pSetLayouts = layouts};
-  if (Status s = vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, sets),
-                           "vkAllocateDescriptorSets");
+  if (Status s =
+          vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, sets), "vkAllocateDescriptorSets");
       !s.ok())
     return s;
   st.scene_set = sets[0], st.tonemap_set = sets[1];
@@ -512,9 +505,9 @@ Status create_descriptors_and_pipelines(Renderer::State& st) {
       .pSetLayouts = &st.scene_layout,
       .pushConstantRangeCount = 1,
       .pPushConstantRanges = &scene_push};
-  if (Status s = vk::check(vkCreatePipelineLayout(ctx.device, &scene_layout, nullptr,
-                                                  &st.scene_pipeline_layout),
-                           "vkCreatePipelineLayout");
+  if (Status s = vk::check(
+          vkCreatePipelineLayout(ctx.device, &scene_layout, nullptr, &st.scene_pipeline_layout),
+          "vkCreatePipelineLayout");
       !s.ok())
     return s;
   const VkPushConstantRange tonemap_push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(TonemapPush)};
@@ -524,9 +517,9 @@ Status create_descriptors_and_pipelines(Renderer::State& st) {
       .pSetLayouts = &st.tonemap_layout,
       .pushConstantRangeCount = 1,
       .pPushConstantRanges = &tonemap_push};
-  if (Status s = vk::check(vkCreatePipelineLayout(ctx.device, &tonemap_layout, nullptr,
-                                                  &st.tonemap_pipeline_layout),
-                           "vkCreatePipelineLayout");
+  if (Status s = vk::check(
+          vkCreatePipelineLayout(ctx.device, &tonemap_layout, nullptr, &st.tonemap_pipeline_layout),
+          "vkCreatePipelineLayout");
       !s.ok())
     return s;
 
@@ -587,18 +580,19 @@ Status build_patch_buffers(Renderer::State& st, int vertices) {
   }
   st.skirt_first = static_cast<std::uint32_t>(all.size());
   for (std::uint16_t r = 0; r < 4; ++r) {
-    for (std::uint16_t i : skirt.value().triangles) all.push_back(static_cast<std::uint16_t>(r * 6 + i));
+    for (std::uint16_t i : skirt.value().triangles)
+      all.push_back(static_cast<std::uint16_t>(r * 6 + i));
   }
   st.skirt_count = static_cast<std::uint32_t>(all.size()) - st.skirt_first;
   vk::destroy_buffer(*st.ctx, st.patch_vertices);
   vk::destroy_buffer(*st.ctx, st.indices);
   const auto& pos = meshes.value().positions_xz;
-  Result<vk::Buffer> vb = vk::create_static_buffer(*st.ctx, st.commands, std::as_bytes(std::span(pos)),
-                                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+  Result<vk::Buffer> vb = vk::create_static_buffer(
+      *st.ctx, st.commands, std::as_bytes(std::span(pos)), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
   if (!vb.ok()) return vb.status();
   st.patch_vertices = vb.value();
-  Result<vk::Buffer> ib = vk::create_static_buffer(*st.ctx, st.commands, std::as_bytes(std::span(all)),
-                                                   VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+  Result<vk::Buffer> ib = vk::create_static_buffer(
+      *st.ctx, st.commands, std::as_bytes(std::span(all)), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
   if (!ib.ok()) return ib.status();
   st.indices = ib.value();
   st.vertices = vertices;
@@ -623,14 +617,13 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
   if (!commands.ok()) return commands.status();
   st.commands = commands.value();
   if (Status s = create_descriptors_and_pipelines(st); !s.ok()) return s;
-  Result<vk::Buffer> ubo = vk::create_buffer(*st.ctx, sizeof(FrameUniforms),
-                                             VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
-                                             vk::MemoryUse::upload);
+  Result<vk::Buffer> ubo = vk::create_buffer(
+      *st.ctx, sizeof(FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, vk::MemoryUse::upload);
   if (!ubo.ok()) return ubo.status();
   st.uniforms = ubo.value();
-  Result<vk::Image2D> lut = vk::create_image_2d(
-      *st.ctx, VK_FORMAT_R32G32B32A32_SFLOAT, Sky::kLutWidth, Sky::kLutHeight,
-      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
+  Result<vk::Image2D> lut =
+      vk::create_image_2d(*st.ctx, VK_FORMAT_R32G32B32A32_SFLOAT, Sky::kLutWidth, Sky::kLutHeight,
+                          VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   if (!lut.ok()) return lut.status();
   st.sky_lut = lut.value();
   Result<vk::Buffer> lut_staging =
@@ -642,14 +635,13 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
   // Instances: the most any selection can hold (W² at S = 8192) and the skirt's one.
   if (Status s = lod::reserve_selection(st.selection, lod::kMaxOceanSize_m); !s.ok()) return s;
   const int w = 1 << lod::max_level(lod::kMaxOceanSize_m);
-  Result<vk::Buffer> inst = vk::create_buffer(
-      *st.ctx, static_cast<VkDeviceSize>(w * w + 1) * sizeof(lod::PatchInstance),
-      VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
+  Result<vk::Buffer> inst =
+      vk::create_buffer(*st.ctx, static_cast<VkDeviceSize>(w * w + 1) * sizeof(lod::PatchInstance),
+                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
   if (!inst.ok()) return inst.status();
   st.instances = inst.value();
-  Result<vk::Buffer> skirt = vk::create_buffer(*st.ctx, 24 * 2 * sizeof(float),
-                                               VK_BUFFER_USAGE_VERTEX_BUFFER_BIT,
-                                               vk::MemoryUse::upload);
+  Result<vk::Buffer> skirt = vk::create_buffer(
+      *st.ctx, 24 * 2 * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
   if (!skirt.ok()) return skirt.status();
   st.skirt_vertices = skirt.value();
   if (st.ctx->timestamps) {
@@ -716,10 +708,10 @@ Status Renderer::configure(const SimulationConfig& config) {
       vk::create_image_array(*st.ctx, VK_FORMAT_R8G8B8A8_UNORM, size, layers, mips, usage);
   if (!normal.ok()) return normal.status();
   st.normal_foam = normal.value();
-  const std::size_t bytes = layers * (static_cast<std::size_t>(size) * size * 8 +
-                                      mip_chain_texels(n) * 4);
-  Result<vk::Buffer> staging = vk::create_buffer(*st.ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                                 vk::MemoryUse::upload);
+  const std::size_t bytes =
+      layers * (static_cast<std::size_t>(size) * size * 8 + mip_chain_texels(n) * 4);
+  Result<vk::Buffer> staging =
+      vk::create_buffer(*st.ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
   if (!staging.ok()) return staging.status();
   st.staging = staging.value();
   std::memset(st.staging.mapped, 0, bytes);
@@ -781,8 +773,8 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd) {
   static_assert(sizeof(std::uint16_t) * 4 == 8);
   for (vk::Image* im : {&st.displacement, &st.normal_foam})
     vk::image_barrier(cmd, im->image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                  VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+                      VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                      0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   const std::uint32_t n = st.sim_size;
   const VkDeviceSize texels = static_cast<VkDeviceSize>(n) * n;
   VkDeviceSize offset = 0;
@@ -801,10 +793,10 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd) {
   for (std::uint32_t c = 0; c < st.sim_layers; ++c) {
     for (std::uint32_t m = 0; m < st.sim_mips; ++m) {
       const std::uint32_t s = n >> m;
-      regions[count++] = {.bufferOffset = offset + mip_offset(static_cast<int>(n),
-                                                              static_cast<int>(m)) * 4,
-                          .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, c, 1},
-                          .imageExtent = {s, s, 1}};
+      regions[count++] = {
+          .bufferOffset = offset + mip_offset(static_cast<int>(n), static_cast<int>(m)) * 4,
+          .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, c, 1},
+          .imageExtent = {s, s, 1}};
     }
     offset += mip_chain_texels(static_cast<int>(n)) * 4;
   }
@@ -834,7 +826,8 @@ void update_sky(Renderer::State& st, const ShadingParams& shading) {
 
 void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
                    const lod::LodSelection& sel, FrameUniforms& u) {
-  for (int i = 0; i < 16; ++i) u.view_proj[i] = static_cast<float>(vp.m[static_cast<std::size_t>(i)]);
+  for (int i = 0; i < 16; ++i)
+    u.view_proj[i] = static_cast<float>(vp.m[static_cast<std::size_t>(i)]);
   const lod::Vec3 eye = view.camera.position_m;
   u.camera_pos[0] = static_cast<float>(eye.x), u.camera_pos[1] = static_cast<float>(eye.y);
   u.camera_pos[2] = static_cast<float>(eye.z);
@@ -864,7 +857,8 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.sky[0] = static_cast<float>(st.hs_m);
   for (int c = 0; c < kMaxCascades; ++c)
     for (int i = 0; i < 4; ++i)
-      u.cascades[c][i] = st.cascade_params[static_cast<std::size_t>(c)][static_cast<std::size_t>(i)];
+      u.cascades[c][i] =
+          st.cascade_params[static_cast<std::size_t>(c)][static_cast<std::size_t>(i)];
 }
 
 }  // namespace
@@ -891,8 +885,8 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   auto* inst = static_cast<lod::PatchInstance*>(st.instances.mapped);
   std::memcpy(inst, sel.instances.data(), sel.instances.size() * sizeof(lod::PatchInstance));
   const auto skirt_instance = static_cast<std::uint32_t>(sel.instances.size());
-  inst[skirt_instance] = {.centre_x_m = 0.0f, .centre_z_m = 0.0f, .size_m = 1.0f,
-                          .level = kSkirtLevel};
+  inst[skirt_instance] = {
+      .centre_x_m = 0.0f, .centre_z_m = 0.0f, .size_m = 1.0f, .level = kSkirtLevel};
   // Skirt vertices in world space around this frame's grid centre.
   if (st.skirt_size != view.ocean_size_m || st.skirt_extent != view.skirt_half_extent_m) {
     Result<lod::SkirtMesh> skirt = lod::build_skirt(view.ocean_size_m, view.skirt_half_extent_m);
@@ -925,13 +919,12 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   }
   if (st.lut_pending) {
     vk::image_barrier(cmd, st.sky_lut.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                  VK_ACCESS_TRANSFER_WRITE_BIT);
-    const VkBufferImageCopy region{
-        .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-        .imageExtent = {Sky::kLutWidth, Sky::kLutHeight, 1}};
-    vkCmdCopyBufferToImage(cmd, st.lut_staging.buffer, st.sky_lut.image, VK_IMAGE_LAYOUT_GENERAL,
-                           1, &region);
+                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                                   .imageExtent = {Sky::kLutWidth, Sky::kLutHeight, 1}};
+    vkCmdCopyBufferToImage(cmd, st.lut_staging.buffer, st.sky_lut.image, VK_IMAGE_LAYOUT_GENERAL, 1,
+                           &region);
     vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
     st.lut_pending = false;
   }
@@ -948,33 +941,28 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 
   const std::uint32_t w = st.hdr.width, h = st.hdr.height;
-  vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT |
-                VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-  vk::image_barrier(cmd, st.depth.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-                VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
-                VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT |
-                    VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
-                VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
-                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
-                VK_IMAGE_ASPECT_DEPTH_BIT);
-  const VkRenderingAttachmentInfo colour{
-      .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-      .imageView = st.hdr.view,
-      .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-      .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-      .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-      .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 1.0f}}}};
-  const VkRenderingAttachmentInfo depth{
-      .sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-      .imageView = st.depth.view,
-      .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
-      .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
-      .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
-      .clearValue = {.depthStencil = {1.0f, 0}}};
+  vk::image_barrier(
+      cmd, st.hdr.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  vk::image_barrier(
+      cmd, st.depth.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+      VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
+      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+      VK_IMAGE_ASPECT_DEPTH_BIT);
+  const VkRenderingAttachmentInfo colour{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                         .imageView = st.hdr.view,
+                                         .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                         .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 1.0f}}}};
+  const VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                        .imageView = st.depth.view,
+                                        .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                        .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
+                                        .clearValue = {.depthStencil = {1.0f, 0}}};
   const VkRenderingInfo scene{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                               .renderArea = {{0, 0}, {w, h}},
                               .layerCount = 1,
@@ -983,8 +971,8 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                               .pDepthAttachment = &depth};
   vkCmdBeginRendering(cmd, &scene);
   // Clip y is up (lod::perspective); a negative-height viewport puts +y at the top.
-  const VkViewport flipped{0.0f, static_cast<float>(h), static_cast<float>(w),
-                           -static_cast<float>(h), 0.0f, 1.0f};
+  const VkViewport flipped{
+      0.0f, static_cast<float>(h), static_cast<float>(w), -static_cast<float>(h), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, {w, h}};
   vkCmdSetViewport(cmd, 0, 1, &flipped);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
@@ -1016,14 +1004,14 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
 
   // Tone map HDR → sRGB.
   vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                VK_ACCESS_SHADER_READ_BIT);
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT);
   vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
   const VkRenderingAttachmentInfo out{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                       .imageView = st.srgb.view,
                                       .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -1042,16 +1030,16 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap_pipeline_layout, 0, 1,
                           &st.tonemap_set, 0, nullptr);
   const TonemapPush push{static_cast<float>(view.shading.exposure)};
-  vkCmdPushConstants(cmd, st.tonemap_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                     sizeof(push), &push);
+  vkCmdPushConstants(cmd, st.tonemap_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
+                     &push);
   vkCmdDraw(cmd, 3, 1, 0, 0);
   ++stats_.draw_calls;
   vkCmdEndRendering(cmd);
   vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_TRANSFER_READ_BIT);
+                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_READ_BIT);
   if (st.has_timestamps)
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, st.timestamps.pool, 1);
   return {};
@@ -1106,16 +1094,16 @@ Status Renderer::read_hdr(std::vector<float>& rgba) {
   const std::uint32_t w = st.hdr.width, h = st.hdr.height;
   const Status s = vk::run_once(*st.ctx, st.commands, [&](VkCommandBuffer cmd) {
     vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
-                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                      0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
     const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                    .imageExtent = {w, h, 1}};
     vkCmdCopyImageToBuffer(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                            st.readback.buffer, 1, &region);
     vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT);
     vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                  VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0);
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0);
   });
   if (!s.ok()) return s;
   const std::size_t n = static_cast<std::size_t>(w) * h * 4;

@@ -100,7 +100,7 @@ std::array<double, 3> Sky::radiance(std::array<double, 3> v) const {
                           tau_m * henyey_greenstein(mu, params.aerosol_g)) /
                          tau;
     const double multiple = 0.25 * tau_r / tau / (4.0 * kPi);  // R.4
-    const double scattered = 1.0 - std::exp(-tau * m_view);   // R.1
+    const double scattered = 1.0 - std::exp(-tau * m_view);    // R.1
     // R.3: scatterers at height z see the sun through exp(−a·e^(−z/H)) of the column's depth a;
     // averaged over the exponential density of scatterers that is (1 − e^(−a))/a. A view ray
     // near the horizon scatters mostly low down, where the sun crosses the whole column: the

@@ -6,13 +6,13 @@
 #include <cstdint>
 #include <span>
 
-#define OCEAN_RENDER_SPIRV(name)                    \
-  extern const std::uint32_t ocean_spv_##name[];    \
-  extern const std::size_t ocean_spv_##name##_words; \
-  namespace ocean::render::spirv {                  \
-  inline std::span<const std::uint32_t> name() {     \
+#define OCEAN_RENDER_SPIRV(name)                         \
+  extern const std::uint32_t ocean_spv_##name[];         \
+  extern const std::size_t ocean_spv_##name##_words;     \
+  namespace ocean::render::spirv {                       \
+  inline std::span<const std::uint32_t> name() {         \
     return {ocean_spv_##name, ocean_spv_##name##_words}; \
-  }                                                 \
+  }                                                      \
   }
 
 OCEAN_RENDER_SPIRV(sky_vert)

@@ -89,14 +89,14 @@ Status create_instance(Context& ctx, bool validation,
                      VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT,
       .pfnUserCallback = on_message,
       .pUserData = &ctx};
-  const VkInstanceCreateInfo info{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
-                                  .pNext = validation ? &messenger_info : nullptr,
-                                  .pApplicationInfo = &app,
-                                  .enabledLayerCount = validation ? 1u : 0u,
-                                  .ppEnabledLayerNames = validation ? layers : nullptr,
-                                  .enabledExtensionCount =
-                                      static_cast<std::uint32_t>(extensions.size()),
-                                  .ppEnabledExtensionNames = extensions.data()};
+  const VkInstanceCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
+      .pNext = validation ? &messenger_info : nullptr,
+      .pApplicationInfo = &app,
+      .enabledLayerCount = validation ? 1u : 0u,
+      .ppEnabledLayerNames = validation ? layers : nullptr,
+      .enabledExtensionCount = static_cast<std::uint32_t>(extensions.size()),
+      .ppEnabledExtensionNames = extensions.data()};
   const VkResult r = vkCreateInstance(&info, nullptr, &ctx.instance);
   if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
     return unsupported(kNoDevice);

@@ -53,8 +53,7 @@ Status create_device_image(const Context& ctx, VkFormat format, std::uint32_t wi
                                .usage = usage,
                                .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
                                .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
-  if (Status s = check(vkCreateImage(ctx.device, &info, nullptr, &image), "vkCreateImage");
-      !s.ok())
+  if (Status s = check(vkCreateImage(ctx.device, &info, nullptr, &image), "vkCreateImage"); !s.ok())
     return s;
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(ctx.device, image, &req);
@@ -175,13 +174,13 @@ void destroy_image(const Context& ctx, Image2D& im) {
 
 Result<Buffer> create_static_buffer(const Context& ctx, const Commands& commands,
                                     std::span<const std::byte> bytes, VkBufferUsageFlags usage) {
-  Result<Buffer> staging = create_buffer(ctx, bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                         MemoryUse::upload);
+  Result<Buffer> staging =
+      create_buffer(ctx, bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT, MemoryUse::upload);
   if (!staging.ok()) return staging.status();
   Buffer up = staging.value();
   std::memcpy(up.mapped, bytes.data(), bytes.size());
-  Result<Buffer> buffer = create_buffer(ctx, bytes.size(), usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
-                                        MemoryUse::device);
+  Result<Buffer> buffer =
+      create_buffer(ctx, bytes.size(), usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, MemoryUse::device);
   if (!buffer.ok()) {
     destroy_buffer(ctx, up);
     return buffer.status();
@@ -326,16 +325,16 @@ void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkIma
                    VkPipelineStageFlags src_stage, VkAccessFlags src_access,
                    VkPipelineStageFlags dst_stage, VkAccessFlags dst_access,
                    VkImageAspectFlags aspect) {
-  const VkImageMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
-                               .srcAccessMask = src_access,
-                               .dstAccessMask = dst_access,
-                               .oldLayout = from,
-                               .newLayout = to,
-                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                               .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                               .image = image,
-                               .subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0,
-                                                    VK_REMAINING_ARRAY_LAYERS}};
+  const VkImageMemoryBarrier b{
+      .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
+      .srcAccessMask = src_access,
+      .dstAccessMask = dst_access,
+      .oldLayout = from,
+      .newLayout = to,
+      .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+      .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+      .image = image,
+      .subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS}};
   vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
 }
 

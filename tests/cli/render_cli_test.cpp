@@ -34,7 +34,8 @@ const std::string kSmall =
 TEST(RenderCli, WritesAPngOfTheRequestedSize) {
   if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
   const fs::path out = scratch("a.png");
-  const ocean_test::CliRun r = ocean_test::run_cli("render --out " + out.string() + kSmall + " --json");
+  const ocean_test::CliRun r =
+      ocean_test::run_cli("render --out " + out.string() + kSmall + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["patches"].get<int>(), 0);
@@ -46,7 +47,9 @@ TEST(RenderCli, WritesAPngOfTheRequestedSize) {
   EXPECT_EQ(png.value().channels, 3);
   // Sky on top brighter in blue than the dark water at the bottom.
   const auto& px = png.value().samples;
-  const auto blue = [&](int x, int y) { return px[static_cast<std::size_t>((y * 80 + x) * 3 + 2)]; };
+  const auto blue = [&](int x, int y) {
+    return px[static_cast<std::size_t>((y * 80 + x) * 3 + 2)];
+  };
   EXPECT_GT(blue(5, 2), blue(5, 43));
 }
 

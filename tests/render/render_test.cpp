@@ -4,6 +4,8 @@
 // foam only where the Jacobian is low, the CPU upload path and the zero-copy Vulkan path giving
 // the same picture — plus the sky model against its physics and bad input. Skips where no
 // Vulkan device exists.
+#include "ocean/render.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,7 +15,6 @@
 #include <vector>
 
 #include "ocean/backends.hpp"
-#include "ocean/render.hpp"
 #include "ocean/vk/simulation.hpp"
 
 namespace {
@@ -103,7 +104,7 @@ std::unique_ptr<Rig> make_rig(const ocean::SimulationConfig& config, int w, int 
 #define REQUIRE_RIG(rig)                                                   \
   if ((rig) == nullptr) {                                                  \
     if (graphics_context() == nullptr) GTEST_SKIP() << "no Vulkan device"; \
-    FAIL() << "could not build the renderer";                             \
+    FAIL() << "could not build the renderer";                              \
   }
 
 struct Image {
@@ -182,8 +183,8 @@ TEST(Sky, SkyIrradianceIsTheCosineWeightedIntegral) {
     const double el = (i + 0.5) / n * kPi / 2.0;
     for (int j = 0; j < 2 * n; ++j) {
       const double az = (j + 0.5) / (2 * n) * 2.0 * kPi;
-      const auto l = sky.radiance({std::cos(el) * std::cos(az), std::sin(el),
-                                   std::cos(el) * std::sin(az)});
+      const auto l =
+          sky.radiance({std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)});
       fine += l[1] * std::sin(el) * std::cos(el) * (kPi / 2.0 / n) * (kPi / n);
     }
   }
@@ -213,7 +214,8 @@ TEST(Renderer, SkyAboveTheHorizonWaterBelowNoNanOrBlackPixels) {
   // The water's colour varies (waves), the sky's top rows are smooth.
   double lo = 1e9, hi = 0.0;
   for (int y = 3 * h / 4; y < h; ++y)
-    for (int x = 0; x < w; ++x) lo = std::min(lo, double(im.at(x, y)[1])), hi = std::max(hi, double(im.at(x, y)[1]));
+    for (int x = 0; x < w; ++x)
+      lo = std::min(lo, double(im.at(x, y)[1])), hi = std::max(hi, double(im.at(x, y)[1]));
   EXPECT_GT(hi, 1.5 * lo);
   const auto& s = rig->renderer->stats();
   EXPECT_GT(s.patches, 0u);
@@ -348,7 +350,8 @@ TEST(Renderer, DebugViewsAndResizing) {
   view.debug = DebugView::lod_colours;
   const Image coloured = render_hdr(*rig, view);
   double d = 0.0;
-  for (std::size_t i = 0; i < shaded.rgba.size(); ++i) d += std::abs(shaded.rgba[i] - coloured.rgba[i]);
+  for (std::size_t i = 0; i < shaded.rgba.size(); ++i)
+    d += std::abs(shaded.rgba[i] - coloured.rgba[i]);
   EXPECT_GT(d, 1.0);
   if (rig->ctx->wireframe) {
     view.debug = DebugView::wireframe;
@@ -372,8 +375,7 @@ TEST(Renderer, DebugViewsAndResizing) {
 TEST(Renderer, BadInputIsRefusedWithAMessage) {
   auto compute_only = ocean::vk::create_context({});
   if (!compute_only.ok()) GTEST_SKIP() << "no Vulkan device";
-  auto r = Renderer::make(std::shared_ptr<ocean::vk::Context>(std::move(compute_only).value()),
-                          {});
+  auto r = Renderer::make(std::shared_ptr<ocean::vk::Context>(std::move(compute_only).value()), {});
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.status().code(), ocean::ErrorCode::unsupported);
   EXPECT_NE(r.status().message().find("graphics"), std::string::npos);

@@ -14,7 +14,6 @@ namespace {
 constexpr const char* kNoDisplay =
     "ocean view needs a display: glfwInit failed (set DISPLAY or run under xvfb-run)";
 
-
 bool has_features(VkPhysicalDevice physical, VkFormat format, VkFormatFeatureFlags features) {
   VkFormatProperties p;
   vkGetPhysicalDeviceFormatProperties(physical, format, &p);
@@ -337,8 +336,8 @@ void Presenter::blit_and_begin_overlay(VkCommandBuffer cmd, VkImage source, int 
   const VkImage target = images_[image_];
   // The acquire semaphore is waited for at the transfer stage (see submit_and_present).
   vk::image_barrier(cmd, target, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_TRANSFER_WRITE_BIT);
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT);
   const VkImageSubresourceLayers layers{VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
   const auto w = static_cast<std::int32_t>(extent_.width);
   const auto h = static_cast<std::int32_t>(extent_.height);
@@ -358,9 +357,9 @@ void Presenter::blit_and_begin_overlay(VkCommandBuffer cmd, VkImage source, int 
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
   }
   vk::image_barrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-                VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_READ_BIT | VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
   const VkRenderPassBeginInfo rp{.sType = VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO,
                                  .renderPass = render_pass_,
                                  .framebuffer = framebuffers_[image_],
