@@ -875,7 +875,8 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   lp.ocean_size_m = view.ocean_size_m;
   lp.quality = view.quality;
   lp.camera_position_m = view.camera.position_m;
-  lp.frustum = lod::camera_frustum(view.camera);
+  const lod::Mat4 vp = lod::view_projection(view.camera);  // culling and drawing share it
+  lp.frustum = lod::frustum_from_view_projection(vp);
   lp.max_vertical_displacement_m = 1.2 * st.hs_m + 0.5;
   lp.max_horizontal_displacement_m = st.choppiness * st.hs_m;
   if (Status s = lod::select_patches(lp, st.selection); !s.ok()) return s;
@@ -905,7 +906,6 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
     }
   }
   update_sky(st, view.shading);
-  const lod::Mat4 vp = lod::view_projection(view.camera);
   FrameUniforms u{};
   fill_uniforms(st, view, vp, sel, u);
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
