@@ -27,7 +27,8 @@ struct Fixture {
     state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
                                                   ocean::cascade_spectrum_params(config, 0))
                          .value();
-    ocean::cpu::build_plane_factors(state, config.normals, config.choppiness);
+    state.planes = ocean::cpu::plane_count(config.normals);
+    state.choppiness = config.choppiness;
     ocean::cpu::build_kernel_inputs(state, config.loop_period_s);
     state.foam.assign(static_cast<std::size_t>(n * n), 0.0f);
     state.mip_work.assign(4 * ocean::mip_chain_texels(n), 0.1f);
@@ -55,12 +56,11 @@ void BM_EvolveAndFactors(benchmark::State& state) {
   if (!select_target(state, static_cast<int>(state.range(1)))) return;
   Fixture f(n);
   const ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(f.state, 1234.5, 200.0);
-  alignas(64) static float h_re[16 * 2048], h_im[16 * 2048], l_re[16 * 2048], l_im[16 * 2048];
+  alignas(64) static float lanes[4][16 * 2048];
+  float* re[2] = {lanes[0], lanes[1]};
+  float* im[2] = {lanes[2], lanes[3]};
   for (auto _ : state) {
-    for (int block = 0; block < n / 16; ++block) {
-      ocean::cpu::evolve_lanes(args, block, h_re, h_im);
-      for (int p = 0; p < 2; ++p) ocean::cpu::apply_factor(args, p, block, h_re, h_im, l_re, l_im);
-    }
+    for (int block = 0; block < n / 16; ++block) ocean::cpu::evolve_planes(args, block, re, im);
     benchmark::ClobberMemory();
   }
   set_texels(state, n);

@@ -109,9 +109,27 @@ class SimdPlan2D {
 
   /// Inverse-transforms columns [16·block, 16·block + 16) of an N×N plane, in place.
   void columns(SplitComplex plane, int block) const;
-  /// The same with the block's input already in lane layout (row j of column 16·block + l at
-  /// lane_re/lane_im[j·16 + l], N·16 floats each, overwritten): the result goes to the plane.
-  void columns_from_lanes(float* lane_re, float* lane_im, SplitComplex plane, int block) const;
+
+  /// 16 lines in lane layout: element j of line l at re/im[j·16 + l] (N·16 floats each,
+  /// 64-byte aligned).
+  struct LaneBlock {
+    float* re;
+    float* im;
+  };
+  /// Where a block's input goes so that transform() leaves the result in `out`: `out` itself
+  /// for an even number of stages, `scratch` for an odd one (no copy either way).
+  [[nodiscard]] LaneBlock input_for(LaneBlock out, LaneBlock scratch) const {
+    return stages_.size() % 2 == 0 ? out : scratch;
+  }
+  /// Inverse-transforms the 16 lines of a lane block whose input is at input_for(out, scratch);
+  /// the result is in `out`, the other buffer is overwritten.
+  void transform(LaneBlock out, LaneBlock scratch) const;
+  /// The column pass's output as the row pass's input. `tiles` holds a whole plane as column
+  /// blocks in lane layout (column block b's row j at tiles[b·16·N + j·16 + l], what
+  /// transform() leaves for a column block); writes rows [16·block, 16·block + 16) in lane
+  /// layout along the rows (column c of row 16·block + l at dst[c·16 + l]): 16×16 tile
+  /// transposes.
+  void tiles_to_lanes(const float* tiles, int block, float* dst) const;
   /// Inverse-transforms rows [16·block, 16·block + 16). The result is left in lane layout in
   /// out_re/out_im (N·16 floats each: column c of row 16·block + l at [c·16 + l]); the plane's
   /// rows are overwritten with scratch.

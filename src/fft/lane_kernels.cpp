@@ -16,6 +16,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "fft/transpose-inl.h"
+
 HWY_BEFORE_NAMESPACE();
 namespace ocean::fft::detail {
 namespace HWY_NAMESPACE {
@@ -106,28 +108,10 @@ bool Stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
   return (table.count & 1) != 0;
 }
 
-void RowsToLanes(const float* src, std::size_t row_stride, int n, float* dst) {
-  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
-    const float* row = src + l * row_stride;
-    for (std::size_t c = 0; c < static_cast<std::size_t>(n); ++c) dst[c * kLanes + l] = row[c];
-  }
-}
-
-void LanesToRows(const float* src, int n, float* dst, std::size_t row_stride, bool sign_correct,
-                 int parity) {
-  for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); ++l) {
-    float* row = dst + l * row_stride;
-    if (!sign_correct) {
-      for (std::size_t c = 0; c < static_cast<std::size_t>(n); ++c) row[c] = src[c * kLanes + l];
-      continue;
-    }
-    // (−1)^(x+y): even columns keep the row's sign, odd columns flip it (eq. 43).
-    const float even = ((static_cast<std::size_t>(parity) + l) & 1u) ? -1.0f : 1.0f;
-    for (std::size_t c = 0; c < static_cast<std::size_t>(n); c += 2) {
-      row[c] = src[c * kLanes + l] * even;
-      row[c + 1] = -src[(c + 1) * kLanes + l] * even;
-    }
-  }
+void TransposeTiles(const TileWalk& w) {
+  for (std::size_t t = 0; t < w.count; ++t)
+    Transpose16Tile(w.src + t * w.src_step, w.src_stride, w.dst + t * w.dst_step, w.dst_stride,
+                    w.sign_parity);
 }
 
 const char* DispatchedTarget() { return hwy::TargetName(HWY_TARGET); }
@@ -161,21 +145,42 @@ HWY_AFTER_NAMESPACE();
 namespace ocean::fft::detail {
 
 HWY_EXPORT(Stockham);
-HWY_EXPORT(RowsToLanes);
-HWY_EXPORT(LanesToRows);
+HWY_EXPORT(TransposeTiles);
 HWY_EXPORT(DispatchedTarget);
 HWY_EXPORT(FmaLoop);
 
 bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
   return HWY_DYNAMIC_DISPATCH(Stockham)(table, a, b);
 }
+void transpose_tiles(const TileWalk& walk) { HWY_DYNAMIC_DISPATCH(TransposeTiles)(walk); }
+
+namespace {
+constexpr auto kL = static_cast<std::size_t>(kLanes);
+}  // namespace
+
 void rows_to_lanes(const float* src, std::size_t row_stride, int n, float* dst) {
-  HWY_DYNAMIC_DISPATCH(RowsToLanes)(src, row_stride, n, dst);
+  transpose_tiles({.src = src,
+                   .src_stride = row_stride,
+                   .src_step = kL,
+                   .dst = dst,
+                   .dst_stride = kL,
+                   .dst_step = kL * kL,
+                   .count = static_cast<std::size_t>(n) / kL});
 }
+
 void lanes_to_rows(const float* src, int n, float* dst, std::size_t row_stride, bool sign_correct,
                    int parity) {
-  HWY_DYNAMIC_DISPATCH(LanesToRows)(src, n, dst, row_stride, sign_correct, parity);
+  // (−1)^(x+y): tiles start at even columns, so the parity is the first row's.
+  transpose_tiles({.src = src,
+                   .src_stride = kL,
+                   .src_step = kL * kL,
+                   .dst = dst,
+                   .dst_stride = row_stride,
+                   .dst_step = kL,
+                   .count = static_cast<std::size_t>(n) / kL,
+                   .sign_parity = sign_correct ? parity : -1});
 }
+
 const char* dispatched_target() { return HWY_DYNAMIC_DISPATCH(DispatchedTarget)(); }
 double fma_loop(std::size_t iterations, std::size_t* lanes) {
   return HWY_DYNAMIC_DISPATCH(FmaLoop)(iterations, lanes);

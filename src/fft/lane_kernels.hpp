@@ -35,6 +35,19 @@ struct StageTable {
 /// and out. Returns true when the result ended in `b`.
 bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b);
 
+/// A run of 16×16 tile transposes: tile t reads src + t·src_step (rows src_stride apart) and
+/// writes dst + t·dst_step (rows dst_stride apart), dst[c·dst_stride + r] = src[r·src_stride +
+/// c]·(−1)^(sign_parity + r + c) for r, c < 16 (no sign when sign_parity < 0). In-register
+/// de-interleaving rounds on the vector's lanes (src/fft/transpose-inl.h).
+struct TileWalk {
+  const float* src;
+  std::size_t src_stride, src_step;
+  float* dst;
+  std::size_t dst_stride, dst_step;
+  std::size_t count;
+  int sign_parity = -1;
+};
+void transpose_tiles(const TileWalk& walk);
 /// dst[c·kLanes + l] = src[l·row_stride + c] for c < n, l < kLanes (16 rows → lane layout).
 void rows_to_lanes(const float* src, std::size_t row_stride, int n, float* dst);
 /// dst[l·row_stride + c] = src[c·kLanes + l]·(−1)^(parity + l + c) when sign_correct, else

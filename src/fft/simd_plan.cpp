@@ -56,42 +56,52 @@ detail::StageTable table_of(int n, const std::vector<detail::Stage>& stages,
 }  // namespace
 
 void SimdPlan2D::columns(SplitComplex plane, int block) const {
-  constexpr std::size_t kLanes = detail::kLanes;
+  constexpr auto kLanes = static_cast<std::size_t>(detail::kLanes);
   alignas(64) float lane_re[kLanes * kMaxSimdSize];
   alignas(64) float lane_im[kLanes * kMaxSimdSize];
-  const std::size_t origin = static_cast<std::size_t>(block) * kLanes;
-  for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
-    std::memcpy(lane_re + j * kLanes, plane.re + origin + j * static_cast<std::size_t>(n_),
-                kLanes * sizeof(float));
-    std::memcpy(lane_im + j * kLanes, plane.im + origin + j * static_cast<std::size_t>(n_),
-                kLanes * sizeof(float));
-  }
-  columns_from_lanes(lane_re, lane_im, plane, block);
-}
-
-void SimdPlan2D::columns_from_lanes(float* lane_re, float* lane_im, SplitComplex plane,
-                                    int block) const {
-  const detail::StageTable table = table_of(n_, stages_, twiddle_re_, twiddle_im_);
-  constexpr std::size_t kLanes = detail::kLanes;
   // Contiguous ping-pong buffers: a column block read in place would stride by N floats, and
   // power-of-two strides alias in the caches.
   alignas(64) float scratch_re[kLanes * kMaxSimdSize];
   alignas(64) float scratch_im[kLanes * kMaxSimdSize];
-  const detail::LaneBuffer a{lane_re, lane_im, kLanes};
-  const detail::LaneBuffer b{scratch_re, scratch_im, kLanes};
-  const detail::LaneBuffer result = detail::stockham(table, a, b) ? b : a;
+  const LaneBlock out{lane_re, lane_im};
+  const LaneBlock input = input_for(out, {scratch_re, scratch_im});
   const std::size_t origin = static_cast<std::size_t>(block) * kLanes;
-  for (std::size_t j = 0; j < static_cast<std::size_t>(n_); ++j) {
-    std::memcpy(plane.re + origin + j * static_cast<std::size_t>(n_), result.re + j * kLanes,
-                kLanes * sizeof(float));
-    std::memcpy(plane.im + origin + j * static_cast<std::size_t>(n_), result.im + j * kLanes,
-                kLanes * sizeof(float));
+  const auto n = static_cast<std::size_t>(n_);
+  for (std::size_t j = 0; j < n; ++j) {
+    std::memcpy(input.re + j * kLanes, plane.re + origin + j * n, kLanes * sizeof(float));
+    std::memcpy(input.im + j * kLanes, plane.im + origin + j * n, kLanes * sizeof(float));
   }
+  transform(out, {scratch_re, scratch_im});
+  for (std::size_t j = 0; j < n; ++j) {
+    std::memcpy(plane.re + origin + j * n, out.re + j * kLanes, kLanes * sizeof(float));
+    std::memcpy(plane.im + origin + j * n, out.im + j * kLanes, kLanes * sizeof(float));
+  }
+}
+
+void SimdPlan2D::transform(LaneBlock out, LaneBlock scratch) const {
+  const detail::StageTable table = table_of(n_, stages_, twiddle_re_, twiddle_im_);
+  const LaneBlock input = input_for(out, scratch);
+  const LaneBlock other = input.re == out.re ? scratch : out;
+  constexpr auto kLanes = static_cast<std::size_t>(detail::kLanes);
+  detail::stockham(table, {input.re, input.im, kLanes}, {other.re, other.im, kLanes});
+}
+
+void SimdPlan2D::tiles_to_lanes(const float* tiles, int block, float* dst) const {
+  constexpr auto kLanes = static_cast<std::size_t>(detail::kLanes);
+  const auto n = static_cast<std::size_t>(n_);
+  // Tile (block, b) is 256 contiguous floats in column block b.
+  detail::transpose_tiles({.src = tiles + static_cast<std::size_t>(block) * kLanes * kLanes,
+                           .src_stride = kLanes,
+                           .src_step = kLanes * n,
+                           .dst = dst,
+                           .dst_stride = kLanes,
+                           .dst_step = kLanes * kLanes,
+                           .count = n / kLanes});
 }
 
 void SimdPlan2D::rows(SplitComplex plane, int block, float* out_re, float* out_im) const {
   const detail::StageTable table = table_of(n_, stages_, twiddle_re_, twiddle_im_);
-  constexpr std::size_t kLanes = detail::kLanes;
+  constexpr auto kLanes = static_cast<std::size_t>(detail::kLanes);
   const std::size_t origin =
       static_cast<std::size_t>(block) * kLanes * static_cast<std::size_t>(n_);
   const auto row_stride = static_cast<std::size_t>(n_);

@@ -8,6 +8,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <string>
 
 namespace ocean::cpu {
@@ -22,14 +23,6 @@ void build_kernel_inputs(CascadeState& state, double loop_period_s) {
     state.rate[i] = EvolutionPhase::rate(state.spectrum.omega[i], loop_period_s);
     for (std::size_t c = 0; c < 4; ++c) state.packed_soa[c][i] = state.spectrum.packed[i][c];
   }
-  state.factor_re.assign(state.factor.size(), std::vector<float>(texels));
-  state.factor_im.assign(state.factor.size(), std::vector<float>(texels));
-  for (std::size_t p = 0; p < state.factor.size(); ++p) {
-    for (std::size_t i = 0; i < texels; ++i) {
-      state.factor_re[p][i] = state.factor[p][i].real();
-      state.factor_im[p][i] = state.factor[p][i].imag();
-    }
-  }
 }
 
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s) {
@@ -38,11 +31,9 @@ EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_per
   args.rate = state.rate.data();
   args.clock = EvolutionPhase(time_s, loop_period_s).clock();  // frac(t/T), or t
   for (std::size_t c = 0; c < 4; ++c) args.packed[c] = state.packed_soa[c].data();
-  args.planes = static_cast<int>(state.factor_re.size());
-  for (std::size_t p = 0; p < state.factor_re.size(); ++p) {
-    args.factor_re[p] = state.factor_re[p].data();
-    args.factor_im[p] = state.factor_im[p].data();
-  }
+  args.planes = state.planes;
+  args.dk = 2.0 * kPi / state.patch_size_m;
+  args.lambda = state.choppiness;
   return args;
 }
 
@@ -93,11 +84,23 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
                     "cascade " + std::to_string(c) + ": " + spectrum.status().message());
     }
     state.spectrum = std::move(spectrum).value();
-    build_plane_factors(state, config.normals, config.choppiness);
-    build_kernel_inputs(state, config.loop_period_s);
-    const auto planes = static_cast<std::size_t>(plane_count(config.normals));
-    state.plane_re.assign(planes, std::vector<float>(texels));
-    state.plane_im.assign(planes, std::vector<float>(texels));
+    state.planes = plane_count(config.normals);
+    state.choppiness = config.choppiness;
+    const auto planes = static_cast<std::size_t>(state.planes);
+    const bool fused = options_.pipeline == CpuPipeline::fused_simd;
+    if (fused) {
+      build_kernel_inputs(state, config.loop_period_s);
+      for (std::size_t p = 0; p < planes; ++p) {
+        state.tile_re.emplace_back(texels);
+        state.tile_im.emplace_back(texels);
+      }
+    } else {
+      build_plane_factors(state, config.normals, config.choppiness);
+    }
+    if (!fused || config.normals == NormalMethod::analytic) {  // row-major planes
+      state.plane_re.assign(planes, std::vector<float>(texels));
+      state.plane_im.assign(planes, std::vector<float>(texels));
+    }
     state.foam.assign(texels, 0.0f);
     state.mip_work.assign(4 * mip_chain_texels(config.resolution), 0.0f);
   }
@@ -107,6 +110,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   simd_plan_ = std::move(simd_plan).value();
   cascades_ = std::move(cascades);
   surface_args_.assign(cascades_.size(), SurfaceArgs{});
+  evolve_args_.assign(cascades_.size(), EvolveArgs{});
   has_stepped_ = false;
   return {};
 }
@@ -120,56 +124,81 @@ std::size_t CpuBackend::state_bytes_per_cascade() const {
   std::size_t total = bytes(s.spectrum.packed) + bytes(s.spectrum.omega) + bytes(s.spectrum.h0) +
                       bytes(s.rate) + bytes(s.foam) + bytes(s.mip_work);
   for (const auto& v : s.packed_soa) total += bytes(v);
-  for (std::size_t p = 0; p < s.factor.size(); ++p) {
-    total += bytes(s.factor[p]) + bytes(s.factor_re[p]) + bytes(s.factor_im[p]) +
-             bytes(s.plane_re[p]) + bytes(s.plane_im[p]);
-  }
+  for (const auto& v : s.factor) total += bytes(v);
+  for (const auto& v : s.plane_re) total += 2 * bytes(v);  // with plane_im
+  for (const auto& v : s.tile_re) total += 2 * v.size() * sizeof(float);
   return total;
 }
 
 void CpuBackend::synthesise_fused(double time_s, Frame& out) {
+  using LaneBlock = fft::SimdPlan2D::LaneBlock;
   const int n = config_.resolution;
   const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
   const std::size_t items = cascades_.size() * blocks;
   constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
-  // Columns: every (cascade, column block) evolves h̃ once, then each plane's spectrum goes
-  // through the column FFT without leaving the thread's stack buffers.
+  const std::size_t block_floats = kLane * static_cast<std::size_t>(n);
+  for (std::size_t c = 0; c < cascades_.size(); ++c)
+    evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
+  // Columns: every (cascade, column block) evolves h̃ once and writes each plane's spectrum
+  // where transform() wants it, so the result lands in the plane's tile storage without a copy
+  // (even stage counts) or after one contiguous copy (odd).
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
-    alignas(64) float h_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float h_im[kLane * fft::kMaxSimdSize];
-    alignas(64) float lane_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float lane_im[kLane * fft::kMaxSimdSize];
+    alignas(64) float scratch_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float scratch_im[kLane * fft::kMaxSimdSize];
+    const LaneBlock scratch{scratch_re, scratch_im};
     for (std::size_t item = begin; item < end; ++item) {
-      CascadeState& state = cascades_[item / blocks];
+      const std::size_t c = item / blocks;
+      CascadeState& state = cascades_[c];
       const int block = static_cast<int>(item % blocks);
-      const EvolveArgs args = evolve_args(state, time_s, config_.loop_period_s);
-      evolve_lanes(args, block, h_re, h_im);
-      for (std::size_t p = 0; p < state.plane_re.size(); ++p) {
-        apply_factor(args, static_cast<int>(p), block, h_re, h_im, lane_re, lane_im);
-        simd_plan_.columns_from_lanes(lane_re, lane_im, plane_of(state, p), block);
+      const auto planes = static_cast<std::size_t>(state.planes);
+      float* re[fft::kMaxPlanes];
+      float* im[fft::kMaxPlanes];
+      for (std::size_t p = 0; p < planes; ++p) {
+        re[p] = state.tile_re[p].data() + static_cast<std::size_t>(block) * block_floats;
+        im[p] = state.tile_im[p].data() + static_cast<std::size_t>(block) * block_floats;
+      }
+      evolve_planes(evolve_args_[c], block, re, im);
+      for (std::size_t p = 0; p < planes; ++p) {
+        const LaneBlock tile{re[p], im[p]};
+        if (simd_plan_.input_for(tile, scratch).re == tile.re) {
+          simd_plan_.transform(tile, scratch);
+        } else {  // odd stage count: the input must start in the scratch
+          std::memcpy(scratch_re, re[p], block_floats * sizeof(float));
+          std::memcpy(scratch_im, im[p], block_floats * sizeof(float));
+          simd_plan_.transform(tile, scratch);
+        }
       }
     }
   });
   // Rows: the row FFT of planes 0 (h + i·Dx) and 1 (Dz + i·…) feeds the displacement assembly
-  // with the sign folded in; gradient planes (analytic normals) go back to row-major order.
+  // with the sign folded in; gradient planes (analytic normals) go to the row-major planes.
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
     alignas(64) float p0_re[kLane * fft::kMaxSimdSize];
     alignas(64) float p0_im[kLane * fft::kMaxSimdSize];
     alignas(64) float p1_re[kLane * fft::kMaxSimdSize];
     alignas(64) float p1_im[kLane * fft::kMaxSimdSize];
+    alignas(64) float scratch_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float scratch_im[kLane * fft::kMaxSimdSize];
+    const LaneBlock scratch{scratch_re, scratch_im};
+    const auto row_fft = [&](CascadeState& state, std::size_t p, int block, LaneBlock lanes) {
+      const LaneBlock input = simd_plan_.input_for(lanes, scratch);
+      simd_plan_.tiles_to_lanes(state.tile_re[p].data(), block, input.re);
+      simd_plan_.tiles_to_lanes(state.tile_im[p].data(), block, input.im);
+      simd_plan_.transform(lanes, scratch);
+    };
     for (std::size_t item = begin; item < end; ++item) {
       const std::size_t c = item / blocks;
       CascadeState& state = cascades_[c];
       const int block = static_cast<int>(item % blocks);
-      simd_plan_.rows(plane_of(state, 0), block, p0_re, p0_im);
-      simd_plan_.rows(plane_of(state, 1), block, p1_re, p1_im);
+      row_fft(state, 0, block, {p0_re, p0_im});
+      row_fft(state, 1, block, {p1_re, p1_im});
       CascadeFrame& frame = out.cascades[c];
       assemble_displacement(p0_re, p0_im, p1_re, n, block, frame.displacement.data(),
                             frame.displacement_half.data());
-      if (state.plane_re.size() > 2) {
+      if (state.planes > 2) {
         simd_plan_.store_rows(p1_re, p1_im, plane_of(state, 1), block, true);
-        for (std::size_t p = 2; p < state.plane_re.size(); ++p) {
-          simd_plan_.rows(plane_of(state, p), block, p0_re, p0_im);
+        for (std::size_t p = 2; p < static_cast<std::size_t>(state.planes); ++p) {
+          row_fft(state, p, block, {p0_re, p0_im});
           simd_plan_.store_rows(p0_re, p0_im, plane_of(state, p), block, true);
         }
       }

@@ -2,7 +2,10 @@
 // packing and mips on planar float arrays, parallel over rows through the task runner.
 #pragma once
 
+#include <algorithm>
 #include <complex>
+#include <memory>
+#include <new>
 #include <span>
 #include <vector>
 
@@ -12,18 +15,44 @@
 
 namespace ocean::cpu {
 
+/// Zero-initialised float storage on 64-byte boundaries (whole cache lines for vector stores).
+class AlignedFloats {
+ public:
+  AlignedFloats() = default;
+  explicit AlignedFloats(std::size_t count)
+      : data_(static_cast<float*>(::operator new[](count * sizeof(float), kAlignment))),
+        size_(count) {
+    std::fill_n(data_.get(), count, 0.0f);
+  }
+  [[nodiscard]] float* data() { return data_.get(); }
+  [[nodiscard]] const float* data() const { return data_.get(); }
+  [[nodiscard]] std::size_t size() const { return size_; }
+
+ private:
+  static constexpr std::align_val_t kAlignment{64};
+  struct Free {
+    void operator()(float* p) const { ::operator delete[](p, kAlignment); }
+  };
+  std::unique_ptr<float[], Free> data_;
+  std::size_t size_ = 0;
+};
+
 /// Per-cascade state that lives across frames.
 struct CascadeState {
   int resolution = 0;
   double patch_size_m = 0.0;
+  int planes = 2;           ///< complex planes (plane_count of the normal method)
+  double choppiness = 0.0;  ///< λ
   InitialSpectrum spectrum;
-  /// plane p's spectrum is factor[p][i]·h̃(k_i, t): the fields packed two per complex plane.
+  /// Reference pipeline: plane p's spectrum is factor[p][i]·h̃(k_i, t), the fields packed two
+  /// per complex plane, in row-major planes (also the analytic gradients' output).
   std::vector<std::vector<std::complex<float>>> factor;
   std::vector<std::vector<float>> plane_re, plane_im;
-  // Structure-of-arrays copies for the SIMD kernels (kernels.hpp).
+  // Fused pipeline: structure-of-arrays inputs of the SIMD kernels (kernels.hpp) and each
+  // plane between the column and the row pass as column blocks in lane layout (fft.hpp).
   std::vector<double> rate;          ///< phase rate: harmonic index or ω/2π
   std::vector<float> packed_soa[4];  ///< S' components
-  std::vector<std::vector<float>> factor_re, factor_im;
+  std::vector<AlignedFloats> tile_re, tile_im;
   std::vector<float> foam;      ///< accumulated foam carried between frames
   std::vector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
 };
@@ -32,8 +61,8 @@ struct CascadeState {
 int plane_count(NormalMethod method);
 /// Fills state.factor for the configured method and choppiness (M.7.2).
 void build_plane_factors(CascadeState& state, NormalMethod method, double choppiness);
-/// Fills the structure-of-arrays inputs of the SIMD kernels (rate, packed_soa, factor_re/im)
-/// from the spectrum and the plane factors.
+/// Fills the structure-of-arrays inputs of the SIMD kernels (rate, packed_soa) from the
+/// spectrum.
 void build_kernel_inputs(CascadeState& state, double loop_period_s);
 /// The evolution kernels' arguments for time t (M.7.3).
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s);
@@ -107,6 +136,7 @@ class CpuBackend final : public Backend {
   fft::SimdPlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
   std::vector<SurfaceArgs> surface_args_;
+  std::vector<EvolveArgs> evolve_args_;
   StageTimes times_;
   double last_time_s_ = 0.0;
   bool has_stepped_ = false;

@@ -14,38 +14,38 @@ namespace ocean::cpu {
 
 int plane_count(NormalMethod method) { return method == NormalMethod::analytic ? 4 : 2; }
 
+void plane_factors(double kx, double kz, double lambda, int planes, std::complex<double>* f) {
+  const double k = std::hypot(kx, kz);
+  const double ux = k > 0.0 ? kx / k : 0.0;  // k̂
+  const double uz = k > 0.0 ? kz / k : 0.0;
+  using C = std::complex<double>;
+  const C I(0.0, 1.0);
+  // Field spectra as multiples of h̃ (M.7.2): D̃ = λ·i·k̂·h̃, slope = i·k·h̃,
+  // ∂D̃x/∂x = −λ·kx·k̂x·h̃, ∂D̃z/∂z = −λ·kz·k̂z·h̃, ∂D̃x/∂z = −λ·kz·k̂x·h̃.
+  const C h = 1.0, dx = lambda * I * ux, dz = lambda * I * uz;
+  f[0] = h + I * dx;  // (h, Dx)
+  if (planes == 2) {
+    f[1] = dz;  // (Dz, unused)
+    return;
+  }
+  const C hx = I * kx, hz = I * kz;
+  const C dxx = -lambda * kx * ux, dzz = -lambda * kz * uz, dxz = -lambda * kz * ux;
+  f[1] = dz + I * hx;    // (Dz, ∂h/∂x)
+  f[2] = hz + I * dxx;   // (∂h/∂z, ∂Dx/∂x)
+  f[3] = dzz + I * dxz;  // (∂Dz/∂z, ∂Dx/∂z)
+}
+
 void build_plane_factors(CascadeState& state, NormalMethod method, double choppiness) {
   const int n = state.resolution;
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   const double dk = 2.0 * kPi / state.patch_size_m;
-  const double lambda = choppiness;
   const int planes = plane_count(method);
   state.factor.assign(static_cast<std::size_t>(planes), std::vector<std::complex<float>>(texels));
   for (int row = 0; row < n; ++row) {
     for (int col = 0; col < n; ++col) {
       const std::size_t i = static_cast<std::size_t>(row * n + col);
-      const double kx = dk * (col - n / 2);
-      const double kz = dk * (row - n / 2);
-      const double k = std::hypot(kx, kz);
-      const double ux = k > 0.0 ? kx / k : 0.0;  // k̂
-      const double uz = k > 0.0 ? kz / k : 0.0;
-      using C = std::complex<double>;
-      const C I(0.0, 1.0);
-      // Field spectra as multiples of h̃ (M.7.2): D̃ = λ·i·k̂·h̃, slope = i·k·h̃,
-      // ∂D̃x/∂x = −λ·kx·k̂x·h̃, ∂D̃z/∂z = −λ·kz·k̂z·h̃, ∂D̃x/∂z = −λ·kz·k̂x·h̃.
-      const C h = 1.0, dx = lambda * I * ux, dz = lambda * I * uz;
-      C f[4];
-      if (method == NormalMethod::analytic) {
-        const C hx = I * kx, hz = I * kz;
-        const C dxx = -lambda * kx * ux, dzz = -lambda * kz * uz, dxz = -lambda * kz * ux;
-        f[0] = h + I * dx;     // (h, Dx)
-        f[1] = dz + I * hx;    // (Dz, ∂h/∂x)
-        f[2] = hz + I * dxx;   // (∂h/∂z, ∂Dx/∂x)
-        f[3] = dzz + I * dxz;  // (∂Dz/∂z, ∂Dx/∂z)
-      } else {
-        f[0] = h + I * dx;  // (h, Dx)
-        f[1] = dz;          // (Dz, unused)
-      }
+      std::complex<double> f[4];
+      plane_factors(dk * (col - n / 2), dk * (row - n / 2), choppiness, planes, f);
       for (int p = 0; p < planes; ++p) {
         state.factor[static_cast<std::size_t>(p)][i] = std::complex<float>(f[p]);
       }

@@ -16,6 +16,8 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include "fft/transpose-inl.h"
+
 #include <cmath>
 
 #include "cpu/cpu_backend.hpp"
@@ -29,7 +31,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr std::size_t kLanes = 16;
 
-void EvolveLanes(const EvolveArgs& a, int block, float* h_re, float* h_im) {
+void EvolvePlanes(const EvolveArgs& a, int block, float* const* out_re, float* const* out_im) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const hn::ScalableTag<double> dd;
@@ -38,6 +40,9 @@ void EvolveLanes(const EvolveArgs& a, int block, float* h_re, float* h_im) {
   const auto one_i = hn::Set(di, 1), two_i = hn::Set(di, 2);
   const auto clock = hn::Set(dd, a.clock);
   const auto n = static_cast<std::size_t>(a.n);
+  const auto dk = static_cast<float>(a.dk), lambda = static_cast<float>(a.lambda);
+  const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), neg_lambda = hn::Set(df, -lambda);
+  const int first_column = block * static_cast<int>(kLanes) - a.n / 2;
   for (std::size_t row = 0; row < n; ++row) {
     const std::size_t base = row * n + static_cast<std::size_t>(block) * kLanes;
     // Phase in turns, frac(rate·clock), in double: exact for the looping harmonics (M.7.3).
@@ -47,6 +52,7 @@ void EvolveLanes(const EvolveArgs& a, int block, float* h_re, float* h_im) {
       v = hn::Sub(v, hn::Floor(v));
       hn::StoreU(hn::DemoteTo(dfh, v), dfh, turns + l);
     }
+    const auto kz = hn::Set(df, dk * static_cast<float>(static_cast<int>(row) - a.n / 2));
     for (std::size_t l = 0; l < kLanes; l += nf) {
       // sin/cos of 2π·f: quarter turn q = round(4f), x = 2π(f − q/4) ∈ [−π/4, π/4].
       const auto f = hn::Load(df, turns + l);
@@ -74,25 +80,37 @@ void EvolveLanes(const EvolveArgs& a, int block, float* h_re, float* h_im) {
           hn::MulAdd(hn::LoadU(df, a.packed[0] + i), c, hn::Mul(hn::LoadU(df, a.packed[2] + i), s));
       const auto hi =
           hn::MulAdd(hn::LoadU(df, a.packed[1] + i), c, hn::Mul(hn::LoadU(df, a.packed[3] + i), s));
-      hn::StoreU(hr, df, h_re + row * kLanes + l);
-      hn::StoreU(hi, df, h_im + row * kLanes + l);
-    }
-  }
-}
-
-void ApplyFactor(const EvolveArgs& a, int plane, int block, const float* h_re, const float* h_im,
-                 float* lane_re, float* lane_im) {
-  const hn::ScalableTag<float> df;
-  const auto n = static_cast<std::size_t>(a.n);
-  for (std::size_t row = 0; row < n; ++row) {
-    const std::size_t base = row * n + static_cast<std::size_t>(block) * kLanes;
-    for (std::size_t l = 0; l < kLanes; l += hn::Lanes(df)) {
-      const std::size_t i = base + l, j = row * kLanes + l;
-      const auto hr = hn::Load(df, h_re + j), hi = hn::Load(df, h_im + j);
-      const auto fr = hn::LoadU(df, a.factor_re[plane] + i);
-      const auto fi = hn::LoadU(df, a.factor_im[plane] + i);
-      hn::Store(hn::MulSub(fr, hr, hn::Mul(fi, hi)), df, lane_re + j);
-      hn::Store(hn::MulAdd(fr, hi, hn::Mul(fi, hr)), df, lane_im + j);
+      // k̂ = k/|k| (0 at k = 0) from the texel's wave vector (M.7.2).
+      const auto kx = hn::Mul(hn::Set(df, dk),
+                              hn::ConvertTo(df, hn::Iota(di, first_column + static_cast<int>(l))));
+      const auto k2 = hn::MulAdd(kx, kx, hn::Mul(kz, kz));
+      const auto has_k = hn::Gt(k2, zero);
+      const auto inv_k =
+          hn::IfThenElseZero(has_k, hn::Div(one, hn::Sqrt(hn::IfThenElse(has_k, k2, one))));
+      const auto ux = hn::Mul(kx, inv_k), uz = hn::Mul(kz, inv_k);
+      const std::size_t j = row * kLanes + l;
+      // Plane 0: (1 − λ·k̂x)·h̃ = h + i·Dx. Plane 1: i·λ·k̂z·h̃ = Dz (+ i·∂h/∂x: −kx·h̃).
+      const auto f0 = hn::MulAdd(neg_lambda, ux, one);
+      hn::Store(hn::Mul(f0, hr), df, out_re[0] + j);
+      hn::Store(hn::Mul(f0, hi), df, out_im[0] + j);
+      const auto dz = hn::Mul(hn::Set(df, lambda), uz);
+      if (a.planes == 2) {
+        hn::Store(hn::Neg(hn::Mul(dz, hi)), df, out_re[1] + j);
+        hn::Store(hn::Mul(dz, hr), df, out_im[1] + j);
+        continue;
+      }
+      const auto neg_kx = hn::Neg(kx);
+      hn::Store(hn::MulSub(neg_kx, hr, hn::Mul(dz, hi)), df, out_re[1] + j);
+      hn::Store(hn::MulAdd(neg_kx, hi, hn::Mul(dz, hr)), df, out_im[1] + j);
+      // Plane 2: i·(kz − λ·kx·k̂x)·h̃ = ∂h/∂z + i·∂Dx/∂x.
+      const auto g = hn::MulAdd(hn::Mul(neg_lambda, kx), ux, kz);
+      hn::Store(hn::Neg(hn::Mul(g, hi)), df, out_re[2] + j);
+      hn::Store(hn::Mul(g, hr), df, out_im[2] + j);
+      // Plane 3: −λ·kz·(k̂z + i·k̂x)·h̃ = ∂Dz/∂z + i·∂Dx/∂z.
+      const auto lz = hn::Mul(neg_lambda, kz);
+      const auto ar = hn::Mul(lz, uz), ai = hn::Mul(lz, ux);
+      hn::Store(hn::MulSub(ar, hr, hn::Mul(ai, hi)), df, out_re[3] + j);
+      hn::Store(hn::MulAdd(ar, hi, hn::Mul(ai, hr)), df, out_im[3] + j);
     }
   }
 }
@@ -103,40 +121,38 @@ void AssembleDisplacement(const float* h, const float* dx, const float* dz, int 
   const std::size_t step = hn::Lanes(df);
   const auto n = static_cast<std::size_t>(n_int);
   const std::size_t row0 = static_cast<std::size_t>(block) * kLanes;
-  // (−1)^(x+y) for an even first column: +1, −1, +1, ... (eq. 43); odd rows flip it.
-  alignas(64) float alternate[kLanes];
-  for (std::size_t c = 0; c < kLanes; ++c) alternate[c] = (c & 1u) ? -1.0f : 1.0f;
-  alignas(64) float row_h[2048], row_dx[2048], row_dz[2048];
-  for (std::size_t l = 0; l < kLanes; ++l) {
-    const std::size_t row = row0 + l;
-    for (std::size_t c = 0; c < n; ++c) {  // lane layout → this row's values
-      row_h[c] = h[c * kLanes + l];
-      row_dx[c] = dx[c * kLanes + l];
-      row_dz[c] = dz[c * kLanes + l];
-    }
-    const float row_sign = (row & 1u) ? -1.0f : 1.0f;
-    float* out = displacement + 3 * row * n;
-    std::uint16_t* half = displacement_half + 4 * row * n;
-    for (std::size_t c = 0; c < n; c += step) {
-      // c is even unless a vector holds a single lane.
-      const auto sign = hn::Mul(hn::LoadU(df, alternate + (c & 1u)), hn::Set(df, row_sign));
-      const auto vx = hn::Mul(hn::Load(df, row_dx + c), sign);
-      const auto vh = hn::Mul(hn::Load(df, row_h + c), sign);
-      const auto vz = hn::Mul(hn::Load(df, row_dz + c), sign);
-      hn::StoreInterleaved3(vx, vh, vz, df, out + 3 * c);
+  // Tile by tile: lane layout → row-major 16×16 with (−1)^(x+y) (eq. 43; tiles start at even
+  // rows and columns), then the rows interleaved into float3 and half4.
+  alignas(64) float tile[3][kLanes * kLanes];
+  for (std::size_t c0 = 0; c0 < n; c0 += kLanes) {
+    const float* src[3] = {dx, h, dz};
+    for (std::size_t k = 0; k < 3; ++k)
+      fft::detail::HWY_NAMESPACE::Transpose16Tile(src[k] + c0 * kLanes, kLanes, tile[k], kLanes,
+                                                  0);
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      const std::size_t row = row0 + l;
+      float* out = displacement + 3 * (row * n + c0);
+      std::uint16_t* half = displacement_half + 4 * (row * n + c0);
+      for (std::size_t c = 0; c < kLanes; c += step) {
+        const auto vx = hn::Load(df, tile[0] + l * kLanes + c);
+        const auto vh = hn::Load(df, tile[1] + l * kLanes + c);
+        const auto vz = hn::Load(df, tile[2] + l * kLanes + c);
+        hn::StoreInterleaved3(vx, vh, vz, df, out + 3 * c);
 #if HWY_TARGET >= HWY_SSE4 || defined(HWY_DISABLE_F16C)
-      // No F16C: Highway's emulated conversion truncates; keep round-to-nearest-even.
-      for (std::size_t i = c; i < c + step; ++i) {
-        for (std::size_t k = 0; k < 3; ++k) half[4 * i + k] = float_to_half(out[3 * i + k]);
-        half[4 * i + 3] = 0;
-      }
+        // No F16C: Highway's emulated conversion truncates; keep round-to-nearest-even.
+        for (std::size_t i = c; i < c + step; ++i) {
+          for (std::size_t k = 0; k < 3; ++k) half[4 * i + k] = float_to_half(out[3 * i + k]);
+          half[4 * i + 3] = 0;
+        }
 #else
-      const hn::Rebind<hwy::float16_t, decltype(df)> dh;
-      const hn::Rebind<std::uint16_t, decltype(df)> du;
-      hn::StoreInterleaved4(hn::BitCast(du, hn::DemoteTo(dh, vx)),
-                            hn::BitCast(du, hn::DemoteTo(dh, vh)),
-                            hn::BitCast(du, hn::DemoteTo(dh, vz)), hn::Zero(du), du, half + 4 * c);
+        const hn::Rebind<hwy::float16_t, decltype(df)> dh;
+        const hn::Rebind<std::uint16_t, decltype(df)> du;
+        hn::StoreInterleaved4(hn::BitCast(du, hn::DemoteTo(dh, vx)),
+                              hn::BitCast(du, hn::DemoteTo(dh, vh)),
+                              hn::BitCast(du, hn::DemoteTo(dh, vz)), hn::Zero(du), du,
+                              half + 4 * c);
 #endif
+      }
     }
   }
 }
@@ -287,8 +303,7 @@ HWY_AFTER_NAMESPACE();
 #if HWY_ONCE
 namespace ocean::cpu {
 
-HWY_EXPORT(EvolveLanes);
-HWY_EXPORT(ApplyFactor);
+HWY_EXPORT(EvolvePlanes);
 HWY_EXPORT(AssembleDisplacement);
 HWY_EXPORT(SurfaceRowCentral);
 HWY_EXPORT(MipRow);
@@ -301,13 +316,8 @@ void surface_row_central(const SurfaceArgs& args, int row) {
   HWY_DYNAMIC_DISPATCH(SurfaceRowCentral)(args, row);
 }
 
-void evolve_lanes(const EvolveArgs& args, int block, float* h_re, float* h_im) {
-  HWY_DYNAMIC_DISPATCH(EvolveLanes)(args, block, h_re, h_im);
-}
-
-void apply_factor(const EvolveArgs& args, int plane, int block, const float* h_re,
-                  const float* h_im, float* lane_re, float* lane_im) {
-  HWY_DYNAMIC_DISPATCH(ApplyFactor)(args, plane, block, h_re, h_im, lane_re, lane_im);
+void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im) {
+  HWY_DYNAMIC_DISPATCH(EvolvePlanes)(args, block, re, im);
 }
 
 void assemble_displacement(const float* h, const float* dx, const float* dz, int n, int block,
@@ -319,13 +329,18 @@ void evolve_texel_reference(const EvolveArgs& a, std::size_t i, float* re, float
   // Same recipe as EvolutionPhase (M.7.3) on the same rate/clock inputs.
   const double turns = a.rate[i] * a.clock;
   const double phase = 2.0 * 3.14159265358979323846 * (turns - std::floor(turns));
-  const float c = static_cast<float>(std::cos(phase));
-  const float s = static_cast<float>(std::sin(phase));
-  const float hr = a.packed[0][i] * c + a.packed[2][i] * s;
-  const float hi = a.packed[1][i] * c + a.packed[3][i] * s;
+  const double c = std::cos(phase), s = std::sin(phase);
+  const std::complex<double> h(a.packed[0][i] * c + a.packed[2][i] * s,
+                               a.packed[1][i] * c + a.packed[3][i] * s);
+  const auto n = static_cast<std::size_t>(a.n);
+  const double kx = a.dk * (static_cast<double>(i % n) - static_cast<double>(n / 2));
+  const double kz = a.dk * (static_cast<double>(i / n) - static_cast<double>(n / 2));
+  std::complex<double> f[4];
+  plane_factors(kx, kz, a.lambda, a.planes, f);
   for (int p = 0; p < a.planes; ++p) {
-    re[p] = a.factor_re[p][i] * hr - a.factor_im[p][i] * hi;
-    im[p] = a.factor_re[p][i] * hi + a.factor_im[p][i] * hr;
+    const std::complex<double> v = f[p] * h;
+    re[p] = static_cast<float>(v.real());
+    im[p] = static_cast<float>(v.imag());
   }
 }
 

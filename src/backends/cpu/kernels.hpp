@@ -3,6 +3,7 @@
 // from a row block. Lane layout as in src/fft/lane_kernels.hpp: 16 lines interleaved.
 #pragma once
 
+#include <complex>
 #include <cstddef>
 #include <cstdint>
 
@@ -16,20 +17,24 @@ struct EvolveArgs {
   const double* rate = nullptr;
   double clock = 0.0;
   const float* packed[4] = {};  ///< S' components (M.6.5)
-  int planes = 0;
-  const float* factor_re[4] = {};  ///< plane p's spectrum is factor[p]·h̃ (M.7.2)
-  const float* factor_im[4] = {};
+  /// 2: planes (h + i·Dx, Dz); 4: the analytic-gradient planes as well (M.7.2). Each plane's
+  /// spectrum is a factor of k times h̃, computed from k = Δk·(col − N/2, row − N/2).
+  int planes = 2;
+  double dk = 0.0;      ///< 2π/L
+  double lambda = 0.0;  ///< choppiness
 };
 
-/// Evolves h̃(k, t) on columns [16·block, 16·block + 16) into lane layout: h_re/h_im[row·16 + l]
-/// for column 16·block + l (N·16 floats each, 64-byte aligned).
-void evolve_lanes(const EvolveArgs& args, int block, float* h_re, float* h_im);
-/// Plane `plane`'s spectrum factor[plane]·h̃ for the same block, lane layout (aligned).
-void apply_factor(const EvolveArgs& args, int plane, int block, const float* h_re,
-                  const float* h_im, float* lane_re, float* lane_im);
+/// Plane spectra as multiples of h̃ at wave vector (kx, kz) (M.7.2): f[0..1] for 2 planes,
+/// f[0..3] for 4. The oracle's double-precision formulas, shared with the reference pipeline.
+void plane_factors(double kx, double kz, double lambda, int planes, std::complex<double>* f);
+
+/// Evolves h̃(k, t) on columns [16·block, 16·block + 16) and writes every plane's spectrum
+/// factor·h̃ in lane layout: re[p]/im[p][row·16 + l] for column 16·block + l (N·16 floats each,
+/// 64-byte aligned).
+void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im);
 
 /// Reference evolution of one texel with the same phase recipe in double precision and
-/// std::cos/std::sin (the oracle the SIMD kernel is tested against).
+/// std::cos/std::sin (the oracle the SIMD kernel is tested against): every plane's value.
 void evolve_texel_reference(const EvolveArgs& args, std::size_t i, float* re, float* im);
 
 /// From a row block's transformed planes in lane layout (plane 0 = h + i·Dx, plane 1 = Dz + i·…)
