@@ -132,8 +132,8 @@ TEST(CpuFused, EvolutionKernelMatchesScalarPhaseRecipe) {
           for (std::size_t row = 0; row < 64; ++row) {
             for (std::size_t l = 0; l < 16; ++l) {
               float ref_re[4], ref_im[4];
-              ocean::cpu::evolve_texel_reference(args, row * 64 + 16 * std::size_t(block) + l,
-                                                 ref_re, ref_im);
+              ocean::cpu::evolve_texel_reference(args, int(row), 16 * block + int(l), ref_re,
+                                                 ref_im);
               for (std::size_t p = 0; p < std::size_t(planes); ++p) {
                 const double scale = p == 0 ? 1.0 + state.choppiness : 1.0 + k_max;
                 const std::size_t j = row * 16 + l;

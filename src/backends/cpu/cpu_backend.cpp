@@ -16,21 +16,38 @@ namespace ocean::cpu {
 // Structure-of-arrays copies of the spectrum for the SIMD kernels, and the phase rate of each
 // texel: the harmonic index j = ω'/ω0 when looping (exact phase, M.7.3), ω/2π otherwise.
 void build_kernel_inputs(CascadeState& state, double loop_period_s) {
-  const std::size_t texels = state.spectrum.packed.size();
-  state.rate.resize(texels);
-  for (auto& component : state.packed_soa) component.resize(texels);
-  for (std::size_t i = 0; i < texels; ++i) {
-    state.rate[i] = EvolutionPhase::rate(state.spectrum.omega[i], loop_period_s);
-    for (std::size_t c = 0; c < 4; ++c) state.packed_soa[c][i] = state.spectrum.packed[i][c];
+  const bool looping = loop_period_s > 0.0;
+  const std::size_t record = evolution_record(looping);
+  const auto n = static_cast<std::size_t>(state.resolution);
+  constexpr auto kLanes = static_cast<std::size_t>(fft::SimdPlan2D::kBlock);
+  state.evolution_spectrum = AlignedFloats(n * n / kLanes * record);
+  state.evolution_rate.assign(looping ? 0 : n * n, 0.0);
+  float* out = state.evolution_spectrum.data();
+  for (std::size_t block = 0; block < n / kLanes; ++block) {
+    for (std::size_t row = 0; row < n; ++row) {
+      const std::size_t r = block * n + row;
+      for (std::size_t l = 0; l < kLanes; ++l) {
+        const std::size_t i = row * n + block * kLanes + l;
+        for (std::size_t c = 0; c < 4; ++c)
+          out[r * record + c * kLanes + l] = state.spectrum.packed[i][c];
+        const double rate = EvolutionPhase::rate(state.spectrum.omega[i], loop_period_s);
+        if (looping) {
+          out[r * record + 4 * kLanes + l] = static_cast<float>(rate);  // exact: an integer
+        } else {
+          state.evolution_rate[r * kLanes + l] = rate;
+        }
+      }
+    }
   }
 }
 
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s) {
   EvolveArgs args;
   args.n = state.resolution;
-  args.rate = state.rate.data();
+  args.spectrum = state.evolution_spectrum.data();
+  args.record = evolution_record(loop_period_s > 0.0);
+  args.rate = state.evolution_rate.empty() ? nullptr : state.evolution_rate.data();
   args.clock = EvolutionPhase(time_s, loop_period_s).clock();  // frac(t/T), or t
-  for (std::size_t c = 0; c < 4; ++c) args.packed[c] = state.packed_soa[c].data();
   args.planes = state.planes;
   args.dk = 2.0 * kPi / state.patch_size_m;
   args.lambda = state.choppiness;
@@ -122,8 +139,8 @@ std::size_t CpuBackend::state_bytes_per_cascade() const {
   const CascadeState& s = cascades_.front();
   const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
   std::size_t total = bytes(s.spectrum.packed) + bytes(s.spectrum.omega) + bytes(s.spectrum.h0) +
-                      bytes(s.rate) + bytes(s.foam) + bytes(s.mip_work);
-  for (const auto& v : s.packed_soa) total += bytes(v);
+                      bytes(s.evolution_rate) + bytes(s.foam) + bytes(s.mip_work) +
+                      s.evolution_spectrum.size() * sizeof(float);
   for (const auto& v : s.factor) total += bytes(v);
   for (const auto& v : s.plane_re) total += 2 * bytes(v);  // with plane_im
   for (const auto& v : s.tile_re) total += 2 * v.size() * sizeof(float);

@@ -50,8 +50,8 @@ struct CascadeState {
   std::vector<std::vector<float>> plane_re, plane_im;
   // Fused pipeline: structure-of-arrays inputs of the SIMD kernels (kernels.hpp) and each
   // plane between the column and the row pass as column blocks in lane layout (fft.hpp).
-  std::vector<double> rate;          ///< phase rate: harmonic index or ω/2π
-  std::vector<float> packed_soa[4];  ///< S' components
+  AlignedFloats evolution_spectrum;   ///< EvolveArgs::spectrum records
+  std::vector<double> evolution_rate;  ///< EvolveArgs::rate (not looping)
   std::vector<AlignedFloats> tile_re, tile_im;
   std::vector<float> foam;      ///< accumulated foam carried between frames
   std::vector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
@@ -61,8 +61,7 @@ struct CascadeState {
 int plane_count(NormalMethod method);
 /// Fills state.factor for the configured method and choppiness (M.7.2).
 void build_plane_factors(CascadeState& state, NormalMethod method, double choppiness);
-/// Fills the structure-of-arrays inputs of the SIMD kernels (rate, packed_soa) from the
-/// spectrum.
+/// Fills the evolution kernel's inputs (EvolveArgs::spectrum and ::rate) from the spectrum.
 void build_kernel_inputs(CascadeState& state, double loop_period_s);
 /// The evolution kernels' arguments for time t (M.7.3).
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s);

@@ -42,20 +42,31 @@ void EvolvePlanes(const EvolveArgs& a, int block, float* const* out_re, float* c
   const auto n = static_cast<std::size_t>(a.n);
   const auto dk = static_cast<float>(a.dk), lambda = static_cast<float>(a.lambda);
   const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), neg_lambda = hn::Set(df, -lambda);
-  const int first_column = block * static_cast<int>(kLanes) - a.n / 2;
+  alignas(64) float kx_lanes[kLanes];  // kx of the block's columns, the same on every row
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    kx_lanes[l] =
+        dk * static_cast<float>(block * static_cast<int>(kLanes) + static_cast<int>(l) - a.n / 2);
+  }
+  const auto first_record = static_cast<std::size_t>(block) * n;
   for (std::size_t row = 0; row < n; ++row) {
-    const std::size_t base = row * n + static_cast<std::size_t>(block) * kLanes;
-    // Phase in turns, frac(rate·clock), in double: exact for the looping harmonics (M.7.3).
-    alignas(64) float turns[kLanes];
-    for (std::size_t l = 0; l < kLanes; l += nd) {
-      auto v = hn::Mul(hn::LoadU(dd, a.rate + base + l), clock);
-      v = hn::Sub(v, hn::Floor(v));
-      hn::StoreU(hn::DemoteTo(dfh, v), dfh, turns + l);
-    }
+    const float* record = a.spectrum + (first_record + row) * a.record;
     const auto kz = hn::Set(df, dk * static_cast<float>(static_cast<int>(row) - a.n / 2));
     for (std::size_t l = 0; l < kLanes; l += nf) {
+      // Phase in turns, frac(rate·clock), in double: exact for the looping harmonics (M.7.3).
+      const auto turns = [&](std::size_t lane) {
+        const auto rate = a.rate == nullptr
+                              ? hn::PromoteTo(dd, hn::LoadU(dfh, record + 4 * kLanes + lane))
+                              : hn::LoadU(dd, a.rate + (first_record + row) * kLanes + lane);
+        const auto v = hn::Mul(rate, clock);
+        return hn::DemoteTo(dfh, hn::Sub(v, hn::Floor(v)));
+      };
+#if HWY_TARGET == HWY_SCALAR
+      (void)nd;
+      const auto f = turns(l);
+#else
+      const auto f = hn::Combine(df, turns(l + nd), turns(l));  // in registers: no store
+#endif
       // sin/cos of 2π·f: quarter turn q = round(4f), x = 2π(f − q/4) ∈ [−π/4, π/4].
-      const auto f = hn::Load(df, turns + l);
       const auto q = hn::NearestInt(hn::Mul(f, hn::Set(df, 4.0f)));
       const auto x = hn::Mul(hn::NegMulAdd(hn::ConvertTo(df, q), hn::Set(df, 0.25f), f),
                              hn::Set(df, 6.283185307179586f));
@@ -75,18 +86,26 @@ void EvolvePlanes(const EvolveArgs& a, int block, float* const* out_re, float* c
       const auto s = hn::Xor(hn::IfThenElse(swap, cx, sx), sin_flip);
       const auto c = hn::Xor(hn::IfThenElse(swap, sx, cx), cos_flip);
       // h̃(k, t) from the packed spectrum with one FMA per component (M.6.5).
-      const std::size_t i = base + l;
-      const auto hr =
-          hn::MulAdd(hn::LoadU(df, a.packed[0] + i), c, hn::Mul(hn::LoadU(df, a.packed[2] + i), s));
-      const auto hi =
-          hn::MulAdd(hn::LoadU(df, a.packed[1] + i), c, hn::Mul(hn::LoadU(df, a.packed[3] + i), s));
+      const auto p0 = hn::Load(df, record + l), p1 = hn::Load(df, record + kLanes + l);
+      const auto p2 = hn::Load(df, record + 2 * kLanes + l);
+      const auto p3 = hn::Load(df, record + 3 * kLanes + l);
+      const auto hr = hn::MulAdd(p0, c, hn::Mul(p2, s));
+      const auto hi = hn::MulAdd(p1, c, hn::Mul(p3, s));
       // k̂ = k/|k| (0 at k = 0) from the texel's wave vector (M.7.2).
-      const auto kx = hn::Mul(hn::Set(df, dk),
-                              hn::ConvertTo(df, hn::Iota(di, first_column + static_cast<int>(l))));
+      const auto kx = hn::Load(df, kx_lanes + l);
       const auto k2 = hn::MulAdd(kx, kx, hn::Mul(kz, kz));
+      // 1/|k| by the reciprocal square-root estimate (12–14 bits) and one Newton step
+      // (≈ 1 ulp); the scalar target's estimate is coarser, so it divides.
       const auto has_k = hn::Gt(k2, zero);
-      const auto inv_k =
-          hn::IfThenElseZero(has_k, hn::Div(one, hn::Sqrt(hn::IfThenElse(has_k, k2, one))));
+      const auto safe = hn::IfThenElse(has_k, k2, one);
+#if HWY_TARGET == HWY_SCALAR
+      const auto y = hn::Div(one, hn::Sqrt(safe));
+#else
+      auto y = hn::ApproximateReciprocalSqrt(safe);
+      y = hn::Mul(y, hn::NegMulAdd(hn::Mul(hn::Set(df, 0.5f), safe), hn::Mul(y, y),
+                                   hn::Set(df, 1.5f)));
+#endif
+      const auto inv_k = hn::IfThenElseZero(has_k, y);
       const auto ux = hn::Mul(kx, inv_k), uz = hn::Mul(kz, inv_k);
       const std::size_t j = row * kLanes + l;
       // Plane 0: (1 − λ·k̂x)·h̃ = h + i·Dx. Plane 1: i·λ·k̂z·h̃ = Dz (+ i·∂h/∂x: −kx·h̃).
@@ -325,16 +344,21 @@ void assemble_displacement(const float* h, const float* dx, const float* dz, int
   HWY_DYNAMIC_DISPATCH(AssembleDisplacement)(h, dx, dz, n, block, displacement, displacement_half);
 }
 
-void evolve_texel_reference(const EvolveArgs& a, std::size_t i, float* re, float* im) {
+void evolve_texel_reference(const EvolveArgs& a, int row, int col, float* re, float* im) {
+  constexpr std::size_t kLanes = 16;
+  const auto n = static_cast<std::size_t>(a.n);
+  const auto block = static_cast<std::size_t>(col) / kLanes, l = static_cast<std::size_t>(col) % kLanes;
+  const std::size_t r = block * n + static_cast<std::size_t>(row);
+  const float* record = a.spectrum + r * a.record;
   // Same recipe as EvolutionPhase (M.7.3) on the same rate/clock inputs.
-  const double turns = a.rate[i] * a.clock;
+  const double rate = a.rate == nullptr ? record[4 * kLanes + l] : a.rate[r * kLanes + l];
+  const double turns = rate * a.clock;
   const double phase = 2.0 * 3.14159265358979323846 * (turns - std::floor(turns));
   const double c = std::cos(phase), s = std::sin(phase);
-  const std::complex<double> h(a.packed[0][i] * c + a.packed[2][i] * s,
-                               a.packed[1][i] * c + a.packed[3][i] * s);
-  const auto n = static_cast<std::size_t>(a.n);
-  const double kx = a.dk * (static_cast<double>(i % n) - static_cast<double>(n / 2));
-  const double kz = a.dk * (static_cast<double>(i / n) - static_cast<double>(n / 2));
+  const std::complex<double> h(record[l] * c + record[2 * kLanes + l] * s,
+                               record[kLanes + l] * c + record[3 * kLanes + l] * s);
+  const double kx = a.dk * (col - a.n / 2);
+  const double kz = a.dk * (row - a.n / 2);
   std::complex<double> f[4];
   plane_factors(kx, kz, a.lambda, a.planes, f);
   for (int p = 0; p < a.planes; ++p) {

@@ -9,20 +9,29 @@
 
 namespace ocean::cpu {
 
-/// Inputs of the evolution of one cascade, structure of arrays over the N×N texels.
+/// Inputs of the evolution of one cascade, in column-block order so that a column block's
+/// evolution reads one sequential stream: for column block b and row j, a record of `record`
+/// floats at spectrum + (b·N + j)·record holds the S' components of the block's 16 columns
+/// (4 × 16 floats, M.6.5) and, when looping, their harmonic indices (16 floats, exact
+/// integers).
 struct EvolveArgs {
   int n = 0;
-  /// Phase in turns is frac(rate[i]·clock): rate = harmonic index j and clock = frac(t/T) when
-  /// looping (exact, M.7.3), rate = ω/2π and clock = t otherwise.
+  const float* spectrum = nullptr;
+  std::size_t record = 64;
+  /// Not looping: ω/2π per texel, block-major ((b·N + j)·16 + l). Looping: null.
   const double* rate = nullptr;
+  /// Phase in turns is frac(rate·clock): rate = harmonic index and clock = frac(t/T) when
+  /// looping (exact, M.7.3), rate = ω/2π and clock = t otherwise.
   double clock = 0.0;
-  const float* packed[4] = {};  ///< S' components (M.6.5)
   /// 2: planes (h + i·Dx, Dz); 4: the analytic-gradient planes as well (M.7.2). Each plane's
   /// spectrum is a factor of k times h̃, computed from k = Δk·(col − N/2, row − N/2).
   int planes = 2;
   double dk = 0.0;      ///< 2π/L
   double lambda = 0.0;  ///< choppiness
 };
+
+/// Record length of EvolveArgs::spectrum: 80 floats when looping, 64 otherwise.
+constexpr std::size_t evolution_record(bool looping) { return looping ? 80 : 64; }
 
 /// Plane spectra as multiples of h̃ at wave vector (kx, kz) (M.7.2): f[0..1] for 2 planes,
 /// f[0..3] for 4. The oracle's double-precision formulas, shared with the reference pipeline.
@@ -33,9 +42,9 @@ void plane_factors(double kx, double kz, double lambda, int planes, std::complex
 /// 64-byte aligned).
 void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im);
 
-/// Reference evolution of one texel with the same phase recipe in double precision and
+/// Reference evolution of texel (row, col) with the same phase recipe in double precision and
 /// std::cos/std::sin (the oracle the SIMD kernel is tested against): every plane's value.
-void evolve_texel_reference(const EvolveArgs& args, std::size_t i, float* re, float* im);
+void evolve_texel_reference(const EvolveArgs& args, int row, int col, float* re, float* im);
 
 /// From a row block's transformed planes in lane layout (plane 0 = h + i·Dx, plane 1 = Dz + i·…)
 /// writes rows [16·block, 16·block + 16) of the displacement float3 and half4 maps, applying
