@@ -1,4 +1,4 @@
-// SIMD kernels of the lane-blocked inverse FFT: mixed radix-4/2 Stockham autosort stages on 16
+// SIMD kernels of the lane-blocked inverse FFT: mixed radix-8/4/2 Stockham autosort stages on 16
 // interleaved signals, and the 16-row transposes with the (−1)^(x+y) shift. Compiled once per
 // instruction set by Highway and dispatched at run time.
 //
@@ -48,7 +48,50 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       in_re[r] = a.re + src, in_im[r] = a.im + src;
       out_re[r] = b.re + dst, out_im[r] = b.im + dst;
     }
-    if constexpr (R == 4) {
+    if constexpr (R == 8) {
+      const auto half_sqrt2 = hn::Set(d, 0.70710678118654752f);
+      for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
+        decltype(hn::Zero(d)) tr[8], ti[8];
+        tr[0] = hn::LoadU(d, in_re[0] + l), ti[0] = hn::LoadU(d, in_im[0] + l);
+        for (int r = 1; r < 8; ++r) {  // t_r = v_r·w^r
+          const auto vr = hn::LoadU(d, in_re[r] + l), vi = hn::LoadU(d, in_im[r] + l);
+          const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
+          tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
+          ti[r] = hn::MulAdd(vr, wi_r, hn::Mul(vi, wr_r));
+        }
+        // 8 = 2 × 4: a_r = t_r + t_{r+4} feed the even outputs, b_r·w8^r = (t_r − t_{r+4})·w8^r
+        // the odd ones, each through a 4-point inverse DFT (w8 = e^{+iπ/4}).
+        decltype(hn::Zero(d)) ar[4], ai[4], br[4], bi[4];
+        for (int r = 0; r < 4; ++r) {
+          ar[r] = hn::Add(tr[r], tr[r + 4]), ai[r] = hn::Add(ti[r], ti[r + 4]);
+          br[r] = hn::Sub(tr[r], tr[r + 4]), bi[r] = hn::Sub(ti[r], ti[r + 4]);
+        }
+        {
+          const auto r1 = hn::Mul(hn::Sub(br[1], bi[1]), half_sqrt2);  // ·(1 + i)/√2
+          const auto i1 = hn::Mul(hn::Add(br[1], bi[1]), half_sqrt2);
+          const auto r2 = hn::Neg(bi[2]), i2 = br[2];  // ·i
+          const auto r3 = hn::Mul(hn::Neg(hn::Add(br[3], bi[3])), half_sqrt2);  // ·(−1 + i)/√2
+          const auto i3 = hn::Mul(hn::Sub(br[3], bi[3]), half_sqrt2);
+          br[1] = r1, bi[1] = i1, br[2] = r2, bi[2] = i2, br[3] = r3, bi[3] = i3;
+        }
+        const auto dft4 = [&](const auto* cr, const auto* ci, int first) {
+          const auto a0r = hn::Add(cr[0], cr[2]), a0i = hn::Add(ci[0], ci[2]);
+          const auto a1r = hn::Sub(cr[0], cr[2]), a1i = hn::Sub(ci[0], ci[2]);
+          const auto a2r = hn::Add(cr[1], cr[3]), a2i = hn::Add(ci[1], ci[3]);
+          const auto a3r = hn::Sub(ci[3], ci[1]), a3i = hn::Sub(cr[1], cr[3]);  // i·(c1 − c3)
+          hn::StoreU(hn::Add(a0r, a2r), d, out_re[first] + l);
+          hn::StoreU(hn::Add(a0i, a2i), d, out_im[first] + l);
+          hn::StoreU(hn::Add(a1r, a3r), d, out_re[first + 2] + l);
+          hn::StoreU(hn::Add(a1i, a3i), d, out_im[first + 2] + l);
+          hn::StoreU(hn::Sub(a0r, a2r), d, out_re[first + 4] + l);
+          hn::StoreU(hn::Sub(a0i, a2i), d, out_im[first + 4] + l);
+          hn::StoreU(hn::Sub(a1r, a3r), d, out_re[first + 6] + l);
+          hn::StoreU(hn::Sub(a1i, a3i), d, out_im[first + 6] + l);
+        };
+        dft4(ar, ai, 0);  // X_{2m}
+        dft4(br, bi, 1);  // X_{2m+1}
+      }
+    } else if constexpr (R == 4) {
       const auto w1r = hn::Set(d, wr[0]), w1i = hn::Set(d, wi[0]);
       const auto w2r = hn::Set(d, wr[1]), w2i = hn::Set(d, wi[1]);
       const auto w3r = hn::Set(d, wr[2]), w3i = hn::Set(d, wi[2]);
@@ -97,7 +140,9 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
 bool Stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
   for (int i = 0; i < table.count; ++i) {
     const Stage& s = table.stages[i];
-    if (s.radix == 4) {
+    if (s.radix == 8) {
+      StockhamStage<8>(table, s, a, b);
+    } else if (s.radix == 4) {
       StockhamStage<4>(table, s, a, b);
     } else {
       StockhamStage<2>(table, s, a, b);

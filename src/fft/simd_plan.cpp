@@ -28,11 +28,15 @@ Result<SimdPlan2D> SimdPlan2D::make(int n) {
   }
   SimdPlan2D plan;
   plan.n_ = n;
-  // Radix-4 stages, then one radix-2 stage when log2 N is odd.
+  // Radix-8 stages (fewest passes over the lane buffers), with log2 N mod 3 = 1 as two
+  // radix-4 stages and = 2 as one: 256 = 8·8·4, 512 = 8·8·8, 1024 = 8·8·4·4.
+  const int log2n = std::countr_zero(static_cast<unsigned>(n));
+  std::vector<int> radices(static_cast<std::size_t>(log2n / 3), 8);
+  if (log2n % 3 == 1) radices.back() = 4, radices.push_back(4);  // n ≥ 16: at least one 8
+  if (log2n % 3 == 2) radices.push_back(4);
   int ns = 1;
   std::size_t offset = 0;
-  while (ns < n) {
-    const int radix = (n / ns) % 4 == 0 ? 4 : 2;
+  for (const int radix : radices) {
     plan.stages_.push_back({radix, ns, offset});
     for (int k = 0; k < ns; ++k) {
       for (int r = 1; r < radix; ++r) {  // w^r, w = e^{+2πi·k/(ns·radix)}, in double

@@ -157,33 +157,37 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   for (std::size_t c = 0; c < cascades_.size(); ++c)
     evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
   // Columns: every (cascade, column block) evolves h̃ once and writes each plane's spectrum
-  // where transform() wants it, so the result lands in the plane's tile storage without a copy
-  // (even stage counts) or after one contiguous copy (odd).
+  // where transform() wants it, so the result lands in the plane's tile storage without a copy:
+  // the tile itself for an even stage count, a scratch buffer for an odd one (planes 0 and 1;
+  // the analytic gradient planes 2 and 3 take one contiguous copy then).
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
-    alignas(64) float scratch_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float scratch_im[kLane * fft::kMaxSimdSize];
-    const LaneBlock scratch{scratch_re, scratch_im};
+    alignas(64) float s0_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float s0_im[kLane * fft::kMaxSimdSize];
+    alignas(64) float s1_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float s1_im[kLane * fft::kMaxSimdSize];
+    const LaneBlock scratch[2] = {{s0_re, s0_im}, {s1_re, s1_im}};
     for (std::size_t item = begin; item < end; ++item) {
       const std::size_t c = item / blocks;
       CascadeState& state = cascades_[c];
       const int block = static_cast<int>(item % blocks);
       const auto planes = static_cast<std::size_t>(state.planes);
+      LaneBlock tile[fft::kMaxPlanes];
       float* re[fft::kMaxPlanes];
       float* im[fft::kMaxPlanes];
       for (std::size_t p = 0; p < planes; ++p) {
-        re[p] = state.tile_re[p].data() + static_cast<std::size_t>(block) * block_floats;
-        im[p] = state.tile_im[p].data() + static_cast<std::size_t>(block) * block_floats;
+        const std::size_t origin = static_cast<std::size_t>(block) * block_floats;
+        tile[p] = {state.tile_re[p].data() + origin, state.tile_im[p].data() + origin};
+        const LaneBlock input = p < 2 ? simd_plan_.input_for(tile[p], scratch[p]) : tile[p];
+        re[p] = input.re, im[p] = input.im;
       }
       evolve_planes(evolve_args_[c], block, re, im);
       for (std::size_t p = 0; p < planes; ++p) {
-        const LaneBlock tile{re[p], im[p]};
-        if (simd_plan_.input_for(tile, scratch).re == tile.re) {
-          simd_plan_.transform(tile, scratch);
-        } else {  // odd stage count: the input must start in the scratch
-          std::memcpy(scratch_re, re[p], block_floats * sizeof(float));
-          std::memcpy(scratch_im, im[p], block_floats * sizeof(float));
-          simd_plan_.transform(tile, scratch);
+        const LaneBlock& other = scratch[p < 2 ? p : 0];
+        if (p >= 2 && simd_plan_.input_for(tile[p], other).re != tile[p].re) {
+          std::memcpy(other.re, tile[p].re, block_floats * sizeof(float));
+          std::memcpy(other.im, tile[p].im, block_floats * sizeof(float));
         }
+        simd_plan_.transform(tile[p], other);
       }
     }
   });

@@ -31,6 +31,29 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 constexpr std::size_t kLanes = 16;
 
+// 1/√x and 1/x for x > 0 to about 1 ulp: the hardware estimate (12–14 bits) and one Newton
+// step, instead of a square root and divisions. The scalar target's estimate is coarser, so it
+// computes them exactly.
+template <class DF, class V>
+HWY_INLINE V ReciprocalSqrt(DF df, V x) {
+#if HWY_TARGET == HWY_SCALAR
+  return hn::Div(hn::Set(df, 1.0f), hn::Sqrt(x));
+#else
+  const auto y = hn::ApproximateReciprocalSqrt(x);
+  return hn::Mul(y, hn::NegMulAdd(hn::Mul(hn::Set(df, 0.5f), x), hn::Mul(y, y),
+                                  hn::Set(df, 1.5f)));
+#endif
+}
+template <class DF, class V>
+HWY_INLINE V Reciprocal(DF df, V x) {
+#if HWY_TARGET == HWY_SCALAR
+  return hn::Div(hn::Set(df, 1.0f), x);
+#else
+  const auto y = hn::ApproximateReciprocal(x);
+  return hn::Mul(y, hn::NegMulAdd(x, y, hn::Set(df, 2.0f)));
+#endif
+}
+
 void EvolvePlanes(const EvolveArgs& a, int block, float* const* out_re, float* const* out_im) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
@@ -94,18 +117,8 @@ void EvolvePlanes(const EvolveArgs& a, int block, float* const* out_re, float* c
       // k̂ = k/|k| (0 at k = 0) from the texel's wave vector (M.7.2).
       const auto kx = hn::Load(df, kx_lanes + l);
       const auto k2 = hn::MulAdd(kx, kx, hn::Mul(kz, kz));
-      // 1/|k| by the reciprocal square-root estimate (12–14 bits) and one Newton step
-      // (≈ 1 ulp); the scalar target's estimate is coarser, so it divides.
       const auto has_k = hn::Gt(k2, zero);
-      const auto safe = hn::IfThenElse(has_k, k2, one);
-#if HWY_TARGET == HWY_SCALAR
-      const auto y = hn::Div(one, hn::Sqrt(safe));
-#else
-      auto y = hn::ApproximateReciprocalSqrt(safe);
-      y = hn::Mul(y, hn::NegMulAdd(hn::Mul(hn::Set(df, 0.5f), safe), hn::Mul(y, y),
-                                   hn::Set(df, 1.5f)));
-#endif
-      const auto inv_k = hn::IfThenElseZero(has_k, y);
+      const auto inv_k = hn::IfThenElseZero(has_k, ReciprocalSqrt(df, hn::IfThenElse(has_k, k2, one)));
       const auto ux = hn::Mul(kx, inv_k), uz = hn::Mul(kz, inv_k);
       const std::size_t j = row * kLanes + l;
       // Plane 0: (1 − λ·k̂x)·h̃ = h + i·Dx. Plane 1: i·λ·k̂z·h̃ = Dz (+ i·∂h/∂x: −kx·h̃).
@@ -207,7 +220,8 @@ void SurfaceRowCentral(const SurfaceArgs& a, int row_int) {
   const auto inv = hn::Set(df, a.inv_spacing);
   const auto one = hn::Set(df, 1.0f), zero = hn::Zero(df);
   const auto base_length = hn::Set(df, a.base_length);
-  const auto j_start = hn::Set(df, a.jacobian_start), j_range = hn::Set(df, a.jacobian_range);
+  const auto j_start = hn::Set(df, a.jacobian_start);
+  const auto inv_range = hn::Set(df, 1.0f / a.jacobian_range);
   const auto decay = hn::Set(df, a.decay);
   const auto alpha =
       hn::ShiftLeft<24>(Quantise(df, hn::Set(df, a.smoothness)));  // constant smoothness
@@ -232,20 +246,20 @@ void SurfaceRowCentral(const SurfaceArgs& a, int row_int) {
     auto nx = hn::Sub(hn::Mul(h_dz, dz_dx), hn::Mul(jzz, h_dx));
     auto ny = jac;
     auto nz = hn::Sub(hn::Mul(dx_dz, h_dx), hn::Mul(h_dz, jxx));
-    const auto length =
-        hn::Sqrt(hn::Add(hn::Add(hn::Mul(nx, nx), hn::Mul(ny, ny)), hn::Mul(nz, nz)));
-    const auto valid = hn::Gt(length, zero);
-    const auto safe = hn::IfThenElse(valid, length, one);
-    nx = hn::IfThenElseZero(valid, hn::Div(nx, safe));
-    ny = hn::IfThenElse(valid, hn::Div(ny, safe), one);
-    nz = hn::IfThenElseZero(valid, hn::Div(nz, safe));
+    const auto length2 = hn::MulAdd(nx, nx, hn::MulAdd(ny, ny, hn::Mul(nz, nz)));
+    const auto valid = hn::Gt(length2, zero);
+    const auto inv_length =
+        hn::IfThenElseZero(valid, ReciprocalSqrt(df, hn::IfThenElse(valid, length2, one)));
+    nx = hn::Mul(nx, inv_length);
+    ny = hn::IfThenElse(valid, hn::Mul(ny, inv_length), one);
+    nz = hn::Mul(nz, inv_length);
     // Foam ramp and accumulation (M.7.4).
     const std::size_t i = row * n + c;
-    const auto now = hn::Min(hn::Max(hn::Div(hn::Sub(j_start, jac), j_range), zero), one);
+    const auto now = hn::Min(hn::Max(hn::Mul(hn::Sub(j_start, jac), inv_range), zero), one);
     auto foam = now;
     if (!a.reset_foam) {
-      const auto accumulated =
-          hn::Sub(hn::LoadU(df, a.foam_state + i), hn::Div(decay, hn::Max(now, hn::Set(df, 0.5f))));
+      const auto accumulated = hn::Sub(hn::LoadU(df, a.foam_state + i),
+                                       hn::Mul(decay, Reciprocal(df, hn::Max(now, hn::Set(df, 0.5f)))));
       foam = hn::Min(hn::Max(hn::Max(accumulated, now), zero), one);
     }
     hn::StoreU(foam, df, a.foam_state + i);
