@@ -292,15 +292,34 @@ void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
   const std::size_t dst = mip_offset(n, level) + row * size;
   // 2×2 sums (eq. 52), deinterleaved into structure-of-arrays for the vector part.
   alignas(64) float sum[4][1024];
-  for (std::size_t c = 0; c < size; ++c) {
+  const std::size_t step = hn::Lanes(df);
+  std::size_t c = 0;
+#if HWY_TARGET != HWY_SCALAR
+  for (; c + step <= size; c += step) {  // texels 2c … 2c + 2·step of both source rows
+    using V = decltype(hn::Zero(df));
+    V lo[2][4], hi[2][4];
+    for (std::size_t r = 0; r < 2; ++r) {
+      const float* src = (r == 0 ? src0 : src1) + 8 * c;
+      hn::LoadInterleaved4(df, src, lo[r][0], lo[r][1], lo[r][2], lo[r][3]);
+      hn::LoadInterleaved4(df, src + 4 * step, hi[r][0], hi[r][1], hi[r][2], hi[r][3]);
+    }
+    for (std::size_t k = 0; k < 4; ++k) {  // the scalar loop's order of additions
+      const auto top = hn::Add(hn::ConcatEven(df, hi[0][k], lo[0][k]),
+                               hn::ConcatOdd(df, hi[0][k], lo[0][k]));
+      const auto all = hn::Add(hn::Add(top, hn::ConcatEven(df, hi[1][k], lo[1][k])),
+                               hn::ConcatOdd(df, hi[1][k], lo[1][k]));
+      hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
+    }
+  }
+#endif
+  for (; c < size; ++c) {
     for (std::size_t k = 0; k < 4; ++k) {
       sum[k][c] = 0.25f * (((src0[8 * c + k] + src0[8 * c + 4 + k]) + src1[8 * c + k]) +
                            src1[8 * c + 4 + k]);
     }
   }
-  const std::size_t step = hn::Lanes(df);
   const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), half = hn::Set(df, 0.5f);
-  std::size_t c = 0;
+  c = 0;
   for (; c + step <= size; c += step) {
     const auto x = hn::LoadU(df, sum[0] + c), y = hn::LoadU(df, sum[1] + c);
     const auto z = hn::LoadU(df, sum[2] + c), b = hn::LoadU(df, sum[3] + c);
