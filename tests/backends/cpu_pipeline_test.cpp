@@ -70,7 +70,7 @@ struct Pipeline {
       planes[p] = {state.plane_re[p].data(), state.plane_im[p].data()};
     }
     plan.inverse({planes, state.plane_re.size()}, *runner, true);
-    ocean::cpu::assemble_displacement_reference(state, frame, *runner);
+    ocean::cpu::assemble_displacement_reference(state, state.plane_re[1].data(), frame, *runner);
     ocean::cpu::finalize(state, config, dt, reset, frame, *runner);
     ocean::cpu::build_mips(state, frame, *runner);
   }

@@ -90,6 +90,11 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
   const auto texels =
       static_cast<std::size_t>(config.resolution) * static_cast<std::size_t>(config.resolution);
+  const bool pairs = options_.pipeline != CpuPipeline::scalar_reference &&
+                     plane_count(config.normals) == 2;
+  std::vector<CascadeGroup> groups;
+  for (std::size_t c = 0; c < cascades.size(); c += pairs ? 2 : 1)
+    groups.push_back({c, std::min<std::size_t>(pairs ? 2 : 1, cascades.size() - c)});
   for (std::size_t c = 0; c < cascades.size(); ++c) {
     CascadeState& state = cascades[c];
     state.resolution = config.resolution;
@@ -103,7 +108,8 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
     state.spectrum = std::move(spectrum).value();
     state.planes = plane_count(config.normals);
     state.choppiness = config.choppiness;
-    const auto planes = static_cast<std::size_t>(state.planes);
+    const bool second_of_pair = pairs && c % 2 == 1;
+    const auto planes = second_of_pair ? 1 : static_cast<std::size_t>(state.planes);
     const bool fused = options_.pipeline == CpuPipeline::fused_simd;
     if (fused) {
       build_kernel_inputs(state, config.loop_period_s);
@@ -126,6 +132,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   plan_ = std::move(plan).value();
   simd_plan_ = std::move(simd_plan).value();
   cascades_ = std::move(cascades);
+  groups_ = std::move(groups);
   surface_args_.assign(cascades_.size(), SurfaceArgs{});
   evolve_args_.assign(cascades_.size(), EvolveArgs{});
   has_stepped_ = false;
@@ -151,39 +158,48 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   using LaneBlock = fft::SimdPlan2D::LaneBlock;
   const int n = config_.resolution;
   const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
-  const std::size_t items = cascades_.size() * blocks;
+  const std::size_t items = groups_.size() * blocks;
   constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
   const std::size_t block_floats = kLane * static_cast<std::size_t>(n);
-  for (std::size_t c = 0; c < cascades_.size(); ++c)
+  for (std::size_t c = 0; c < cascades_.size(); ++c) {
     evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
-  // Columns: every (cascade, column block) evolves h̃ once and writes each plane's spectrum
-  // where transform() wants it, so the result lands in the plane's tile storage without a copy:
-  // the tile itself for an even stage count, a scratch buffer for an odd one (planes 0 and 1;
-  // the analytic gradient planes 2 and 3 take one contiguous copy then).
+    evolve_args_[c].dz_into_imaginary = groups_[c / 2].count == 2 && c % 2 == 1;
+  }
+  // Columns: every (group, column block) evolves h̃ once per cascade and writes each plane's
+  // spectrum where transform() wants it, so the result lands in the plane's tile storage
+  // without a copy: the tile itself for an even stage count, a scratch buffer for an odd one
+  // (the analytic method's fourth plane takes one contiguous copy then).
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
     alignas(64) float s0_re[kLane * fft::kMaxSimdSize];
     alignas(64) float s0_im[kLane * fft::kMaxSimdSize];
     alignas(64) float s1_re[kLane * fft::kMaxSimdSize];
     alignas(64) float s1_im[kLane * fft::kMaxSimdSize];
-    const LaneBlock scratch[2] = {{s0_re, s0_im}, {s1_re, s1_im}};
+    alignas(64) float s2_re[kLane * fft::kMaxSimdSize];
+    alignas(64) float s2_im[kLane * fft::kMaxSimdSize];
+    const LaneBlock scratch[3] = {{s0_re, s0_im}, {s1_re, s1_im}, {s2_re, s2_im}};
     for (std::size_t item = begin; item < end; ++item) {
-      const std::size_t c = item / blocks;
-      CascadeState& state = cascades_[c];
+      const CascadeGroup& group = groups_[item / blocks];
       const int block = static_cast<int>(item % blocks);
-      const auto planes = static_cast<std::size_t>(state.planes);
+      const std::size_t origin = static_cast<std::size_t>(block) * block_floats;
+      // The group's planes: the first cascade's, then plane 0 of the second.
       LaneBlock tile[fft::kMaxPlanes];
-      float* re[fft::kMaxPlanes];
-      float* im[fft::kMaxPlanes];
-      for (std::size_t p = 0; p < planes; ++p) {
-        const std::size_t origin = static_cast<std::size_t>(block) * block_floats;
-        tile[p] = {state.tile_re[p].data() + origin, state.tile_im[p].data() + origin};
-        const LaneBlock input = p < 2 ? simd_plan_.input_for(tile[p], scratch[p]) : tile[p];
-        re[p] = input.re, im[p] = input.im;
+      LaneBlock input[fft::kMaxPlanes];
+      std::size_t count = 0;
+      for (std::size_t c = group.first; c < group.first + group.count; ++c) {
+        CascadeState& state = cascades_[c];
+        float* re[fft::kMaxPlanes];
+        float* im[fft::kMaxPlanes];
+        for (std::size_t p = 0; p < state.tile_re.size(); ++p, ++count) {
+          tile[count] = {state.tile_re[p].data() + origin, state.tile_im[p].data() + origin};
+          input[count] = count < 3 ? simd_plan_.input_for(tile[count], scratch[count]) : tile[count];
+          re[p] = input[count].re, im[p] = input[count].im;
+        }
+        if (c != group.first) re[1] = input[1].re, im[1] = input[1].im;  // the shared plane 1
+        evolve_planes(evolve_args_[c], block, re, im);
       }
-      evolve_planes(evolve_args_[c], block, re, im);
-      for (std::size_t p = 0; p < planes; ++p) {
-        const LaneBlock& other = scratch[p < 2 ? p : 0];
-        if (p >= 2 && simd_plan_.input_for(tile[p], other).re != tile[p].re) {
+      for (std::size_t p = 0; p < count; ++p) {
+        const LaneBlock& other = scratch[p < 3 ? p : 0];
+        if (input[p].re == tile[p].re && simd_plan_.input_for(tile[p], other).re != tile[p].re) {
           std::memcpy(other.re, tile[p].re, block_floats * sizeof(float));
           std::memcpy(other.im, tile[p].im, block_floats * sizeof(float));
         }
@@ -191,8 +207,9 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
       }
     }
   });
-  // Rows: the row FFT of planes 0 (h + i·Dx) and 1 (Dz + i·…) feeds the displacement assembly
-  // with the sign folded in; gradient planes (analytic normals) go to the row-major planes.
+  // Rows: the row FFT of plane 1 (Dz, or a pair's two Dz) and of each cascade's plane 0
+  // (h + i·Dx) feeds the displacement assembly with the sign folded in; gradient planes
+  // (analytic normals) go to the row-major planes.
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
     alignas(64) float p0_re[kLane * fft::kMaxSimdSize];
     alignas(64) float p0_im[kLane * fft::kMaxSimdSize];
@@ -208,19 +225,21 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
       simd_plan_.transform(lanes, scratch);
     };
     for (std::size_t item = begin; item < end; ++item) {
-      const std::size_t c = item / blocks;
-      CascadeState& state = cascades_[c];
+      const CascadeGroup& group = groups_[item / blocks];
       const int block = static_cast<int>(item % blocks);
-      row_fft(state, 0, block, {p0_re, p0_im});
-      row_fft(state, 1, block, {p1_re, p1_im});
-      CascadeFrame& frame = out.cascades[c];
-      assemble_displacement(p0_re, p0_im, p1_re, n, block, frame.displacement.data(),
-                            frame.displacement_half.data());
-      if (state.planes > 2) {
-        simd_plan_.store_rows(p1_re, p1_im, plane_of(state, 1), block, true);
-        for (std::size_t p = 2; p < static_cast<std::size_t>(state.planes); ++p) {
-          row_fft(state, p, block, {p0_re, p0_im});
-          simd_plan_.store_rows(p0_re, p0_im, plane_of(state, p), block, true);
+      CascadeState& first = cascades_[group.first];
+      row_fft(first, 1, block, {p1_re, p1_im});
+      for (std::size_t c = group.first; c < group.first + group.count; ++c) {
+        row_fft(cascades_[c], 0, block, {p0_re, p0_im});
+        CascadeFrame& frame = out.cascades[c];
+        assemble_displacement(p0_re, p0_im, c == group.first ? p1_re : p1_im, n, block,
+                              frame.displacement.data(), frame.displacement_half.data());
+      }
+      if (first.planes > 2) {
+        simd_plan_.store_rows(p1_re, p1_im, plane_of(first, 1), block, true);
+        for (std::size_t p = 2; p < static_cast<std::size_t>(first.planes); ++p) {
+          row_fft(first, p, block, {p0_re, p0_im});
+          simd_plan_.store_rows(p0_re, p0_im, plane_of(first, p), block, true);
         }
       }
     }
@@ -275,19 +294,27 @@ void CpuBackend::mips_fused(Frame& out) {
 }
 
 void CpuBackend::synthesise_unfused(double time_s, Frame& out) {
-  for (std::size_t c = 0; c < cascades_.size(); ++c) {
-    CascadeState& state = cascades_[c];
-    evolve(state, time_s, config_.loop_period_s, *runner_);
+  for (const CascadeGroup& group : groups_) {
+    CascadeState& first = cascades_[group.first];
     fft::SplitComplex planes[fft::kMaxPlanes];
-    for (std::size_t p = 0; p < state.plane_re.size(); ++p) planes[p] = plane_of(state, p);
-    const std::span<const fft::SplitComplex> view{planes, state.plane_re.size()};
+    std::size_t count = 0;
+    for (std::size_t c = group.first; c < group.first + group.count; ++c) {
+      CascadeState& state = cascades_[c];
+      evolve(state, time_s, config_.loop_period_s, *runner_, c == group.first ? nullptr : &first);
+      for (std::size_t p = 0; p < state.plane_re.size(); ++p) planes[count++] = plane_of(state, p);
+    }
+    const std::span<const fft::SplitComplex> view{planes, count};
     if (options_.pipeline == CpuPipeline::external_fft) {
       options_.fft->inverse(view);
-      apply_sign(state, *runner_);
+      for (std::size_t c = group.first; c < group.first + group.count; ++c)
+        apply_sign(cascades_[c], *runner_);
     } else {
       plan_.inverse(view, *runner_, true);
     }
-    assemble_displacement_reference(state, out.cascades[c], *runner_);
+    for (std::size_t c = group.first; c < group.first + group.count; ++c) {
+      const float* dz = c == group.first ? first.plane_re[1].data() : first.plane_im[1].data();
+      assemble_displacement_reference(cascades_[c], dz, out.cascades[c], *runner_);
+    }
   }
 }
 

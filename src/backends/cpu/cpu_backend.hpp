@@ -41,11 +41,13 @@ class AlignedFloats {
 struct CascadeState {
   int resolution = 0;
   double patch_size_m = 0.0;
-  int planes = 2;           ///< complex planes (plane_count of the normal method)
+  int planes = 2;           ///< plane spectra evolved (plane_count of the normal method)
   double choppiness = 0.0;  ///< λ
   InitialSpectrum spectrum;
   /// Reference pipeline: plane p's spectrum is factor[p][i]·h̃(k_i, t), the fields packed two
-  /// per complex plane, in row-major planes (also the analytic gradients' output).
+  /// per complex plane, in row-major planes (also the analytic gradients' output). The second
+  /// cascade of a pair holds plane 0 only (its Dz is in the first's plane 1), here and in the
+  /// tiles.
   std::vector<std::vector<std::complex<float>>> factor;
   std::vector<std::vector<float>> plane_re, plane_im;
   // Fused pipeline: structure-of-arrays inputs of the SIMD kernels (kernels.hpp) and each
@@ -65,11 +67,15 @@ void build_plane_factors(CascadeState& state, NormalMethod method, double choppi
 void build_kernel_inputs(CascadeState& state, double loop_period_s);
 /// The evolution kernels' arguments for time t (M.7.3).
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s);
-/// Evolves h̃(k, t) with exact phase (M.6.5, M.7.3) and writes every plane's spectrum.
-void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner& runner);
-/// Displacement float3 and half4 from the transformed planes (scalar reference, eq. 44).
-void assemble_displacement_reference(const CascadeState& state, CascadeFrame& out,
-                                     TaskRunner& runner);
+/// Evolves h̃(k, t) with exact phase (M.6.5, M.7.3) and writes every plane's spectrum. With a
+/// partner (cascade pairing, M.7.2), plane 1 (D̃z) is added as i·D̃z into the partner's plane 1,
+/// which the partner's own evolution wrote first: one transform then carries both Dz fields.
+void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner& runner,
+            CascadeState* dz_partner = nullptr);
+/// Displacement float3 and half4 from the transformed planes (scalar reference, eq. 44): Dx and
+/// h from plane 0, Dz from `dz` (plane 1's real part, or its partner's imaginary part).
+void assemble_displacement_reference(const CascadeState& state, const float* dz,
+                                     CascadeFrame& out, TaskRunner& runner);
 /// Gradients, normal, Jacobian, foam, base-level packing, from out.displacement (and the
 /// gradient planes in analytic mode).
 void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
@@ -134,6 +140,13 @@ class CpuBackend final : public Backend {
   fft::Plan2D plan_;
   fft::SimdPlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
+  /// Cascades transformed together: pairs sharing plane 1 (Dz of the first in its real part,
+  /// of the second in its imaginary part: 3 transforms for 2 cascades instead of 4) when the
+  /// normal method needs 2 planes and the pipeline is not the scalar reference, else singles.
+  struct CascadeGroup {
+    std::size_t first = 0, count = 1;
+  };
+  std::vector<CascadeGroup> groups_;
   std::vector<SurfaceArgs> surface_args_;
   std::vector<EvolveArgs> evolve_args_;
   StageTimes times_;

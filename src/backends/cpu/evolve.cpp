@@ -53,7 +53,8 @@ void build_plane_factors(CascadeState& state, NormalMethod method, double choppi
   }
 }
 
-void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner& runner) {
+void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner& runner,
+            CascadeState* dz_partner) {
   const int n = state.resolution;
   const EvolutionPhase phase_of(time_s, loop_period_s);  // exact after days (M.7.3)
   const std::size_t planes = state.factor.size();
@@ -68,6 +69,11 @@ void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner
           const std::complex<float> h(p[0] * c + p[2] * s, p[1] * c + p[3] * s);  // (M.6.5)
           for (std::size_t q = 0; q < planes; ++q) {
             const std::complex<float> v = state.factor[q][i] * h;
+            if (q == 1 && dz_partner != nullptr) {  // i·D̃z into the partner's plane 1
+              dz_partner->plane_re[1][i] -= v.imag();
+              dz_partner->plane_im[1][i] += v.real();
+              continue;
+            }
             state.plane_re[q][i] = v.real();
             state.plane_im[q][i] = v.imag();
           }

@@ -127,8 +127,13 @@ void EvolvePlanes(const EvolveArgs& a, int block, float* const* out_re, float* c
       hn::Store(hn::Mul(f0, hi), df, out_im[0] + j);
       const auto dz = hn::Mul(hn::Set(df, lambda), uz);
       if (a.planes == 2) {
-        hn::Store(hn::Neg(hn::Mul(dz, hi)), df, out_re[1] + j);
-        hn::Store(hn::Mul(dz, hr), df, out_im[1] + j);
+        if (a.dz_into_imaginary) {  // += i·(i·λ·k̂z·h̃) = −λ·k̂z·h̃
+          hn::Store(hn::NegMulAdd(dz, hr, hn::Load(df, out_re[1] + j)), df, out_re[1] + j);
+          hn::Store(hn::NegMulAdd(dz, hi, hn::Load(df, out_im[1] + j)), df, out_im[1] + j);
+        } else {
+          hn::Store(hn::Neg(hn::Mul(dz, hi)), df, out_re[1] + j);
+          hn::Store(hn::Mul(dz, hr), df, out_im[1] + j);
+        }
         continue;
       }
       const auto neg_kx = hn::Neg(kx);

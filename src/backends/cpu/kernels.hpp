@@ -28,6 +28,10 @@ struct EvolveArgs {
   int planes = 2;
   double dk = 0.0;      ///< 2π/L
   double lambda = 0.0;  ///< choppiness
+  /// Cascade pairing (2 planes): instead of writing D̃z into plane 1, add i·D̃z to it (the
+  /// first cascade of the pair wrote its own D̃z there), so that one transform yields both
+  /// cascades' Dz: the first's in the real part, this one's in the imaginary part.
+  bool dz_into_imaginary = false;
 };
 
 /// Record length of EvolveArgs::spectrum: 80 floats when looping, 64 otherwise.
@@ -39,7 +43,7 @@ void plane_factors(double kx, double kz, double lambda, int planes, std::complex
 
 /// Evolves h̃(k, t) on columns [16·block, 16·block + 16) and writes every plane's spectrum
 /// factor·h̃ in lane layout: re[p]/im[p][row·16 + l] for column 16·block + l (N·16 floats each,
-/// 64-byte aligned).
+/// 64-byte aligned); with dz_into_imaginary, plane 1 is read and updated.
 void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im);
 
 /// Reference evolution of texel (row, col) with the same phase recipe in double precision and
