@@ -271,17 +271,17 @@ void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
                .mip_work = state.mip_work.data(),
                .packed = frame.packed_mips.data()};
   }
-  const auto rows = static_cast<std::size_t>(n);
-  runner_->parallel_for(cascades_.size() * rows, 16, [&](std::size_t begin, std::size_t end) {
+  const auto pairs = static_cast<std::size_t>(n / 2);
+  runner_->parallel_for(cascades_.size() * pairs, 8, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
-      surface_row_central(args[i / rows], static_cast<int>(i % rows));
+      surface_row_pair(args[i / pairs], static_cast<int>(i % pairs));
   });
 }
 
-void CpuBackend::mips_fused(Frame& out) {
+void CpuBackend::mips_fused(int first_level, Frame& out) {
   const int n = config_.resolution;
   const int levels = std::countr_zero(static_cast<unsigned>(n));
-  for (int level = 1; level <= levels; ++level) {  // each level reads the finished one above
+  for (int level = first_level; level <= levels; ++level) {  // each reads the level above
     const auto rows = static_cast<std::size_t>(n >> level);
     runner_->parallel_for(cascades_.size() * rows, 8, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
@@ -331,16 +331,17 @@ void CpuBackend::step(double time_s, Frame& out) {
     synthesise_unfused(time_s, out);
   }
   const Clock::time_point synthesised = Clock::now();
-  if (options_.pipeline == CpuPipeline::fused_simd &&
-      config_.normals == NormalMethod::central_difference) {
-    surface_fused(dt, reset_foam, out);
+  const bool fused_surface = options_.pipeline == CpuPipeline::fused_simd &&
+                             config_.normals == NormalMethod::central_difference;
+  if (fused_surface) {
+    surface_fused(dt, reset_foam, out);  // with mip level 1
   } else {
     for (std::size_t c = 0; c < cascades_.size(); ++c)
       finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
   }
   const Clock::time_point finalized = Clock::now();
   if (options_.pipeline == CpuPipeline::fused_simd) {
-    mips_fused(out);
+    mips_fused(fused_surface ? 2 : 1, out);
   } else {
     for (std::size_t c = 0; c < cascades_.size(); ++c)
       build_mips(cascades_[c], out.cascades[c], *runner_);

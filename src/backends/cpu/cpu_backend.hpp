@@ -132,7 +132,7 @@ class CpuBackend final : public Backend {
   void synthesise_fused(double time_s, Frame& out);
   void synthesise_unfused(double time_s, Frame& out);
   void surface_fused(double dt_s, bool reset_foam, Frame& out);
-  void mips_fused(Frame& out);
+  void mips_fused(int first_level, Frame& out);
 
   CpuOptions options_;
   SimulationConfig config_;

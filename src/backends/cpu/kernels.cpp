@@ -202,7 +202,9 @@ HWY_INLINE auto Quantise(DF df, V v) {
                        hn::MulAdd(clamped, hn::Set(df, 255.0f), hn::Set(df, 0.5f)));
 }
 
-void SurfaceRowCentral(const SurfaceArgs& a, int row_int) {
+// One row of the surface pass: every output but the mip work values, which go to `work` as
+// structure of arrays (n·len x, y, z, blue) for the fused first mip level.
+HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const* work) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const std::size_t step = hn::Lanes(df);
@@ -275,8 +277,10 @@ void SurfaceRowCentral(const SurfaceArgs& a, int row_int) {
         a.blue_is_foam
             ? foam
             : hn::Min(hn::Max(hn::MulAdd(jac, hn::Set(df, 0.5f), hn::Set(df, 0.5f)), zero), one);
-    hn::StoreInterleaved4(hn::Mul(nx, base_length), hn::Mul(ny, base_length),
-                          hn::Mul(nz, base_length), blue, df, a.mip_work + 4 * i);
+    hn::Store(hn::Mul(nx, base_length), df, work[0] + c);
+    hn::Store(hn::Mul(ny, base_length), df, work[1] + c);
+    hn::Store(hn::Mul(nz, base_length), df, work[2] + c);
+    hn::Store(blue, df, work[3] + c);
     const auto rgba = hn::Or(
         hn::Or(
             Quantise(df, hn::MulAdd(nx, hn::Set(df, 0.5f), hn::Set(df, 0.5f))),
@@ -286,45 +290,16 @@ void SurfaceRowCentral(const SurfaceArgs& a, int row_int) {
   }
 }
 
-void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
+// A mip row from its 2×2 averages `sum` (structure of arrays, `size` texels): smoothness
+// from the filtered normal's length (eq. 53) and RGBA8 packing into packed[dst…], the averages
+// into the float4 work chain at work[4·dst…] for the next level.
+HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, std::size_t dst,
+                            float* work, std::uint32_t* packed) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
-  const auto size = static_cast<std::size_t>(n >> level);
-  const auto row = static_cast<std::size_t>(row_int);
-  const std::size_t src_size = 2 * size;
-  const float* src0 = work + 4 * (mip_offset(n, level - 1) + 2 * row * src_size);
-  const float* src1 = src0 + 4 * src_size;
-  const std::size_t dst = mip_offset(n, level) + row * size;
-  // 2×2 sums (eq. 52), deinterleaved into structure-of-arrays for the vector part.
-  alignas(64) float sum[4][1024];
   const std::size_t step = hn::Lanes(df);
-  std::size_t c = 0;
-#if HWY_TARGET != HWY_SCALAR
-  for (; c + step <= size; c += step) {  // texels 2c … 2c + 2·step of both source rows
-    using V = decltype(hn::Zero(df));
-    V lo[2][4], hi[2][4];
-    for (std::size_t r = 0; r < 2; ++r) {
-      const float* src = (r == 0 ? src0 : src1) + 8 * c;
-      hn::LoadInterleaved4(df, src, lo[r][0], lo[r][1], lo[r][2], lo[r][3]);
-      hn::LoadInterleaved4(df, src + 4 * step, hi[r][0], hi[r][1], hi[r][2], hi[r][3]);
-    }
-    for (std::size_t k = 0; k < 4; ++k) {  // the scalar loop's order of additions
-      const auto top = hn::Add(hn::ConcatEven(df, hi[0][k], lo[0][k]),
-                               hn::ConcatOdd(df, hi[0][k], lo[0][k]));
-      const auto all = hn::Add(hn::Add(top, hn::ConcatEven(df, hi[1][k], lo[1][k])),
-                               hn::ConcatOdd(df, hi[1][k], lo[1][k]));
-      hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
-    }
-  }
-#endif
-  for (; c < size; ++c) {
-    for (std::size_t k = 0; k < 4; ++k) {
-      sum[k][c] = 0.25f * (((src0[8 * c + k] + src0[8 * c + 4 + k]) + src1[8 * c + k]) +
-                           src1[8 * c + 4 + k]);
-    }
-  }
   const auto zero = hn::Zero(df), one = hn::Set(df, 1.0f), half = hn::Set(df, 0.5f);
-  c = 0;
+  std::size_t c = 0;
   for (; c + step <= size; c += step) {
     const auto x = hn::LoadU(df, sum[0] + c), y = hn::LoadU(df, sum[1] + c);
     const auto z = hn::LoadU(df, sum[2] + c), b = hn::LoadU(df, sum[3] + c);
@@ -353,6 +328,82 @@ void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
   }
 }
 
+void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
+  const auto size = static_cast<std::size_t>(n >> level);
+  const auto row = static_cast<std::size_t>(row_int);
+  const std::size_t src_size = 2 * size;
+  const float* src0 = work + 4 * (mip_offset(n, level - 1) + 2 * row * src_size);
+  const float* src1 = src0 + 4 * src_size;
+  const std::size_t dst = mip_offset(n, level) + row * size;
+  // 2×2 sums (eq. 52), deinterleaved into structure-of-arrays for the vector part.
+  alignas(64) float sum[4][1024];
+  std::size_t c = 0;
+#if HWY_TARGET != HWY_SCALAR
+  const hn::ScalableTag<float> df;
+  const std::size_t step = hn::Lanes(df);
+  for (; c + step <= size; c += step) {  // texels 2c … 2c + 2·step of both source rows
+    using V = decltype(hn::Zero(df));
+    V lo[2][4], hi[2][4];
+    for (std::size_t r = 0; r < 2; ++r) {
+      const float* src = (r == 0 ? src0 : src1) + 8 * c;
+      hn::LoadInterleaved4(df, src, lo[r][0], lo[r][1], lo[r][2], lo[r][3]);
+      hn::LoadInterleaved4(df, src + 4 * step, hi[r][0], hi[r][1], hi[r][2], hi[r][3]);
+    }
+    for (std::size_t k = 0; k < 4; ++k) {  // the scalar loop's order of additions
+      const auto top = hn::Add(hn::ConcatEven(df, hi[0][k], lo[0][k]),
+                               hn::ConcatOdd(df, hi[0][k], lo[0][k]));
+      const auto all = hn::Add(hn::Add(top, hn::ConcatEven(df, hi[1][k], lo[1][k])),
+                               hn::ConcatOdd(df, hi[1][k], lo[1][k]));
+      hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
+    }
+  }
+#endif
+  for (; c < size; ++c) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      sum[k][c] = 0.25f * (((src0[8 * c + k] + src0[8 * c + 4 + k]) + src1[8 * c + k]) +
+                           src1[8 * c + 4 + k]);
+    }
+  }
+  MipFromSums(sum, size, dst, work, packed);
+}
+
+// Rows 2·pair and 2·pair + 1 of the surface pass, then row `pair` of mip level 1 from them:
+// the base level's work values never leave the stack.
+void SurfaceRowPair(const SurfaceArgs& a, int pair) {
+  const auto n = static_cast<std::size_t>(a.n);
+  alignas(64) float rows[2][4][2048];
+  for (std::size_t r = 0; r < 2; ++r) {
+    float* const work[4] = {rows[r][0], rows[r][1], rows[r][2], rows[r][3]};
+    SurfaceRowValues(a, 2 * pair + static_cast<int>(r), work);
+  }
+  // 2×2 averages (eq. 52) in the order of the mip rows: ((a + b) + c) + d.
+  alignas(64) float sum[4][1024];
+  const std::size_t size = n / 2;
+  std::size_t c = 0;
+#if HWY_TARGET != HWY_SCALAR
+  const hn::ScalableTag<float> df;
+  const std::size_t step = hn::Lanes(df);
+  for (; c + step <= size; c += step) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      const auto t0 = hn::Load(df, rows[0][k] + 2 * c), t1 = hn::Load(df, rows[0][k] + 2 * c + step);
+      const auto b0 = hn::Load(df, rows[1][k] + 2 * c), b1 = hn::Load(df, rows[1][k] + 2 * c + step);
+      const auto top = hn::Add(hn::ConcatEven(df, t1, t0), hn::ConcatOdd(df, t1, t0));
+      const auto all =
+          hn::Add(hn::Add(top, hn::ConcatEven(df, b1, b0)), hn::ConcatOdd(df, b1, b0));
+      hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
+    }
+  }
+#endif
+  for (; c < size; ++c) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      sum[k][c] = 0.25f * (((rows[0][k][2 * c] + rows[0][k][2 * c + 1]) + rows[1][k][2 * c]) +
+                           rows[1][k][2 * c + 1]);
+    }
+  }
+  MipFromSums(sum, size, mip_offset(a.n, 1) + static_cast<std::size_t>(pair) * size, a.mip_work,
+              a.packed);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ocean::cpu
 HWY_AFTER_NAMESPACE();
@@ -362,15 +413,15 @@ namespace ocean::cpu {
 
 HWY_EXPORT(EvolvePlanes);
 HWY_EXPORT(AssembleDisplacement);
-HWY_EXPORT(SurfaceRowCentral);
+HWY_EXPORT(SurfaceRowPair);
 HWY_EXPORT(MipRow);
 
 void mip_row(int n, int level, int row, float* work, std::uint32_t* packed) {
   HWY_DYNAMIC_DISPATCH(MipRow)(n, level, row, work, packed);
 }
 
-void surface_row_central(const SurfaceArgs& args, int row) {
-  HWY_DYNAMIC_DISPATCH(SurfaceRowCentral)(args, row);
+void surface_row_pair(const SurfaceArgs& args, int pair) {
+  HWY_DYNAMIC_DISPATCH(SurfaceRowPair)(args, pair);
 }
 
 void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im) {

@@ -71,13 +71,15 @@ struct SurfaceArgs {
   float* jacobian = nullptr;
   float* foam = nullptr;
   float* normal = nullptr;          ///< float3
-  float* mip_work = nullptr;        ///< float4 level 0 (n·len, blue)
-  std::uint32_t* packed = nullptr;  ///< RGBA8 level 0
+  float* mip_work = nullptr;        ///< float4 (n·len, blue) chain: level 1 is written
+  std::uint32_t* packed = nullptr;  ///< RGBA8 chain: levels 0 and 1 are written
 };
 
-/// The surface pass for one row with central differences and toroidal wrap (eqs. 45–51), the
-/// SIMD twin of finalize()'s central-difference path.
-void surface_row_central(const SurfaceArgs& args, int row);
+/// The surface pass for rows 2·pair and 2·pair + 1 with central differences and toroidal wrap
+/// (eqs. 45–51), the SIMD twin of finalize()'s central-difference path, and row `pair` of mip
+/// level 1 from them (eqs. 52–53; the base level's float4 work values stay on the stack, so
+/// mip_work's level 0 is not written).
+void surface_row_pair(const SurfaceArgs& args, int pair);
 
 /// One row of mip level `level` ≥ 1 from level − 1 (seed 000 eqs. 52–53): 2×2 box filter of the
 /// float4 work values (roughness-scaled normal, blue), smoothness from the filtered normal's
