@@ -216,8 +216,12 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const
   const float* down = a.displacement + 3 * n * static_cast<std::size_t>((row_int + 1) & mask);
   // The centre row deinterleaved with one wrapped texel on each side (eq. 46).
   alignas(64) float padded[3][2048 + 2];
-  for (std::size_t c = 0; c < n; ++c) {
-    for (std::size_t k = 0; k < 3; ++k) padded[k][c + 1] = centre[3 * c + k];
+  for (std::size_t c = 0; c < n; c += step) {
+    decltype(hn::Zero(df)) v0, v1, v2;
+    hn::LoadInterleaved3(df, centre + 3 * c, v0, v1, v2);
+    hn::StoreU(v0, df, padded[0] + c + 1);
+    hn::StoreU(v1, df, padded[1] + c + 1);
+    hn::StoreU(v2, df, padded[2] + c + 1);
   }
   for (std::size_t k = 0; k < 3; ++k) {
     padded[k][0] = padded[k][n];
