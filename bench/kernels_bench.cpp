@@ -1,6 +1,7 @@
-// Microbenchmarks of the CPU backend's SIMD kernels on every instruction set: evolution into a
-// column block, displacement assembly from a row block, the surface row and the mip chain, for
-// one 256² or 512² cascade. Run: build/release/bench/kernels_bench
+// Microbenchmarks of the CPU backend's SIMD kernels on every instruction set: evolution of the
+// two plane spectra into a column block, displacement assembly from a row block, the surface
+// row pairs (with mip level 1) and the rest of the mip chain, for one 256² or 512² cascade.
+// Run: build/release/bench/kernels_bench
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -51,7 +52,7 @@ void set_texels(benchmark::State& state, int n) {
       benchmark::Counter(double(n) * n, benchmark::Counter::kIsIterationInvariantRate);
 }
 
-void BM_EvolveAndFactors(benchmark::State& state) {
+void BM_EvolvePlanes(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   if (!select_target(state, static_cast<int>(state.range(1)))) return;
   Fixture f(n);
@@ -135,7 +136,7 @@ void BM_ReferenceSurfaceAndMips(benchmark::State& state) {
   set_texels(state, n);
 }
 
-BENCHMARK(BM_EvolveAndFactors)->ArgsProduct({{256, 512}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EvolvePlanes)->ArgsProduct({{256, 512}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_AssembleDisplacement)
     ->ArgsProduct({{256, 512}, {0, 1, 2}})
     ->Unit(benchmark::kMicrosecond);

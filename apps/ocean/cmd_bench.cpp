@@ -323,8 +323,9 @@ int run_bench(const BenchOptions& o) {
         Result<PipelineResult> ours = run_pipeline(config, {}, *runner, min_time.value());
         if (!ours.ok()) return report(ours.status());
         row.ours = ours.value();
-        // The same transforms alone: two planes per cascade.
-        const std::size_t plane_count = 2 * static_cast<std::size_t>(c);
+        // The same transforms alone: two planes per cascade, three per pair of cascades (the
+        // pipelines pair cascades: one plane carries both cascades' Dz).
+        const auto plane_count = static_cast<std::size_t>(3 * (c / 2) + 2 * (c % 2));
         Planes planes(n, plane_count);
         const fft::SimdPlan2D plan = fft::SimdPlan2D::make(n).value();
         row.ours_fft = stats_of(

@@ -69,7 +69,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
         {
           const auto r1 = hn::Mul(hn::Sub(br[1], bi[1]), half_sqrt2);  // ·(1 + i)/√2
           const auto i1 = hn::Mul(hn::Add(br[1], bi[1]), half_sqrt2);
-          const auto r2 = hn::Neg(bi[2]), i2 = br[2];  // ·i
+          const auto r2 = hn::Neg(bi[2]), i2 = br[2];                           // ·i
           const auto r3 = hn::Mul(hn::Neg(hn::Add(br[3], bi[3])), half_sqrt2);  // ·(−1 + i)/√2
           const auto i3 = hn::Mul(hn::Sub(br[3], bi[3]), half_sqrt2);
           br[1] = r1, bi[1] = i1, br[2] = r2, bi[2] = i2, br[3] = r3, bi[3] = i3;

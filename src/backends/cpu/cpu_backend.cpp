@@ -75,6 +75,15 @@ fft::SplitComplex plane_of(CascadeState& state, std::size_t p) {
   return {state.plane_re[p].data(), state.plane_im[p].data()};
 }
 
+/// K lane blocks of the largest size on a worker's stack (no allocation in the frame path).
+template <std::size_t K>
+struct StackLanes {
+  static constexpr std::size_t kFloats = fft::SimdPlan2D::kBlock * fft::kMaxSimdSize;
+  alignas(64) float re[K][kFloats];
+  alignas(64) float im[K][kFloats];
+  fft::SimdPlan2D::LaneBlock operator[](std::size_t i) { return {re[i], im[i]}; }
+};
+
 }  // namespace
 
 Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner) {
@@ -90,8 +99,8 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
   const auto texels =
       static_cast<std::size_t>(config.resolution) * static_cast<std::size_t>(config.resolution);
-  const bool pairs = options_.pipeline != CpuPipeline::scalar_reference &&
-                     plane_count(config.normals) == 2;
+  const bool pairs =
+      options_.pipeline != CpuPipeline::scalar_reference && plane_count(config.normals) == 2;
   std::vector<CascadeGroup> groups;
   for (std::size_t c = 0; c < cascades.size(); c += pairs ? 2 : 1)
     groups.push_back({c, std::min<std::size_t>(pairs ? 2 : 1, cascades.size() - c)});
@@ -170,13 +179,7 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   // without a copy: the tile itself for an even stage count, a scratch buffer for an odd one
   // (the analytic method's fourth plane takes one contiguous copy then).
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
-    alignas(64) float s0_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float s0_im[kLane * fft::kMaxSimdSize];
-    alignas(64) float s1_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float s1_im[kLane * fft::kMaxSimdSize];
-    alignas(64) float s2_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float s2_im[kLane * fft::kMaxSimdSize];
-    const LaneBlock scratch[3] = {{s0_re, s0_im}, {s1_re, s1_im}, {s2_re, s2_im}};
+    StackLanes<3> scratch;
     for (std::size_t item = begin; item < end; ++item) {
       const CascadeGroup& group = groups_[item / blocks];
       const int block = static_cast<int>(item % blocks);
@@ -191,14 +194,15 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
         float* im[fft::kMaxPlanes];
         for (std::size_t p = 0; p < state.tile_re.size(); ++p, ++count) {
           tile[count] = {state.tile_re[p].data() + origin, state.tile_im[p].data() + origin};
-          input[count] = count < 3 ? simd_plan_.input_for(tile[count], scratch[count]) : tile[count];
+          input[count] =
+              count < 3 ? simd_plan_.input_for(tile[count], scratch[count]) : tile[count];
           re[p] = input[count].re, im[p] = input[count].im;
         }
         if (c != group.first) re[1] = input[1].re, im[1] = input[1].im;  // the shared plane 1
         evolve_planes(evolve_args_[c], block, re, im);
       }
       for (std::size_t p = 0; p < count; ++p) {
-        const LaneBlock& other = scratch[p < 3 ? p : 0];
+        const LaneBlock other = scratch[p < 3 ? p : 0];
         if (input[p].re == tile[p].re && simd_plan_.input_for(tile[p], other).re != tile[p].re) {
           std::memcpy(other.re, tile[p].re, block_floats * sizeof(float));
           std::memcpy(other.im, tile[p].im, block_floats * sizeof(float));
@@ -211,13 +215,8 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   // (h + i·Dx) feeds the displacement assembly with the sign folded in; gradient planes
   // (analytic normals) go to the row-major planes.
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
-    alignas(64) float p0_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float p0_im[kLane * fft::kMaxSimdSize];
-    alignas(64) float p1_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float p1_im[kLane * fft::kMaxSimdSize];
-    alignas(64) float scratch_re[kLane * fft::kMaxSimdSize];
-    alignas(64) float scratch_im[kLane * fft::kMaxSimdSize];
-    const LaneBlock scratch{scratch_re, scratch_im};
+    StackLanes<3> buffers;  // plane 0's rows, plane 1's rows, scratch
+    const LaneBlock p0 = buffers[0], p1 = buffers[1], scratch = buffers[2];
     const auto row_fft = [&](CascadeState& state, std::size_t p, int block, LaneBlock lanes) {
       const LaneBlock input = simd_plan_.input_for(lanes, scratch);
       simd_plan_.tiles_to_lanes(state.tile_re[p].data(), block, input.re);
@@ -228,18 +227,18 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
       const CascadeGroup& group = groups_[item / blocks];
       const int block = static_cast<int>(item % blocks);
       CascadeState& first = cascades_[group.first];
-      row_fft(first, 1, block, {p1_re, p1_im});
+      row_fft(first, 1, block, p1);
       for (std::size_t c = group.first; c < group.first + group.count; ++c) {
-        row_fft(cascades_[c], 0, block, {p0_re, p0_im});
+        row_fft(cascades_[c], 0, block, p0);
         CascadeFrame& frame = out.cascades[c];
-        assemble_displacement(p0_re, p0_im, c == group.first ? p1_re : p1_im, n, block,
+        assemble_displacement(p0.re, p0.im, c == group.first ? p1.re : p1.im, n, block,
                               frame.displacement.data(), frame.displacement_half.data());
       }
       if (first.planes > 2) {
-        simd_plan_.store_rows(p1_re, p1_im, plane_of(first, 1), block, true);
+        simd_plan_.store_rows(p1.re, p1.im, plane_of(first, 1), block, true);
         for (std::size_t p = 2; p < static_cast<std::size_t>(first.planes); ++p) {
-          row_fft(first, p, block, {p0_re, p0_im});
-          simd_plan_.store_rows(p0_re, p0_im, plane_of(first, p), block, true);
+          row_fft(first, p, block, p0);
+          simd_plan_.store_rows(p0.re, p0.im, plane_of(first, p), block, true);
         }
       }
     }

@@ -52,7 +52,7 @@ struct CascadeState {
   std::vector<std::vector<float>> plane_re, plane_im;
   // Fused pipeline: structure-of-arrays inputs of the SIMD kernels (kernels.hpp) and each
   // plane between the column and the row pass as column blocks in lane layout (fft.hpp).
-  AlignedFloats evolution_spectrum;   ///< EvolveArgs::spectrum records
+  AlignedFloats evolution_spectrum;    ///< EvolveArgs::spectrum records
   std::vector<double> evolution_rate;  ///< EvolveArgs::rate (not looping)
   std::vector<AlignedFloats> tile_re, tile_im;
   std::vector<float> foam;      ///< accumulated foam carried between frames
@@ -74,8 +74,8 @@ void evolve(CascadeState& state, double time_s, double loop_period_s, TaskRunner
             CascadeState* dz_partner = nullptr);
 /// Displacement float3 and half4 from the transformed planes (scalar reference, eq. 44): Dx and
 /// h from plane 0, Dz from `dz` (plane 1's real part, or its partner's imaginary part).
-void assemble_displacement_reference(const CascadeState& state, const float* dz,
-                                     CascadeFrame& out, TaskRunner& runner);
+void assemble_displacement_reference(const CascadeState& state, const float* dz, CascadeFrame& out,
+                                     TaskRunner& runner);
 /// Gradients, normal, Jacobian, foam, base-level packing, from out.displacement (and the
 /// gradient planes in analytic mode).
 void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,

@@ -141,22 +141,22 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
 
 }  // namespace
 
-void assemble_displacement_reference(const CascadeState& state, const float* dz,
-                                     CascadeFrame& out, TaskRunner& runner) {
+void assemble_displacement_reference(const CascadeState& state, const float* dz, CascadeFrame& out,
+                                     TaskRunner& runner) {
   const int n = state.resolution;
   // Displacement assembly (eq. 44): the FFT already applied the sign and λ is in the spectra.
-  runner.parallel_for(
-      static_cast<std::size_t>(n), 8, [&](std::size_t row_begin, std::size_t row_end) {
-        for (std::size_t i = row_begin * static_cast<std::size_t>(n);
-             i < row_end * static_cast<std::size_t>(n); ++i) {
-          const float d[3] = {state.plane_im[0][i], state.plane_re[0][i], dz[i]};
-          for (std::size_t c = 0; c < 3; ++c) {
-            out.displacement[3 * i + c] = d[c];
-            out.displacement_half[4 * i + c] = float_to_half(d[c]);
-          }
-          out.displacement_half[4 * i + 3] = 0;
-        }
-      });
+  runner.parallel_for(static_cast<std::size_t>(n), 8,
+                      [&](std::size_t row_begin, std::size_t row_end) {
+                        for (std::size_t i = row_begin * static_cast<std::size_t>(n);
+                             i < row_end * static_cast<std::size_t>(n); ++i) {
+                          const float d[3] = {state.plane_im[0][i], state.plane_re[0][i], dz[i]};
+                          for (std::size_t c = 0; c < 3; ++c) {
+                            out.displacement[3 * i + c] = d[c];
+                            out.displacement_half[4 * i + c] = float_to_half(d[c]);
+                          }
+                          out.displacement_half[4 * i + 3] = 0;
+                        }
+                      });
 }
 
 void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,

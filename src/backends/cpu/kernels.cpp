@@ -16,11 +16,10 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
-#include "fft/transpose-inl.h"
-
 #include <cmath>
 
 #include "cpu/cpu_backend.hpp"
+#include "fft/transpose-inl.h"
 #include "ocean/half.hpp"
 #include "ocean/sim.hpp"
 
@@ -40,8 +39,7 @@ HWY_INLINE V ReciprocalSqrt(DF df, V x) {
   return hn::Div(hn::Set(df, 1.0f), hn::Sqrt(x));
 #else
   const auto y = hn::ApproximateReciprocalSqrt(x);
-  return hn::Mul(y, hn::NegMulAdd(hn::Mul(hn::Set(df, 0.5f), x), hn::Mul(y, y),
-                                  hn::Set(df, 1.5f)));
+  return hn::Mul(y, hn::NegMulAdd(hn::Mul(hn::Set(df, 0.5f), x), hn::Mul(y, y), hn::Set(df, 1.5f)));
 #endif
 }
 template <class DF, class V>
@@ -118,7 +116,8 @@ void EvolvePlanes(const EvolveArgs& a, int block, float* const* out_re, float* c
       const auto kx = hn::Load(df, kx_lanes + l);
       const auto k2 = hn::MulAdd(kx, kx, hn::Mul(kz, kz));
       const auto has_k = hn::Gt(k2, zero);
-      const auto inv_k = hn::IfThenElseZero(has_k, ReciprocalSqrt(df, hn::IfThenElse(has_k, k2, one)));
+      const auto inv_k =
+          hn::IfThenElseZero(has_k, ReciprocalSqrt(df, hn::IfThenElse(has_k, k2, one)));
       const auto ux = hn::Mul(kx, inv_k), uz = hn::Mul(kz, inv_k);
       const std::size_t j = row * kLanes + l;
       // Plane 0: (1 − λ·k̂x)·h̃ = h + i·Dx. Plane 1: i·λ·k̂z·h̃ = Dz (+ i·∂h/∂x: −kx·h̃).
@@ -164,8 +163,7 @@ void AssembleDisplacement(const float* h, const float* dx, const float* dz, int 
   for (std::size_t c0 = 0; c0 < n; c0 += kLanes) {
     const float* src[3] = {dx, h, dz};
     for (std::size_t k = 0; k < 3; ++k)
-      fft::detail::HWY_NAMESPACE::Transpose16Tile(src[k] + c0 * kLanes, kLanes, tile[k], kLanes,
-                                                  0);
+      fft::detail::HWY_NAMESPACE::Transpose16Tile(src[k] + c0 * kLanes, kLanes, tile[k], kLanes, 0);
     for (std::size_t l = 0; l < kLanes; ++l) {
       const std::size_t row = row0 + l;
       float* out = displacement + 3 * (row * n + c0);
@@ -184,10 +182,9 @@ void AssembleDisplacement(const float* h, const float* dx, const float* dz, int 
 #else
         const hn::Rebind<hwy::float16_t, decltype(df)> dh;
         const hn::Rebind<std::uint16_t, decltype(df)> du;
-        hn::StoreInterleaved4(hn::BitCast(du, hn::DemoteTo(dh, vx)),
-                              hn::BitCast(du, hn::DemoteTo(dh, vh)),
-                              hn::BitCast(du, hn::DemoteTo(dh, vz)), hn::Zero(du), du,
-                              half + 4 * c);
+        hn::StoreInterleaved4(
+            hn::BitCast(du, hn::DemoteTo(dh, vx)), hn::BitCast(du, hn::DemoteTo(dh, vh)),
+            hn::BitCast(du, hn::DemoteTo(dh, vz)), hn::Zero(du), du, half + 4 * c);
 #endif
       }
     }
@@ -269,8 +266,9 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const
     const auto now = hn::Min(hn::Max(hn::Mul(hn::Sub(j_start, jac), inv_range), zero), one);
     auto foam = now;
     if (!a.reset_foam) {
-      const auto accumulated = hn::Sub(hn::LoadU(df, a.foam_state + i),
-                                       hn::Mul(decay, Reciprocal(df, hn::Max(now, hn::Set(df, 0.5f)))));
+      const auto accumulated =
+          hn::Sub(hn::LoadU(df, a.foam_state + i),
+                  hn::Mul(decay, Reciprocal(df, hn::Max(now, hn::Set(df, 0.5f)))));
       foam = hn::Min(hn::Max(hn::Max(accumulated, now), zero), one);
     }
     hn::StoreU(foam, df, a.foam_state + i);
@@ -354,8 +352,8 @@ void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
       hn::LoadInterleaved4(df, src + 4 * step, hi[r][0], hi[r][1], hi[r][2], hi[r][3]);
     }
     for (std::size_t k = 0; k < 4; ++k) {  // the scalar loop's order of additions
-      const auto top = hn::Add(hn::ConcatEven(df, hi[0][k], lo[0][k]),
-                               hn::ConcatOdd(df, hi[0][k], lo[0][k]));
+      const auto top =
+          hn::Add(hn::ConcatEven(df, hi[0][k], lo[0][k]), hn::ConcatOdd(df, hi[0][k], lo[0][k]));
       const auto all = hn::Add(hn::Add(top, hn::ConcatEven(df, hi[1][k], lo[1][k])),
                                hn::ConcatOdd(df, hi[1][k], lo[1][k]));
       hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
@@ -389,11 +387,12 @@ void SurfaceRowPair(const SurfaceArgs& a, int pair) {
   const std::size_t step = hn::Lanes(df);
   for (; c + step <= size; c += step) {
     for (std::size_t k = 0; k < 4; ++k) {
-      const auto t0 = hn::Load(df, rows[0][k] + 2 * c), t1 = hn::Load(df, rows[0][k] + 2 * c + step);
-      const auto b0 = hn::Load(df, rows[1][k] + 2 * c), b1 = hn::Load(df, rows[1][k] + 2 * c + step);
+      const auto t0 = hn::Load(df, rows[0][k] + 2 * c),
+                 t1 = hn::Load(df, rows[0][k] + 2 * c + step);
+      const auto b0 = hn::Load(df, rows[1][k] + 2 * c),
+                 b1 = hn::Load(df, rows[1][k] + 2 * c + step);
       const auto top = hn::Add(hn::ConcatEven(df, t1, t0), hn::ConcatOdd(df, t1, t0));
-      const auto all =
-          hn::Add(hn::Add(top, hn::ConcatEven(df, b1, b0)), hn::ConcatOdd(df, b1, b0));
+      const auto all = hn::Add(hn::Add(top, hn::ConcatEven(df, b1, b0)), hn::ConcatOdd(df, b1, b0));
       hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
     }
   }
@@ -440,7 +439,8 @@ void assemble_displacement(const float* h, const float* dx, const float* dz, int
 void evolve_texel_reference(const EvolveArgs& a, int row, int col, float* re, float* im) {
   constexpr std::size_t kLanes = 16;
   const auto n = static_cast<std::size_t>(a.n);
-  const auto block = static_cast<std::size_t>(col) / kLanes, l = static_cast<std::size_t>(col) % kLanes;
+  const auto block = static_cast<std::size_t>(col) / kLanes,
+             l = static_cast<std::size_t>(col) % kLanes;
   const std::size_t r = block * n + static_cast<std::size_t>(row);
   const float* record = a.spectrum + r * a.record;
   // Same recipe as EvolutionPhase (M.7.3) on the same rate/clock inputs.
