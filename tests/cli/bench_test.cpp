@@ -15,6 +15,8 @@ TEST(BenchCli, JsonRowsHaveTheDocumentedFields) {
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["machine"]["fma_peak_gflops_per_thread"].get<double>(), 0.0);
   EXPECT_FALSE(j["machine"]["simd_target"].get<std::string>().empty());
+  EXPECT_GT(j["machine"]["copy_bandwidth_gbps"].get<double>(), 0.0);
+  EXPECT_GT(j["machine"]["copy_bandwidth_16mib_gbps"].get<double>(), 0.0);
   const auto& rows = j["rows"];
   ASSERT_EQ(rows.size(), 2u);
   for (std::size_t i = 0; i < rows.size(); ++i) {
