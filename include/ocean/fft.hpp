@@ -71,7 +71,7 @@ class Plan2D {
 };
 
 namespace detail {
-/// One stage of the SIMD plan (radix 8 or 4 on sub-transforms of length ns; its twiddles start
+/// One stage of the SIMD plan (radix 16, 8 or 4 on sub-transforms of length ns; its twiddles start
 /// at `twiddle`). Internal; see src/fft/lane_kernels.hpp.
 struct Stage {
   int radix;
@@ -84,7 +84,7 @@ struct Stage {
 inline constexpr int kMaxSimdSize = 2048;
 
 /// The fast 2D inverse transform: columns, then rows, 16 lines at a time as one SIMD vector
-/// (AVX-512; two AVX2 or four SSE/NEON vectors), mixed radix-8/4 Stockham stages with hoisted
+/// (AVX-512; two AVX2 or four SSE/NEON vectors), mixed radix-16/8/4 Stockham stages with hoisted
 /// twiddles, natural order in and out (no bit reversal), dispatched at run time to the best
 /// instruction set (Highway). docs/performance.md describes the layout.
 ///

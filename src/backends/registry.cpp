@@ -30,7 +30,7 @@ BackendInfo vulkan_info(bool probe) {
 
 std::vector<BackendInfo> backend_table(bool probe) {
   return {{"cpu", true,
-           "SIMD pipeline (" + fft::active_simd_target() + "), radix-8 Stockham FFT, oneTBB"},
+           "SIMD pipeline (" + fft::active_simd_target() + "), radix-16 Stockham FFT, oneTBB"},
           vulkan_info(probe),
           {"cuda", false, "built without CUDA: the CUDA backend is not part of this build"}};
 }

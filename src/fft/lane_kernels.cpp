@@ -1,4 +1,4 @@
-// SIMD kernels of the lane-blocked inverse FFT: mixed radix-8/4/2 Stockham autosort stages on 16
+// SIMD kernels of the lane-blocked inverse FFT: mixed radix-16/8/4 Stockham autosort stages on 16
 // interleaved signals, and the 16-row transposes with the (−1)^(x+y) shift. Compiled once per
 // instruction set by Highway and dispatched at run time.
 //
@@ -48,7 +48,67 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       in_re[r] = a.re + src, in_im[r] = a.im + src;
       out_re[r] = b.re + dst, out_im[r] = b.im + dst;
     }
-    if constexpr (R == 8) {
+    if constexpr (R == 16) {
+      // 16 = 4 × 4 (r = r1 + 4·r2, q = 4·q1 + q2): 4-point DFTs over r2, the internal
+      // twiddles w16^(r1·q2), 4-point DFTs over r1 (w16 = e^{+iπ/8}).
+      using V = decltype(hn::Zero(d));
+      const auto half_sqrt2 = hn::Set(d, 0.70710678118654752f);
+      const auto c8 = hn::Set(d, 0.92387953251128674f), s8 = hn::Set(d, 0.38268343236508977f);
+      const auto dft4 = [](V* cr, V* ci, int stride) {  // in place, natural order
+        const V a0r = hn::Add(cr[0], cr[2 * stride]), a0i = hn::Add(ci[0], ci[2 * stride]);
+        const V a1r = hn::Sub(cr[0], cr[2 * stride]), a1i = hn::Sub(ci[0], ci[2 * stride]);
+        const V a2r = hn::Add(cr[stride], cr[3 * stride]),
+                a2i = hn::Add(ci[stride], ci[3 * stride]);
+        const V a3r = hn::Sub(ci[3 * stride], ci[stride]);  // i·(c1 − c3)
+        const V a3i = hn::Sub(cr[stride], cr[3 * stride]);
+        cr[0] = hn::Add(a0r, a2r), ci[0] = hn::Add(a0i, a2i);
+        cr[stride] = hn::Add(a1r, a3r), ci[stride] = hn::Add(a1i, a3i);
+        cr[2 * stride] = hn::Sub(a0r, a2r), ci[2 * stride] = hn::Sub(a0i, a2i);
+        cr[3 * stride] = hn::Sub(a1r, a3r), ci[3 * stride] = hn::Sub(a1i, a3i);
+      };
+      for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
+        V tr[16], ti[16];
+        tr[0] = hn::LoadU(d, in_re[0] + l), ti[0] = hn::LoadU(d, in_im[0] + l);
+        for (int r = 1; r < 16; ++r) {  // t_r = v_r·w^r
+          const auto vr = hn::LoadU(d, in_re[r] + l), vi = hn::LoadU(d, in_im[r] + l);
+          const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
+          tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
+          ti[r] = hn::MulAdd(vr, wi_r, hn::Mul(vi, wr_r));
+        }
+        // Column r1 (elements r1, r1 + 4, r1 + 8, r1 + 12) becomes Y[r1][q2] at r1 + 4·q2.
+        for (int r1 = 0; r1 < 4; ++r1) dft4(tr + r1, ti + r1, 4);
+        const auto rotate = [&](int i, V cr, V ci) {  // t_i ·= (cr + i·ci)
+          const V x = tr[i], y = ti[i];
+          tr[i] = hn::MulSub(x, cr, hn::Mul(y, ci));
+          ti[i] = hn::MulAdd(x, ci, hn::Mul(y, cr));
+        };
+        const auto eighth = [&](int i, bool back) {  // ·(±1 + i)/√2
+          const V x = tr[i], y = ti[i];
+          tr[i] = hn::Mul(back ? hn::Neg(hn::Add(x, y)) : hn::Sub(x, y), half_sqrt2);
+          ti[i] = hn::Mul(back ? hn::Sub(x, y) : hn::Add(x, y), half_sqrt2);
+        };
+        rotate(1 + 4, c8, s8);   // w^1
+        eighth(1 + 8, false);    // w^2
+        rotate(1 + 12, s8, c8);  // w^3
+        eighth(2 + 4, false);    // w^2
+        {                        // w^4 = i
+          const V x = tr[2 + 8];
+          tr[2 + 8] = hn::Neg(ti[2 + 8]), ti[2 + 8] = x;
+        }
+        eighth(2 + 12, true);                      // w^6
+        rotate(3 + 4, s8, c8);                     // w^3
+        eighth(3 + 8, true);                       // w^6
+        rotate(3 + 12, hn::Neg(c8), hn::Neg(s8));  // w^9
+        // Row q2 (elements 4·q2 … 4·q2 + 3 over r1) gives X[4·q1 + q2] at 4·q2 + q1.
+        for (int q2 = 0; q2 < 4; ++q2) dft4(tr + 4 * q2, ti + 4 * q2, 1);
+        for (int q1 = 0; q1 < 4; ++q1) {
+          for (int q2 = 0; q2 < 4; ++q2) {
+            hn::StoreU(tr[4 * q2 + q1], d, out_re[4 * q1 + q2] + l);
+            hn::StoreU(ti[4 * q2 + q1], d, out_im[4 * q1 + q2] + l);
+          }
+        }
+      }
+    } else if constexpr (R == 8) {
       const auto half_sqrt2 = hn::Set(d, 0.70710678118654752f);
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         decltype(hn::Zero(d)) tr[8], ti[8];
@@ -122,17 +182,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
         hn::StoreU(hn::Sub(a1i, a3i), d, out_im[3] + l);
       }
     } else {
-      const auto w1r = hn::Set(d, wr[0]), w1i = hn::Set(d, wi[0]);
-      for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
-        const auto v0r = hn::LoadU(d, in_re[0] + l), v0i = hn::LoadU(d, in_im[0] + l);
-        const auto v1r = hn::LoadU(d, in_re[1] + l), v1i = hn::LoadU(d, in_im[1] + l);
-        const auto t1r = hn::MulSub(v1r, w1r, hn::Mul(v1i, w1i));
-        const auto t1i = hn::MulAdd(v1r, w1i, hn::Mul(v1i, w1r));
-        hn::StoreU(hn::Add(v0r, t1r), d, out_re[0] + l);
-        hn::StoreU(hn::Add(v0i, t1i), d, out_im[0] + l);
-        hn::StoreU(hn::Sub(v0r, t1r), d, out_re[1] + l);
-        hn::StoreU(hn::Sub(v0i, t1i), d, out_im[1] + l);
-      }
+      static_assert(R == 16 || R == 8 || R == 4, "the plan's radices");
     }
   }
 }
@@ -140,12 +190,12 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
 bool Stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
   for (int i = 0; i < table.count; ++i) {
     const Stage& s = table.stages[i];
-    if (s.radix == 8) {
+    if (s.radix == 16) {
+      StockhamStage<16>(table, s, a, b);
+    } else if (s.radix == 8) {
       StockhamStage<8>(table, s, a, b);
-    } else if (s.radix == 4) {
-      StockhamStage<4>(table, s, a, b);
     } else {
-      StockhamStage<2>(table, s, a, b);
+      StockhamStage<4>(table, s, a, b);
     }
     const LaneBuffer swap = a;
     a = b, b = swap;

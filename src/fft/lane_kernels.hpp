@@ -20,7 +20,7 @@ struct LaneBuffer {
   std::size_t stride;  ///< floats between consecutive elements (≥ kLanes)
 };
 
-// Stage (ocean/fft.hpp): radix 8 or 4 on sub-transforms of length ns (product of the radices
+// Stage (ocean/fft.hpp): radix 16, 8 or 4 on sub-transforms of length ns (product of the radices
 // of the previous stages); twiddles w^r, r = 1..radix−1, for k ∈ [0, ns) start at `twiddle`.
 
 struct StageTable {

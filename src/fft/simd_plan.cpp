@@ -28,12 +28,14 @@ Result<SimdPlan2D> SimdPlan2D::make(int n) {
   }
   SimdPlan2D plan;
   plan.n_ = n;
-  // Radix-8 stages (fewest passes over the lane buffers), with log2 N mod 3 = 1 as two
-  // radix-4 stages and = 2 as one: 256 = 8·8·4, 512 = 8·8·8, 1024 = 8·8·4·4.
+  // Radix-16 stages (fewest passes over the lane buffers), then a radix-4 or radix-8 stage for
+  // the rest of log2 N; a remainder of one bit turns a 16 into 8·4: 256 = 16·16,
+  // 512 = 16·8·4, 1024 = 16·16·4, 2048 = 16·16·8.
   const int log2n = std::countr_zero(static_cast<unsigned>(n));
-  std::vector<int> radices(static_cast<std::size_t>(log2n / 3), 8);
-  if (log2n % 3 == 1) radices.back() = 4, radices.push_back(4);  // n ≥ 16: at least one 8
-  if (log2n % 3 == 2) radices.push_back(4);
+  std::vector<int> radices(static_cast<std::size_t>(log2n / 4), 16);
+  if (log2n % 4 == 1) radices.back() = 8, radices.push_back(4);  // n ≥ 16: at least one 16
+  if (log2n % 4 == 2) radices.push_back(4);
+  if (log2n % 4 == 3) radices.push_back(8);
   int ns = 1;
   std::size_t offset = 0;
   for (const int radix : radices) {

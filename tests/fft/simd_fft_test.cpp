@@ -33,8 +33,9 @@ void for_each_target(Body body) {
 TEST(SimdFft2D, MatchesFftwOnEveryTarget) {
   auto runner = ocean::make_tbb_runner();
   for_each_target([&](bool best) {
-    // 16 = 4·4, 32 = 8·4, 64 = 8·8, 1024 = 8·8·4·4 (even stage counts: the result stays in
-    // the input buffer); 128 = 8·4·4, 256 = 8·8·4, 512 = 8·8·8 (odd: it ends in the scratch).
+    // 32 = 8·4, 64 = 16·4, 128 = 16·8, 256 = 16·16 (even stage counts: the result stays in
+    // the input buffer); 16, 512 = 16·8·4, 1024 = 16·16·4, 2048 = 16·16·8 (odd: it ends in
+    // the scratch). Every radix (16, 8, 4) appears.
     for (int n = 16; n <= (best ? 2048 : 512); n *= 2) {
       const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
       Signal a(count, 3), b(count, 4);
