@@ -23,6 +23,19 @@ namespace ocean::fft::detail {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
+// The R inputs of a butterfly at lane offset l, twiddled: t_r = v_r·w^r (w^0 = 1).
+template <int R, class D, class V>
+HWY_INLINE void LoadTwiddled(D d, const float* const* in_re, const float* const* in_im,
+                             std::size_t l, const float* wr, const float* wi, V* tr, V* ti) {
+  tr[0] = hn::LoadU(d, in_re[0] + l), ti[0] = hn::LoadU(d, in_im[0] + l);
+  for (int r = 1; r < R; ++r) {
+    const auto vr = hn::LoadU(d, in_re[r] + l), vi = hn::LoadU(d, in_im[r] + l);
+    const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
+    tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
+    ti[r] = hn::MulAdd(vr, wi_r, hn::Mul(vi, wr_r));
+  }
+}
+
 // One stage a → b. Element j of the input (j < N/R) with its R−1 partners at distance N/R is
 // twiddled by w^r, w = e^{+2πi·k/(ns·R)}, k = j mod ns, combined by an R-point inverse DFT and
 // written to (j − k)·R + k + r·ns.
@@ -68,13 +81,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       };
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         V tr[16], ti[16];
-        tr[0] = hn::LoadU(d, in_re[0] + l), ti[0] = hn::LoadU(d, in_im[0] + l);
-        for (int r = 1; r < 16; ++r) {  // t_r = v_r·w^r
-          const auto vr = hn::LoadU(d, in_re[r] + l), vi = hn::LoadU(d, in_im[r] + l);
-          const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
-          tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
-          ti[r] = hn::MulAdd(vr, wi_r, hn::Mul(vi, wr_r));
-        }
+        LoadTwiddled<16>(d, in_re, in_im, l, wr, wi, tr, ti);
         // Column r1 (elements r1, r1 + 4, r1 + 8, r1 + 12) becomes Y[r1][q2] at r1 + 4·q2.
         for (int r1 = 0; r1 < 4; ++r1) dft4(tr + r1, ti + r1, 4);
         const auto rotate = [&](int i, V cr, V ci) {  // t_i ·= (cr + i·ci)
@@ -112,13 +119,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       const auto half_sqrt2 = hn::Set(d, 0.70710678118654752f);
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         decltype(hn::Zero(d)) tr[8], ti[8];
-        tr[0] = hn::LoadU(d, in_re[0] + l), ti[0] = hn::LoadU(d, in_im[0] + l);
-        for (int r = 1; r < 8; ++r) {  // t_r = v_r·w^r
-          const auto vr = hn::LoadU(d, in_re[r] + l), vi = hn::LoadU(d, in_im[r] + l);
-          const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
-          tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
-          ti[r] = hn::MulAdd(vr, wi_r, hn::Mul(vi, wr_r));
-        }
+        LoadTwiddled<8>(d, in_re, in_im, l, wr, wi, tr, ti);
         // 8 = 2 × 4: a_r = t_r + t_{r+4} feed the even outputs, b_r·w8^r = (t_r − t_{r+4})·w8^r
         // the odd ones, each through a 4-point inverse DFT (w8 = e^{+iπ/4}).
         decltype(hn::Zero(d)) ar[4], ai[4], br[4], bi[4];
