@@ -230,6 +230,13 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const
   const auto base_length = hn::Set(df, a.base_length);
   const auto j_start = hn::Set(df, a.jacobian_start);
   const auto inv_range = hn::Set(df, 1.0f / a.jacobian_range);
+  // Locals: the stores below could alias `a` as far as the compiler knows.
+  const bool reset_foam = a.reset_foam, blue_is_foam = a.blue_is_foam;
+  float* const foam_state = a.foam_state;
+  float* const jacobian = a.jacobian;
+  float* const foam_out = a.foam;
+  float* const normal = a.normal;
+  auto* const packed = reinterpret_cast<std::int32_t*>(a.packed);
   const auto decay = hn::Set(df, a.decay);
   const auto alpha =
       hn::ShiftLeft<24>(Quantise(df, hn::Set(df, a.smoothness)));  // constant smoothness
@@ -265,18 +272,18 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const
     const std::size_t i = row * n + c;
     const auto now = hn::Min(hn::Max(hn::Mul(hn::Sub(j_start, jac), inv_range), zero), one);
     auto foam = now;
-    if (!a.reset_foam) {
+    if (!reset_foam) {
       const auto accumulated =
-          hn::Sub(hn::LoadU(df, a.foam_state + i),
+          hn::Sub(hn::LoadU(df, foam_state + i),
                   hn::Mul(decay, Reciprocal(df, hn::Max(now, hn::Set(df, 0.5f)))));
       foam = hn::Min(hn::Max(hn::Max(accumulated, now), zero), one);
     }
-    hn::StoreU(foam, df, a.foam_state + i);
-    hn::StoreU(jac, df, a.jacobian + i);
-    hn::StoreU(foam, df, a.foam + i);
-    hn::StoreInterleaved3(nx, ny, nz, df, a.normal + 3 * i);
+    hn::StoreU(foam, df, foam_state + i);
+    hn::StoreU(jac, df, jacobian + i);
+    hn::StoreU(foam, df, foam_out + i);
+    hn::StoreInterleaved3(nx, ny, nz, df, normal + 3 * i);
     const auto blue =
-        a.blue_is_foam
+        blue_is_foam
             ? foam
             : hn::Min(hn::Max(hn::MulAdd(jac, hn::Set(df, 0.5f), hn::Set(df, 0.5f)), zero), one);
     hn::Store(hn::Mul(nx, base_length), df, work[0] + c);
@@ -288,7 +295,7 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const
             Quantise(df, hn::MulAdd(nx, hn::Set(df, 0.5f), hn::Set(df, 0.5f))),
             hn::ShiftLeft<8>(Quantise(df, hn::MulAdd(nz, hn::Set(df, 0.5f), hn::Set(df, 0.5f))))),
         hn::Or(hn::ShiftLeft<16>(Quantise(df, blue)), alpha));
-    hn::StoreU(rgba, di, reinterpret_cast<std::int32_t*>(a.packed + i));
+    hn::StoreU(rgba, di, packed + i);
   }
 }
 
