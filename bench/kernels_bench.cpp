@@ -1,7 +1,7 @@
 // Microbenchmarks of the CPU backend's SIMD kernels on every instruction set: evolution of the
-// two plane spectra into a column block, displacement assembly from a row block, the surface
-// row pairs (with mip level 1) and the rest of the mip chain, for one 256² or 512² cascade.
-// Run: build/release/bench/kernels_bench
+// two plane spectra into a column block (alone, and with its mirror block), displacement assembly
+// from a row block, the surface row pairs (with mip level 1) and the rest of the mip chain, for one
+// 256² or 512² cascade. Run: build/release/bench/kernels_bench
 #include <benchmark/benchmark.h>
 
 #include <string>
@@ -62,6 +62,24 @@ void BM_EvolvePlanes(benchmark::State& state) {
   float* im[2] = {lanes[2], lanes[3]};
   for (auto _ : state) {
     for (int block = 0; block < n / 16; ++block) ocean::cpu::evolve_planes(args, block, re, im);
+    benchmark::ClobberMemory();
+  }
+  set_texels(state, n);
+}
+
+void BM_EvolvePlanesMirrored(benchmark::State& state) {
+  const int n = static_cast<int>(state.range(0));
+  if (!select_target(state, static_cast<int>(state.range(1)))) return;
+  Fixture f(n);
+  const ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(f.state, 1234.5, 200.0);
+  alignas(64) static float lanes[8][16 * 2048];
+  float* re[2] = {lanes[0], lanes[1]};
+  float* im[2] = {lanes[2], lanes[3]};
+  float* mirror_re[2] = {lanes[4], lanes[5]};
+  float* mirror_im[2] = {lanes[6], lanes[7]};
+  for (auto _ : state) {
+    for (int block = 0; block < n / 32; ++block)
+      ocean::cpu::evolve_planes_mirrored(args, block, re, im, mirror_re, mirror_im);
     benchmark::ClobberMemory();
   }
   set_texels(state, n);
@@ -137,6 +155,9 @@ void BM_ReferenceSurfaceAndMips(benchmark::State& state) {
 }
 
 BENCHMARK(BM_EvolvePlanes)->ArgsProduct({{256, 512}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_EvolvePlanesMirrored)
+    ->ArgsProduct({{256, 512}, {0, 1, 2}})
+    ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_AssembleDisplacement)
     ->ArgsProduct({{256, 512}, {0, 1, 2}})
     ->Unit(benchmark::kMicrosecond);

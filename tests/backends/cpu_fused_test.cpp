@@ -8,6 +8,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "cpu/cpu_backend.hpp"
 #include "cpu/kernels.hpp"
@@ -149,6 +150,62 @@ TEST(CpuFused, EvolutionKernelMatchesScalarPhaseRecipe) {
         // ≤ 4e-7 of the largest packed amplitude times the largest factor.
         for (int p = 0; p < planes; ++p)
           EXPECT_LT(err[p], 2e-6 * amplitude) << "plane " << p << ", loop period " << period;
+      }
+    }
+  });
+}
+
+// Evolving a column block with its mirror block (h̃(−k) = conj h̃(k)) gives the bits of
+// evolving each block on its own, on every target, for both plane counts, looping and not, and
+// when plane 1 accumulates a pair's second Dz.
+TEST(CpuFused, MirroredEvolutionIsBitIdentical) {
+  for_each_target([] {
+    for (int n : {32, 128}) {
+      for (int planes : {2, 4}) {
+        for (double period : {200.0, 0.0}) {
+          ocean::SimulationConfig config;
+          config.resolution = n;
+          config.cascade_patch_sizes_m = {250.0};
+          ocean::cpu::CascadeState state;
+          state.resolution = n;
+          state.patch_size_m = 250.0;
+          state.planes = planes;
+          state.choppiness = 1.3;
+          state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
+                                                        ocean::cascade_spectrum_params(config, 0))
+                               .value();
+          ocean::cpu::build_kernel_inputs(state, period);
+          ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(state, 259200.7, period);
+          args.dz_into_imaginary = planes == 2 && period > 0.0;
+          const std::size_t floats = 16 * std::size_t(n);
+          // [side][plane][re, im]: one block alone vs the mirrored pair (64-byte aligned,
+          // as the kernels require).
+          ocean::cpu::AlignedFloats alone(2 * 4 * 2 * floats), paired(alone.size());
+          const auto ptrs = [&](ocean::cpu::AlignedFloats& v, std::size_t side, bool imag) {
+            std::vector<float*> out(4);
+            for (std::size_t p = 0; p < 4; ++p)
+              out[p] = v.data() + ((side * 4 + p) * 2 + (imag ? 1 : 0)) * floats;
+            return out;
+          };
+          for (int block = 0; block < n / 32; ++block) {
+            const int mirror = n / 16 - 1 - block;
+            auto a0r = ptrs(alone, 0, false), a0i = ptrs(alone, 0, true);
+            auto a1r = ptrs(alone, 1, false), a1i = ptrs(alone, 1, true);
+            std::fill_n(alone.data(), alone.size(), 0.25f);  // plane 1 may be accumulated into
+            std::fill_n(paired.data(), paired.size(), 0.25f);
+            ocean::cpu::evolve_planes(args, block, a0r.data(), a0i.data());
+            ocean::cpu::evolve_planes(args, mirror, a1r.data(), a1i.data());
+            auto p0r = ptrs(paired, 0, false), p0i = ptrs(paired, 0, true);
+            auto p1r = ptrs(paired, 1, false), p1i = ptrs(paired, 1, true);
+            ocean::cpu::evolve_planes_mirrored(args, block, p0r.data(), p0i.data(), p1r.data(),
+                                               p1i.data());
+            std::size_t differing = 0;
+            for (std::size_t i = 0; i < alone.size(); ++i)
+              differing += alone.data()[i] != paired.data()[i];
+            EXPECT_EQ(differing, 0u) << "n " << n << ", planes " << planes << ", period " << period
+                                     << ", block " << block;
+          }
+        }
       }
     }
   });

@@ -168,46 +168,62 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   const int n = config_.resolution;
   const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
   const std::size_t items = groups_.size() * blocks;
+  // Column blocks in mirror pairs (b, N/16 − 1 − b) from N = 32: h̃(−k) = conj h̃(k).
+  const std::size_t sides = blocks >= 2 ? 2 : 1;
+  const std::size_t units = blocks / sides;
   constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
   const std::size_t block_floats = kLane * static_cast<std::size_t>(n);
   for (std::size_t c = 0; c < cascades_.size(); ++c) {
     evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
     evolve_args_[c].dz_into_imaginary = groups_[c / 2].count == 2 && c % 2 == 1;
   }
-  // Columns: every (group, column block) evolves h̃ once per cascade and writes each plane's
-  // spectrum where transform() wants it, so the result lands in the plane's tile storage
-  // without a copy: the tile itself for an even stage count, a scratch buffer for an odd one
-  // (the analytic method's fourth plane takes one contiguous copy then).
-  runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
+  // Columns: every (group, column block pair) evolves h̃ once per cascade and writes each
+  // plane's spectrum where transform() wants it, so the result lands in the plane's tile
+  // storage without a copy: the tile itself for an even stage count, a scratch buffer for an
+  // odd one (the mirror block's planes and the analytic method's fourth plane take one
+  // contiguous copy then).
+  runner_->parallel_for(groups_.size() * units, 1, [&](std::size_t begin, std::size_t end) {
     StackLanes<3> scratch;
     for (std::size_t item = begin; item < end; ++item) {
-      const CascadeGroup& group = groups_[item / blocks];
-      const int block = static_cast<int>(item % blocks);
-      const std::size_t origin = static_cast<std::size_t>(block) * block_floats;
-      // The group's planes: the first cascade's, then plane 0 of the second.
-      LaneBlock tile[fft::kMaxPlanes];
-      LaneBlock input[fft::kMaxPlanes];
+      const CascadeGroup& group = groups_[item / units];
+      const std::size_t block[2] = {item % units, blocks - 1 - item % units};
+      // The group's planes: the first cascade's, then plane 0 of the second; per side.
+      LaneBlock tile[2][fft::kMaxPlanes];
+      LaneBlock input[2][fft::kMaxPlanes];
       std::size_t count = 0;
       for (std::size_t c = group.first; c < group.first + group.count; ++c) {
         CascadeState& state = cascades_[c];
-        float* re[fft::kMaxPlanes];
-        float* im[fft::kMaxPlanes];
+        float* re[2][fft::kMaxPlanes];
+        float* im[2][fft::kMaxPlanes];
         for (std::size_t p = 0; p < state.tile_re.size(); ++p, ++count) {
-          tile[count] = {state.tile_re[p].data() + origin, state.tile_im[p].data() + origin};
-          input[count] =
-              count < 3 ? simd_plan_.input_for(tile[count], scratch[count]) : tile[count];
-          re[p] = input[count].re, im[p] = input[count].im;
+          for (std::size_t side = 0; side < sides; ++side) {
+            const std::size_t origin = block[side] * block_floats;
+            LaneBlock& t = tile[side][count];
+            t = {state.tile_re[p].data() + origin, state.tile_im[p].data() + origin};
+            input[side][count] =
+                side == 0 && count < 3 ? simd_plan_.input_for(t, scratch[count]) : t;
+            re[side][p] = input[side][count].re, im[side][p] = input[side][count].im;
+          }
         }
-        if (c != group.first) re[1] = input[1].re, im[1] = input[1].im;  // the shared plane 1
-        evolve_planes(evolve_args_[c], block, re, im);
+        for (std::size_t side = 0; c != group.first && side < sides; ++side)
+          re[side][1] = input[side][1].re, im[side][1] = input[side][1].im;  // shared plane 1
+        const int first_block = static_cast<int>(block[0]);
+        if (sides == 2) {
+          evolve_planes_mirrored(evolve_args_[c], first_block, re[0], im[0], re[1], im[1]);
+        } else {
+          evolve_planes(evolve_args_[c], first_block, re[0], im[0]);
+        }
       }
-      for (std::size_t p = 0; p < count; ++p) {
-        const LaneBlock other = scratch[p < 3 ? p : 0];
-        if (input[p].re == tile[p].re && simd_plan_.input_for(tile[p], other).re != tile[p].re) {
-          std::memcpy(other.re, tile[p].re, block_floats * sizeof(float));
-          std::memcpy(other.im, tile[p].im, block_floats * sizeof(float));
+      for (std::size_t side = 0; side < sides; ++side) {
+        for (std::size_t p = 0; p < count; ++p) {
+          const LaneBlock t = tile[side][p];
+          const LaneBlock other = scratch[side == 0 && p < 3 ? p : 0];
+          if (input[side][p].re == t.re && simd_plan_.input_for(t, other).re != t.re) {
+            std::memcpy(other.re, t.re, block_floats * sizeof(float));
+            std::memcpy(other.im, t.im, block_floats * sizeof(float));
+          }
+          simd_plan_.transform(t, other);
         }
-        simd_plan_.transform(tile[p], other);
       }
     }
   });

@@ -46,6 +46,13 @@ void plane_factors(double kx, double kz, double lambda, int planes, std::complex
 /// 64-byte aligned); with dz_into_imaginary, plane 1 is read and updated.
 void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im);
 
+/// The same for block `block` < N/32 and its mirror block N/16 − 1 − block together (N ≥ 32):
+/// h̃(−k) = conj h̃(k) exactly, so the mirror block's columns 16·mirror + m, m ≥ 1, come from
+/// column 16·block + 16 − m with no sine or cosine of their own; its column 16·mirror is
+/// evolved directly. Same results as evolve_planes on both blocks, bit for bit.
+void evolve_planes_mirrored(const EvolveArgs& args, int block, float* const* re, float* const* im,
+                            float* const* mirror_re, float* const* mirror_im);
+
 /// Reference evolution of texel (row, col) with the same phase recipe in double precision and
 /// std::cos/std::sin (the oracle the SIMD kernel is tested against): every plane's value.
 void evolve_texel_reference(const EvolveArgs& args, int row, int col, float* re, float* im);
