@@ -102,23 +102,28 @@ void expect_frames_agree(const ocean::Frame& fast, const ocean::Frame& ref) {
   EXPECT_EQ(half_ulps, 0);
 }
 
+// One 250 m cascade of the default sea with the evolution kernel's inputs (λ = 1.3).
+ocean::cpu::CascadeState kernel_state(int n, int planes, double loop_period_s) {
+  ocean::SimulationConfig config;
+  config.resolution = n;
+  config.cascade_patch_sizes_m = {250.0};
+  ocean::cpu::CascadeState state;
+  state.resolution = n;
+  state.patch_size_m = 250.0;
+  state.planes = planes;
+  state.choppiness = 1.3;
+  state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
+                                                ocean::cascade_spectrum_params(config, 0))
+                       .value();
+  ocean::cpu::build_kernel_inputs(state, loop_period_s);
+  return state;
+}
+
 TEST(CpuFused, EvolutionKernelMatchesScalarPhaseRecipe) {
   for_each_target([] {
-    ocean::SimulationConfig config;
-    config.resolution = 64;
-    config.cascade_patch_sizes_m = {250.0};
     for (int planes : {2, 4}) {
       for (double period : {200.0, 0.0}) {
-        config.loop_period_s = period;
-        ocean::cpu::CascadeState state;
-        state.resolution = 64;
-        state.patch_size_m = 250.0;
-        state.planes = planes;
-        state.choppiness = 1.3;
-        state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
-                                                      ocean::cascade_spectrum_params(config, 0))
-                             .value();
-        ocean::cpu::build_kernel_inputs(state, period);
+        const ocean::cpu::CascadeState state = kernel_state(64, planes, period);
         double amplitude = 0.0;
         for (const auto& packed : state.spectrum.packed)
           for (float v : packed) amplitude = std::max(amplitude, double(std::abs(v)));
@@ -163,18 +168,7 @@ TEST(CpuFused, MirroredEvolutionIsBitIdentical) {
     for (int n : {32, 128}) {
       for (int planes : {2, 4}) {
         for (double period : {200.0, 0.0}) {
-          ocean::SimulationConfig config;
-          config.resolution = n;
-          config.cascade_patch_sizes_m = {250.0};
-          ocean::cpu::CascadeState state;
-          state.resolution = n;
-          state.patch_size_m = 250.0;
-          state.planes = planes;
-          state.choppiness = 1.3;
-          state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
-                                                        ocean::cascade_spectrum_params(config, 0))
-                               .value();
-          ocean::cpu::build_kernel_inputs(state, period);
+          const ocean::cpu::CascadeState state = kernel_state(n, planes, period);
           ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(state, 259200.7, period);
           args.dz_into_imaginary = planes == 2 && period > 0.0;
           const std::size_t floats = 16 * std::size_t(n);
