@@ -36,6 +36,21 @@ HWY_INLINE void LoadTwiddled(D d, const float* const* in_re, const float* const*
   }
 }
 
+// 4-point inverse DFT in place, X_q = Σ_r c_r·i^{rq}, on elements c[0], c[stride], c[2·stride],
+// c[3·stride] (natural order in and out).
+template <class V>
+HWY_INLINE void Dft4(V* cr, V* ci, int stride) {
+  const V a0r = hn::Add(cr[0], cr[2 * stride]), a0i = hn::Add(ci[0], ci[2 * stride]);
+  const V a1r = hn::Sub(cr[0], cr[2 * stride]), a1i = hn::Sub(ci[0], ci[2 * stride]);
+  const V a2r = hn::Add(cr[stride], cr[3 * stride]), a2i = hn::Add(ci[stride], ci[3 * stride]);
+  const V a3r = hn::Sub(ci[3 * stride], ci[stride]);  // i·(c1 − c3)
+  const V a3i = hn::Sub(cr[stride], cr[3 * stride]);
+  cr[0] = hn::Add(a0r, a2r), ci[0] = hn::Add(a0i, a2i);
+  cr[stride] = hn::Add(a1r, a3r), ci[stride] = hn::Add(a1i, a3i);
+  cr[2 * stride] = hn::Sub(a0r, a2r), ci[2 * stride] = hn::Sub(a0i, a2i);
+  cr[3 * stride] = hn::Sub(a1r, a3r), ci[3 * stride] = hn::Sub(a1i, a3i);
+}
+
 // One stage a → b. Element j of the input (j < N/R) with its R−1 partners at distance N/R is
 // twiddled by w^r, w = e^{+2πi·k/(ns·R)}, k = j mod ns, combined by an R-point inverse DFT and
 // written to (j − k)·R + k + r·ns.
@@ -67,23 +82,11 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       using V = decltype(hn::Zero(d));
       const auto half_sqrt2 = hn::Set(d, 0.70710678118654752f);
       const auto c8 = hn::Set(d, 0.92387953251128674f), s8 = hn::Set(d, 0.38268343236508977f);
-      const auto dft4 = [](V* cr, V* ci, int stride) {  // in place, natural order
-        const V a0r = hn::Add(cr[0], cr[2 * stride]), a0i = hn::Add(ci[0], ci[2 * stride]);
-        const V a1r = hn::Sub(cr[0], cr[2 * stride]), a1i = hn::Sub(ci[0], ci[2 * stride]);
-        const V a2r = hn::Add(cr[stride], cr[3 * stride]),
-                a2i = hn::Add(ci[stride], ci[3 * stride]);
-        const V a3r = hn::Sub(ci[3 * stride], ci[stride]);  // i·(c1 − c3)
-        const V a3i = hn::Sub(cr[stride], cr[3 * stride]);
-        cr[0] = hn::Add(a0r, a2r), ci[0] = hn::Add(a0i, a2i);
-        cr[stride] = hn::Add(a1r, a3r), ci[stride] = hn::Add(a1i, a3i);
-        cr[2 * stride] = hn::Sub(a0r, a2r), ci[2 * stride] = hn::Sub(a0i, a2i);
-        cr[3 * stride] = hn::Sub(a1r, a3r), ci[3 * stride] = hn::Sub(a1i, a3i);
-      };
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         V tr[16], ti[16];
         LoadTwiddled<16>(d, in_re, in_im, l, wr, wi, tr, ti);
         // Column r1 (elements r1, r1 + 4, r1 + 8, r1 + 12) becomes Y[r1][q2] at r1 + 4·q2.
-        for (int r1 = 0; r1 < 4; ++r1) dft4(tr + r1, ti + r1, 4);
+        for (int r1 = 0; r1 < 4; ++r1) Dft4(tr + r1, ti + r1, 4);
         const auto rotate = [&](int i, V cr, V ci) {  // t_i ·= (cr + i·ci)
           const V x = tr[i], y = ti[i];
           tr[i] = hn::MulSub(x, cr, hn::Mul(y, ci));
@@ -107,7 +110,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
         eighth(3 + 8, true);                       // w^6
         rotate(3 + 12, hn::Neg(c8), hn::Neg(s8));  // w^9
         // Row q2 (elements 4·q2 … 4·q2 + 3 over r1) gives X[4·q1 + q2] at 4·q2 + q1.
-        for (int q2 = 0; q2 < 4; ++q2) dft4(tr + 4 * q2, ti + 4 * q2, 1);
+        for (int q2 = 0; q2 < 4; ++q2) Dft4(tr + 4 * q2, ti + 4 * q2, 1);
         for (int q1 = 0; q1 < 4; ++q1) {
           for (int q2 = 0; q2 < 4; ++q2) {
             hn::StoreU(tr[4 * q2 + q1], d, out_re[4 * q1 + q2] + l);
@@ -135,52 +138,22 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
           const auto i3 = hn::Mul(hn::Sub(br[3], bi[3]), half_sqrt2);
           br[1] = r1, bi[1] = i1, br[2] = r2, bi[2] = i2, br[3] = r3, bi[3] = i3;
         }
-        const auto dft4 = [&](const auto* cr, const auto* ci, int first) {
-          const auto a0r = hn::Add(cr[0], cr[2]), a0i = hn::Add(ci[0], ci[2]);
-          const auto a1r = hn::Sub(cr[0], cr[2]), a1i = hn::Sub(ci[0], ci[2]);
-          const auto a2r = hn::Add(cr[1], cr[3]), a2i = hn::Add(ci[1], ci[3]);
-          const auto a3r = hn::Sub(ci[3], ci[1]), a3i = hn::Sub(cr[1], cr[3]);  // i·(c1 − c3)
-          hn::StoreU(hn::Add(a0r, a2r), d, out_re[first] + l);
-          hn::StoreU(hn::Add(a0i, a2i), d, out_im[first] + l);
-          hn::StoreU(hn::Add(a1r, a3r), d, out_re[first + 2] + l);
-          hn::StoreU(hn::Add(a1i, a3i), d, out_im[first + 2] + l);
-          hn::StoreU(hn::Sub(a0r, a2r), d, out_re[first + 4] + l);
-          hn::StoreU(hn::Sub(a0i, a2i), d, out_im[first + 4] + l);
-          hn::StoreU(hn::Sub(a1r, a3r), d, out_re[first + 6] + l);
-          hn::StoreU(hn::Sub(a1i, a3i), d, out_im[first + 6] + l);
-        };
-        dft4(ar, ai, 0);  // X_{2m}
-        dft4(br, bi, 1);  // X_{2m+1}
+        Dft4(ar, ai, 1);  // X_{2m}
+        Dft4(br, bi, 1);  // X_{2m+1}
+        for (int m = 0; m < 4; ++m) {
+          hn::StoreU(ar[m], d, out_re[2 * m] + l), hn::StoreU(ai[m], d, out_im[2 * m] + l);
+          hn::StoreU(br[m], d, out_re[2 * m + 1] + l), hn::StoreU(bi[m], d, out_im[2 * m + 1] + l);
+        }
       }
     } else if constexpr (R == 4) {
-      const auto w1r = hn::Set(d, wr[0]), w1i = hn::Set(d, wi[0]);
-      const auto w2r = hn::Set(d, wr[1]), w2i = hn::Set(d, wi[1]);
-      const auto w3r = hn::Set(d, wr[2]), w3i = hn::Set(d, wi[2]);
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
-        const auto v0r = hn::LoadU(d, in_re[0] + l), v0i = hn::LoadU(d, in_im[0] + l);
-        const auto v1r = hn::LoadU(d, in_re[1] + l), v1i = hn::LoadU(d, in_im[1] + l);
-        const auto v2r = hn::LoadU(d, in_re[2] + l), v2i = hn::LoadU(d, in_im[2] + l);
-        const auto v3r = hn::LoadU(d, in_re[3] + l), v3i = hn::LoadU(d, in_im[3] + l);
-        // t_r = v_r·w^r
-        const auto t1r = hn::MulSub(v1r, w1r, hn::Mul(v1i, w1i));
-        const auto t1i = hn::MulAdd(v1r, w1i, hn::Mul(v1i, w1r));
-        const auto t2r = hn::MulSub(v2r, w2r, hn::Mul(v2i, w2i));
-        const auto t2i = hn::MulAdd(v2r, w2i, hn::Mul(v2i, w2r));
-        const auto t3r = hn::MulSub(v3r, w3r, hn::Mul(v3i, w3i));
-        const auto t3i = hn::MulAdd(v3r, w3i, hn::Mul(v3i, w3r));
-        // 4-point inverse DFT: X_q = Σ_r t_r·i^{rq}.
-        const auto a0r = hn::Add(v0r, t2r), a0i = hn::Add(v0i, t2i);
-        const auto a1r = hn::Sub(v0r, t2r), a1i = hn::Sub(v0i, t2i);
-        const auto a2r = hn::Add(t1r, t3r), a2i = hn::Add(t1i, t3i);
-        const auto a3r = hn::Sub(t3i, t1i), a3i = hn::Sub(t1r, t3r);  // i·(t1 − t3)
-        hn::StoreU(hn::Add(a0r, a2r), d, out_re[0] + l);
-        hn::StoreU(hn::Add(a0i, a2i), d, out_im[0] + l);
-        hn::StoreU(hn::Add(a1r, a3r), d, out_re[1] + l);
-        hn::StoreU(hn::Add(a1i, a3i), d, out_im[1] + l);
-        hn::StoreU(hn::Sub(a0r, a2r), d, out_re[2] + l);
-        hn::StoreU(hn::Sub(a0i, a2i), d, out_im[2] + l);
-        hn::StoreU(hn::Sub(a1r, a3r), d, out_re[3] + l);
-        hn::StoreU(hn::Sub(a1i, a3i), d, out_im[3] + l);
+        decltype(hn::Zero(d)) tr[4], ti[4];
+        LoadTwiddled<4>(d, in_re, in_im, l, wr, wi, tr, ti);
+        Dft4(tr, ti, 1);
+        for (int q = 0; q < 4; ++q) {
+          hn::StoreU(tr[q], d, out_re[q] + l);
+          hn::StoreU(ti[q], d, out_im[q] + l);
+        }
       }
     } else {
       static_assert(R == 16 || R == 8 || R == 4, "the plan's radices");
