@@ -13,8 +13,9 @@
 
 namespace ocean::cpu {
 
-// Structure-of-arrays copies of the spectrum for the SIMD kernels, and the phase rate of each
-// texel: the harmonic index j = ω'/ω0 when looping (exact phase, M.7.3), ω/2π otherwise.
+// The evolution kernel's inputs in column-block order (EvolveArgs): per (block, row) record the
+// S' components and, when looping, the harmonic index j = ω'/ω0 as an exact float (exact phase,
+// M.7.3); not looping, the rate ω/2π in double beside them.
 void build_kernel_inputs(CascadeState& state, double loop_period_s) {
   const bool looping = loop_period_s > 0.0;
   const std::size_t record = evolution_record(looping);
@@ -173,9 +174,11 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   const std::size_t units = blocks / sides;
   constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
   const std::size_t block_floats = kLane * static_cast<std::size_t>(n);
-  for (std::size_t c = 0; c < cascades_.size(); ++c) {
-    evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
-    evolve_args_[c].dz_into_imaginary = groups_[c / 2].count == 2 && c % 2 == 1;
+  for (const CascadeGroup& group : groups_) {
+    for (std::size_t c = group.first; c < group.first + group.count; ++c) {
+      evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
+      evolve_args_[c].dz_into_imaginary = c != group.first;  // the pair's second cascade
+    }
   }
   // Columns: every (group, column block pair) evolves h̃ once per cascade and writes each
   // plane's spectrum where transform() wants it, so the result lands in the plane's tile
