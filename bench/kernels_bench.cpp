@@ -52,24 +52,11 @@ void set_texels(benchmark::State& state, int n) {
       benchmark::Counter(double(n) * n, benchmark::Counter::kIsIterationInvariantRate);
 }
 
+// Arguments: N, target index, 1 for block pairs with their mirror (the pipeline's kernel).
 void BM_EvolvePlanes(benchmark::State& state) {
   const int n = static_cast<int>(state.range(0));
   if (!select_target(state, static_cast<int>(state.range(1)))) return;
-  Fixture f(n);
-  const ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(f.state, 1234.5, 200.0);
-  alignas(64) static float lanes[4][16 * 2048];
-  float* re[2] = {lanes[0], lanes[1]};
-  float* im[2] = {lanes[2], lanes[3]};
-  for (auto _ : state) {
-    for (int block = 0; block < n / 16; ++block) ocean::cpu::evolve_planes(args, block, re, im);
-    benchmark::ClobberMemory();
-  }
-  set_texels(state, n);
-}
-
-void BM_EvolvePlanesMirrored(benchmark::State& state) {
-  const int n = static_cast<int>(state.range(0));
-  if (!select_target(state, static_cast<int>(state.range(1)))) return;
+  const bool mirrored = state.range(2) != 0;
   Fixture f(n);
   const ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(f.state, 1234.5, 200.0);
   alignas(64) static float lanes[8][16 * 2048];
@@ -78,11 +65,17 @@ void BM_EvolvePlanesMirrored(benchmark::State& state) {
   float* mirror_re[2] = {lanes[4], lanes[5]};
   float* mirror_im[2] = {lanes[6], lanes[7]};
   for (auto _ : state) {
-    for (int block = 0; block < n / 32; ++block)
-      ocean::cpu::evolve_planes_mirrored(args, block, re, im, mirror_re, mirror_im);
+    for (int block = 0; block < n / (mirrored ? 32 : 16); ++block) {
+      if (mirrored) {
+        ocean::cpu::evolve_planes_mirrored(args, block, re, im, mirror_re, mirror_im);
+      } else {
+        ocean::cpu::evolve_planes(args, block, re, im);
+      }
+    }
     benchmark::ClobberMemory();
   }
   set_texels(state, n);
+  if (mirrored) state.SetLabel(ocean::fft::active_simd_target() + " mirrored");
 }
 
 void BM_AssembleDisplacement(benchmark::State& state) {
@@ -154,9 +147,8 @@ void BM_ReferenceSurfaceAndMips(benchmark::State& state) {
   set_texels(state, n);
 }
 
-BENCHMARK(BM_EvolvePlanes)->ArgsProduct({{256, 512}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
-BENCHMARK(BM_EvolvePlanesMirrored)
-    ->ArgsProduct({{256, 512}, {0, 1, 2}})
+BENCHMARK(BM_EvolvePlanes)
+    ->ArgsProduct({{256, 512}, {0, 1, 2}, {0, 1}})
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_AssembleDisplacement)
     ->ArgsProduct({{256, 512}, {0, 1, 2}})
