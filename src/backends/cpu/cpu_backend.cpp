@@ -15,25 +15,40 @@ namespace ocean::cpu {
 
 // The evolution kernel's inputs in column-block order (EvolveArgs): per (block, row) record the
 // S' components and, when looping, the harmonic index j = ω'/ω0 as an exact float (exact phase,
-// M.7.3); not looping, the rate ω/2π in double beside them.
-void build_kernel_inputs(CascadeState& state, double loop_period_s) {
+// M.7.3); not looping, the rate ω/2π in double beside them. Every block's column 0 again on its
+// own for the mirrored kernel.
+void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_pairs) {
   const bool looping = loop_period_s > 0.0;
   const std::size_t record = evolution_record(looping);
   const auto n = static_cast<std::size_t>(state.resolution);
   constexpr auto kLanes = static_cast<std::size_t>(fft::SimdPlan2D::kBlock);
-  state.evolution_spectrum = AlignedFloats(n * n / kLanes * record);
-  state.evolution_rate.assign(looping ? 0 : n * n, 0.0);
+  const std::size_t blocks = n / kLanes;
+  const std::size_t stored = mirror_pairs && blocks >= 2 ? blocks / 2 : blocks;
+  state.evolution_spectrum = AlignedFloats(stored * n * record);
+  state.evolution_rate.assign(looping ? 0 : stored * n * kLanes, 0.0);
+  state.evolution_lane0 = AlignedFloats(blocks * n * kLane0Record);
+  state.evolution_lane0_rate.assign(looping ? 0 : blocks * n, 0.0);
   float* out = state.evolution_spectrum.data();
-  for (std::size_t block = 0; block < n / kLanes; ++block) {
+  float* lane0 = state.evolution_lane0.data();
+  for (std::size_t block = 0; block < blocks; ++block) {
     for (std::size_t row = 0; row < n; ++row) {
       const std::size_t r = block * n + row;
       for (std::size_t l = 0; l < kLanes; ++l) {
         const std::size_t i = row * n + block * kLanes + l;
+        const double rate = EvolutionPhase::rate(state.spectrum.omega[i], loop_period_s);
+        if (l == 0) {
+          for (std::size_t c = 0; c < 4; ++c) lane0[r * kLane0Record + c] = state.spectrum.packed[i][c];
+          if (looping) {
+            lane0[r * kLane0Record + 4] = static_cast<float>(rate);  // exact: an integer
+          } else {
+            state.evolution_lane0_rate[r] = rate;
+          }
+        }
+        if (block >= stored) continue;
         for (std::size_t c = 0; c < 4; ++c)
           out[r * record + c * kLanes + l] = state.spectrum.packed[i][c];
-        const double rate = EvolutionPhase::rate(state.spectrum.omega[i], loop_period_s);
         if (looping) {
-          out[r * record + 4 * kLanes + l] = static_cast<float>(rate);  // exact: an integer
+          out[r * record + 4 * kLanes + l] = static_cast<float>(rate);
         } else {
           state.evolution_rate[r * kLanes + l] = rate;
         }
@@ -48,6 +63,8 @@ EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_per
   args.spectrum = state.evolution_spectrum.data();
   args.record = evolution_record(loop_period_s > 0.0);
   args.rate = state.evolution_rate.empty() ? nullptr : state.evolution_rate.data();
+  args.lane0 = state.evolution_lane0.data();
+  args.lane0_rate = state.evolution_lane0_rate.empty() ? nullptr : state.evolution_lane0_rate.data();
   args.clock = EvolutionPhase(time_s, loop_period_s).clock();  // frac(t/T), or t
   args.planes = state.planes;
   args.dk = 2.0 * kPi / state.patch_size_m;
@@ -122,7 +139,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
     const auto planes = second_of_pair ? 1 : static_cast<std::size_t>(state.planes);
     const bool fused = options_.pipeline == CpuPipeline::fused_simd;
     if (fused) {
-      build_kernel_inputs(state, config.loop_period_s);
+      build_kernel_inputs(state, config.loop_period_s, true);
       for (std::size_t p = 0; p < planes; ++p) {
         state.tile_re.emplace_back(texels);
         state.tile_im.emplace_back(texels);
@@ -156,8 +173,9 @@ std::size_t CpuBackend::state_bytes_per_cascade() const {
   const CascadeState& s = cascades_.front();
   const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
   std::size_t total = bytes(s.spectrum.packed) + bytes(s.spectrum.omega) + bytes(s.spectrum.h0) +
-                      bytes(s.evolution_rate) + bytes(s.foam) + bytes(s.mip_work) +
-                      s.evolution_spectrum.size() * sizeof(float);
+                      bytes(s.evolution_rate) + bytes(s.evolution_lane0_rate) + bytes(s.foam) +
+                      bytes(s.mip_work) +
+                      (s.evolution_spectrum.size() + s.evolution_lane0.size()) * sizeof(float);
   for (const auto& v : s.factor) total += bytes(v);
   for (const auto& v : s.plane_re) total += 2 * bytes(v);  // with plane_im
   for (const auto& v : s.tile_re) total += 2 * v.size() * sizeof(float);
@@ -291,8 +309,11 @@ void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
   }
   const auto pairs = static_cast<std::size_t>(n / 2);
   runner_->parallel_for(cascades_.size() * pairs, 8, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      surface_row_pair(args[i / pairs], static_cast<int>(i % pairs));
+    for (std::size_t i = begin; i < end;) {  // runs of consecutive pairs in one cascade
+      const std::size_t c = i / pairs, stop = std::min(end, (c + 1) * pairs);
+      surface_row_pairs(args[c], static_cast<int>(i % pairs), static_cast<int>(stop - i));
+      i = stop;
+    }
   });
 }
 

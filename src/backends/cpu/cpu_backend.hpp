@@ -54,6 +54,8 @@ struct CascadeState {
   // plane between the column and the row pass as column blocks in lane layout (fft.hpp).
   AlignedFloats evolution_spectrum;    ///< EvolveArgs::spectrum records
   std::vector<double> evolution_rate;  ///< EvolveArgs::rate (not looping)
+  AlignedFloats evolution_lane0;             ///< EvolveArgs::lane0 records
+  std::vector<double> evolution_lane0_rate;  ///< EvolveArgs::lane0_rate (not looping)
   std::vector<AlignedFloats> tile_re, tile_im;
   std::vector<float> foam;      ///< accumulated foam carried between frames
   std::vector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
@@ -63,8 +65,10 @@ struct CascadeState {
 int plane_count(NormalMethod method);
 /// Fills state.factor for the configured method and choppiness (M.7.2).
 void build_plane_factors(CascadeState& state, NormalMethod method, double choppiness);
-/// Fills the evolution kernel's inputs (EvolveArgs::spectrum and ::rate) from the spectrum.
-void build_kernel_inputs(CascadeState& state, double loop_period_s);
+/// Fills the evolution kernels' inputs (EvolveArgs::spectrum, ::rate, ::lane0, ::lane0_rate)
+/// from the spectrum. With mirror_pairs (and N ≥ 32) the records cover blocks < N/32 only:
+/// enough for evolve_planes_mirrored, not for evolve_planes on the other blocks.
+void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_pairs = false);
 /// The evolution kernels' arguments for time t (M.7.3).
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s);
 /// Evolves h̃(k, t) with exact phase (M.6.5, M.7.3) and writes every plane's spectrum. With a

@@ -193,11 +193,11 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
     alignas(64) float f[kLanes], p[4][kLanes];
     for (std::size_t i = 0; i < nf && row0 + i < n; ++i) {
       const std::size_t r = static_cast<std::size_t>(mirror) * n + row0 + i;
-      const float* record = a.spectrum + r * a.record;
-      const double rate = a.rate == nullptr ? double(record[4 * kLanes]) : a.rate[r * kLanes];
+      const float* record = a.lane0 + r * kLane0Record;
+      const double rate = a.rate == nullptr ? double(record[4]) : a.lane0_rate[r];
       const double v = rate * a.clock;
       f[i] = static_cast<float>(v - std::floor(v));
-      for (std::size_t k = 0; k < 4; ++k) p[k][i] = record[k * kLanes];
+      for (std::size_t k = 0; k < 4; ++k) p[k][i] = record[k];
     }
     V s, c;
     SinCosTurns(df, hn::Load(df, f), s, c);
@@ -300,31 +300,40 @@ HWY_INLINE auto Quantise(DF df, V v) {
                        hn::MulAdd(clamped, hn::Set(df, 255.0f), hn::Set(df, 0.5f)));
 }
 
-// One row of the surface pass: every output but the mip work values, which go to `work` as
-// structure of arrays (n·len x, y, z, blue) for the fused first mip level.
-HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const* work) {
+// A displacement row deinterleaved (eq. 46): component k of texel c at row[k][kPad + c], with
+// the wrapped neighbours at kPad − 1 and kPad + N.
+constexpr std::size_t kPad = 16;
+using PlanarRow = float[3][2048 + 2 * kPad];
+
+HWY_INLINE void Planarize(const SurfaceArgs& a, int row_int, PlanarRow& out) {
+  const hn::ScalableTag<float> df;
+  const std::size_t step = hn::Lanes(df);
+  const auto n = static_cast<std::size_t>(a.n);
+  const float* src = a.displacement + 3 * n * static_cast<std::size_t>(row_int & (a.n - 1));
+  for (std::size_t c = 0; c < n; c += step) {
+    decltype(hn::Zero(df)) v0, v1, v2;
+    hn::LoadInterleaved3(df, src + 3 * c, v0, v1, v2);
+    hn::Store(v0, df, out[0] + kPad + c);
+    hn::Store(v1, df, out[1] + kPad + c);
+    hn::Store(v2, df, out[2] + kPad + c);
+  }
+  for (std::size_t k = 0; k < 3; ++k) {
+    out[k][kPad - 1] = out[k][kPad + n - 1];
+    out[k][kPad + n] = out[k][kPad];
+  }
+}
+
+// One row of the surface pass from the deinterleaved rows above, at and below it: every output
+// but the mip work values, which go to `work` as structure of arrays (n·len x, y, z, blue) for
+// the fused first mip level.
+HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const PlanarRow& up,
+                                 const PlanarRow& padded, const PlanarRow& down,
+                                 float* const* work) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const std::size_t step = hn::Lanes(df);
   const auto n = static_cast<std::size_t>(a.n);
-  const auto mask = static_cast<int>(n) - 1;
   const auto row = static_cast<std::size_t>(row_int);
-  const float* up = a.displacement + 3 * n * static_cast<std::size_t>((row_int - 1) & mask);
-  const float* centre = a.displacement + 3 * n * row;
-  const float* down = a.displacement + 3 * n * static_cast<std::size_t>((row_int + 1) & mask);
-  // The centre row deinterleaved with one wrapped texel on each side (eq. 46).
-  alignas(64) float padded[3][2048 + 2];
-  for (std::size_t c = 0; c < n; c += step) {
-    decltype(hn::Zero(df)) v0, v1, v2;
-    hn::LoadInterleaved3(df, centre + 3 * c, v0, v1, v2);
-    hn::StoreU(v0, df, padded[0] + c + 1);
-    hn::StoreU(v1, df, padded[1] + c + 1);
-    hn::StoreU(v2, df, padded[2] + c + 1);
-  }
-  for (std::size_t k = 0; k < 3; ++k) {
-    padded[k][0] = padded[k][n];
-    padded[k][n + 1] = padded[k][1];
-  }
   const auto half_inv = hn::Set(df, 0.5f);
   const auto inv = hn::Set(df, a.inv_spacing);
   const auto one = hn::Set(df, 1.0f), zero = hn::Zero(df);
@@ -344,18 +353,18 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, float* const
   for (std::size_t c = 0; c < n; c += step) {
     // ∂/∂x from the padded centre row, ∂/∂z from the rows above and below (eq. 45).
     const auto gx = [&](std::size_t k) {
-      return hn::Mul(
-          hn::Mul(hn::Sub(hn::LoadU(df, padded[k] + c + 2), hn::LoadU(df, padded[k] + c)),
-                  half_inv),
-          inv);
+      return hn::Mul(hn::Mul(hn::Sub(hn::LoadU(df, padded[k] + kPad + c + 1),
+                                     hn::LoadU(df, padded[k] + kPad + c - 1)),
+                             half_inv),
+                     inv);
     };
-    decltype(hn::Zero(df)) u0, u1, u2, d0, d1, d2;
-    hn::LoadInterleaved3(df, up + 3 * c, u0, u1, u2);
-    hn::LoadInterleaved3(df, down + 3 * c, d0, d1, d2);
+    const auto gz = [&](std::size_t k) {
+      return hn::Mul(hn::Mul(hn::Sub(hn::Load(df, down[k] + kPad + c), hn::Load(df, up[k] + kPad + c)),
+                             half_inv),
+                     inv);
+    };
     const auto dx_dx = gx(0), h_dx = gx(1), dz_dx = gx(2);
-    const auto dx_dz = hn::Mul(hn::Mul(hn::Sub(d0, u0), half_inv), inv);
-    const auto h_dz = hn::Mul(hn::Mul(hn::Sub(d1, u1), half_inv), inv);
-    const auto dz_dz = hn::Mul(hn::Mul(hn::Sub(d2, u2), half_inv), inv);
+    const auto dx_dz = gz(0), h_dz = gz(1), dz_dz = gz(2);
     // Jacobian (eq. 48) and the normal of the displaced surface (M.7.5).
     const auto jxx = hn::Add(one, dx_dx), jzz = hn::Add(one, dz_dz);
     const auto jac = hn::Sub(hn::Mul(jxx, jzz), hn::Mul(dx_dz, dz_dx));
@@ -477,14 +486,18 @@ void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
   MipFromSums(sum, size, dst, work, packed);
 }
 
-// Rows 2·pair and 2·pair + 1 of the surface pass, then row `pair` of mip level 1 from them:
-// the base level's work values never leave the stack.
-void SurfaceRowPair(const SurfaceArgs& a, int pair) {
+// Rows 2·pair and 2·pair + 1 of the surface pass from the deinterleaved rows 2·pair − 1 …
+// 2·pair + 1 (ring[(row + 1) % 3] holds row `row`; each row done makes way for the row after
+// the next, the last one only if `more` pairs follow), then row `pair` of mip level 1 from
+// them: the base level's work values never leave the stack.
+HWY_INLINE void SurfaceRowPairFrom(const SurfaceArgs& a, int pair, PlanarRow* ring, bool more) {
   const auto n = static_cast<std::size_t>(a.n);
   alignas(64) float rows[2][4][2048];
-  for (std::size_t r = 0; r < 2; ++r) {
+  for (int r = 0; r < 2; ++r) {
+    const int row = 2 * pair + r;
     float* const work[4] = {rows[r][0], rows[r][1], rows[r][2], rows[r][3]};
-    SurfaceRowValues(a, 2 * pair + static_cast<int>(r), work);
+    SurfaceRowValues(a, row, ring[row % 3], ring[(row + 1) % 3], ring[(row + 2) % 3], work);
+    if (r == 0 || more) Planarize(a, row + 2, ring[row % 3]);  // over row − 1
   }
   // 2×2 averages (eq. 52) in the order of the mip rows: ((a + b) + c) + d.
   alignas(64) float sum[4][1024];
@@ -515,6 +528,16 @@ void SurfaceRowPair(const SurfaceArgs& a, int pair) {
               a.packed);
 }
 
+// Row pairs [first, first + count): each displacement row is deinterleaved once.
+void SurfaceRowPairs(const SurfaceArgs& a, int first, int count) {
+  alignas(64) PlanarRow ring[3];
+  Planarize(a, 2 * first - 1, ring[(2 * first) % 3]);
+  Planarize(a, 2 * first, ring[(2 * first + 1) % 3]);
+  Planarize(a, 2 * first + 1, ring[(2 * first + 2) % 3]);
+  for (int pair = first; pair < first + count; ++pair)
+    SurfaceRowPairFrom(a, pair, ring, pair + 1 < first + count);
+}
+
 }  // namespace HWY_NAMESPACE
 }  // namespace ocean::cpu
 HWY_AFTER_NAMESPACE();
@@ -525,15 +548,15 @@ namespace ocean::cpu {
 HWY_EXPORT(EvolvePlanes);
 HWY_EXPORT(EvolvePlanesMirrored);
 HWY_EXPORT(AssembleDisplacement);
-HWY_EXPORT(SurfaceRowPair);
+HWY_EXPORT(SurfaceRowPairs);
 HWY_EXPORT(MipRow);
 
 void mip_row(int n, int level, int row, float* work, std::uint32_t* packed) {
   HWY_DYNAMIC_DISPATCH(MipRow)(n, level, row, work, packed);
 }
 
-void surface_row_pair(const SurfaceArgs& args, int pair) {
-  HWY_DYNAMIC_DISPATCH(SurfaceRowPair)(args, pair);
+void surface_row_pairs(const SurfaceArgs& args, int first, int count) {
+  HWY_DYNAMIC_DISPATCH(SurfaceRowPairs)(args, first, count);
 }
 
 void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im) {

@@ -20,6 +20,12 @@ struct EvolveArgs {
   std::size_t record = 64;
   /// Not looping: ω/2π per texel, block-major ((b·N + j)·16 + l). Looping: null.
   const double* rate = nullptr;
+  /// Column 16·b of every block b alone, for the mirrored kernel, which evolves only that
+  /// column of a mirror block: per (b, j), kLane0Record floats at lane0 + (b·N + j)·8 (the S'
+  /// components, then the harmonic index when looping), and, not looping, its rate at
+  /// lane0_rate[b·N + j].
+  const float* lane0 = nullptr;
+  const double* lane0_rate = nullptr;
   /// Phase in turns is frac(rate·clock): rate = harmonic index and clock = frac(t/T) when
   /// looping (exact, M.7.3), rate = ω/2π and clock = t otherwise.
   double clock = 0.0;
@@ -36,6 +42,8 @@ struct EvolveArgs {
 
 /// Record length of EvolveArgs::spectrum: 80 floats when looping, 64 otherwise.
 constexpr std::size_t evolution_record(bool looping) { return looping ? 80 : 64; }
+/// Record length of EvolveArgs::lane0 (5 floats used, two records per cache line).
+constexpr std::size_t kLane0Record = 8;
 
 /// Plane spectra as multiples of h̃ at wave vector (kx, kz) (M.7.2): f[0..1] for 2 planes,
 /// f[0..3] for 4. The oracle's double-precision formulas, shared with the reference pipeline.
@@ -49,7 +57,8 @@ void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* c
 /// The same for block `block` < N/32 and its mirror block N/16 − 1 − block together (N ≥ 32):
 /// h̃(−k) = conj h̃(k) exactly, so the mirror block's columns 16·mirror + m, m ≥ 1, come from
 /// column 16·block + 16 − m with no sine or cosine of their own; its column 16·mirror is
-/// evolved directly. Same results as evolve_planes on both blocks, bit for bit.
+/// evolved directly from EvolveArgs::lane0. Same results as evolve_planes on both blocks, bit
+/// for bit; it reads no records of blocks ≥ N/32.
 void evolve_planes_mirrored(const EvolveArgs& args, int block, float* const* re, float* const* im,
                             float* const* mirror_re, float* const* mirror_im);
 
@@ -82,11 +91,12 @@ struct SurfaceArgs {
   std::uint32_t* packed = nullptr;  ///< RGBA8 chain: levels 0 and 1 are written
 };
 
-/// The surface pass for rows 2·pair and 2·pair + 1 with central differences and toroidal wrap
-/// (eqs. 45–51), the SIMD twin of finalize()'s central-difference path, and row `pair` of mip
-/// level 1 from them (eqs. 52–53; the base level's float4 work values stay on the stack, so
-/// mip_work's level 0 is not written).
-void surface_row_pair(const SurfaceArgs& args, int pair);
+/// The surface pass for rows 2·first … 2·(first + count) − 1 with central differences and
+/// toroidal wrap (eqs. 45–51), the SIMD twin of finalize()'s central-difference path, and rows
+/// first … first + count − 1 of mip level 1 from them (eqs. 52–53; the base level's float4 work
+/// values stay on the stack, so mip_work's level 0 is not written). Each displacement row is
+/// deinterleaved once into a ring of three rows.
+void surface_row_pairs(const SurfaceArgs& args, int first, int count);
 
 /// One row of mip level `level` ≥ 1 from level − 1 (seed 000 eqs. 52–53): 2×2 box filter of the
 /// float4 work values (roughness-scaled normal, blue), smoothness from the filtered normal's
