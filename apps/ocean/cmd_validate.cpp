@@ -76,7 +76,7 @@ SimulationConfig make_config(const Case& c) {
   return config;
 }
 
-double max_diff(const std::vector<float>& a, const std::vector<float>& b) {
+double max_diff(std::span<const float> a, std::span<const float> b) {
   double m = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i)
     m = std::max(m, std::abs(static_cast<double>(a[i]) - static_cast<double>(b[i])));

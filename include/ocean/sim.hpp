@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "ocean/core.hpp"
+#include "ocean/memory.hpp"
 #include "ocean/spectrum.hpp"
 #include "ocean/task_runner.hpp"
 
@@ -96,17 +97,18 @@ std::size_t mip_chain_texels(int resolution);
 /// Offset of mip level m in the contiguous chain (seed 000 eq. 55).
 std::size_t mip_offset(int resolution, int level);
 
-/// The outputs of one cascade for one frame. Arrays are row-major, index row·N + col.
+/// The outputs of one cascade for one frame. Arrays are row-major, index row·N + col, in
+/// LargeVector storage (cache-line aligned; huge pages when large).
 struct CascadeFrame {
   int resolution = 0;
   double patch_size_m = 0.0;
-  std::vector<float> displacement;               ///< float3 (Dx, h, Dz) per texel, m (eq. 44)
-  std::vector<std::uint16_t> displacement_half;  ///< half4 (Dx, h, Dz, 0), texture-ready
-  std::vector<float> normal;                     ///< float3 unit normal of the displaced surface
-  std::vector<float> jacobian;                   ///< J of the horizontal map (eq. 48)
-  std::vector<float> foam;                       ///< accumulated foam coverage [0, 1]
+  LargeVector<float> displacement;               ///< float3 (Dx, h, Dz) per texel, m (eq. 44)
+  LargeVector<std::uint16_t> displacement_half;  ///< half4 (Dx, h, Dz, 0), texture-ready
+  LargeVector<float> normal;                     ///< float3 unit normal of the displaced surface
+  LargeVector<float> jacobian;                   ///< J of the horizontal map (eq. 48)
+  LargeVector<float> foam;                       ///< accumulated foam coverage [0, 1]
   /// RGBA8 (normal x, normal z, blue channel, smoothness), all mips, packed as eq. 51.
-  std::vector<std::uint32_t> packed_mips;
+  LargeVector<std::uint32_t> packed_mips;
 };
 
 struct Frame {

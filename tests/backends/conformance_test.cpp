@@ -123,7 +123,7 @@ double significant_height(const ocean::Frame& f) {
   return 4.0 * std::sqrt(var);
 }
 
-double max_abs_diff(const std::vector<float>& a, const std::vector<float>& b) {
+double max_abs_diff(std::span<const float> a, std::span<const float> b) {
   double m = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i)
     m = std::max(m, std::abs(static_cast<double>(a[i]) - static_cast<double>(b[i])));

@@ -31,13 +31,13 @@ std::unique_ptr<ocean::Simulator> make(const ocean::SimulationConfig& c,
   return std::move(sim).value();
 }
 
-float max_abs_difference(const std::vector<float>& a, const std::vector<float>& b) {
+float max_abs_difference(std::span<const float> a, std::span<const float> b) {
   float m = 0.0f;
   for (std::size_t i = 0; i < a.size(); ++i) m = std::max(m, std::abs(a[i] - b[i]));
   return m;
 }
 
-float max_abs(const std::vector<float>& a) {
+float max_abs(std::span<const float> a) {
   float m = 0.0f;
   for (float v : a) m = std::max(m, std::abs(v));
   return m;

@@ -140,9 +140,10 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
     const bool fused = options_.pipeline == CpuPipeline::fused_simd;
     if (fused) {
       build_kernel_inputs(state, config.loop_period_s, true);
+      state.tiles = AlignedFloats(2 * planes * texels);  // one allocation: huge pages sooner
       for (std::size_t p = 0; p < planes; ++p) {
-        state.tile_re.emplace_back(texels);
-        state.tile_im.emplace_back(texels);
+        state.tile_re.push_back(state.tiles.data() + 2 * p * texels);
+        state.tile_im.push_back(state.tiles.data() + (2 * p + 1) * texels);
       }
     } else {
       build_plane_factors(state, config.normals, config.choppiness);
@@ -178,7 +179,7 @@ std::size_t CpuBackend::state_bytes_per_cascade() const {
                       (s.evolution_spectrum.size() + s.evolution_lane0.size()) * sizeof(float);
   for (const auto& v : s.factor) total += bytes(v);
   for (const auto& v : s.plane_re) total += 2 * bytes(v);  // with plane_im
-  for (const auto& v : s.tile_re) total += 2 * v.size() * sizeof(float);
+  total += bytes(s.tiles);
   return total;
 }
 
@@ -220,7 +221,7 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
           for (std::size_t side = 0; side < sides; ++side) {
             const std::size_t origin = block[side] * block_floats;
             LaneBlock& t = tile[side][count];
-            t = {state.tile_re[p].data() + origin, state.tile_im[p].data() + origin};
+            t = {state.tile_re[p] + origin, state.tile_im[p] + origin};
             input[side][count] =
                 side == 0 && count < 3 ? simd_plan_.input_for(t, scratch[count]) : t;
             re[side][p] = input[side][count].re, im[side][p] = input[side][count].im;
@@ -256,8 +257,8 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
     const LaneBlock p0 = buffers[0], p1 = buffers[1], scratch = buffers[2];
     const auto row_fft = [&](CascadeState& state, std::size_t p, int block, LaneBlock lanes) {
       const LaneBlock input = simd_plan_.input_for(lanes, scratch);
-      simd_plan_.tiles_to_lanes(state.tile_re[p].data(), block, input.re);
-      simd_plan_.tiles_to_lanes(state.tile_im[p].data(), block, input.im);
+      simd_plan_.tiles_to_lanes(state.tile_re[p], block, input.re);
+      simd_plan_.tiles_to_lanes(state.tile_im[p], block, input.im);
       simd_plan_.transform(lanes, scratch);
     };
     for (std::size_t item = begin; item < end; ++item) {

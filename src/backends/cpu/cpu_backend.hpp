@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <complex>
 #include <memory>
-#include <new>
 #include <span>
 #include <vector>
 
@@ -15,27 +14,9 @@
 
 namespace ocean::cpu {
 
-/// Zero-initialised float storage on 64-byte boundaries (whole cache lines for vector stores).
-class AlignedFloats {
- public:
-  AlignedFloats() = default;
-  explicit AlignedFloats(std::size_t count)
-      : data_(static_cast<float*>(::operator new[](count * sizeof(float), kAlignment))),
-        size_(count) {
-    std::fill_n(data_.get(), count, 0.0f);
-  }
-  [[nodiscard]] float* data() { return data_.get(); }
-  [[nodiscard]] const float* data() const { return data_.get(); }
-  [[nodiscard]] std::size_t size() const { return size_; }
-
- private:
-  static constexpr std::align_val_t kAlignment{64};
-  struct Free {
-    void operator()(float* p) const { ::operator delete[](p, kAlignment); }
-  };
-  std::unique_ptr<float[], Free> data_;
-  std::size_t size_ = 0;
-};
+/// Zero-initialised float storage on cache lines (huge pages when large): the SIMD kernels'
+/// inputs and the planes between the passes.
+using AlignedFloats = LargeVector<float>;
 
 /// Per-cascade state that lives across frames.
 struct CascadeState {
@@ -56,9 +37,10 @@ struct CascadeState {
   std::vector<double> evolution_rate;  ///< EvolveArgs::rate (not looping)
   AlignedFloats evolution_lane0;             ///< EvolveArgs::lane0 records
   std::vector<double> evolution_lane0_rate;  ///< EvolveArgs::lane0_rate (not looping)
-  std::vector<AlignedFloats> tile_re, tile_im;
-  std::vector<float> foam;      ///< accumulated foam carried between frames
-  std::vector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
+  AlignedFloats tiles;
+  std::vector<float*> tile_re, tile_im;  ///< each plane's parts in `tiles`
+  LargeVector<float> foam;      ///< accumulated foam carried between frames
+  LargeVector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
 };
 
 /// Number of complex planes a normal method needs (two real fields per plane, M.7.2).
