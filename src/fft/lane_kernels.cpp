@@ -23,12 +23,18 @@ namespace ocean::fft::detail {
 namespace HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The R inputs of a butterfly at lane offset l, twiddled: t_r = v_r·w^r (w^0 = 1).
-template <int R, class D, class V>
+// The R inputs of a butterfly at lane offset l, twiddled: t_r = v_r·w^r (w^0 = 1). The first
+// stage (ns = 1, kTwiddled false) has w = 1 for every butterfly: no multiplications.
+template <int R, bool kTwiddled, class D, class V>
 HWY_INLINE void LoadTwiddled(D d, const float* const* in_re, const float* const* in_im,
                              std::size_t l, const float* wr, const float* wi, V* tr, V* ti) {
   tr[0] = hn::LoadU(d, in_re[0] + l), ti[0] = hn::LoadU(d, in_im[0] + l);
   for (int r = 1; r < R; ++r) {
+    if constexpr (!kTwiddled) {
+      (void)wr, (void)wi;
+      tr[r] = hn::LoadU(d, in_re[r] + l), ti[r] = hn::LoadU(d, in_im[r] + l);
+      continue;
+    }
     const auto vr = hn::LoadU(d, in_re[r] + l), vi = hn::LoadU(d, in_im[r] + l);
     const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
     tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
@@ -53,8 +59,8 @@ HWY_INLINE void Dft4(V* cr, V* ci, int stride) {
 
 // One stage a → b. Element j of the input (j < N/R) with its R−1 partners at distance N/R is
 // twiddled by w^r, w = e^{+2πi·k/(ns·R)}, k = j mod ns, combined by an R-point inverse DFT and
-// written to (j − k)·R + k + r·ns.
-template <int R>
+// written to (j − k)·R + k + r·ns. kTwiddled is false for the first stage (ns = 1).
+template <int R, bool kTwiddled>
 void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer b) {
   const hn::ScalableTag<float> d;
   const std::size_t step = hn::Lanes(d);
@@ -84,7 +90,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       const auto c8 = hn::Set(d, 0.92387953251128674f), s8 = hn::Set(d, 0.38268343236508977f);
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         V tr[16], ti[16];
-        LoadTwiddled<16>(d, in_re, in_im, l, wr, wi, tr, ti);
+        LoadTwiddled<16, kTwiddled>(d, in_re, in_im, l, wr, wi, tr, ti);
         // Column r1 (elements r1, r1 + 4, r1 + 8, r1 + 12) becomes Y[r1][q2] at r1 + 4·q2.
         for (int r1 = 0; r1 < 4; ++r1) Dft4(tr + r1, ti + r1, 4);
         const auto rotate = [&](int i, V cr, V ci) {  // t_i ·= (cr + i·ci)
@@ -122,7 +128,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       const auto half_sqrt2 = hn::Set(d, 0.70710678118654752f);
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         decltype(hn::Zero(d)) tr[8], ti[8];
-        LoadTwiddled<8>(d, in_re, in_im, l, wr, wi, tr, ti);
+        LoadTwiddled<8, kTwiddled>(d, in_re, in_im, l, wr, wi, tr, ti);
         // 8 = 2 × 4: a_r = t_r + t_{r+4} feed the even outputs, b_r·w8^r = (t_r − t_{r+4})·w8^r
         // the odd ones, each through a 4-point inverse DFT (w8 = e^{+iπ/4}).
         decltype(hn::Zero(d)) ar[4], ai[4], br[4], bi[4];
@@ -148,7 +154,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
     } else if constexpr (R == 4) {
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         decltype(hn::Zero(d)) tr[4], ti[4];
-        LoadTwiddled<4>(d, in_re, in_im, l, wr, wi, tr, ti);
+        LoadTwiddled<4, kTwiddled>(d, in_re, in_im, l, wr, wi, tr, ti);
         Dft4(tr, ti, 1);
         for (int q = 0; q < 4; ++q) {
           hn::StoreU(tr[q], d, out_re[q] + l);
@@ -164,12 +170,13 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
 bool Stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
   for (int i = 0; i < table.count; ++i) {
     const Stage& s = table.stages[i];
+    const bool first = s.ns == 1;
     if (s.radix == 16) {
-      StockhamStage<16>(table, s, a, b);
+      first ? StockhamStage<16, false>(table, s, a, b) : StockhamStage<16, true>(table, s, a, b);
     } else if (s.radix == 8) {
-      StockhamStage<8>(table, s, a, b);
+      first ? StockhamStage<8, false>(table, s, a, b) : StockhamStage<8, true>(table, s, a, b);
     } else {
-      StockhamStage<4>(table, s, a, b);
+      first ? StockhamStage<4, false>(table, s, a, b) : StockhamStage<4, true>(table, s, a, b);
     }
     const LaneBuffer swap = a;
     a = b, b = swap;
