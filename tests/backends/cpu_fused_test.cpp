@@ -102,11 +102,14 @@ void expect_frames_agree(const ocean::Frame& fast, const ocean::Frame& ref) {
   EXPECT_EQ(half_ulps, 0);
 }
 
-// One 250 m cascade of the default sea with the evolution kernel's inputs (λ = 1.3).
-ocean::cpu::CascadeState kernel_state(int n, int planes, double loop_period_s) {
+// One 250 m cascade of the default sea with the evolution kernel's inputs (λ = 1.3); banded:
+// the first of two cascades, with no spectrum beyond half its Nyquist wavenumber (M.7.1).
+ocean::cpu::CascadeState kernel_state(int n, int planes, double loop_period_s,
+                                      bool banded = false) {
   ocean::SimulationConfig config;
   config.resolution = n;
   config.cascade_patch_sizes_m = {250.0};
+  if (banded) config.cascade_patch_sizes_m.push_back(60.0);
   ocean::cpu::CascadeState state;
   state.resolution = n;
   state.patch_size_m = 250.0;
@@ -168,7 +171,22 @@ TEST(CpuFused, MirroredEvolutionIsBitIdentical) {
     for (int n : {32, 128}) {
       for (int planes : {2, 4}) {
         for (double period : {200.0, 0.0}) {
-          const ocean::cpu::CascadeState state = kernel_state(n, planes, period);
+          // Banded: the mirrored kernel evolves only the rows with spectrum and writes zeros
+          // elsewhere; the ranges must be narrower than N for that to be tested.
+          const bool banded = period > 0.0 && n == 128;
+          ocean::cpu::CascadeState state = kernel_state(n, planes, period, banded);
+          if (banded) {
+            ocean::cpu::build_row_ranges(state);
+            ASSERT_EQ(state.evolution_rows.size(), std::size_t(n / 16));
+            int empty = 0, narrow = 0;
+            for (std::size_t u = 0; u < state.evolution_rows.size(); u += 2) {
+              const int lo = state.evolution_rows[u], hi = state.evolution_rows[u + 1];
+              empty += lo == hi;
+              narrow += lo > 0 && hi < n && lo < hi;
+            }
+            EXPECT_GT(empty, 0);  // the outer block pairs
+            EXPECT_GT(narrow, 0);
+          }
           ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(state, 259200.7, period);
           args.dz_into_imaginary = planes == 2 && period > 0.0;
           const std::size_t floats = 16 * std::size_t(n);

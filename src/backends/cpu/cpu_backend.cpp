@@ -44,7 +44,7 @@ void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_
             state.evolution_lane0_rate[r] = rate;
           }
         }
-        if (block >= stored) continue;
+        if (block >= stored) continue;  // mirrored: the records of blocks < N/32 only
         for (std::size_t c = 0; c < 4; ++c)
           out[r * record + c * kLanes + l] = state.spectrum.packed[i][c];
         if (looping) {
@@ -57,6 +57,40 @@ void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_
   }
 }
 
+// Rows of each block pair (b, N/16 − 1 − b) with spectrum in either block (band-limited
+// cascades have none beyond half their Nyquist wavenumber, M.7.1), as an interval closed under
+// row → (N − row) mod N (the mirror row), or [0, N) where no such interval is smaller.
+void build_row_ranges(CascadeState& state) {
+  const auto n = static_cast<std::size_t>(state.resolution);
+  constexpr auto kLanes = static_cast<std::size_t>(fft::SimdPlan2D::kBlock);
+  const std::size_t blocks = n / kLanes;
+  state.evolution_rows.clear();
+  if (blocks < 2) return;
+  for (std::size_t b = 0; b < blocks / 2; ++b) {
+    std::vector<bool> live(n, false);
+    for (const std::size_t block : {b, blocks - 1 - b}) {
+      for (std::size_t row = 0; row < n; ++row) {
+        for (std::size_t l = 0; l < kLanes; ++l) {
+          const auto& s = state.spectrum.packed[row * n + block * kLanes + l];
+          if (s[0] != 0.0f || s[1] != 0.0f || s[2] != 0.0f || s[3] != 0.0f)
+            live[row] = live[(n - row) & (n - 1)] = true;
+        }
+      }
+    }
+    std::size_t lo = n, hi = 0;
+    for (std::size_t row = 0; row < n; ++row) {
+      if (live[row]) lo = std::min(lo, row), hi = row + 1;
+    }
+    if (lo > hi) {
+      lo = hi = 0;  // no spectrum at all
+    } else if (lo == 0 || lo + hi != n + 1) {
+      lo = 0, hi = n;  // [lo, hi) is closed under the mirror only when lo + hi = N + 1
+    }
+    state.evolution_rows.push_back(static_cast<int>(lo));
+    state.evolution_rows.push_back(static_cast<int>(hi));
+  }
+}
+
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s) {
   EvolveArgs args;
   args.n = state.resolution;
@@ -65,6 +99,7 @@ EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_per
   args.rate = state.evolution_rate.empty() ? nullptr : state.evolution_rate.data();
   args.lane0 = state.evolution_lane0.data();
   args.lane0_rate = state.evolution_lane0_rate.empty() ? nullptr : state.evolution_lane0_rate.data();
+  args.rows = state.evolution_rows.empty() ? nullptr : state.evolution_rows.data();
   args.clock = EvolutionPhase(time_s, loop_period_s).clock();  // frac(t/T), or t
   args.planes = state.planes;
   args.dk = 2.0 * kPi / state.patch_size_m;
@@ -140,6 +175,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
     const bool fused = options_.pipeline == CpuPipeline::fused_simd;
     if (fused) {
       build_kernel_inputs(state, config.loop_period_s, true);
+      build_row_ranges(state);
       state.tiles = AlignedFloats(2 * planes * texels);  // one allocation: huge pages sooner
       for (std::size_t p = 0; p < planes; ++p) {
         state.tile_re.push_back(state.tiles.data() + 2 * p * texels);
@@ -208,7 +244,16 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
     StackLanes<3> scratch;
     for (std::size_t item = begin; item < end; ++item) {
       const CascadeGroup& group = groups_[item / units];
-      const std::size_t block[2] = {item % units, blocks - 1 - item % units};
+      const std::size_t unit = item % units;
+      // A block pair with no spectrum in any cascade of the group transforms to zeros: its
+      // tiles keep the zeros they were allocated with.
+      bool live = sides == 1;
+      for (std::size_t c = group.first; c < group.first + group.count; ++c) {
+        const std::vector<int>& rows = cascades_[c].evolution_rows;
+        live = live || rows.empty() || rows[2 * unit] != rows[2 * unit + 1];
+      }
+      if (!live) continue;
+      const std::size_t block[2] = {unit, blocks - 1 - unit};
       // The group's planes: the first cascade's, then plane 0 of the second; per side.
       LaneBlock tile[2][fft::kMaxPlanes];
       LaneBlock input[2][fft::kMaxPlanes];

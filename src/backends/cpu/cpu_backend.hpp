@@ -35,6 +35,7 @@ struct CascadeState {
   // plane between the column and the row pass as column blocks in lane layout (fft.hpp).
   AlignedFloats evolution_spectrum;    ///< EvolveArgs::spectrum records
   std::vector<double> evolution_rate;  ///< EvolveArgs::rate (not looping)
+  std::vector<int> evolution_rows;           ///< EvolveArgs::rows (empty: every row)
   AlignedFloats evolution_lane0;             ///< EvolveArgs::lane0 records
   std::vector<double> evolution_lane0_rate;  ///< EvolveArgs::lane0_rate (not looping)
   AlignedFloats tiles;
@@ -51,6 +52,8 @@ void build_plane_factors(CascadeState& state, NormalMethod method, double choppi
 /// from the spectrum. With mirror_pairs (and N ≥ 32) the records cover blocks < N/32 only:
 /// enough for evolve_planes_mirrored, not for evolve_planes on the other blocks.
 void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_pairs = false);
+/// Fills state.evolution_rows (EvolveArgs::rows) from the spectrum: N ≥ 32.
+void build_row_ranges(CascadeState& state);
 /// The evolution kernels' arguments for time t (M.7.3).
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s);
 /// Evolves h̃(k, t) with exact phase (M.6.5, M.7.3) and writes every plane's spectrum. With a

@@ -16,6 +16,7 @@
 #include <hwy/foreach_target.h>  // IWYU pragma: keep
 #include <hwy/highway.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "cpu/cpu_backend.hpp"
@@ -188,9 +189,19 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
   BlockKx(a, mirror, kx_mirror);
   // The mirror block's lane 0 (column 16·mirror) mirrors another block pair's column: evolved
   // here directly, nf rows at a time (the phase recipe of EvolveVector, one lane per row).
+  // Rows outside [row_lo, row_hi) carry no spectrum (band-limited cascades): zeros, not evolved.
+  const auto row_lo = static_cast<std::size_t>(a.rows == nullptr ? 0 : a.rows[2 * block]);
+  const auto row_hi = static_cast<std::size_t>(a.rows == nullptr ? a.n : a.rows[2 * block + 1]);
+  for (int p = 0; p < a.planes; ++p) {
+    if (p == 1 && a.dz_into_imaginary) continue;  // the pair's first cascade wrote the zeros
+    for (float* plane : {out_re[p], out_im[p], mirror_re[p], mirror_im[p]}) {
+      std::fill(plane, plane + row_lo * kLanes, 0.0f);
+      std::fill(plane + row_hi * kLanes, plane + n * kLanes, 0.0f);
+    }
+  }
   alignas(64) float lane0_re[2048], lane0_im[2048];
-  for (std::size_t row0 = 0; row0 < n; row0 += nf) {
-    alignas(64) float f[kLanes], p[4][kLanes];
+  for (std::size_t row0 = row_lo / nf * nf; row0 < row_hi; row0 += nf) {
+    alignas(64) float f[kLanes] = {}, p[4][kLanes] = {};
     for (std::size_t i = 0; i < nf && row0 + i < n; ++i) {
       const std::size_t r = static_cast<std::size_t>(mirror) * n + row0 + i;
       const float* record = a.lane0 + r * kLane0Record;
@@ -206,7 +217,7 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
     hn::Store(hn::MulAdd(hn::Load(df, p[1]), c, hn::Mul(hn::Load(df, p[3]), s)), df,
               lane0_im + row0);
   }
-  for (std::size_t row = 0; row < n; ++row) {
+  for (std::size_t row = row_lo; row < row_hi; ++row) {
     const auto kz = hn::Set(df, dk * static_cast<float>(static_cast<int>(row) - a.n / 2));
     alignas(64) float h_re[kLanes], h_im[kLanes];
     V hr16, hi16;

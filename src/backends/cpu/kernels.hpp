@@ -26,6 +26,10 @@ struct EvolveArgs {
   /// lane0_rate[b·N + j].
   const float* lane0 = nullptr;
   const double* lane0_rate = nullptr;
+  /// Mirrored kernel: for block pair b, only rows [rows[2b], rows[2b + 1]) (closed under
+  /// row → (N − row) mod N) carry spectrum in either block; the others are written as zeros
+  /// without evolving them. Null: every row.
+  const int* rows = nullptr;
   /// Phase in turns is frac(rate·clock): rate = harmonic index and clock = frac(t/T) when
   /// looping (exact, M.7.3), rate = ω/2π and clock = t otherwise.
   double clock = 0.0;
