@@ -122,14 +122,20 @@ class SimdPlan2D {
     return stages_.size() % 2 == 0 ? out : scratch;
   }
   /// Inverse-transforms the 16 lines of a lane block whose input is at input_for(out, scratch);
-  /// the result is in `out`, the other buffer is overwritten.
-  void transform(LaneBlock out, LaneBlock scratch) const;
+  /// the result is in `out`, the other buffer is overwritten. outer_half_zero: the input is
+  /// zero outside elements [N/4, 3N/4) (a band-limited spectrum); where prunes_outer_half(),
+  /// those elements are then not read (and need not be written), otherwise they must hold the
+  /// zeros. Same result either way.
+  void transform(LaneBlock out, LaneBlock scratch, bool outer_half_zero = false) const;
+  /// Whether transform() skips the zero outer half (the first stage is radix 16: N ≥ 64).
+  [[nodiscard]] bool prunes_outer_half() const { return stages_.front().radix == 16; }
   /// The column pass's output as the row pass's input. `tiles` holds a whole plane as column
   /// blocks in lane layout (column block b's row j at tiles[b·16·N + j·16 + l], what
   /// transform() leaves for a column block); writes rows [16·block, 16·block + 16) in lane
   /// layout along the rows (column c of row 16·block + l at dst[c·16 + l]): 16×16 tile
-  /// transposes.
-  void tiles_to_lanes(const float* tiles, int block, float* dst) const;
+  /// transposes. outer_half_zero: only columns [N/4, 3N/4), for a transform() that prunes the
+  /// rest.
+  void tiles_to_lanes(const float* tiles, int block, float* dst, bool outer_half_zero = false) const;
   /// Inverse-transforms rows [16·block, 16·block + 16). The result is left in lane layout in
   /// out_re/out_im (N·16 floats each: column c of row 16·block + l at [c·16 + l]); the plane's
   /// rows are overwritten with scratch.

@@ -59,9 +59,12 @@ HWY_INLINE void Dft4(V* cr, V* ci, int stride) {
 
 // One stage a → b. Element j of the input (j < N/R) with its R−1 partners at distance N/R is
 // twiddled by w^r, w = e^{+2πi·k/(ns·R)}, k = j mod ns, combined by an R-point inverse DFT and
-// written to (j − k)·R + k + r·ns. kTwiddled is false for the first stage (ns = 1).
-template <int R, bool kTwiddled>
+// written to (j − k)·R + k + r·ns. kTwiddled is false for the first stage (ns = 1). kPruned
+// (first radix-16 stage only): inputs outside [N/4, 3N/4), r = r1 + 4·r2 with r2 ∈ {0, 3}, are
+// zero and not read; the same operations on the rest give the same bits.
+template <int R, bool kTwiddled, bool kPruned = false>
 void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer b) {
+  static_assert(!kPruned || (R == 16 && !kTwiddled), "pruning: the first radix-16 stage");
   const hn::ScalableTag<float> d;
   const std::size_t step = hn::Lanes(d);
   const int quarter = t.n / R;
@@ -90,9 +93,24 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
       const auto c8 = hn::Set(d, 0.92387953251128674f), s8 = hn::Set(d, 0.38268343236508977f);
       for (std::size_t l = 0; l < static_cast<std::size_t>(kLanes); l += step) {
         V tr[16], ti[16];
-        LoadTwiddled<16, kTwiddled>(d, in_re, in_im, l, wr, wi, tr, ti);
-        // Column r1 (elements r1, r1 + 4, r1 + 8, r1 + 12) becomes Y[r1][q2] at r1 + 4·q2.
-        for (int r1 = 0; r1 < 4; ++r1) Dft4(tr + r1, ti + r1, 4);
+        if constexpr (kPruned) {
+          // Column r1 with c0 = c3 = 0: X_q = c1·i^q + c2·(−1)^q, as Dft4 computes it.
+          (void)wr, (void)wi;
+          for (int r1 = 0; r1 < 4; ++r1) {
+            const V c1r = hn::LoadU(d, in_re[r1 + 4] + l), c1i = hn::LoadU(d, in_im[r1 + 4] + l);
+            const V c2r = hn::LoadU(d, in_re[r1 + 8] + l), c2i = hn::LoadU(d, in_im[r1 + 8] + l);
+            const V a1r = hn::Neg(c2r), a1i = hn::Neg(c2i);  // c0 − c2
+            const V a3r = hn::Neg(c1i), a3i = c1r;            // i·(c1 − c3)
+            tr[r1] = hn::Add(c2r, c1r), ti[r1] = hn::Add(c2i, c1i);
+            tr[r1 + 4] = hn::Add(a1r, a3r), ti[r1 + 4] = hn::Add(a1i, a3i);
+            tr[r1 + 8] = hn::Sub(c2r, c1r), ti[r1 + 8] = hn::Sub(c2i, c1i);
+            tr[r1 + 12] = hn::Sub(a1r, a3r), ti[r1 + 12] = hn::Sub(a1i, a3i);
+          }
+        } else {
+          LoadTwiddled<16, kTwiddled>(d, in_re, in_im, l, wr, wi, tr, ti);
+          // Column r1 (elements r1, r1 + 4, r1 + 8, r1 + 12) becomes Y[r1][q2] at r1 + 4·q2.
+          for (int r1 = 0; r1 < 4; ++r1) Dft4(tr + r1, ti + r1, 4);
+        }
         const auto rotate = [&](int i, V cr, V ci) {  // t_i ·= (cr + i·ci)
           const V x = tr[i], y = ti[i];
           tr[i] = hn::MulSub(x, cr, hn::Mul(y, ci));
@@ -167,11 +185,13 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
   }
 }
 
-bool Stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
+bool Stockham(const StageTable& table, LaneBuffer a, LaneBuffer b, bool outer_half_zero) {
   for (int i = 0; i < table.count; ++i) {
     const Stage& s = table.stages[i];
     const bool first = s.ns == 1;
-    if (s.radix == 16) {
+    if (s.radix == 16 && first && outer_half_zero) {
+      StockhamStage<16, false, true>(table, s, a, b);
+    } else if (s.radix == 16) {
       first ? StockhamStage<16, false>(table, s, a, b) : StockhamStage<16, true>(table, s, a, b);
     } else if (s.radix == 8) {
       first ? StockhamStage<8, false>(table, s, a, b) : StockhamStage<8, true>(table, s, a, b);
@@ -225,8 +245,8 @@ HWY_EXPORT(TransposeTiles);
 HWY_EXPORT(DispatchedTarget);
 HWY_EXPORT(FmaLoop);
 
-bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b) {
-  return HWY_DYNAMIC_DISPATCH(Stockham)(table, a, b);
+bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b, bool outer_half_zero) {
+  return HWY_DYNAMIC_DISPATCH(Stockham)(table, a, b, outer_half_zero);
 }
 void transpose_tiles(const TileWalk& walk) { HWY_DYNAMIC_DISPATCH(TransposeTiles)(walk); }
 

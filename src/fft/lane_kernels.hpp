@@ -32,8 +32,9 @@ struct StageTable {
 };
 
 /// Runs every stage, reading `a` and writing `b`, then back (a → b → a → ...). Natural order in
-/// and out. Returns true when the result ended in `b`.
-bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b);
+/// and out. Returns true when the result ended in `b`. outer_half_zero: elements outside
+/// [N/4, 3N/4) are zero and not read (a first radix-16 stage skips them; others read them).
+bool stockham(const StageTable& table, LaneBuffer a, LaneBuffer b, bool outer_half_zero = false);
 
 /// A run of 16×16 tile transposes: tile t reads src + t·src_step (rows src_stride apart) and
 /// writes dst + t·dst_step (rows dst_stride apart), dst[c·dst_stride + r] = src[r·src_stride +

@@ -84,25 +84,30 @@ void SimdPlan2D::columns(SplitComplex plane, int block) const {
   }
 }
 
-void SimdPlan2D::transform(LaneBlock out, LaneBlock scratch) const {
+void SimdPlan2D::transform(LaneBlock out, LaneBlock scratch, bool outer_half_zero) const {
   const detail::StageTable table = table_of(n_, stages_, twiddle_re_, twiddle_im_);
   const LaneBlock input = input_for(out, scratch);
   const LaneBlock other = input.re == out.re ? scratch : out;
   constexpr auto kLanes = static_cast<std::size_t>(detail::kLanes);
-  detail::stockham(table, {input.re, input.im, kLanes}, {other.re, other.im, kLanes});
+  detail::stockham(table, {input.re, input.im, kLanes}, {other.re, other.im, kLanes},
+                   outer_half_zero && prunes_outer_half());
 }
 
-void SimdPlan2D::tiles_to_lanes(const float* tiles, int block, float* dst) const {
+void SimdPlan2D::tiles_to_lanes(const float* tiles, int block, float* dst,
+                                bool outer_half_zero) const {
   constexpr auto kLanes = static_cast<std::size_t>(detail::kLanes);
   const auto n = static_cast<std::size_t>(n_);
-  // Tile (block, b) is 256 contiguous floats in column block b.
-  detail::transpose_tiles({.src = tiles + static_cast<std::size_t>(block) * kLanes * kLanes,
-                           .src_stride = kLanes,
-                           .src_step = kLanes * n,
-                           .dst = dst,
-                           .dst_stride = kLanes,
-                           .dst_step = kLanes * kLanes,
-                           .count = n / kLanes});
+  // Tile (block, b) is 256 contiguous floats in column block b; pruned, b ∈ [N/64, 3N/64).
+  const std::size_t first = outer_half_zero && prunes_outer_half() ? n / kLanes / 4 : 0;
+  const std::size_t count = n / kLanes - 2 * first;
+  detail::transpose_tiles(
+      {.src = tiles + static_cast<std::size_t>(block) * kLanes * kLanes + first * kLanes * n,
+       .src_stride = kLanes,
+       .src_step = kLanes * n,
+       .dst = dst + first * kLanes * kLanes,
+       .dst_stride = kLanes,
+       .dst_step = kLanes * kLanes,
+       .count = count});
 }
 
 void SimdPlan2D::rows(SplitComplex plane, int block, float* out_re, float* out_im) const {

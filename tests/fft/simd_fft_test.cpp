@@ -3,8 +3,11 @@
 // bit-identical results for any task runner.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
+#include <limits>
 #include <string>
+#include <vector>
 
 #include "fft/fft_test_util.hpp"
 #include "ocean/fft.hpp"
@@ -64,6 +67,65 @@ TEST(SimdFft2D, MatchesScalarReferenceWithSignCorrection) {
       std::vector<std::complex<double>> expected(count);
       for (std::size_t i = 0; i < count; ++i) expected[i] = {ref.re[i], ref.im[i]};
       EXPECT_LT(relative_rms(ours, expected), 1e-6) << "n = " << n;
+    }
+  });
+}
+
+// A band-limited input (zero outside elements [N/4, 3N/4)) transforms to the same bits with the
+// pruned first stage, which must not read the outer half at all (NaNs there here); the row
+// pass's tile transposes skip the same columns.
+TEST(SimdFft2D, PrunedOuterHalfGivesTheSameBits) {
+  for_each_target([&](bool best) {
+    for (int n = 32; n <= (best ? 2048 : 256); n *= 2) {
+      const auto plan = SimdPlan2D::make(n).value();
+      ASSERT_EQ(plan.prunes_outer_half(), n >= 64) << n;
+      if (!plan.prunes_outer_half()) continue;
+      const auto un = static_cast<std::size_t>(n);
+      const std::size_t floats = 16 * un;
+      std::vector<float> in_re(floats), in_im(floats);
+      Signal signal(floats, 7);
+      for (std::size_t j = 0; j < un; ++j) {
+        const bool inner = j >= un / 4 && j < 3 * un / 4;
+        for (std::size_t l = 0; l < 16; ++l) {
+          in_re[j * 16 + l] = inner ? signal.re[j * 16 + l] : 0.0f;
+          in_im[j * 16 + l] = inner ? signal.im[j * 16 + l] : 0.0f;
+        }
+      }
+      alignas(64) static float buffers[4][2][16 * 2048];
+      const SimdPlan2D::LaneBlock full{buffers[0][0], buffers[0][1]};
+      const SimdPlan2D::LaneBlock full_scratch{buffers[1][0], buffers[1][1]};
+      const SimdPlan2D::LaneBlock pruned{buffers[2][0], buffers[2][1]};
+      const SimdPlan2D::LaneBlock pruned_scratch{buffers[3][0], buffers[3][1]};
+      const SimdPlan2D::LaneBlock a = plan.input_for(full, full_scratch);
+      const SimdPlan2D::LaneBlock b = plan.input_for(pruned, pruned_scratch);
+      std::memcpy(a.re, in_re.data(), floats * sizeof(float));
+      std::memcpy(a.im, in_im.data(), floats * sizeof(float));
+      std::memcpy(b.re, in_re.data(), floats * sizeof(float));
+      std::memcpy(b.im, in_im.data(), floats * sizeof(float));
+      for (std::size_t j = 0; j < un; ++j) {  // the pruned transform must not read these
+        if (j >= un / 4 && j < 3 * un / 4) continue;
+        std::fill_n(b.re + j * 16, 16, std::numeric_limits<float>::quiet_NaN());
+        std::fill_n(b.im + j * 16, 16, std::numeric_limits<float>::quiet_NaN());
+      }
+      plan.transform(full, full_scratch);
+      plan.transform(pruned, pruned_scratch, true);
+      std::size_t differing = 0;
+      for (std::size_t i = 0; i < floats; ++i)
+        differing += !(full.re[i] == pruned.re[i]) + !(full.im[i] == pruned.im[i]);
+      EXPECT_EQ(differing, 0u) << "n = " << n;
+
+      // Tiles: the pruned walk writes the inner columns as the full one does.
+      std::vector<float> tiles(un * un), lanes_full(floats, 1.0f), lanes_pruned(floats, 1.0f);
+      for (std::size_t i = 0; i < tiles.size(); ++i) tiles[i] = float(i % 977);
+      plan.tiles_to_lanes(tiles.data(), 1, lanes_full.data());
+      plan.tiles_to_lanes(tiles.data(), 1, lanes_pruned.data(), true);
+      for (std::size_t c = 0; c < un; ++c) {
+        const bool inner = c >= un / 4 && c < 3 * un / 4;
+        for (std::size_t l = 0; l < 16; ++l) {
+          const std::size_t i = c * 16 + l;
+          ASSERT_EQ(lanes_pruned[i], inner ? lanes_full[i] : 1.0f) << "n " << n << " c " << c;
+        }
+      }
     }
   });
 }
