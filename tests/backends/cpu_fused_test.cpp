@@ -186,6 +186,10 @@ TEST(CpuFused, MirroredEvolutionIsBitIdentical) {
             }
             EXPECT_GT(empty, 0);  // the outer block pairs
             EXPECT_GT(narrow, 0);
+            EXPECT_TRUE(state.outer_half_zero);  // its planes transform pruned
+            ocean::cpu::CascadeState full = kernel_state(n, planes, period);
+            ocean::cpu::build_row_ranges(full);
+            EXPECT_FALSE(full.outer_half_zero);  // the last cascade keeps every wavenumber
           }
           ocean::cpu::EvolveArgs args = ocean::cpu::evolve_args(state, 259200.7, period);
           args.dz_into_imaginary = planes == 2 && period > 0.0;

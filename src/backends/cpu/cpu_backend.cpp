@@ -65,6 +65,17 @@ void build_row_ranges(CascadeState& state) {
   constexpr auto kLanes = static_cast<std::size_t>(fft::SimdPlan2D::kBlock);
   const std::size_t blocks = n / kLanes;
   state.evolution_rows.clear();
+  state.outer_half_zero = true;
+  for (std::size_t row = 0; row < n && state.outer_half_zero; ++row) {
+    for (std::size_t col = 0; col < n; ++col) {
+      const bool inner = row >= n / 4 && row < 3 * n / 4 && col >= n / 4 && col < 3 * n / 4;
+      const auto& s = state.spectrum.packed[row * n + col];
+      if (!inner && (s[0] != 0.0f || s[1] != 0.0f || s[2] != 0.0f || s[3] != 0.0f)) {
+        state.outer_half_zero = false;
+        break;
+      }
+    }
+  }
   if (blocks < 2) return;
   for (std::size_t b = 0; b < blocks / 2; ++b) {
     std::vector<bool> live(n, false);
@@ -219,6 +230,20 @@ std::size_t CpuBackend::state_bytes_per_cascade() const {
   return total;
 }
 
+bool CpuBackend::group_outer_half_zero(const CascadeGroup& group) const {
+  bool all = true;
+  for (std::size_t c = group.first; c < group.first + group.count; ++c)
+    all = all && cascades_[c].outer_half_zero;
+  return all;
+}
+
+bool CpuBackend::plane_outer_half_zero(const CascadeGroup& group, std::size_t c,
+                                       std::size_t p) const {
+  // Plane 1 of a pair carries both cascades' Dz; every other plane one cascade's fields.
+  return simd_plan_.prunes_outer_half() &&
+         (p == 1 ? group_outer_half_zero(group) : cascades_[c].outer_half_zero);
+}
+
 void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   using LaneBlock = fft::SimdPlan2D::LaneBlock;
   const int n = config_.resolution;
@@ -233,6 +258,11 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
     for (std::size_t c = group.first; c < group.first + group.count; ++c) {
       evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
       evolve_args_[c].dz_into_imaginary = c != group.first;  // the pair's second cascade
+      // Every plane this evolution writes transforms pruned: the outer rows are not read.
+      const bool pruned =
+          simd_plan_.prunes_outer_half() &&
+          (c == group.first ? group_outer_half_zero(group) : cascades_[c].outer_half_zero);
+      if (pruned) evolve_args_[c].fill_rows[0] = n / 4, evolve_args_[c].fill_rows[1] = 3 * n / 4;
     }
   }
   // Columns: every (group, column block pair) evolves h̃ once per cascade and writes each
@@ -257,12 +287,14 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
       // The group's planes: the first cascade's, then plane 0 of the second; per side.
       LaneBlock tile[2][fft::kMaxPlanes];
       LaneBlock input[2][fft::kMaxPlanes];
+      bool pruned[fft::kMaxPlanes] = {};  // zero outside rows [N/4, 3N/4)
       std::size_t count = 0;
       for (std::size_t c = group.first; c < group.first + group.count; ++c) {
         CascadeState& state = cascades_[c];
         float* re[2][fft::kMaxPlanes];
         float* im[2][fft::kMaxPlanes];
         for (std::size_t p = 0; p < state.tile_re.size(); ++p, ++count) {
+          pruned[count] = plane_outer_half_zero(group, c, p);
           for (std::size_t side = 0; side < sides; ++side) {
             const std::size_t origin = block[side] * block_floats;
             LaneBlock& t = tile[side][count];
@@ -289,7 +321,7 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
             std::memcpy(other.re, t.re, block_floats * sizeof(float));
             std::memcpy(other.im, t.im, block_floats * sizeof(float));
           }
-          simd_plan_.transform(t, other);
+          simd_plan_.transform(t, other, pruned[p]);
         }
       }
     }
@@ -300,19 +332,22 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
     StackLanes<3> buffers;  // plane 0's rows, plane 1's rows, scratch
     const LaneBlock p0 = buffers[0], p1 = buffers[1], scratch = buffers[2];
-    const auto row_fft = [&](CascadeState& state, std::size_t p, int block, LaneBlock lanes) {
-      const LaneBlock input = simd_plan_.input_for(lanes, scratch);
-      simd_plan_.tiles_to_lanes(state.tile_re[p], block, input.re);
-      simd_plan_.tiles_to_lanes(state.tile_im[p], block, input.im);
-      simd_plan_.transform(lanes, scratch);
-    };
     for (std::size_t item = begin; item < end; ++item) {
       const CascadeGroup& group = groups_[item / blocks];
       const int block = static_cast<int>(item % blocks);
+      // Plane p of cascade c: zero outside columns [N/4, 3N/4) where pruned.
+      const auto row_fft = [&](std::size_t c, std::size_t p, LaneBlock lanes) {
+        const CascadeState& state = cascades_[c];
+        const bool pruned = plane_outer_half_zero(group, c, p);
+        const LaneBlock input = simd_plan_.input_for(lanes, scratch);
+        simd_plan_.tiles_to_lanes(state.tile_re[p], block, input.re, pruned);
+        simd_plan_.tiles_to_lanes(state.tile_im[p], block, input.im, pruned);
+        simd_plan_.transform(lanes, scratch, pruned);
+      };
       CascadeState& first = cascades_[group.first];
-      row_fft(first, 1, block, p1);
+      row_fft(group.first, 1, p1);
       for (std::size_t c = group.first; c < group.first + group.count; ++c) {
-        row_fft(cascades_[c], 0, block, p0);
+        row_fft(c, 0, p0);
         CascadeFrame& frame = out.cascades[c];
         assemble_displacement(p0.re, p0.im, c == group.first ? p1.re : p1.im, n, block,
                               frame.displacement.data(), frame.displacement_half.data());
@@ -320,7 +355,7 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
       if (first.planes > 2) {
         simd_plan_.store_rows(p1.re, p1.im, plane_of(first, 1), block, true);
         for (std::size_t p = 2; p < static_cast<std::size_t>(first.planes); ++p) {
-          row_fft(first, p, block, p0);
+          row_fft(group.first, p, p0);
           simd_plan_.store_rows(p0.re, p0.im, plane_of(first, p), block, true);
         }
       }

@@ -36,6 +36,9 @@ struct CascadeState {
   AlignedFloats evolution_spectrum;    ///< EvolveArgs::spectrum records
   std::vector<double> evolution_rate;  ///< EvolveArgs::rate (not looping)
   std::vector<int> evolution_rows;           ///< EvolveArgs::rows (empty: every row)
+  /// No spectrum outside rows and columns [N/4, 3N/4) (a band-limited cascade, M.7.1): its
+  /// planes transform with the pruned first stage.
+  bool outer_half_zero = false;
   AlignedFloats evolution_lane0;             ///< EvolveArgs::lane0 records
   std::vector<double> evolution_lane0_rate;  ///< EvolveArgs::lane0_rate (not looping)
   AlignedFloats tiles;
@@ -52,7 +55,8 @@ void build_plane_factors(CascadeState& state, NormalMethod method, double choppi
 /// from the spectrum. With mirror_pairs (and N ≥ 32) the records cover blocks < N/32 only:
 /// enough for evolve_planes_mirrored, not for evolve_planes on the other blocks.
 void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_pairs = false);
-/// Fills state.evolution_rows (EvolveArgs::rows) from the spectrum: N ≥ 32.
+/// Fills state.evolution_rows (EvolveArgs::rows, N ≥ 32) and state.outer_half_zero from the
+/// spectrum.
 void build_row_ranges(CascadeState& state);
 /// The evolution kernels' arguments for time t (M.7.3).
 EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_period_s);
@@ -118,6 +122,10 @@ class CpuBackend final : public Backend {
   [[nodiscard]] std::size_t state_bytes_per_cascade() const;
 
  private:
+  struct CascadeGroup;
+  [[nodiscard]] bool group_outer_half_zero(const CascadeGroup& group) const;
+  [[nodiscard]] bool plane_outer_half_zero(const CascadeGroup& group, std::size_t c,
+                                           std::size_t p) const;
   void synthesise_fused(double time_s, Frame& out);
   void synthesise_unfused(double time_s, Frame& out);
   void surface_fused(double dt_s, bool reset_foam, Frame& out);
