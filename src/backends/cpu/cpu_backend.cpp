@@ -258,11 +258,10 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
     for (std::size_t c = group.first; c < group.first + group.count; ++c) {
       evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
       evolve_args_[c].dz_into_imaginary = c != group.first;  // the pair's second cascade
-      // Every plane this evolution writes transforms pruned: the outer rows are not read.
-      const bool pruned =
-          simd_plan_.prunes_outer_half() &&
-          (c == group.first ? group_outer_half_zero(group) : cascades_[c].outer_half_zero);
-      if (pruned) evolve_args_[c].fill_rows[0] = n / 4, evolve_args_[c].fill_rows[1] = 3 * n / 4;
+      // The planes that transform pruned: their outer rows are not read.
+      for (std::size_t p = 0; p < static_cast<std::size_t>(cascades_[c].planes); ++p) {
+        if (plane_outer_half_zero(group, c, p)) evolve_args_[c].pruned_planes |= 1u << p;
+      }
     }
   }
   // Columns: every (group, column block pair) evolves h̃ once per cascade and writes each

@@ -190,15 +190,15 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
   // The mirror block's lane 0 (column 16·mirror) mirrors another block pair's column: evolved
   // here directly, nf rows at a time (the phase recipe of EvolveVector, one lane per row).
   // Rows outside [row_lo, row_hi) carry no spectrum (band-limited cascades): zeros, not evolved,
-  // and only where the transform reads them ([fill_lo, fill_hi)).
+  // and only where the transform reads them ([fill_lo, fill_hi): the inner half when pruned).
   const auto row_lo = static_cast<std::size_t>(a.rows == nullptr ? 0 : a.rows[2 * block]);
   const auto row_hi = static_cast<std::size_t>(a.rows == nullptr ? a.n : a.rows[2 * block + 1]);
-  const auto fill_lo = static_cast<std::size_t>(a.fill_rows[0]);
-  const auto fill_hi = static_cast<std::size_t>(a.fill_rows[1] < 0 ? a.n : a.fill_rows[1]);
-  const std::size_t zero_to = row_lo == row_hi ? fill_hi : std::max(fill_lo, row_lo);
-  const std::size_t zero_from = row_lo == row_hi ? fill_hi : std::min(fill_hi, row_hi);
   for (int p = 0; p < a.planes; ++p) {
     if (p == 1 && a.dz_into_imaginary) continue;  // the pair's first cascade wrote the zeros
+    const bool pruned = ((a.pruned_planes >> p) & 1u) != 0;
+    const std::size_t fill_lo = pruned ? n / 4 : 0, fill_hi = pruned ? 3 * n / 4 : n;
+    const std::size_t zero_to = row_lo == row_hi ? fill_hi : std::max(fill_lo, row_lo);
+    const std::size_t zero_from = row_lo == row_hi ? fill_hi : std::min(fill_hi, row_hi);
     for (float* plane : {out_re[p], out_im[p], mirror_re[p], mirror_im[p]}) {
       std::fill(plane + fill_lo * kLanes, plane + zero_to * kLanes, 0.0f);
       std::fill(plane + zero_from * kLanes, plane + fill_hi * kLanes, 0.0f);

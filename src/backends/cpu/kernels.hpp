@@ -30,9 +30,9 @@ struct EvolveArgs {
   /// row → (N − row) mod N) carry spectrum in either block; the others are written as zeros
   /// without evolving them. Null: every row.
   const int* rows = nullptr;
-  /// Mirrored kernel: the rows the transform reads, [fill_rows[0], fill_rows[1]) (−1: N), where
-  /// the rows without spectrum are written as zeros ([N/4, 3N/4) for a pruned transform).
-  int fill_rows[2] = {0, -1};
+  /// Mirrored kernel: bit p set when plane p transforms with the pruned first stage, which
+  /// reads rows [N/4, 3N/4) only: the rows without spectrum are written as zeros only there.
+  unsigned pruned_planes = 0;
   /// Phase in turns is frac(rate·clock): rate = harmonic index and clock = frac(t/T) when
   /// looping (exact, M.7.3), rate = ω/2π and clock = t otherwise.
   double clock = 0.0;
