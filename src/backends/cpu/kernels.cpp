@@ -268,12 +268,84 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
   }
 }
 
+#if HWY_TARGET <= HWY_AVX3 && HWY_ARCH_X86
+// AVX-512: the float3 rows come straight out of the transposes. Taking a tile's 48 column
+// vectors in interleaved order (Dx, h, Dz of column 0, of column 1, ...), vectors 16t … 16t + 15
+// transposed give floats 16t … 16t + 15 of every row's 48 interleaved floats, so neither an
+// interleaving store nor a round trip through a row-major tile is needed; the half4 texels
+// are the rows converted and spread by one 16-bit permutation per 8 texels (zeros in w).
+void AssembleDisplacementAvx3(const float* h, const float* dx, const float* dz, std::size_t n,
+                              std::size_t row0, float* displacement,
+                              std::uint16_t* displacement_half) {
+  const hn::ScalableTag<float> df;
+  using V = decltype(hn::Zero(df));
+  static_assert(hn::MaxLanes(decltype(df)()) == kLanes);
+  // (−1)^(x+y) (eq. 43): tiles start at even rows and columns, so column j of a tile has the
+  // lane pattern (−1)^(l + j).
+  alignas(64) float sign[2][kLanes];
+  for (std::size_t l = 0; l < kLanes; ++l) {
+    sign[0][l] = (l & 1u) != 0 ? -1.0f : 1.0f;
+    sign[1][l] = -sign[0][l];
+  }
+  const V even = hn::Load(df, sign[0]), odd = hn::Load(df, sign[1]);
+  // Half lane 4t + k of the 8 texels t takes half 3t + k of the 16 + 16 converted floats they
+  // start in; lanes 4t + 3 are zero.
+  alignas(64) static constexpr std::int16_t kSpread[2][32] = {
+      {0,  1,  2,  0, 3,  4,  5,  0, 6,  7,  8,  0, 9,  10, 11, 0,
+       12, 13, 14, 0, 15, 16, 17, 0, 18, 19, 20, 0, 21, 22, 23, 0},
+      {8,  9,  10, 0, 11, 12, 13, 0, 14, 15, 16, 0, 17, 18, 19, 0,
+       20, 21, 22, 0, 23, 24, 25, 0, 26, 27, 28, 0, 29, 30, 31, 0}};
+  const __m512i spread0 = _mm512_load_si512(kSpread[0]), spread1 = _mm512_load_si512(kSpread[1]);
+  constexpr __mmask32 kXyz = 0x77777777u;
+  const float* src[3] = {dx, h, dz};
+  for (std::size_t c0 = 0; c0 < n; c0 += kLanes) {
+    V rows[3][kLanes];  // [t][l]: floats 16t … 16t + 15 of row l's interleaved 48
+    for (std::size_t t = 0; t < 3; ++t) {
+      V v[kLanes];
+      for (std::size_t i = 0; i < kLanes; ++i) {
+        const std::size_t m = 16 * t + i, j = m / 3;
+        v[i] = hn::Mul(hn::Load(df, src[m % 3] + (c0 + j) * kLanes), (j & 1u) != 0 ? odd : even);
+      }
+      for (std::size_t round = 1; round < kLanes; round *= 2) {  // as TransposeSubBlock
+        V u[kLanes];
+        for (std::size_t i = 0; i < kLanes / 2; ++i) {
+          u[i] = hn::ConcatEven(df, v[2 * i + 1], v[2 * i]);
+          u[i + kLanes / 2] = hn::ConcatOdd(df, v[2 * i + 1], v[2 * i]);
+        }
+        for (std::size_t i = 0; i < kLanes; ++i) v[i] = u[i];
+      }
+      for (std::size_t l = 0; l < kLanes; ++l) rows[t][l] = v[l];
+    }
+    for (std::size_t l = 0; l < kLanes; ++l) {
+      const std::size_t i = (row0 + l) * n + c0;
+      float* out = displacement + 3 * i;
+      for (std::size_t t = 0; t < 3; ++t) hn::StoreU(rows[t][l], df, out + 16 * t);
+      const __m256i h0 = _mm512_cvtps_ph(rows[0][l].raw, _MM_FROUND_NO_EXC);
+      const __m256i h1 = _mm512_cvtps_ph(rows[1][l].raw, _MM_FROUND_NO_EXC);
+      const __m256i h2 = _mm512_cvtps_ph(rows[2][l].raw, _MM_FROUND_NO_EXC);
+      const __m512i lo = _mm512_inserti64x4(_mm512_castsi256_si512(h0), h1, 1);
+      const __m512i hi = _mm512_inserti64x4(_mm512_castsi256_si512(h1), h2, 1);
+      std::uint16_t* half = displacement_half + 4 * i;
+      _mm512_storeu_si512(half, _mm512_maskz_permutexvar_epi16(kXyz, spread0, lo));
+      _mm512_storeu_si512(half + 32, _mm512_maskz_permutexvar_epi16(kXyz, spread1, hi));
+    }
+  }
+}
+#endif
+
 void AssembleDisplacement(const float* h, const float* dx, const float* dz, int n_int, int block,
                           float* displacement, std::uint16_t* displacement_half) {
   const hn::ScalableTag<float> df;
   const std::size_t step = hn::Lanes(df);
   const auto n = static_cast<std::size_t>(n_int);
   const std::size_t row0 = static_cast<std::size_t>(block) * kLanes;
+#if HWY_TARGET <= HWY_AVX3 && HWY_ARCH_X86
+  if constexpr (hn::MaxLanes(decltype(df)()) == kLanes) {
+    (void)step;
+    AssembleDisplacementAvx3(h, dx, dz, n, row0, displacement, displacement_half);
+    return;
+  }
+#endif
   // Tile by tile: lane layout → row-major 16×16 with (−1)^(x+y) (eq. 43; tiles start at even
   // rows and columns), then the rows interleaved into float3 and half4.
   alignas(64) float tile[3][kLanes * kLanes];
