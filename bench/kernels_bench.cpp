@@ -109,7 +109,7 @@ void BM_SurfaceRows(benchmark::State& state) {
                                .mip_work = f.state.mip_work.data(),
                                .packed = c.packed_mips.data()};
   for (auto _ : state) {
-    ocean::cpu::surface_row_pairs(args, 0, n / 2);
+    ocean::cpu::surface_row_quads(args, 0, n / 4);
     benchmark::ClobberMemory();
   }
   set_texels(state, n);
@@ -121,7 +121,7 @@ void BM_MipChain(benchmark::State& state) {
   Fixture f(n);
   auto& c = f.frame.cascades[0];
   for (auto _ : state) {
-    for (int level = 2; (n >> level) >= 1; ++level) {  // level 1 is the surface pass's
+    for (int level = 3; (n >> level) >= 1; ++level) {  // levels 1 and 2 are the surface pass's
       for (int row = 0; row < (n >> level); ++row)
         ocean::cpu::mip_row(n, level, row, f.state.mip_work.data(), c.packed_mips.data());
     }

@@ -387,11 +387,11 @@ void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
                .mip_work = state.mip_work.data(),
                .packed = frame.packed_mips.data()};
   }
-  const auto pairs = static_cast<std::size_t>(n / 2);
-  runner_->parallel_for(cascades_.size() * pairs, 8, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end;) {  // runs of consecutive pairs in one cascade
-      const std::size_t c = i / pairs, stop = std::min(end, (c + 1) * pairs);
-      surface_row_pairs(args[c], static_cast<int>(i % pairs), static_cast<int>(stop - i));
+  const auto quads = static_cast<std::size_t>(n / 4);
+  runner_->parallel_for(cascades_.size() * quads, 4, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end;) {  // runs of consecutive quads in one cascade
+      const std::size_t c = i / quads, stop = std::min(end, (c + 1) * quads);
+      surface_row_quads(args[c], static_cast<int>(i % quads), static_cast<int>(stop - i));
       i = stop;
     }
   });
@@ -453,14 +453,14 @@ void CpuBackend::step(double time_s, Frame& out) {
   const bool fused_surface = options_.pipeline == CpuPipeline::fused_simd &&
                              config_.normals == NormalMethod::central_difference;
   if (fused_surface) {
-    surface_fused(dt, reset_foam, out);  // with mip level 1
+    surface_fused(dt, reset_foam, out);  // with mip levels 1 and 2
   } else {
     for (std::size_t c = 0; c < cascades_.size(); ++c)
       finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
   }
   const Clock::time_point finalized = Clock::now();
   if (options_.pipeline == CpuPipeline::fused_simd) {
-    mips_fused(fused_surface ? 2 : 1, out);
+    mips_fused(fused_surface ? 3 : 1, out);
   } else {
     for (std::size_t c = 0; c < cascades_.size(); ++c)
       build_mips(cascades_[c], out.cascades[c], *runner_);

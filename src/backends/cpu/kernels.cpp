@@ -514,10 +514,10 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
 }
 
 // A mip row from its 2×2 averages `sum` (structure of arrays, `size` texels): smoothness
-// from the filtered normal's length (eq. 53) and RGBA8 packing into packed[dst…], the averages
-// into the float4 work chain at work[4·dst…] for the next level.
+// from the filtered normal's length (eq. 53) and RGBA8 packing into packed[dst…], and with
+// store_work the averages into the float4 work chain at work[4·dst…] for the next level.
 HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, std::size_t dst,
-                            float* work, std::uint32_t* packed) {
+                            float* work, std::uint32_t* packed, bool store_work = true) {
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const std::size_t step = hn::Lanes(df);
@@ -539,11 +539,12 @@ HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, std::siz
                hn::ShiftLeft<8>(Quantise(df, hn::MulAdd(hn::Mul(z, inv), half, half)))),
         hn::Or(hn::ShiftLeft<16>(Quantise(df, b)), hn::ShiftLeft<24>(Quantise(df, smoothness))));
     hn::StoreU(rgba, di, reinterpret_cast<std::int32_t*>(packed + dst + c));
-    hn::StoreInterleaved4(x, y, z, b, df, work + 4 * (dst + c));
+    if (store_work) hn::StoreInterleaved4(x, y, z, b, df, work + 4 * (dst + c));
   }
   for (; c < size; ++c) {  // rows narrower than a vector
-    float* v = work + 4 * (dst + c);
+    float v[4];
     for (std::size_t k = 0; k < 4; ++k) v[k] = sum[k][c];
+    if (store_work) std::copy(v, v + 4, work + 4 * (dst + c));
     const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     const float inv = length > 0.0f ? 1.0f / length : 0.0f;
     packed[dst + c] =
@@ -590,11 +591,41 @@ void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
   MipFromSums(sum, size, dst, work, packed);
 }
 
+// 2×2 averages (eq. 52) of two rows of structure-of-arrays values (x, y, z, blue) into `size`
+// texels of `sum`, in the order of the mip rows: ((a + b) + c) + d.
+HWY_INLINE void Average2x2(const float* const* top, const float* const* bottom, std::size_t size,
+                           float (*sum)[1024]) {
+  std::size_t c = 0;
+#if HWY_TARGET != HWY_SCALAR
+  const hn::ScalableTag<float> df;
+  const std::size_t step = hn::Lanes(df);
+  for (; c + step <= size; c += step) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      const auto t0 = hn::Load(df, top[k] + 2 * c), t1 = hn::Load(df, top[k] + 2 * c + step);
+      const auto b0 = hn::Load(df, bottom[k] + 2 * c),
+                 b1 = hn::Load(df, bottom[k] + 2 * c + step);
+      const auto upper = hn::Add(hn::ConcatEven(df, t1, t0), hn::ConcatOdd(df, t1, t0));
+      const auto all =
+          hn::Add(hn::Add(upper, hn::ConcatEven(df, b1, b0)), hn::ConcatOdd(df, b1, b0));
+      hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
+    }
+  }
+#endif
+  for (; c < size; ++c) {
+    for (std::size_t k = 0; k < 4; ++k) {
+      sum[k][c] =
+          0.25f * (((top[k][2 * c] + top[k][2 * c + 1]) + bottom[k][2 * c]) + bottom[k][2 * c + 1]);
+    }
+  }
+}
+
 // Rows 2·pair and 2·pair + 1 of the surface pass from the deinterleaved rows 2·pair − 1 …
 // 2·pair + 1 (ring[(row + 1) % 3] holds row `row`; each row done makes way for the row after
-// the next, the last one only if `more` pairs follow), then row `pair` of mip level 1 from
-// them: the base level's work values never leave the stack.
-HWY_INLINE void SurfaceRowPairFrom(const SurfaceArgs& a, int pair, PlanarRow* ring, bool more) {
+// the next, the last one only if `more` rows follow), then row `pair` of mip level 1 from them
+// into `level1` (its RGBA8 row is written, its work values stay here): the base level's work
+// values never leave the stack.
+HWY_INLINE void SurfaceRowPairFrom(const SurfaceArgs& a, int pair, PlanarRow* ring, bool more,
+                                   float (*level1)[1024]) {
   const auto n = static_cast<std::size_t>(a.n);
   alignas(64) float rows[2][4][2048];
   for (int r = 0; r < 2; ++r) {
@@ -603,43 +634,34 @@ HWY_INLINE void SurfaceRowPairFrom(const SurfaceArgs& a, int pair, PlanarRow* ri
     SurfaceRowValues(a, row, ring[row % 3], ring[(row + 1) % 3], ring[(row + 2) % 3], work);
     if (r == 0 || more) Planarize(a, row + 2, ring[row % 3]);  // over row − 1
   }
-  // 2×2 averages (eq. 52) in the order of the mip rows: ((a + b) + c) + d.
-  alignas(64) float sum[4][1024];
-  const std::size_t size = n / 2;
-  std::size_t c = 0;
-#if HWY_TARGET != HWY_SCALAR
-  const hn::ScalableTag<float> df;
-  const std::size_t step = hn::Lanes(df);
-  for (; c + step <= size; c += step) {
-    for (std::size_t k = 0; k < 4; ++k) {
-      const auto t0 = hn::Load(df, rows[0][k] + 2 * c),
-                 t1 = hn::Load(df, rows[0][k] + 2 * c + step);
-      const auto b0 = hn::Load(df, rows[1][k] + 2 * c),
-                 b1 = hn::Load(df, rows[1][k] + 2 * c + step);
-      const auto top = hn::Add(hn::ConcatEven(df, t1, t0), hn::ConcatOdd(df, t1, t0));
-      const auto all = hn::Add(hn::Add(top, hn::ConcatEven(df, b1, b0)), hn::ConcatOdd(df, b1, b0));
-      hn::Store(hn::Mul(all, hn::Set(df, 0.25f)), df, sum[k] + c);
-    }
-  }
-#endif
-  for (; c < size; ++c) {
-    for (std::size_t k = 0; k < 4; ++k) {
-      sum[k][c] = 0.25f * (((rows[0][k][2 * c] + rows[0][k][2 * c + 1]) + rows[1][k][2 * c]) +
-                           rows[1][k][2 * c + 1]);
-    }
-  }
-  MipFromSums(sum, size, mip_offset(a.n, 1) + static_cast<std::size_t>(pair) * size, a.mip_work,
-              a.packed);
+  const float* const top[4] = {rows[0][0], rows[0][1], rows[0][2], rows[0][3]};
+  const float* const bottom[4] = {rows[1][0], rows[1][1], rows[1][2], rows[1][3]};
+  Average2x2(top, bottom, n / 2, level1);
+  MipFromSums(level1, n / 2, mip_offset(a.n, 1) + static_cast<std::size_t>(pair) * (n / 2),
+              a.mip_work, a.packed, false);
 }
 
-// Row pairs [first, first + count): each displacement row is deinterleaved once.
-void SurfaceRowPairs(const SurfaceArgs& a, int first, int count) {
+// Row quads [first, first + count): rows 4·first … 4·(first + count) − 1, each displacement row
+// deinterleaved once, and their rows of mip levels 1 and 2 (level 1's work values stay on the
+// stack, so mip_work's levels 0 and 1 are not written).
+void SurfaceRowQuads(const SurfaceArgs& a, int first, int count) {
   alignas(64) PlanarRow ring[3];
-  Planarize(a, 2 * first - 1, ring[(2 * first) % 3]);
-  Planarize(a, 2 * first, ring[(2 * first + 1) % 3]);
-  Planarize(a, 2 * first + 1, ring[(2 * first + 2) % 3]);
-  for (int pair = first; pair < first + count; ++pair)
-    SurfaceRowPairFrom(a, pair, ring, pair + 1 < first + count);
+  const int row0 = 4 * first;
+  Planarize(a, row0 - 1, ring[row0 % 3]);
+  Planarize(a, row0, ring[(row0 + 1) % 3]);
+  Planarize(a, row0 + 1, ring[(row0 + 2) % 3]);
+  const auto size = static_cast<std::size_t>(a.n / 4);
+  alignas(64) float level1[2][4][1024];
+  alignas(64) float level2[4][1024];
+  for (int quad = first; quad < first + count; ++quad) {
+    SurfaceRowPairFrom(a, 2 * quad, ring, true, level1[0]);
+    SurfaceRowPairFrom(a, 2 * quad + 1, ring, quad + 1 < first + count, level1[1]);
+    const float* const top[4] = {level1[0][0], level1[0][1], level1[0][2], level1[0][3]};
+    const float* const bottom[4] = {level1[1][0], level1[1][1], level1[1][2], level1[1][3]};
+    Average2x2(top, bottom, size, level2);
+    MipFromSums(level2, size, mip_offset(a.n, 2) + static_cast<std::size_t>(quad) * size,
+                a.mip_work, a.packed);
+  }
 }
 
 }  // namespace HWY_NAMESPACE
@@ -652,15 +674,15 @@ namespace ocean::cpu {
 HWY_EXPORT(EvolvePlanes);
 HWY_EXPORT(EvolvePlanesMirrored);
 HWY_EXPORT(AssembleDisplacement);
-HWY_EXPORT(SurfaceRowPairs);
+HWY_EXPORT(SurfaceRowQuads);
 HWY_EXPORT(MipRow);
 
 void mip_row(int n, int level, int row, float* work, std::uint32_t* packed) {
   HWY_DYNAMIC_DISPATCH(MipRow)(n, level, row, work, packed);
 }
 
-void surface_row_pairs(const SurfaceArgs& args, int first, int count) {
-  HWY_DYNAMIC_DISPATCH(SurfaceRowPairs)(args, first, count);
+void surface_row_quads(const SurfaceArgs& args, int first, int count) {
+  HWY_DYNAMIC_DISPATCH(SurfaceRowQuads)(args, first, count);
 }
 
 void evolve_planes(const EvolveArgs& args, int block, float* const* re, float* const* im) {

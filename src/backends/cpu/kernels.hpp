@@ -94,16 +94,16 @@ struct SurfaceArgs {
   float* jacobian = nullptr;
   float* foam = nullptr;
   float* normal = nullptr;          ///< float3
-  float* mip_work = nullptr;        ///< float4 (n·len, blue) chain: level 1 is written
-  std::uint32_t* packed = nullptr;  ///< RGBA8 chain: levels 0 and 1 are written
+  float* mip_work = nullptr;        ///< float4 (n·len, blue) chain: level 2 is written
+  std::uint32_t* packed = nullptr;  ///< RGBA8 chain: levels 0, 1 and 2 are written
 };
 
-/// The surface pass for rows 2·first … 2·(first + count) − 1 with central differences and
+/// The surface pass for rows 4·first … 4·(first + count) − 1 with central differences and
 /// toroidal wrap (eqs. 45–51), the SIMD twin of finalize()'s central-difference path, and rows
-/// first … first + count − 1 of mip level 1 from them (eqs. 52–53; the base level's float4 work
-/// values stay on the stack, so mip_work's level 0 is not written). Each displacement row is
-/// deinterleaved once into a ring of three rows.
-void surface_row_pairs(const SurfaceArgs& args, int first, int count);
+/// 2·first … of mip level 1 and first … first + count − 1 of mip level 2 from them (eqs.
+/// 52–53; the float4 work values of levels 0 and 1 stay on the stack, so mip_work's levels 0
+/// and 1 are not written). Each displacement row is deinterleaved once into a ring of three.
+void surface_row_quads(const SurfaceArgs& args, int first, int count);
 
 /// One row of mip level `level` ≥ 1 from level − 1 (seed 000 eqs. 52–53): 2×2 box filter of the
 /// float4 work values (roughness-scaled normal, blue), smoothness from the filtered normal's
