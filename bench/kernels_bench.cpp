@@ -123,7 +123,7 @@ void BM_MipChain(benchmark::State& state) {
   for (auto _ : state) {
     for (int level = 3; (n >> level) >= 1; ++level) {  // levels 1 and 2 are the surface pass's
       for (int row = 0; row < (n >> level); ++row)
-        ocean::cpu::mip_row(n, level, row, f.state.mip_work.data(), c.packed_mips.data());
+        ocean::cpu::mip_row(n, level, row, f.state.mip_work.data(), 2, c.packed_mips.data());
     }
     benchmark::ClobberMemory();
   }

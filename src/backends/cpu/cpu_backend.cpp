@@ -200,7 +200,13 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
       state.plane_im.assign(planes, std::vector<float>(texels));
     }
     state.foam.assign(texels, 0.0f);
-    state.mip_work.assign(4 * mip_chain_texels(config.resolution), 0.0f);
+    // The fused central-difference surface pass keeps levels 0 and 1 of the work values on the
+    // stack: its chain starts at level 2.
+    const bool fused_surface = fused && config.normals == NormalMethod::central_difference;
+    state.mip_work_level = fused_surface ? 2 : 0;
+    state.mip_work.assign(4 * (mip_chain_texels(config.resolution) -
+                               mip_offset(config.resolution, state.mip_work_level)),
+                          0.0f);
   }
   config_ = config;
   runner_ = &runner;
@@ -406,6 +412,7 @@ void CpuBackend::mips_fused(int first_level, Frame& out) {
       for (std::size_t i = begin; i < end; ++i) {
         const std::size_t c = i / rows;
         mip_row(n, level, static_cast<int>(i % rows), cascades_[c].mip_work.data(),
+                cascades_[c].mip_work_level,
                 out.cascades[c].packed_mips.data());
       }
     });

@@ -44,7 +44,8 @@ struct CascadeState {
   AlignedFloats tiles;
   std::vector<float*> tile_re, tile_im;  ///< each plane's parts in `tiles`
   LargeVector<float> foam;      ///< accumulated foam carried between frames
-  LargeVector<float> mip_work;  ///< float4 (n·len, foam) for every mip level
+  LargeVector<float> mip_work;  ///< float4 (n·len, foam) from mip level mip_work_level on
+  int mip_work_level = 0;
 };
 
 /// Number of complex planes a normal method needs (two real fields per plane, M.7.2).

@@ -514,10 +514,11 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
 }
 
 // A mip row from its 2×2 averages `sum` (structure of arrays, `size` texels): smoothness
-// from the filtered normal's length (eq. 53) and RGBA8 packing into packed[dst…], and with
-// store_work the averages into the float4 work chain at work[4·dst…] for the next level.
-HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, std::size_t dst,
-                            float* work, std::uint32_t* packed, bool store_work = true) {
+// from the filtered normal's length (eq. 53) and RGBA8 packing into packed_row, and unless
+// work_row is null the averages as float4 work values for the next level into work_row.
+HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, float* work_row,
+                            std::uint32_t* packed_row) {
+  const bool store_work = work_row != nullptr;
   const hn::ScalableTag<float> df;
   const hn::RebindToSigned<decltype(df)> di;
   const std::size_t step = hn::Lanes(df);
@@ -538,25 +539,27 @@ HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, std::siz
         hn::Or(Quantise(df, hn::MulAdd(hn::Mul(x, inv), half, half)),
                hn::ShiftLeft<8>(Quantise(df, hn::MulAdd(hn::Mul(z, inv), half, half)))),
         hn::Or(hn::ShiftLeft<16>(Quantise(df, b)), hn::ShiftLeft<24>(Quantise(df, smoothness))));
-    hn::StoreU(rgba, di, reinterpret_cast<std::int32_t*>(packed + dst + c));
-    if (store_work) hn::StoreInterleaved4(x, y, z, b, df, work + 4 * (dst + c));
+    hn::StoreU(rgba, di, reinterpret_cast<std::int32_t*>(packed_row + c));
+    if (store_work) hn::StoreInterleaved4(x, y, z, b, df, work_row + 4 * c);
   }
   for (; c < size; ++c) {  // rows narrower than a vector
     float v[4];
     for (std::size_t k = 0; k < 4; ++k) v[k] = sum[k][c];
-    if (store_work) std::copy(v, v + 4, work + 4 * (dst + c));
+    if (store_work) std::copy(v, v + 4, work_row + 4 * c);
     const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     const float inv = length > 0.0f ? 1.0f / length : 0.0f;
-    packed[dst + c] =
+    packed_row[c] =
         pack_rgba8(v[0] * inv, v[2] * inv, v[3], smoothness_from_normal_length(length));
   }
 }
 
-void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
+void MipRow(int n, int level, int row_int, float* work, int work_level,
+            std::uint32_t* packed) {
   const auto size = static_cast<std::size_t>(n >> level);
   const auto row = static_cast<std::size_t>(row_int);
   const std::size_t src_size = 2 * size;
-  const float* src0 = work + 4 * (mip_offset(n, level - 1) + 2 * row * src_size);
+  const std::size_t origin = mip_offset(n, work_level);  // the work chain starts there
+  const float* src0 = work + 4 * (mip_offset(n, level - 1) - origin + 2 * row * src_size);
   const float* src1 = src0 + 4 * src_size;
   const std::size_t dst = mip_offset(n, level) + row * size;
   // 2×2 sums (eq. 52), deinterleaved into structure-of-arrays for the vector part.
@@ -588,7 +591,7 @@ void MipRow(int n, int level, int row_int, float* work, std::uint32_t* packed) {
                            src1[8 * c + 4 + k]);
     }
   }
-  MipFromSums(sum, size, dst, work, packed);
+  MipFromSums(sum, size, work + 4 * (dst - origin), packed + dst);
 }
 
 // 2×2 averages (eq. 52) of two rows of structure-of-arrays values (x, y, z, blue) into `size`
@@ -637,8 +640,8 @@ HWY_INLINE void SurfaceRowPairFrom(const SurfaceArgs& a, int pair, PlanarRow* ri
   const float* const top[4] = {rows[0][0], rows[0][1], rows[0][2], rows[0][3]};
   const float* const bottom[4] = {rows[1][0], rows[1][1], rows[1][2], rows[1][3]};
   Average2x2(top, bottom, n / 2, level1);
-  MipFromSums(level1, n / 2, mip_offset(a.n, 1) + static_cast<std::size_t>(pair) * (n / 2),
-              a.mip_work, a.packed, false);
+  MipFromSums(level1, n / 2, nullptr,
+              a.packed + mip_offset(a.n, 1) + static_cast<std::size_t>(pair) * (n / 2));
 }
 
 // Row quads [first, first + count): rows 4·first … 4·(first + count) − 1, each displacement row
@@ -659,8 +662,8 @@ void SurfaceRowQuads(const SurfaceArgs& a, int first, int count) {
     const float* const top[4] = {level1[0][0], level1[0][1], level1[0][2], level1[0][3]};
     const float* const bottom[4] = {level1[1][0], level1[1][1], level1[1][2], level1[1][3]};
     Average2x2(top, bottom, size, level2);
-    MipFromSums(level2, size, mip_offset(a.n, 2) + static_cast<std::size_t>(quad) * size,
-                a.mip_work, a.packed);
+    const std::size_t row = static_cast<std::size_t>(quad) * size;
+    MipFromSums(level2, size, a.mip_work + 4 * row, a.packed + mip_offset(a.n, 2) + row);
   }
 }
 
@@ -677,8 +680,8 @@ HWY_EXPORT(AssembleDisplacement);
 HWY_EXPORT(SurfaceRowQuads);
 HWY_EXPORT(MipRow);
 
-void mip_row(int n, int level, int row, float* work, std::uint32_t* packed) {
-  HWY_DYNAMIC_DISPATCH(MipRow)(n, level, row, work, packed);
+void mip_row(int n, int level, int row, float* work, int work_level, std::uint32_t* packed) {
+  HWY_DYNAMIC_DISPATCH(MipRow)(n, level, row, work, work_level, packed);
 }
 
 void surface_row_quads(const SurfaceArgs& args, int first, int count) {

@@ -94,7 +94,7 @@ struct SurfaceArgs {
   float* jacobian = nullptr;
   float* foam = nullptr;
   float* normal = nullptr;          ///< float3
-  float* mip_work = nullptr;        ///< float4 (n·len, blue) chain: level 2 is written
+  float* mip_work = nullptr;        ///< float4 (n·len, blue) from level 2 on: level 2 is written
   std::uint32_t* packed = nullptr;  ///< RGBA8 chain: levels 0, 1 and 2 are written
 };
 
@@ -107,7 +107,8 @@ void surface_row_quads(const SurfaceArgs& args, int first, int count);
 
 /// One row of mip level `level` ≥ 1 from level − 1 (seed 000 eqs. 52–53): 2×2 box filter of the
 /// float4 work values (roughness-scaled normal, blue), smoothness from the filtered normal's
-/// length, RGBA8 packing. `work` and `packed` point at the start of the whole chains.
-void mip_row(int n, int level, int row, float* work, std::uint32_t* packed);
+/// length, RGBA8 packing. `packed` points at the start of the whole RGBA8 chain, `work` at the
+/// work values of level `work_level` ≤ level − 1, followed by the levels below it.
+void mip_row(int n, int level, int row, float* work, int work_level, std::uint32_t* packed);
 
 }  // namespace ocean::cpu
