@@ -135,7 +135,8 @@ class SimdPlan2D {
   /// layout along the rows (column c of row 16·block + l at dst[c·16 + l]): 16×16 tile
   /// transposes. outer_half_zero: only columns [N/4, 3N/4), for a transform() that prunes the
   /// rest.
-  void tiles_to_lanes(const float* tiles, int block, float* dst, bool outer_half_zero = false) const;
+  void tiles_to_lanes(const float* tiles, int block, float* dst,
+                      bool outer_half_zero = false) const;
   /// Inverse-transforms rows [16·block, 16·block + 16). The result is left in lane layout in
   /// out_re/out_im (N·16 floats each: column c of row 16·block + l at [c·16 + l]); the plane's
   /// rows are overwritten with scratch.

@@ -18,8 +18,8 @@ std::size_t rounded(std::size_t bytes) { return (bytes + kHugePage - 1) / kHugeP
 }  // namespace
 
 void* allocate_large(std::size_t bytes) {
-  if (bytes < kHugeFrom) return ::operator new(bytes, std::align_val_t{kLine});
-  void* p = ::operator new(rounded(bytes), std::align_val_t{kHugePage});
+  if (bytes < kHugeFrom) return ::operator new (bytes, std::align_val_t{kLine});
+  void* p = ::operator new (rounded(bytes), std::align_val_t{kHugePage});
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
   // Before the first touch, so that the pages fault in as huge pages. Advice only: where THP is
   // off the array simply stays on small pages.
@@ -30,9 +30,9 @@ void* allocate_large(std::size_t bytes) {
 
 void free_large(void* p, std::size_t bytes) noexcept {
   if (bytes < kHugeFrom) {
-    ::operator delete(p, std::align_val_t{kLine});
+    ::operator delete (p, std::align_val_t{kLine});
   } else {
-    ::operator delete(p, std::align_val_t{kHugePage});
+    ::operator delete (p, std::align_val_t{kHugePage});
   }
 }
 

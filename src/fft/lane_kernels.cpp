@@ -100,7 +100,7 @@ void StockhamStage(const StageTable& t, const Stage& s, LaneBuffer a, LaneBuffer
             const V c1r = hn::LoadU(d, in_re[r1 + 4] + l), c1i = hn::LoadU(d, in_im[r1 + 4] + l);
             const V c2r = hn::LoadU(d, in_re[r1 + 8] + l), c2i = hn::LoadU(d, in_im[r1 + 8] + l);
             const V a1r = hn::Neg(c2r), a1i = hn::Neg(c2i);  // c0 − c2
-            const V a3r = hn::Neg(c1i), a3i = c1r;            // i·(c1 − c3)
+            const V a3r = hn::Neg(c1i), a3i = c1r;           // i·(c1 − c3)
             tr[r1] = hn::Add(c2r, c1r), ti[r1] = hn::Add(c2i, c1i);
             tr[r1 + 4] = hn::Add(a1r, a3r), ti[r1 + 4] = hn::Add(a1i, a3i);
             tr[r1 + 8] = hn::Sub(c2r, c1r), ti[r1 + 8] = hn::Sub(c2i, c1i);

@@ -67,8 +67,8 @@ TEST(Bake, NpyMatchesTheSimulatorBitForBit) {
                           expected.displacement.size() * 4),
               0);
     const auto foam = ocean::io::read_npy(dir.path / ("foam_" + stem + ".npy")).value();
-    EXPECT_TRUE(std::equal(foam.data.begin(), foam.data.end(), expected.foam.begin(),
-                           expected.foam.end()));
+    EXPECT_TRUE(
+        std::equal(foam.data.begin(), foam.data.end(), expected.foam.begin(), expected.foam.end()));
     const auto mip5 = ocean::io::read_npy(dir.path / ("nfs_" + stem + "_mip5.npy")).value();
     EXPECT_EQ(mip5.shape, (std::vector<std::size_t>{1, 1, 4}));
   }

@@ -1,9 +1,10 @@
 // Large-array storage: alignment, sizes either side of the huge-page threshold, and frames.
+#include "ocean/memory.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
 
-#include "ocean/memory.hpp"
 #include "ocean/sim.hpp"
 
 namespace {

@@ -37,7 +37,8 @@ void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_
         const std::size_t i = row * n + block * kLanes + l;
         const double rate = EvolutionPhase::rate(state.spectrum.omega[i], loop_period_s);
         if (l == 0) {
-          for (std::size_t c = 0; c < 4; ++c) lane0[r * kLane0Record + c] = state.spectrum.packed[i][c];
+          for (std::size_t c = 0; c < 4; ++c)
+            lane0[r * kLane0Record + c] = state.spectrum.packed[i][c];
           if (looping) {
             lane0[r * kLane0Record + 4] = static_cast<float>(rate);  // exact: an integer
           } else {
@@ -109,7 +110,8 @@ EvolveArgs evolve_args(const CascadeState& state, double time_s, double loop_per
   args.record = evolution_record(loop_period_s > 0.0);
   args.rate = state.evolution_rate.empty() ? nullptr : state.evolution_rate.data();
   args.lane0 = state.evolution_lane0.data();
-  args.lane0_rate = state.evolution_lane0_rate.empty() ? nullptr : state.evolution_lane0_rate.data();
+  args.lane0_rate =
+      state.evolution_lane0_rate.empty() ? nullptr : state.evolution_lane0_rate.data();
   args.rows = state.evolution_rows.empty() ? nullptr : state.evolution_rows.data();
   args.clock = EvolutionPhase(time_s, loop_period_s).clock();  // frac(t/T), or t
   args.planes = state.planes;
@@ -412,8 +414,7 @@ void CpuBackend::mips_fused(int first_level, Frame& out) {
       for (std::size_t i = begin; i < end; ++i) {
         const std::size_t c = i / rows;
         mip_row(n, level, static_cast<int>(i % rows), cascades_[c].mip_work.data(),
-                cascades_[c].mip_work_level,
-                out.cascades[c].packed_mips.data());
+                cascades_[c].mip_work_level, out.cascades[c].packed_mips.data());
       }
     });
   }

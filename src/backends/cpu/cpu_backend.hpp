@@ -35,7 +35,7 @@ struct CascadeState {
   // plane between the column and the row pass as column blocks in lane layout (fft.hpp).
   AlignedFloats evolution_spectrum;    ///< EvolveArgs::spectrum records
   std::vector<double> evolution_rate;  ///< EvolveArgs::rate (not looping)
-  std::vector<int> evolution_rows;           ///< EvolveArgs::rows (empty: every row)
+  std::vector<int> evolution_rows;     ///< EvolveArgs::rows (empty: every row)
   /// No spectrum outside rows and columns [N/4, 3N/4) (a band-limited cascade, M.7.1): its
   /// planes transform with the pruned first stage.
   bool outer_half_zero = false;
@@ -43,8 +43,8 @@ struct CascadeState {
   std::vector<double> evolution_lane0_rate;  ///< EvolveArgs::lane0_rate (not looping)
   AlignedFloats tiles;
   std::vector<float*> tile_re, tile_im;  ///< each plane's parts in `tiles`
-  LargeVector<float> foam;      ///< accumulated foam carried between frames
-  LargeVector<float> mip_work;  ///< float4 (n·len, foam) from mip level mip_work_level on
+  LargeVector<float> foam;               ///< accumulated foam carried between frames
+  LargeVector<float> mip_work;           ///< float4 (n·len, foam) from mip level mip_work_level on
   int mip_work_level = 0;
 };
 

@@ -459,9 +459,9 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
     // ∂/∂x from the padded centre row, ∂/∂z from the rows above and below (eq. 45).
     // (a − b)·(½·N/L): the reference's (a − b)·½·N/L bit for bit (halving is exact).
     const auto gx = [&](std::size_t k) {
-      return hn::Mul(hn::Sub(hn::LoadU(df, padded[k] + kPad + c + 1),
-                             hn::LoadU(df, padded[k] + kPad + c - 1)),
-                     half_inv);
+      return hn::Mul(
+          hn::Sub(hn::LoadU(df, padded[k] + kPad + c + 1), hn::LoadU(df, padded[k] + kPad + c - 1)),
+          half_inv);
     };
     const auto gz = [&](std::size_t k) {
       return hn::Mul(hn::Sub(hn::Load(df, down[k] + kPad + c), hn::Load(df, up[k] + kPad + c)),
@@ -548,13 +548,11 @@ HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, float* w
     if (store_work) std::copy(v, v + 4, work_row + 4 * c);
     const float length = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
     const float inv = length > 0.0f ? 1.0f / length : 0.0f;
-    packed_row[c] =
-        pack_rgba8(v[0] * inv, v[2] * inv, v[3], smoothness_from_normal_length(length));
+    packed_row[c] = pack_rgba8(v[0] * inv, v[2] * inv, v[3], smoothness_from_normal_length(length));
   }
 }
 
-void MipRow(int n, int level, int row_int, float* work, int work_level,
-            std::uint32_t* packed) {
+void MipRow(int n, int level, int row_int, float* work, int work_level, std::uint32_t* packed) {
   const auto size = static_cast<std::size_t>(n >> level);
   const auto row = static_cast<std::size_t>(row_int);
   const std::size_t src_size = 2 * size;
@@ -605,8 +603,7 @@ HWY_INLINE void Average2x2(const float* const* top, const float* const* bottom, 
   for (; c + step <= size; c += step) {
     for (std::size_t k = 0; k < 4; ++k) {
       const auto t0 = hn::Load(df, top[k] + 2 * c), t1 = hn::Load(df, top[k] + 2 * c + step);
-      const auto b0 = hn::Load(df, bottom[k] + 2 * c),
-                 b1 = hn::Load(df, bottom[k] + 2 * c + step);
+      const auto b0 = hn::Load(df, bottom[k] + 2 * c), b1 = hn::Load(df, bottom[k] + 2 * c + step);
       const auto upper = hn::Add(hn::ConcatEven(df, t1, t0), hn::ConcatOdd(df, t1, t0));
       const auto all =
           hn::Add(hn::Add(upper, hn::ConcatEven(df, b1, b0)), hn::ConcatOdd(df, b1, b0));
