@@ -20,9 +20,23 @@ namespace hn = hwy::HWY_NAMESPACE;
 inline constexpr std::size_t kTile = 16;
 
 #if !HWY_HAVE_SCALABLE && HWY_TARGET != HWY_SCALAR
-// One L×L sub-block (L = lanes of the vector) of a 16×16 tile: out[c][r] = in[r][c]·sign, by
-// log2 L rounds of even/odd de-interleaving (each round rotates the row/column index bits by
-// one; after log2 L rounds rows and columns have swapped).
+// In registers: v[c] becomes column c of the L×L matrix (L = lanes of the vector) whose row r
+// was v[r], by log2 L rounds of even/odd de-interleaving (each round rotates the row/column
+// index bits by one; after log2 L rounds rows and columns have swapped).
+template <class D>
+HWY_INLINE void TransposeVectors(D d, hn::Vec<D>* v) {
+  constexpr std::size_t L = hn::MaxLanes(D());
+  for (std::size_t round = 1; round < L; round *= 2) {
+    hn::Vec<D> t[L];
+    for (std::size_t i = 0; i < L / 2; ++i) {
+      t[i] = hn::ConcatEven(d, v[2 * i + 1], v[2 * i]);
+      t[i + L / 2] = hn::ConcatOdd(d, v[2 * i + 1], v[2 * i]);
+    }
+    for (std::size_t i = 0; i < L; ++i) v[i] = t[i];
+  }
+}
+
+// One L×L sub-block of a 16×16 tile: out[c][r] = in[r][c]·sign.
 template <class D>
 HWY_INLINE void TransposeSubBlock(D d, const float* src, std::size_t src_stride, float* dst,
                                   std::size_t dst_stride, const float* sign_even,
@@ -31,14 +45,7 @@ HWY_INLINE void TransposeSubBlock(D d, const float* src, std::size_t src_stride,
   using V = hn::Vec<D>;
   V v[L];
   for (std::size_t r = 0; r < L; ++r) v[r] = hn::LoadU(d, src + r * src_stride);
-  for (std::size_t round = 1; round < L; round *= 2) {
-    V t[L];
-    for (std::size_t i = 0; i < L / 2; ++i) {
-      t[i] = hn::ConcatEven(d, v[2 * i + 1], v[2 * i]);
-      t[i + L / 2] = hn::ConcatOdd(d, v[2 * i + 1], v[2 * i]);
-    }
-    for (std::size_t i = 0; i < L; ++i) v[i] = t[i];
-  }
+  TransposeVectors(d, v);
   if (sign_even == nullptr) {
     for (std::size_t c = 0; c < L; ++c) hn::StoreU(v[c], d, dst + c * dst_stride);
     return;

@@ -187,8 +187,6 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
   alignas(64) float kx_lanes[kLanes], kx_mirror[kLanes];
   BlockKx(a, block, kx_lanes);
   BlockKx(a, mirror, kx_mirror);
-  // The mirror block's lane 0 (column 16·mirror) mirrors another block pair's column: evolved
-  // here directly, nf rows at a time (the phase recipe of EvolveVector, one lane per row).
   // Rows outside [row_lo, row_hi) carry no spectrum (band-limited cascades): zeros, not evolved,
   // and only where the transform reads them ([fill_lo, fill_hi): the inner half when pruned).
   const auto row_lo = static_cast<std::size_t>(a.rows == nullptr ? 0 : a.rows[2 * block]);
@@ -204,6 +202,8 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
       std::fill(plane + zero_from * kLanes, plane + fill_hi * kLanes, 0.0f);
     }
   }
+  // The mirror block's lane 0 (column 16·mirror) mirrors another block pair's column: evolved
+  // here directly, nf rows at a time (the phase recipe of EvolveVector, one lane per row).
   alignas(64) float lane0_re[2048], lane0_im[2048];
   for (std::size_t row0 = row_lo / nf * nf; row0 < row_hi; row0 += nf) {
     alignas(64) float f[kLanes] = {}, p[4][kLanes] = {};
@@ -306,14 +306,7 @@ void AssembleDisplacementAvx3(const float* h, const float* dx, const float* dz, 
         const std::size_t m = 16 * t + i, j = m / 3;
         v[i] = hn::Mul(hn::Load(df, src[m % 3] + (c0 + j) * kLanes), (j & 1u) != 0 ? odd : even);
       }
-      for (std::size_t round = 1; round < kLanes; round *= 2) {  // as TransposeSubBlock
-        V u[kLanes];
-        for (std::size_t i = 0; i < kLanes / 2; ++i) {
-          u[i] = hn::ConcatEven(df, v[2 * i + 1], v[2 * i]);
-          u[i + kLanes / 2] = hn::ConcatOdd(df, v[2 * i + 1], v[2 * i]);
-        }
-        for (std::size_t i = 0; i < kLanes; ++i) v[i] = u[i];
-      }
+      fft::detail::HWY_NAMESPACE::TransposeVectors(df, v);
       for (std::size_t l = 0; l < kLanes; ++l) rows[t][l] = v[l];
     }
     for (std::size_t l = 0; l < kLanes; ++l) {
