@@ -30,15 +30,15 @@ HWY_INLINE void LoadTwiddled(D d, const float* const* in_re, const float* const*
                              std::size_t l, const float* wr, const float* wi, V* tr, V* ti) {
   tr[0] = hn::LoadU(d, in_re[0] + l), ti[0] = hn::LoadU(d, in_im[0] + l);
   for (int r = 1; r < R; ++r) {
-    if constexpr (!kTwiddled) {
-      (void)wr, (void)wi;
-      tr[r] = hn::LoadU(d, in_re[r] + l), ti[r] = hn::LoadU(d, in_im[r] + l);
-      continue;
-    }
     const auto vr = hn::LoadU(d, in_re[r] + l), vi = hn::LoadU(d, in_im[r] + l);
-    const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
-    tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
-    ti[r] = hn::MulAdd(vr, wi_r, hn::Mul(vi, wr_r));
+    if constexpr (kTwiddled) {
+      const auto wr_r = hn::Set(d, wr[r - 1]), wi_r = hn::Set(d, wi[r - 1]);
+      tr[r] = hn::MulSub(vr, wr_r, hn::Mul(vi, wi_r));
+      ti[r] = hn::MulAdd(vr, wi_r, hn::Mul(vi, wr_r));
+    } else {
+      (void)wr, (void)wi;
+      tr[r] = vr, ti[r] = vi;
+    }
   }
 }
 

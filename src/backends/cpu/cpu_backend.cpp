@@ -5,6 +5,7 @@
 // external FFT engines. Both then share finalize and the mips.
 #include "cpu_backend.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <chrono>
 #include <cmath>
@@ -65,13 +66,16 @@ void build_row_ranges(CascadeState& state) {
   const auto n = static_cast<std::size_t>(state.resolution);
   constexpr auto kLanes = static_cast<std::size_t>(fft::SimdPlan2D::kBlock);
   const std::size_t blocks = n / kLanes;
+  const auto has_spectrum = [&](std::size_t row, std::size_t col) {
+    const auto& s = state.spectrum.packed[row * n + col];
+    return s[0] != 0.0f || s[1] != 0.0f || s[2] != 0.0f || s[3] != 0.0f;
+  };
   state.evolution_rows.clear();
   state.outer_half_zero = true;
   for (std::size_t row = 0; row < n && state.outer_half_zero; ++row) {
     for (std::size_t col = 0; col < n; ++col) {
       const bool inner = row >= n / 4 && row < 3 * n / 4 && col >= n / 4 && col < 3 * n / 4;
-      const auto& s = state.spectrum.packed[row * n + col];
-      if (!inner && (s[0] != 0.0f || s[1] != 0.0f || s[2] != 0.0f || s[3] != 0.0f)) {
+      if (!inner && has_spectrum(row, col)) {
         state.outer_half_zero = false;
         break;
       }
@@ -83,9 +87,7 @@ void build_row_ranges(CascadeState& state) {
     for (const std::size_t block : {b, blocks - 1 - b}) {
       for (std::size_t row = 0; row < n; ++row) {
         for (std::size_t l = 0; l < kLanes; ++l) {
-          const auto& s = state.spectrum.packed[row * n + block * kLanes + l];
-          if (s[0] != 0.0f || s[1] != 0.0f || s[2] != 0.0f || s[3] != 0.0f)
-            live[row] = live[(n - row) & (n - 1)] = true;
+          if (has_spectrum(row, block * kLanes + l)) live[row] = live[(n - row) & (n - 1)] = true;
         }
       }
     }

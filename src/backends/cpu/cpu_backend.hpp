@@ -2,9 +2,7 @@
 // packing and mips on planar float arrays, parallel over rows through the task runner.
 #pragma once
 
-#include <algorithm>
 #include <complex>
-#include <memory>
 #include <span>
 #include <vector>
 
