@@ -32,6 +32,7 @@ struct BenchOptions {
   std::string threads = "1,all";
   std::string min_time = "0.2";
   std::string backend = "cpu";
+  std::string outputs = "all";
   bool json = false;
 };
 
@@ -106,6 +107,7 @@ struct Planes {
 
 struct Row {
   int resolution, cascades, threads;
+  std::string outputs;
   PipelineResult ours, fftw;
   int fftw_threads = 0;
   Stats ours_fft, fftw_fft;
@@ -128,6 +130,7 @@ nlohmann::ordered_json to_json(const Row& r) {
   j["resolution"] = r.resolution;
   j["cascades"] = r.cascades;
   j["threads"] = r.threads;
+  j["outputs"] = r.outputs;
   j["ours_ms"] = r.ours.frame.median_ms;
   j["ours_min_ms"] = r.ours.frame.min_ms;
   j["ours_max_ms"] = r.ours.frame.max_ms;
@@ -161,7 +164,8 @@ void print_table(const std::vector<Row>& rows, const std::string& target, double
                  double bandwidth, double cache_bandwidth) {
   std::cout << "SIMD target " << target << ", measured FMA peak " << fixed(peak, 1)
             << " GFLOP/s per thread, copy bandwidth " << fixed(bandwidth, 1) << " GB/s (256 MiB), "
-            << fixed(cache_bandwidth, 1) << " GB/s (16 MiB); times are medians in ms\n";
+            << fixed(cache_bandwidth, 1) << " GB/s (16 MiB); outputs "
+            << (rows.empty() ? "all" : rows.front().outputs) << "; times are medians in ms\n";
   std::cout << std::setw(6) << "N" << std::setw(4) << "C" << std::setw(5) << "thr" << std::setw(10)
             << "ours" << std::setw(10) << "fftw-pipe" << std::setw(7) << "ratio" << std::setw(10)
             << "ours-fft" << std::setw(10) << "fftw-fft" << std::setw(9) << "GFLOP/s"
@@ -298,6 +302,13 @@ int run_bench(const BenchOptions& o) {
   Result<std::vector<int>> threads = parse_ints("--threads", o.threads, 1, 256, true);
   if (!threads.ok()) return report(threads.status());
   if (o.backend == "vulkan") return run_vulkan_bench(resolutions.value(), cascades.value(), o.json);
+  FrameOutputs outputs;
+  if (o.outputs == "seed000") {
+    outputs = FrameOutputs::seed000();
+  } else if (o.outputs != "all") {
+    return report(invalid_argument("--outputs = '" + o.outputs +
+                                   "' is unknown: must be one of all, seed000"));
+  }
   Result<double> min_time = parse_number("--min-time", o.min_time);
   if (!min_time.ok()) return report(min_time.status());
   if (min_time.value() < 0.0 || min_time.value() > 60.0)
@@ -321,11 +332,12 @@ int run_bench(const BenchOptions& o) {
     for (int c : cascades.value()) {
       for (int t_request : threads.value()) {
         const int t = t_request == 0 ? hardware : t_request;
-        SimulationConfig config;  // the default sea, central differences: seed 000's outputs
+        SimulationConfig config;  // the default sea, central differences
         config.resolution = n;
         config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
+        config.outputs = outputs;
         std::shared_ptr<TaskRunner> runner = make_tbb_runner(t);
-        Row row{n, c, runner->concurrency(), {}, {}, 0, {}, {}, 0.0, 0.0, 0, false};
+        Row row{n, c, runner->concurrency(), o.outputs, {}, {}, 0, {}, {}, 0.0, 0.0, 0, false};
         Result<PipelineResult> ours = run_pipeline(config, {}, *runner, min_time.value());
         if (!ours.ok()) return report(ours.status());
         row.ours = ours.value();
@@ -361,8 +373,10 @@ int run_bench(const BenchOptions& o) {
         }
         // Memory: the backend's state per cascade plus one frame's arrays.
         const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-        row.memory_per_cascade = row.ours.state_bytes_per_cascade + texels * (12 + 8 + 12 + 4 + 4) +
-                                 4 * mip_chain_texels(n);
+        const std::size_t optional_bytes =
+            (outputs.normal ? 12 : 0) + (outputs.jacobian ? 4 : 0) + (outputs.foam ? 4 : 0);
+        row.memory_per_cascade = row.ours.state_bytes_per_cascade +
+                                 texels * (12 + 8 + optional_bytes) + 4 * mip_chain_texels(n);
         rows.push_back(row);
         progress.update(++done);
       }
@@ -403,6 +417,10 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--min-time", options->min_time, "Seconds of timed runs per measurement")
       ->capture_default_str();
   cmd->add_option("--backend", options->backend, "Backend to measure")->capture_default_str();
+  cmd->add_option("--outputs", options->outputs,
+                  "Frame outputs: all (every array), or seed000 (displacement float3 + half4 and "
+                  "the RGBA8 chain, no float normal, Jacobian or foam arrays)")
+      ->capture_default_str();
   cmd->add_flag("--json", options->json, "Print JSON instead of a table");
   return {cmd, [options] { return run_bench(*options); }};
 }

@@ -55,6 +55,22 @@ struct FoamParams {
   double decay_per_s = 0.6;
 };
 
+/// The per-texel float arrays a frame carries besides those every frame has (the float3 and half4
+/// displacement and the packed RGBA8 chain with its mips: seed 000's output set, all a renderer
+/// uploads). Arrays not requested stay empty and are neither computed into nor written, which
+/// saves 20 bytes per texel of stores and memory; foam still accumulates (in the backend's state)
+/// when the packed map's blue channel carries it.
+struct FrameOutputs {
+  bool normal = true;    ///< CascadeFrame::normal (float3)
+  bool jacobian = true;  ///< CascadeFrame::jacobian
+  bool foam = true;      ///< CascadeFrame::foam
+  /// Every array (the default).
+  static constexpr FrameOutputs all() { return {}; }
+  /// Seed 000's output set only: the displacement (float3 + half4) and the RGBA8 chain.
+  static constexpr FrameOutputs seed000() { return {false, false, false}; }
+  friend bool operator==(const FrameOutputs&, const FrameOutputs&) = default;
+};
+
 /// The default sea: a fetch-limited JONSWAP wind sea, U10 = 10 m/s over 100 km, Donelan–Banner
 /// spreading, waves travelling towards +x.
 inline SeaStateParams default_sea_state() {
@@ -79,6 +95,7 @@ struct SimulationConfig {
   double roughness = 0.1;
   FoamParams foam;
   BlueChannel blue_channel = BlueChannel::foam;
+  FrameOutputs outputs;  ///< which optional arrays each frame carries
 };
 
 /// Validates a configuration; the message names the field, the value and the valid range.
@@ -104,9 +121,10 @@ struct CascadeFrame {
   double patch_size_m = 0.0;
   LargeVector<float> displacement;               ///< float3 (Dx, h, Dz) per texel, m (eq. 44)
   LargeVector<std::uint16_t> displacement_half;  ///< half4 (Dx, h, Dz, 0), texture-ready
-  LargeVector<float> normal;                     ///< float3 unit normal of the displaced surface
-  LargeVector<float> jacobian;                   ///< J of the horizontal map (eq. 48)
-  LargeVector<float> foam;                       ///< accumulated foam coverage [0, 1]
+  // The next three are empty unless SimulationConfig::outputs requests them.
+  LargeVector<float> normal;    ///< float3 unit normal of the displaced surface
+  LargeVector<float> jacobian;  ///< J of the horizontal map (eq. 48)
+  LargeVector<float> foam;      ///< accumulated foam coverage [0, 1]
   /// RGBA8 (normal x, normal z, blue channel, smoothness), all mips, packed as eq. 51.
   LargeVector<std::uint32_t> packed_mips;
 };
@@ -117,8 +135,9 @@ struct Frame {
   std::vector<CascadeFrame> cascades;
 };
 
-/// Sizes every array of `frame` for `config` (one CascadeFrame per cascade, mips included) and
-/// resets the values: displacement, normal and foam 0, Jacobian 1. What Backend::allocate does.
+/// Sizes every array of `frame` for `config` (one CascadeFrame per cascade, mips included; the
+/// arrays config.outputs does not request empty) and resets the values: displacement, normal
+/// and foam 0, Jacobian 1. What Backend::allocate does.
 void allocate_frame(const SimulationConfig& config, Frame& frame);
 
 /// A simulation implementation. configure() allocates and plans; step() never allocates,

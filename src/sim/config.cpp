@@ -98,9 +98,16 @@ void allocate_frame(const SimulationConfig& config, Frame& frame) {
     f.patch_size_m = config.cascade_patch_sizes_m[c];
     f.displacement.assign(3 * texels, 0.0f);
     f.displacement_half.assign(4 * texels, 0);
-    f.normal.assign(3 * texels, 0.0f);
-    f.jacobian.assign(texels, 1.0f);
-    f.foam.assign(texels, 0.0f);
+    const auto optional = [](LargeVector<float>& v, bool wanted, std::size_t count, float value) {
+      if (wanted) {
+        v.assign(count, value);
+      } else {
+        LargeVector<float>().swap(v);  // empty, its memory released
+      }
+    };
+    optional(f.normal, config.outputs.normal, 3 * texels, 0.0f);
+    optional(f.jacobian, config.outputs.jacobian, texels, 1.0f);
+    optional(f.foam, config.outputs.foam, texels, 0.0f);
     f.packed_mips.assign(mip_chain_texels(config.resolution), 0u);
   }
 }

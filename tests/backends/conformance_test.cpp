@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -216,6 +217,66 @@ TEST_P(Conformance, EveryOutputMatchesTheCpuReference) {
           << vk->context().last_validation_message;
     }
 #endif
+  }
+}
+
+// Optional arrays a configuration does not request (FrameOutputs) stay empty, and leaving them
+// out changes nothing else: every other array has the bits of the run with every output, over
+// consecutive frames (foam accumulates in the backend's state either way), for each normal
+// method.
+TEST_P(Conformance, OptionalOutputsAreLeftOutAndTheRestUnchanged) {
+  std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  const auto same = [](const auto& a, const auto& b) {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](auto x, auto y) {
+             return std::memcmp(&x, &y, sizeof(x)) == 0;
+           });
+  };
+  for (const ocean::NormalMethod normals :
+       {ocean::NormalMethod::central_difference, ocean::NormalMethod::sobel,
+        ocean::NormalMethod::analytic}) {
+    SCOPED_TRACE(std::string(ocean::to_string(normals)));
+    ocean::SimulationConfig config;
+    config.resolution = 32;
+    config.cascade_patch_sizes_m = {300.0, 71.0, 17.0};
+    config.normals = normals;
+    config.foam.jacobian_start = 1.0;  // foam on part of the patch: accumulation is exercised
+    for (const ocean::FrameOutputs want :
+         {ocean::FrameOutputs::seed000(), ocean::FrameOutputs{.normal = false, .foam = false},
+          ocean::FrameOutputs{.jacobian = false}}) {
+      ocean::SimulationConfig lean = config;
+      lean.outputs = want;
+      auto full = ocean::make_backend(GetParam());
+      auto part = ocean::make_backend(GetParam());
+      ASSERT_TRUE(full.ok() && part.ok());
+      ASSERT_TRUE(full.value()->configure(config, *runner).ok());
+      ASSERT_TRUE(part.value()->configure(lean, *runner).ok());
+      ocean::Frame a, b;
+      full.value()->allocate(a);
+      part.value()->allocate(b);
+      const std::size_t texels = 32 * 32;
+      for (const ocean::CascadeFrame& c : b.cascades) {
+        EXPECT_EQ(c.normal.size(), want.normal ? 3 * texels : 0);
+        EXPECT_EQ(c.jacobian.size(), want.jacobian ? texels : 0);
+        EXPECT_EQ(c.foam.size(), want.foam ? texels : 0);
+      }
+      double foamy = 0.0;
+      for (const double t : {10.0, 10.1, 10.2, 10.3}) {
+        full.value()->step(t, a);
+        part.value()->step(t, b);
+        for (std::size_t c = 0; c < a.cascades.size(); ++c) {
+          const ocean::CascadeFrame& x = a.cascades[c];
+          const ocean::CascadeFrame& y = b.cascades[c];
+          EXPECT_TRUE(same(x.displacement, y.displacement)) << "cascade " << c << ", t = " << t;
+          EXPECT_TRUE(same(x.displacement_half, y.displacement_half)) << "cascade " << c;
+          EXPECT_TRUE(same(x.packed_mips, y.packed_mips)) << "cascade " << c << ", t = " << t;
+          EXPECT_TRUE(!want.normal || same(x.normal, y.normal)) << "cascade " << c;
+          EXPECT_TRUE(!want.jacobian || same(x.jacobian, y.jacobian)) << "cascade " << c;
+          EXPECT_TRUE(!want.foam || same(x.foam, y.foam)) << "cascade " << c;
+          for (const float f : x.foam) foamy += f;
+        }
+      }
+      EXPECT_GT(foamy, 0.0) << "no foam: the packed maps' blue channel was not exercised";
+    }
   }
 }
 

@@ -9,8 +9,8 @@
 namespace {
 
 TEST(BenchCli, JsonRowsHaveTheDocumentedFields) {
-  const ocean_test::CliRun r = ocean_test::run_cli(
-      "bench --json --resolution 16,32 --cascades 2 --threads 1 --min-time 0");
+  const ocean_test::CliRun r =
+      ocean_test::run_cli("bench --json --resolution 16,32 --cascades 2 --threads 1 --min-time 0");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["machine"]["fma_peak_gflops_per_thread"].get<double>(), 0.0);
@@ -24,6 +24,7 @@ TEST(BenchCli, JsonRowsHaveTheDocumentedFields) {
     EXPECT_EQ(row["resolution"].get<int>(), i == 0 ? 16 : 32);
     EXPECT_EQ(row["cascades"].get<int>(), 2);
     EXPECT_EQ(row["threads"].get<int>(), 1);
+    EXPECT_EQ(row["outputs"].get<std::string>(), "all");
     const double ours = row["ours_ms"].get<double>();
     EXPECT_GT(ours, 0.0);
     EXPECT_LE(row["ours_min_ms"].get<double>(), ours);
@@ -41,6 +42,24 @@ TEST(BenchCli, JsonRowsHaveTheDocumentedFields) {
   }
 }
 
+// Seed 000's output set: the same rows without the float normal, Jacobian and foam arrays (20
+// bytes per texel less memory per cascade).
+TEST(BenchCli, Seed000OutputsLeaveOutTheOptionalArrays) {
+  const std::string flags = "bench --json --resolution 16 --cascades 1 --threads 1 --min-time 0";
+  const ocean_test::CliRun all = ocean_test::run_cli(flags);
+  const ocean_test::CliRun lean = ocean_test::run_cli(flags + " --outputs seed000");
+  ASSERT_EQ(all.exit_code, 0) << all.err;
+  ASSERT_EQ(lean.exit_code, 0) << lean.err;
+  const auto row_of = [](const std::string& out) { return nlohmann::json::parse(out)["rows"][0]; };
+  const nlohmann::json a = row_of(all.out), b = row_of(lean.out);
+  EXPECT_EQ(b["outputs"].get<std::string>(), "seed000");
+  EXPECT_EQ(
+      a["memory_per_cascade_bytes"].get<double>() - b["memory_per_cascade_bytes"].get<double>(),
+      16.0 * 16.0 * 20.0);
+  EXPECT_GT(b["ours_ms"].get<double>(), 0.0);
+  EXPECT_GT(b["fftw_pipeline_ms"].get<double>(), 0.0);
+}
+
 TEST(BenchCli, TableForPeople) {
   const ocean_test::CliRun r =
       ocean_test::run_cli("bench --resolution 16 --cascades 1 --threads 1 --min-time 0");
@@ -56,6 +75,7 @@ TEST(BenchCli, BadInputIsOneLineAndExitTwo) {
   ocean_test::expect_usage_error("bench --threads 0", "--threads");
   ocean_test::expect_usage_error("bench --threads nan", "--threads");
   ocean_test::expect_usage_error("bench --min-time -1", "--min-time");
+  ocean_test::expect_usage_error("bench --outputs some", "--outputs");
 }
 
 }  // namespace

@@ -391,9 +391,9 @@ void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
                .reset_foam = reset_foam,
                .blue_is_foam = config_.blue_channel == BlueChannel::foam,
                .foam_state = state.foam.data(),
-               .jacobian = frame.jacobian.data(),
-               .foam = frame.foam.data(),
-               .normal = frame.normal.data(),
+               .jacobian = frame.jacobian.empty() ? nullptr : frame.jacobian.data(),
+               .foam = frame.foam.empty() ? nullptr : frame.foam.data(),
+               .normal = frame.normal.empty() ? nullptr : frame.normal.data(),
                .mip_work = state.mip_work.data(),
                .packed = frame.packed_mips.data()};
   }
@@ -410,8 +410,13 @@ void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
 void CpuBackend::mips_fused(int first_level, Frame& out) {
   const int n = config_.resolution;
   const int levels = std::countr_zero(static_cast<unsigned>(n));
-  for (int level = first_level; level <= levels; ++level) {  // each reads the level above
-    const auto rows = static_cast<std::size_t>(n >> level);
+  const auto level_rows = [&](int level) { return static_cast<std::size_t>(n >> level); };
+  // Levels of at least 64 rows: one parallel loop each (each reads the level above). The small
+  // rest (≤ 1/4096 of the texels): each cascade's chain on one worker, one loop for all, so
+  // the frame does not wait on a barrier per level.
+  int level = first_level;
+  for (; level <= levels && level_rows(level) >= 64; ++level) {
+    const std::size_t rows = level_rows(level);
     runner_->parallel_for(cascades_.size() * rows, 8, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const std::size_t c = i / rows;
@@ -420,6 +425,17 @@ void CpuBackend::mips_fused(int first_level, Frame& out) {
       }
     });
   }
+  if (level > levels) return;
+  runner_->parallel_for(cascades_.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c) {
+      for (int l = level; l <= levels; ++l) {
+        for (std::size_t row = 0; row < level_rows(l); ++row) {
+          mip_row(n, l, static_cast<int>(row), cascades_[c].mip_work.data(),
+                  cascades_[c].mip_work_level, out.cascades[c].packed_mips.data());
+        }
+      }
+    }
+  });
 }
 
 void CpuBackend::synthesise_unfused(double time_s, Frame& out) {

@@ -83,6 +83,8 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
   const float j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
   const float decay = static_cast<float>(config.foam.decay_per_s * dt_s);
   const bool blue_is_foam = config.blue_channel == BlueChannel::foam;
+  const FrameOutputs want = {
+      .normal = !out.normal.empty(), .jacobian = !out.jacobian.empty(), .foam = !out.foam.empty()};
   runner.parallel_for(
       static_cast<std::size_t>(n), 8, [&](std::size_t row_begin, std::size_t row_end) {
         for (int row = static_cast<int>(row_begin); row < static_cast<int>(row_end); ++row) {
@@ -121,11 +123,13 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
               foam = std::clamp(std::max(accumulated, now), 0.0f, 1.0f);
             }
             state.foam[i] = foam;
-            out.jacobian[i] = jacobian;
-            out.foam[i] = foam;
-            out.normal[3 * i + 0] = nx;
-            out.normal[3 * i + 1] = ny;
-            out.normal[3 * i + 2] = nz;
+            if (want.jacobian) out.jacobian[i] = jacobian;
+            if (want.foam) out.foam[i] = foam;
+            if (want.normal) {
+              out.normal[3 * i + 0] = nx;
+              out.normal[3 * i + 1] = ny;
+              out.normal[3 * i + 2] = nz;
+            }
             const float blue = blue_is_foam ? foam : std::clamp(jacobian * 0.5f + 0.5f, 0.0f, 1.0f);
             float* work =
                 &state.mip_work[4 * i];  // level 0: roughness-scaled normal and blue value

@@ -486,9 +486,9 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
       foam = hn::Min(hn::Max(hn::Max(accumulated, now), zero), one);
     }
     hn::StoreU(foam, df, foam_state + i);
-    hn::StoreU(jac, df, jacobian + i);
-    hn::StoreU(foam, df, foam_out + i);
-    hn::StoreInterleaved3(nx, ny, nz, df, normal + 3 * i);
+    if (jacobian != nullptr) hn::StoreU(jac, df, jacobian + i);
+    if (foam_out != nullptr) hn::StoreU(foam, df, foam_out + i);
+    if (normal != nullptr) hn::StoreInterleaved3(nx, ny, nz, df, normal + 3 * i);
     const auto blue =
         blue_is_foam
             ? foam

@@ -91,6 +91,7 @@ struct SurfaceArgs {
   bool reset_foam = true;
   bool blue_is_foam = true;
   float* foam_state = nullptr;  ///< accumulated foam, read and written
+  // Optional outputs (FrameOutputs): null when not requested.
   float* jacobian = nullptr;
   float* foam = nullptr;
   float* normal = nullptr;          ///< float3

@@ -174,10 +174,12 @@ Status VulkanBackend::read(Frame& out) {
   }
   for (std::size_t c = 0; c < out.cascades.size(); ++c) {
     CascadeFrame& f = out.cascades[c];
-    void* dst[detail::kOutputs] = {f.displacement.data(), f.displacement_half.data(),
-                                   f.normal.data(),       f.jacobian.data(),
-                                   f.foam.data(),         f.packed_mips.data()};
+    const auto at = [](auto& v) -> void* { return v.empty() ? nullptr : v.data(); };
+    void* dst[detail::kOutputs] = {at(f.displacement), at(f.displacement_half),
+                                   at(f.normal),       at(f.jacobian),
+                                   at(f.foam),         at(f.packed_mips)};
     for (std::size_t o = 0; o < detail::kOutputs; ++o) {
+      if (dst[o] == nullptr) continue;  // an optional array not requested (FrameOutputs)
       const std::size_t bytes = gpu_->bytes_per_cascade[o];
       std::memcpy(dst[o], static_cast<const char*>(gpu_->host[o].mapped) + c * bytes, bytes);
     }
