@@ -399,6 +399,14 @@ HWY_INLINE auto Quantise(DF df, V v) {
   return TruncateInRange(df, hn::MulAdd(clamped, hn::Set(df, 255.0f), hn::Set(df, 0.5f)));
 }
 
+// Quantise for values in [0, 1] up to rounding (n/2 + 1/2 of a unit vector's component, foam,
+// clamped J, a mean of such values, a smoothness): without the clamp, since truncation towards
+// zero maps v·255 + 0.5 to Quantise's byte for every v in (−1/510, 1 + 1/510).
+template <class DF, class V>
+HWY_INLINE auto QuantiseUnit(DF df, V v) {
+  return TruncateInRange(df, hn::MulAdd(v, hn::Set(df, 255.0f), hn::Set(df, 0.5f)));
+}
+
 // A displacement row deinterleaved (eq. 46): component k of texel c at row[k][kPad + c], with
 // the wrapped neighbours at kPad − 1 and kPad + N.
 constexpr std::size_t kPad = 16;
@@ -497,11 +505,11 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
     hn::Store(hn::Mul(ny, base_length), df, work[1] + c);
     hn::Store(hn::Mul(nz, base_length), df, work[2] + c);
     hn::Store(blue, df, work[3] + c);
-    const auto rgba = hn::Or(
-        hn::Or(
-            Quantise(df, hn::MulAdd(nx, hn::Set(df, 0.5f), hn::Set(df, 0.5f))),
-            hn::ShiftLeft<8>(Quantise(df, hn::MulAdd(nz, hn::Set(df, 0.5f), hn::Set(df, 0.5f))))),
-        hn::Or(hn::ShiftLeft<16>(Quantise(df, blue)), alpha));
+    const auto rgba =
+        hn::Or(hn::Or(QuantiseUnit(df, hn::MulAdd(nx, hn::Set(df, 0.5f), hn::Set(df, 0.5f))),
+                      hn::ShiftLeft<8>(
+                          QuantiseUnit(df, hn::MulAdd(nz, hn::Set(df, 0.5f), hn::Set(df, 0.5f))))),
+               hn::Or(hn::ShiftLeft<16>(QuantiseUnit(df, blue)), alpha));
     hn::StoreU(rgba, di, packed + i);
   }
 }
@@ -528,10 +536,11 @@ HWY_INLINE void MipFromSums(const float (*sum)[1024], std::size_t size, float* w
     const auto smoothness = hn::Sub(one, hn::Sqrt(r));
     const auto valid = hn::Gt(length, zero);
     const auto inv = hn::IfThenElseZero(valid, hn::Div(one, hn::IfThenElse(valid, length, one)));
-    const auto rgba = hn::Or(
-        hn::Or(Quantise(df, hn::MulAdd(hn::Mul(x, inv), half, half)),
-               hn::ShiftLeft<8>(Quantise(df, hn::MulAdd(hn::Mul(z, inv), half, half)))),
-        hn::Or(hn::ShiftLeft<16>(Quantise(df, b)), hn::ShiftLeft<24>(Quantise(df, smoothness))));
+    const auto rgba =
+        hn::Or(hn::Or(QuantiseUnit(df, hn::MulAdd(hn::Mul(x, inv), half, half)),
+                      hn::ShiftLeft<8>(QuantiseUnit(df, hn::MulAdd(hn::Mul(z, inv), half, half)))),
+               hn::Or(hn::ShiftLeft<16>(QuantiseUnit(df, b)),
+                      hn::ShiftLeft<24>(QuantiseUnit(df, smoothness))));
     hn::StoreU(rgba, di, reinterpret_cast<std::int32_t*>(packed_row + c));
     if (store_work) hn::StoreInterleaved4(x, y, z, b, df, work_row + 4 * c);
   }
