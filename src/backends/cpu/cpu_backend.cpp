@@ -219,6 +219,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   cascades_ = std::move(cascades);
   groups_ = std::move(groups);
   surface_args_.assign(cascades_.size(), SurfaceArgs{});
+  chain_times_.assign(groups_.size(), StageTimes{});
   evolve_args_.assign(cascades_.size(), EvolveArgs{});
   has_stepped_ = false;
   return {};
@@ -254,16 +255,7 @@ bool CpuBackend::plane_outer_half_zero(const CascadeGroup& group, std::size_t c,
          (p == 1 ? group_outer_half_zero(group) : cascades_[c].outer_half_zero);
 }
 
-void CpuBackend::synthesise_fused(double time_s, Frame& out) {
-  using LaneBlock = fft::SimdPlan2D::LaneBlock;
-  const int n = config_.resolution;
-  const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
-  const std::size_t items = groups_.size() * blocks;
-  // Column blocks in mirror pairs (b, N/16 − 1 − b) from N = 32: h̃(−k) = conj h̃(k).
-  const std::size_t sides = blocks >= 2 ? 2 : 1;
-  const std::size_t units = blocks / sides;
-  constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
-  const std::size_t block_floats = kLane * static_cast<std::size_t>(n);
+void CpuBackend::prepare_evolution(double time_s) {
   for (const CascadeGroup& group : groups_) {
     for (std::size_t c = group.first; c < group.first + group.count; ++c) {
       evolve_args_[c] = evolve_args(cascades_[c], time_s, config_.loop_period_s);
@@ -274,15 +266,27 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
       }
     }
   }
+}
+
+void CpuBackend::synthesise_fused(std::size_t first_group, std::size_t group_count, Frame& out) {
+  using LaneBlock = fft::SimdPlan2D::LaneBlock;
+  const int n = config_.resolution;
+  const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
+  const std::size_t items = group_count * blocks;
+  // Column blocks in mirror pairs (b, N/16 − 1 − b) from N = 32: h̃(−k) = conj h̃(k).
+  const std::size_t sides = blocks >= 2 ? 2 : 1;
+  const std::size_t units = blocks / sides;
+  constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
+  const std::size_t block_floats = kLane * static_cast<std::size_t>(n);
   // Columns: every (group, column block pair) evolves h̃ once per cascade and writes each
   // plane's spectrum where transform() wants it, so the result lands in the plane's tile
   // storage without a copy: the tile itself for an even stage count, a scratch buffer for an
   // odd one (the mirror block's planes and the analytic method's fourth plane take one
   // contiguous copy then).
-  runner_->parallel_for(groups_.size() * units, 1, [&](std::size_t begin, std::size_t end) {
+  runner_->parallel_for(group_count * units, 1, [&](std::size_t begin, std::size_t end) {
     StackLanes<3> scratch;
     for (std::size_t item = begin; item < end; ++item) {
-      const CascadeGroup& group = groups_[item / units];
+      const CascadeGroup& group = groups_[first_group + item / units];
       const std::size_t unit = item % units;
       // A block pair with no spectrum in any cascade of the group transforms to zeros: its
       // tiles keep the zeros they were allocated with.
@@ -342,7 +346,7 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
     StackLanes<3> buffers;  // plane 0's rows, plane 1's rows, scratch
     const LaneBlock p0 = buffers[0], p1 = buffers[1], scratch = buffers[2];
     for (std::size_t item = begin; item < end; ++item) {
-      const CascadeGroup& group = groups_[item / blocks];
+      const CascadeGroup& group = groups_[first_group + item / blocks];
       const int block = static_cast<int>(item % blocks);
       // Plane p of cascade c: zero outside columns [N/4, 3N/4) where pruned.
       const auto row_fft = [&](std::size_t c, std::size_t p, LaneBlock lanes) {
@@ -372,7 +376,7 @@ void CpuBackend::synthesise_fused(double time_s, Frame& out) {
   });
 }
 
-void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
+void CpuBackend::prepare_surface(double dt_s, bool reset_foam, Frame& out) {
   const int n = config_.resolution;
   const float base_length = normal_length_from_roughness(static_cast<float>(config_.roughness));
   std::vector<SurfaceArgs>& args = surface_args_;  // sized at configure: no allocation here
@@ -397,17 +401,21 @@ void CpuBackend::surface_fused(double dt_s, bool reset_foam, Frame& out) {
                .mip_work = state.mip_work.data(),
                .packed = frame.packed_mips.data()};
   }
-  const auto quads = static_cast<std::size_t>(n / 4);
-  runner_->parallel_for(cascades_.size() * quads, 4, [&](std::size_t begin, std::size_t end) {
+}
+
+void CpuBackend::surface_fused(std::size_t first, std::size_t count) {
+  const auto quads = static_cast<std::size_t>(config_.resolution / 4);
+  runner_->parallel_for(count * quads, 4, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end;) {  // runs of consecutive quads in one cascade
       const std::size_t c = i / quads, stop = std::min(end, (c + 1) * quads);
-      surface_row_quads(args[c], static_cast<int>(i % quads), static_cast<int>(stop - i));
+      surface_row_quads(surface_args_[first + c], static_cast<int>(i % quads),
+                        static_cast<int>(stop - i));
       i = stop;
     }
   });
 }
 
-void CpuBackend::mips_fused(int first_level, Frame& out) {
+void CpuBackend::mips_fused(int first_level, std::size_t first, std::size_t count, Frame& out) {
   const int n = config_.resolution;
   const int levels = std::countr_zero(static_cast<unsigned>(n));
   const auto level_rows = [&](int level) { return static_cast<std::size_t>(n >> level); };
@@ -417,17 +425,17 @@ void CpuBackend::mips_fused(int first_level, Frame& out) {
   int level = first_level;
   for (; level <= levels && level_rows(level) >= 64; ++level) {
     const std::size_t rows = level_rows(level);
-    runner_->parallel_for(cascades_.size() * rows, 8, [&](std::size_t begin, std::size_t end) {
+    runner_->parallel_for(count * rows, 8, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
-        const std::size_t c = i / rows;
+        const std::size_t c = first + i / rows;
         mip_row(n, level, static_cast<int>(i % rows), cascades_[c].mip_work.data(),
                 cascades_[c].mip_work_level, out.cascades[c].packed_mips.data());
       }
     });
   }
   if (level > levels) return;
-  runner_->parallel_for(cascades_.size(), 1, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t c = begin; c < end; ++c) {
+  runner_->parallel_for(count, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = first + begin; c < first + end; ++c) {
       for (int l = level; l <= levels; ++l) {
         for (std::size_t row = 0; row < level_rows(l); ++row) {
           mip_row(n, l, static_cast<int>(row), cascades_[c].mip_work.data(),
@@ -463,37 +471,67 @@ void CpuBackend::synthesise_unfused(double time_s, Frame& out) {
   }
 }
 
+void CpuBackend::step_chained(double time_s, double dt_s, bool reset_foam, Frame& out) {
+  // One chain per cascade group: columns → rows → surface (with mip levels 1 and 2) → the other
+  // mip levels, the chains side by side and each stage a parallel loop of its own. A worker
+  // that ends its chain helps with the other chains' loops instead of waiting at a barrier per
+  // stage, and a group's data tends to stay with the worker that made it.
+  using Clock = std::chrono::steady_clock;
+  const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+  prepare_evolution(time_s);
+  prepare_surface(dt_s, reset_foam, out);
+  runner_->parallel_for(groups_.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t g = begin; g < end; ++g) {
+      const CascadeGroup& group = groups_[g];
+      const Clock::time_point start = Clock::now();
+      synthesise_fused(g, 1, out);
+      const Clock::time_point synthesised = Clock::now();
+      surface_fused(group.first, group.count);
+      const Clock::time_point finalized = Clock::now();
+      mips_fused(3, group.first, group.count, out);
+      chain_times_[g] = {seconds(synthesised - start), seconds(finalized - synthesised),
+                         seconds(Clock::now() - finalized)};
+    }
+  });
+  times_ = {};  // the chains overlap in time: the longest chain's stages
+  for (const StageTimes& t : chain_times_) {
+    times_.synthesis_s = std::max(times_.synthesis_s, t.synthesis_s);
+    times_.finalize_s = std::max(times_.finalize_s, t.finalize_s);
+    times_.mips_s = std::max(times_.mips_s, t.mips_s);
+  }
+}
+
 void CpuBackend::step(double time_s, Frame& out) {
   // Foam accumulates over the time since the previous step; a first step or a jump back in
   // time starts it afresh.
   const bool reset_foam = !has_stepped_ || time_s < last_time_s_;
   const double dt = reset_foam ? 0.0 : time_s - last_time_s_;
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
-  if (options_.pipeline == CpuPipeline::fused_simd) {
-    synthesise_fused(time_s, out);
+  const bool fused = options_.pipeline == CpuPipeline::fused_simd;
+  if (fused && config_.normals == NormalMethod::central_difference) {
+    step_chained(time_s, dt, reset_foam, out);
   } else {
-    synthesise_unfused(time_s, out);
-  }
-  const Clock::time_point synthesised = Clock::now();
-  const bool fused_surface = options_.pipeline == CpuPipeline::fused_simd &&
-                             config_.normals == NormalMethod::central_difference;
-  if (fused_surface) {
-    surface_fused(dt, reset_foam, out);  // with mip levels 1 and 2
-  } else {
+    using Clock = std::chrono::steady_clock;
+    const Clock::time_point start = Clock::now();
+    if (fused) {
+      prepare_evolution(time_s);
+      synthesise_fused(0, groups_.size(), out);
+    } else {
+      synthesise_unfused(time_s, out);
+    }
+    const Clock::time_point synthesised = Clock::now();
     for (std::size_t c = 0; c < cascades_.size(); ++c)
       finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
+    const Clock::time_point finalized = Clock::now();
+    if (fused) {
+      mips_fused(1, 0, cascades_.size(), out);
+    } else {
+      for (std::size_t c = 0; c < cascades_.size(); ++c)
+        build_mips(cascades_[c], out.cascades[c], *runner_);
+    }
+    const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
+    times_ = {seconds(synthesised - start), seconds(finalized - synthesised),
+              seconds(Clock::now() - finalized)};
   }
-  const Clock::time_point finalized = Clock::now();
-  if (options_.pipeline == CpuPipeline::fused_simd) {
-    mips_fused(fused_surface ? 3 : 1, out);
-  } else {
-    for (std::size_t c = 0; c < cascades_.size(); ++c)
-      build_mips(cascades_[c], out.cascades[c], *runner_);
-  }
-  const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
-  times_ = {seconds(synthesised - start), seconds(finalized - synthesised),
-            seconds(Clock::now() - finalized)};
   out.time_s = time_s;
   ++out.index;
   last_time_s_ = time_s;

@@ -125,10 +125,18 @@ class CpuBackend final : public Backend {
   [[nodiscard]] bool group_outer_half_zero(const CascadeGroup& group) const;
   [[nodiscard]] bool plane_outer_half_zero(const CascadeGroup& group, std::size_t c,
                                            std::size_t p) const;
-  void synthesise_fused(double time_s, Frame& out);
+  // The fused pipeline's stages: evolution arguments for the frame, then the column and row
+  // passes of groups [first_group, first_group + group_count); the surface pass's arguments,
+  // then its rows (with mip levels 1 and 2) and the other mip levels of cascades
+  // [first, first + count).
+  void prepare_evolution(double time_s);
+  void synthesise_fused(std::size_t first_group, std::size_t group_count, Frame& out);
   void synthesise_unfused(double time_s, Frame& out);
-  void surface_fused(double dt_s, bool reset_foam, Frame& out);
-  void mips_fused(int first_level, Frame& out);
+  void prepare_surface(double dt_s, bool reset_foam, Frame& out);
+  void surface_fused(std::size_t first, std::size_t count);
+  void mips_fused(int first_level, std::size_t first, std::size_t count, Frame& out);
+  /// The fused central-difference frame as one chain of stages per cascade group.
+  void step_chained(double time_s, double dt_s, bool reset_foam, Frame& out);
 
   CpuOptions options_;
   SimulationConfig config_;
@@ -145,6 +153,7 @@ class CpuBackend final : public Backend {
   std::vector<CascadeGroup> groups_;
   std::vector<SurfaceArgs> surface_args_;
   std::vector<EvolveArgs> evolve_args_;
+  std::vector<StageTimes> chain_times_;  ///< per cascade group, fused central-difference path
   StageTimes times_;
   double last_time_s_ = 0.0;
   bool has_stepped_ = false;
