@@ -4,7 +4,10 @@
 //
 // Contract: parallel_for(n, grain, body) calls body(begin, end) over disjoint ranges covering
 // [0, n) exactly once, possibly concurrently, and returns when all calls have returned. Bodies
-// never throw. Results of the simulation never depend on how ranges are split or scheduled.
+// never throw; they may call parallel_for on the same runner (nested loops: the CPU backend runs
+// one chain of stage loops per cascade group inside an outer loop), which must then neither
+// deadlock nor serialise the outer loop. Results of the simulation never depend on how ranges
+// are split or scheduled.
 #pragma once
 
 #include <cstddef>
