@@ -164,6 +164,7 @@ void record_frame(const GpuState& gpu, VkCommandBuffer cmd) {
   }
   stamp(gpu, cmd, mipped);
   for (int o = 0; o < kOutputs; ++o) {
+    if (!gpu.read_back[static_cast<std::size_t>(o)]) continue;
     const VkBufferCopy region{0, 0, gpu.device[static_cast<std::size_t>(o)].size};
     vkCmdCopyBuffer(cmd, gpu.device[static_cast<std::size_t>(o)].buffer,
                     gpu.host[static_cast<std::size_t>(o)].buffer, 1, &region);
@@ -221,8 +222,10 @@ GpuState::~GpuState() {
 
 Status create_gpu_state(GpuState& gpu, const Context& ctx, std::uint32_t resolution,
                         std::uint32_t cascades, std::uint32_t planes, const Uploads& data,
-                        const shader::SimParams& params) {
+                        const shader::SimParams& params,
+                        const std::array<bool, kOutputs>& read_back) {
   gpu.ctx = &ctx;
+  gpu.read_back = read_back;
   gpu.resolution = resolution;
   gpu.log2n = static_cast<std::uint32_t>(std::countr_zero(resolution));
   gpu.cascades = cascades;
@@ -265,6 +268,7 @@ Status create_gpu_state(GpuState& gpu, const Context& ctx, std::uint32_t resolut
     const std::size_t bytes = cascades * gpu.bytes_per_cascade[i];
     if (Status s = device_buffer(gpu.device[i], bytes, kTransferSrc | kTransferDst); !s.ok())
       return s;
+    if (!read_back[i]) continue;
     Result<Buffer> r = create_buffer(ctx, bytes, kTransferDst, MemoryUse::readback);
     if (!r.ok()) return r.status();
     gpu.host[i] = r.value();

@@ -23,8 +23,9 @@ struct GpuState {
   std::uint32_t resolution = 0, log2n = 0, cascades = 0, planes = 0;
   Buffer params;  // SimParams, mapped
   Buffer spectrum, phase_rate, twiddle, plane_data, mip_work;
-  std::array<Buffer, kOutputs> device;  // written by the kernels
-  std::array<Buffer, kOutputs> host;    // read back each frame, mapped
+  std::array<Buffer, kOutputs> device;     // written by the kernels
+  std::array<Buffer, kOutputs> host;       // read back each frame, mapped (where read_back)
+  std::array<bool, kOutputs> read_back{};  // the frame carries the output (FrameOutputs)
   std::array<std::size_t, kOutputs> bytes_per_cascade{};
   Image displacement_image, normal_image;
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
@@ -49,9 +50,12 @@ struct Uploads {
 };
 
 /// Allocates every buffer, image, pipeline and descriptor, uploads `data`, transitions the images
-/// and records the frame's command buffer. `params` is the initial SimParams.
+/// and records the frame's command buffer. `params` is the initial SimParams. Outputs not in
+/// `read_back` are computed on the device (foam is also the accumulation state) but neither
+/// copied nor given a host buffer.
 Status create_gpu_state(GpuState& gpu, const Context& ctx, std::uint32_t resolution,
                         std::uint32_t cascades, std::uint32_t planes, const Uploads& data,
-                        const shader::SimParams& params);
+                        const shader::SimParams& params,
+                        const std::array<bool, kOutputs>& read_back);
 
 }  // namespace ocean::vk::detail

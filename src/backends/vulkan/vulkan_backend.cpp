@@ -125,8 +125,11 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
 
   gpu_.reset();  // frees the previous configuration first (lower peak memory)
   auto gpu = std::make_unique<detail::GpuState>();
+  const FrameOutputs& want = config.outputs;
+  const std::array<bool, detail::kOutputs> read_back = {true,          true,      want.normal,
+                                                        want.jacobian, want.foam, true};
   if (Status s = detail::create_gpu_state(*gpu, *context_, n, cascades, planes,
-                                          {spectrum, phase_rate, twiddle}, p);
+                                          {spectrum, phase_rate, twiddle}, p, read_back);
       !s.ok())
     return s;
   gpu_ = std::move(gpu);
@@ -179,7 +182,7 @@ Status VulkanBackend::read(Frame& out) {
                                    at(f.normal),       at(f.jacobian),
                                    at(f.foam),         at(f.packed_mips)};
     for (std::size_t o = 0; o < detail::kOutputs; ++o) {
-      if (dst[o] == nullptr) continue;  // an optional array not requested (FrameOutputs)
+      if (dst[o] == nullptr || !gpu_->read_back[o]) continue;  // not requested (FrameOutputs)
       const std::size_t bytes = gpu_->bytes_per_cascade[o];
       std::memcpy(dst[o], static_cast<const char*>(gpu_->host[o].mapped) + c * bytes, bytes);
     }
