@@ -230,7 +230,7 @@ double measure_copy_bandwidth_gbps(TaskRunner& runner, std::size_t bytes, int re
 
 // `--backend vulkan`: GPU time per stage from timestamp queries, mean over the frames.
 int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>& cascades,
-                     bool json) {
+                     const FrameOutputs& outputs, bool json) {
 #ifdef OCEAN_HAS_VULKAN
   const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
@@ -241,12 +241,14 @@ int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>
       SimulationConfig config;
       config.resolution = n;
       config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
+      config.outputs = outputs;
       Result<vk::StageTimings> t = vk::benchmark(config, 20);
       if (!t.ok()) return report(t.status());
       const vk::StageTimings& v = t.value();
       rows.push_back({{"resolution", n},
                       {"cascades", c},
                       {"backend", "vulkan"},
+                      {"outputs", outputs == FrameOutputs::seed000() ? "seed000" : "all"},
                       {"gpu_total_ms", v.total_ms},
                       {"gpu_stages_ms",
                        {{"evolve_fft_rows", v.evolve_fft_rows_ms},
@@ -279,7 +281,7 @@ int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>
   }
   return kExitOk;
 #else
-  (void)resolutions, (void)cascades, (void)json;
+  (void)resolutions, (void)cascades, (void)outputs, (void)json;
   return report(unsupported("ocean bench --backend vulkan: built without Vulkan"));
 #endif
 }
@@ -301,13 +303,15 @@ int run_bench(const BenchOptions& o) {
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   Result<std::vector<int>> threads = parse_ints("--threads", o.threads, 1, 256, true);
   if (!threads.ok()) return report(threads.status());
-  if (o.backend == "vulkan") return run_vulkan_bench(resolutions.value(), cascades.value(), o.json);
   FrameOutputs outputs;
   if (o.outputs == "seed000") {
     outputs = FrameOutputs::seed000();
   } else if (o.outputs != "all") {
     return report(invalid_argument("--outputs = '" + o.outputs +
                                    "' is unknown: must be one of all, seed000"));
+  }
+  if (o.backend == "vulkan") {
+    return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.json);
   }
   Result<double> min_time = parse_number("--min-time", o.min_time);
   if (!min_time.ok()) return report(min_time.status());
