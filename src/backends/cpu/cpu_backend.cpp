@@ -139,6 +139,9 @@ void apply_sign(CascadeState& state, TaskRunner& runner) {
   });
 }
 
+using Clock = std::chrono::steady_clock;
+double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
+
 fft::SplitComplex plane_of(CascadeState& state, std::size_t p) {
   return {state.plane_re[p].data(), state.plane_im[p].data()};
 }
@@ -419,9 +422,9 @@ void CpuBackend::mips_fused(int first_level, std::size_t first, std::size_t coun
   const int n = config_.resolution;
   const int levels = std::countr_zero(static_cast<unsigned>(n));
   const auto level_rows = [&](int level) { return static_cast<std::size_t>(n >> level); };
-  // Levels of at least 64 rows: one parallel loop each (each reads the level above). The small
-  // rest (≤ 1/4096 of the texels): each cascade's chain on one worker, one loop for all, so
-  // the frame does not wait on a barrier per level.
+  // Levels of at least 64 rows: one parallel loop each (each reads the level above). The levels
+  // under 64 rows (at most 1365 texels per cascade): each cascade's rest of the chain on one
+  // worker, one loop for all, so the frame does not wait on a barrier per small level.
   int level = first_level;
   for (; level <= levels && level_rows(level) >= 64; ++level) {
     const std::size_t rows = level_rows(level);
@@ -476,8 +479,6 @@ void CpuBackend::step_chained(double time_s, double dt_s, bool reset_foam, Frame
   // mip levels, the chains side by side and each stage a parallel loop of its own. A worker
   // that ends its chain helps with the other chains' loops instead of waiting at a barrier per
   // stage, and a group's data tends to stay with the worker that made it.
-  using Clock = std::chrono::steady_clock;
-  const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
   prepare_evolution(time_s);
   prepare_surface(dt_s, reset_foam, out);
   runner_->parallel_for(groups_.size(), 1, [&](std::size_t begin, std::size_t end) {
@@ -510,7 +511,6 @@ void CpuBackend::step(double time_s, Frame& out) {
   if (fused && config_.normals == NormalMethod::central_difference) {
     step_chained(time_s, dt, reset_foam, out);
   } else {
-    using Clock = std::chrono::steady_clock;
     const Clock::time_point start = Clock::now();
     if (fused) {
       prepare_evolution(time_s);
@@ -528,7 +528,6 @@ void CpuBackend::step(double time_s, Frame& out) {
       for (std::size_t c = 0; c < cascades_.size(); ++c)
         build_mips(cascades_[c], out.cascades[c], *runner_);
     }
-    const auto seconds = [](Clock::duration d) { return std::chrono::duration<double>(d).count(); };
     times_ = {seconds(synthesised - start), seconds(finalized - synthesised),
               seconds(Clock::now() - finalized)};
   }
