@@ -392,16 +392,10 @@ HWY_INLINE auto TruncateInRange(DF df, V v) {
   return hn::ConvertTo(di, v);
 }
 
-// Quantises [0, 1] to 8 bits as ⌊saturate(v)·255 + 0.5⌋ (eq. 50).
-template <class DF, class V>
-HWY_INLINE auto Quantise(DF df, V v) {
-  const auto clamped = hn::Min(hn::Max(v, hn::Zero(df)), hn::Set(df, 1.0f));
-  return TruncateInRange(df, hn::MulAdd(clamped, hn::Set(df, 255.0f), hn::Set(df, 0.5f)));
-}
-
-// Quantise for values in [0, 1] up to rounding (n/2 + 1/2 of a unit vector's component, foam,
-// clamped J, a mean of such values, a smoothness): without the clamp, since truncation towards
-// zero maps v·255 + 0.5 to Quantise's byte for every v in (−1/510, 1 + 1/510).
+// Quantises to 8 bits as ⌊saturate(v)·255 + 0.5⌋ (eq. 50) values in [0, 1] up to rounding (n/2 +
+// 1/2 of a unit vector's component, foam, clamped J, a mean of such values, a smoothness):
+// without the clamp, since truncation towards zero maps v·255 + 0.5 to the clamped value's byte
+// for every v in (−1/510, 1 + 1/510).
 template <class DF, class V>
 HWY_INLINE auto QuantiseUnit(DF df, V v) {
   return TruncateInRange(df, hn::MulAdd(v, hn::Set(df, 255.0f), hn::Set(df, 0.5f)));
@@ -455,7 +449,7 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
   auto* const packed = reinterpret_cast<std::int32_t*>(a.packed);
   const auto decay = hn::Set(df, a.decay);
   const auto alpha =
-      hn::ShiftLeft<24>(Quantise(df, hn::Set(df, a.smoothness)));  // constant smoothness
+      hn::ShiftLeft<24>(QuantiseUnit(df, hn::Set(df, a.smoothness)));  // constant smoothness
   for (std::size_t c = 0; c < n; c += step) {
     // ∂/∂x from the padded centre row, ∂/∂z from the rows above and below (eq. 45).
     // (a − b)·(½·N/L): the reference's (a − b)·½·N/L bit for bit (halving is exact).
