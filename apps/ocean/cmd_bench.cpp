@@ -70,7 +70,15 @@ struct PipelineResult {
   Stats synthesis, finalize, mips;
   std::size_t frames = 0;
   std::size_t state_bytes_per_cascade = 0;
+  std::size_t frame_bytes_per_cascade = 0;  ///< the arrays of one cascade's outputs
 };
+
+// Bytes of one cascade's output arrays (those the configuration's FrameOutputs keeps).
+std::size_t frame_bytes(const CascadeFrame& f) {
+  const auto bytes = [](const auto& v) { return v.size() * sizeof(v[0]); };
+  return bytes(f.displacement) + bytes(f.displacement_half) + bytes(f.normal) + bytes(f.jacobian) +
+         bytes(f.foam) + bytes(f.packed_mips);
+}
 
 Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
                                     TaskRunner& runner, double min_time) {
@@ -89,8 +97,13 @@ Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOpti
   });
   const auto drop_warmup = [](std::vector<double>& v) { v.erase(v.begin(), v.begin() + 2); };
   drop_warmup(synthesis), drop_warmup(finalize), drop_warmup(mips);
-  return PipelineResult{stats_of(frames), stats_of(synthesis), stats_of(finalize),
-                        stats_of(mips),   frames.size(),       backend.state_bytes_per_cascade()};
+  return PipelineResult{stats_of(frames),
+                        stats_of(synthesis),
+                        stats_of(finalize),
+                        stats_of(mips),
+                        frames.size(),
+                        backend.state_bytes_per_cascade(),
+                        frame_bytes(frame.cascades.front())};
 }
 
 // Scratch planes for the FFT-only measurements: `count` N×N split-complex planes.
@@ -230,7 +243,7 @@ double measure_copy_bandwidth_gbps(TaskRunner& runner, std::size_t bytes, int re
 
 // `--backend vulkan`: GPU time per stage from timestamp queries, mean over the frames.
 int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>& cascades,
-                     const FrameOutputs& outputs, bool json) {
+                     const FrameOutputs& outputs, const std::string& outputs_name, bool json) {
 #ifdef OCEAN_HAS_VULKAN
   const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
@@ -248,7 +261,7 @@ int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>
       rows.push_back({{"resolution", n},
                       {"cascades", c},
                       {"backend", "vulkan"},
-                      {"outputs", outputs == FrameOutputs::seed000() ? "seed000" : "all"},
+                      {"outputs", outputs_name},
                       {"gpu_total_ms", v.total_ms},
                       {"gpu_stages_ms",
                        {{"evolve_fft_rows", v.evolve_fft_rows_ms},
@@ -281,7 +294,7 @@ int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>
   }
   return kExitOk;
 #else
-  (void)resolutions, (void)cascades, (void)outputs, (void)json;
+  (void)resolutions, (void)cascades, (void)outputs, (void)outputs_name, (void)json;
   return report(unsupported("ocean bench --backend vulkan: built without Vulkan"));
 #endif
 }
@@ -311,7 +324,7 @@ int run_bench(const BenchOptions& o) {
                                    "' is unknown: must be one of all, seed000"));
   }
   if (o.backend == "vulkan") {
-    return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.json);
+    return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.outputs, o.json);
   }
   Result<double> min_time = parse_number("--min-time", o.min_time);
   if (!min_time.ok()) return report(min_time.status());
@@ -376,11 +389,8 @@ int run_bench(const BenchOptions& o) {
           row.has_fftw = true;
         }
         // Memory: the backend's state per cascade plus one frame's arrays.
-        const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
-        const std::size_t optional_bytes =
-            (outputs.normal ? 12 : 0) + (outputs.jacobian ? 4 : 0) + (outputs.foam ? 4 : 0);
-        row.memory_per_cascade = row.ours.state_bytes_per_cascade +
-                                 texels * (12 + 8 + optional_bytes) + 4 * mip_chain_texels(n);
+        row.memory_per_cascade =
+            row.ours.state_bytes_per_cascade + row.ours.frame_bytes_per_cascade;
         rows.push_back(row);
         progress.update(++done);
       }
