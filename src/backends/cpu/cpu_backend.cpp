@@ -271,7 +271,8 @@ void CpuBackend::prepare_evolution(double time_s) {
   }
 }
 
-void CpuBackend::synthesise_fused(std::size_t first_group, std::size_t group_count, Frame& out) {
+void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
+                                  std::size_t group_count, Frame& out) {
   using LaneBlock = fft::SimdPlan2D::LaneBlock;
   const int n = config_.resolution;
   const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
@@ -286,7 +287,7 @@ void CpuBackend::synthesise_fused(std::size_t first_group, std::size_t group_cou
   // storage without a copy: the tile itself for an even stage count, a scratch buffer for an
   // odd one (the mirror block's planes and the analytic method's fourth plane take one
   // contiguous copy then).
-  runner_->parallel_for(group_count * units, 1, [&](std::size_t begin, std::size_t end) {
+  runner.parallel_for(group_count * units, 1, [&](std::size_t begin, std::size_t end) {
     StackLanes<3> scratch;
     for (std::size_t item = begin; item < end; ++item) {
       const CascadeGroup& group = groups_[first_group + item / units];
@@ -345,7 +346,7 @@ void CpuBackend::synthesise_fused(std::size_t first_group, std::size_t group_cou
   // Rows: the row FFT of plane 1 (Dz, or a pair's two Dz) and of each cascade's plane 0
   // (h + i·Dx) feeds the displacement assembly with the sign folded in; gradient planes
   // (analytic normals) go to the row-major planes.
-  runner_->parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
+  runner.parallel_for(items, 1, [&](std::size_t begin, std::size_t end) {
     StackLanes<3> buffers;  // plane 0's rows, plane 1's rows, scratch
     const LaneBlock p0 = buffers[0], p1 = buffers[1], scratch = buffers[2];
     for (std::size_t item = begin; item < end; ++item) {
@@ -406,9 +407,9 @@ void CpuBackend::prepare_surface(double dt_s, bool reset_foam, Frame& out) {
   }
 }
 
-void CpuBackend::surface_fused(std::size_t first, std::size_t count) {
+void CpuBackend::surface_fused(TaskRunner& runner, std::size_t first, std::size_t count) {
   const auto quads = static_cast<std::size_t>(config_.resolution / 4);
-  runner_->parallel_for(count * quads, 4, [&](std::size_t begin, std::size_t end) {
+  runner.parallel_for(count * quads, 4, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end;) {  // runs of consecutive quads in one cascade
       const std::size_t c = i / quads, stop = std::min(end, (c + 1) * quads);
       surface_row_quads(surface_args_[first + c], static_cast<int>(i % quads),
@@ -418,7 +419,8 @@ void CpuBackend::surface_fused(std::size_t first, std::size_t count) {
   });
 }
 
-void CpuBackend::mips_fused(int first_level, std::size_t first, std::size_t count, Frame& out) {
+void CpuBackend::mips_fused(TaskRunner& runner, int first_level, std::size_t first,
+                            std::size_t count, Frame& out) {
   const int n = config_.resolution;
   const int levels = std::countr_zero(static_cast<unsigned>(n));
   const auto level_rows = [&](int level) { return static_cast<std::size_t>(n >> level); };
@@ -428,7 +430,7 @@ void CpuBackend::mips_fused(int first_level, std::size_t first, std::size_t coun
   int level = first_level;
   for (; level <= levels && level_rows(level) >= 64; ++level) {
     const std::size_t rows = level_rows(level);
-    runner_->parallel_for(count * rows, 8, [&](std::size_t begin, std::size_t end) {
+    runner.parallel_for(count * rows, 8, [&](std::size_t begin, std::size_t end) {
       for (std::size_t i = begin; i < end; ++i) {
         const std::size_t c = first + i / rows;
         mip_row(n, level, static_cast<int>(i % rows), cascades_[c].mip_work.data(),
@@ -437,7 +439,7 @@ void CpuBackend::mips_fused(int first_level, std::size_t first, std::size_t coun
     });
   }
   if (level > levels) return;
-  runner_->parallel_for(count, 1, [&](std::size_t begin, std::size_t end) {
+  runner.parallel_for(count, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t c = first + begin; c < first + end; ++c) {
       for (int l = level; l <= levels; ++l) {
         for (std::size_t row = 0; row < level_rows(l); ++row) {
@@ -474,22 +476,24 @@ void CpuBackend::synthesise_unfused(double time_s, Frame& out) {
   }
 }
 
-void CpuBackend::step_chained(double time_s, double dt_s, bool reset_foam, Frame& out) {
+void CpuBackend::step_chained(TaskRunner& stages, double time_s, double dt_s, bool reset_foam,
+                              Frame& out) {
   // One chain per cascade group: columns → rows → surface (with mip levels 1 and 2) → the other
-  // mip levels, the chains side by side and each stage a parallel loop of its own. A worker
-  // that ends its chain helps with the other chains' loops instead of waiting at a barrier per
-  // stage, and a group's data tends to stay with the worker that made it.
+  // mip levels, the chains side by side and each stage a loop of its own. With the frame's
+  // runner for the stages, a worker that ends its chain helps with the other chains' loops
+  // instead of waiting at a barrier per stage; with a serial one, each chain stays on one
+  // thread.
   prepare_evolution(time_s);
   prepare_surface(dt_s, reset_foam, out);
   runner_->parallel_for(groups_.size(), 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t g = begin; g < end; ++g) {
       const CascadeGroup& group = groups_[g];
       const Clock::time_point start = Clock::now();
-      synthesise_fused(g, 1, out);
+      synthesise_fused(stages, g, 1, out);
       const Clock::time_point synthesised = Clock::now();
-      surface_fused(group.first, group.count);
+      surface_fused(stages, group.first, group.count);
       const Clock::time_point finalized = Clock::now();
-      mips_fused(3, group.first, group.count, out);
+      mips_fused(stages, 3, group.first, group.count, out);
       chain_times_[g] = {seconds(synthesised - start), seconds(finalized - synthesised),
                          seconds(Clock::now() - finalized)};
     }
@@ -509,12 +513,22 @@ void CpuBackend::step(double time_s, Frame& out) {
   const double dt = reset_foam ? 0.0 : time_s - last_time_s_;
   const bool fused = options_.pipeline == CpuPipeline::fused_simd;
   if (fused && config_.normals == NormalMethod::central_difference) {
-    step_chained(time_s, dt, reset_foam, out);
+    // A chain per thread when there are no more threads than cascade groups and a group's
+    // frame (about 3 MiB at 256²) still fits the caches of one core: on a machine whose cores
+    // do not share a cache, stealing inside a chain moves its planes and outputs between the
+    // cores, and 4 × 64²…256² ran 15–30 % faster with each chain on one thread. From 512² the
+    // group's data streams from memory either way, and the groups' unequal costs (band-limited
+    // cascades evolve and transform less) weigh more: their stages are shared, 8–30 % faster
+    // there (docs/performance.md).
+    const bool chain_per_thread =
+        static_cast<std::size_t>(runner_->concurrency()) <= groups_.size() &&
+        config_.resolution <= 256;
+    step_chained(chain_per_thread ? *serial_ : *runner_, time_s, dt, reset_foam, out);
   } else {
     const Clock::time_point start = Clock::now();
     if (fused) {
       prepare_evolution(time_s);
-      synthesise_fused(0, groups_.size(), out);
+      synthesise_fused(*runner_, 0, groups_.size(), out);
     } else {
       synthesise_unfused(time_s, out);
     }
@@ -523,7 +537,7 @@ void CpuBackend::step(double time_s, Frame& out) {
       finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
     const Clock::time_point finalized = Clock::now();
     if (fused) {
-      mips_fused(1, 0, cascades_.size(), out);
+      mips_fused(*runner_, 1, 0, cascades_.size(), out);
     } else {
       for (std::size_t c = 0; c < cascades_.size(); ++c)
         build_mips(cascades_[c], out.cascades[c], *runner_);

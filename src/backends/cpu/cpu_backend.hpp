@@ -3,6 +3,7 @@
 #pragma once
 
 #include <complex>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -130,17 +131,22 @@ class CpuBackend final : public Backend {
   // then its rows (with mip levels 1 and 2) and the other mip levels of cascades
   // [first, first + count).
   void prepare_evolution(double time_s);
-  void synthesise_fused(std::size_t first_group, std::size_t group_count, Frame& out);
+  void synthesise_fused(TaskRunner& runner, std::size_t first_group, std::size_t group_count,
+                        Frame& out);
   void synthesise_unfused(double time_s, Frame& out);
   void prepare_surface(double dt_s, bool reset_foam, Frame& out);
-  void surface_fused(std::size_t first, std::size_t count);
-  void mips_fused(int first_level, std::size_t first, std::size_t count, Frame& out);
-  /// The fused central-difference frame as one chain of stages per cascade group.
-  void step_chained(double time_s, double dt_s, bool reset_foam, Frame& out);
+  void surface_fused(TaskRunner& runner, std::size_t first, std::size_t count);
+  void mips_fused(TaskRunner& runner, int first_level, std::size_t first, std::size_t count,
+                  Frame& out);
+  /// The fused central-difference frame as one chain of stages per cascade group, the chains
+  /// side by side; each chain's stage loops run on `stages`: the frame's runner, or a serial
+  /// runner that keeps each chain on one thread.
+  void step_chained(TaskRunner& stages, double time_s, double dt_s, bool reset_foam, Frame& out);
 
   CpuOptions options_;
   SimulationConfig config_;
   TaskRunner* runner_ = nullptr;
+  std::unique_ptr<TaskRunner> serial_ = make_serial_runner();
   fft::Plan2D plan_;
   fft::SimdPlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
