@@ -227,6 +227,52 @@ TEST(CpuFused, MirroredEvolutionIsBitIdentical) {
   });
 }
 
+// The displacement assembly writes (−1)^(x+y) times the row FFT's output, as floats and as
+// round-to-nearest-even halves, whether its stores are ordinary or streaming, and with
+// streaming asked for but maps that do not start on a cache line (ordinary stores then).
+TEST(CpuFused, AssemblyWritesTheSameBitsWithStreamingStores) {
+  for_each_target([] {
+    for (const int n : {64, 256}) {
+      SCOPED_TRACE("n = " + std::to_string(n));
+      const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+      ocean::cpu::AlignedFloats lanes(3 * 16 * static_cast<std::size_t>(n));
+      for (std::size_t i = 0; i < lanes.size(); ++i)
+        lanes[i] = std::sin(0.37f * static_cast<float>(i)) * 3.0f;
+      const float* h = lanes.data();
+      const float* dx = h + 16 * n;
+      const float* dz = dx + 16 * n;
+      const auto assemble = [&](ocean::cpu::AssemblyStores stores, std::size_t offset) {
+        ocean::LargeVector<float> d(3 * texels + 16);
+        ocean::LargeVector<std::uint16_t> half(4 * texels + 32);
+        for (int block = 0; block < n / 16; ++block) {  // the same row block's planes each time
+          ocean::cpu::assemble_displacement(h, dx, dz, n, block, d.data() + offset,
+                                            half.data() + 2 * offset, stores);
+        }
+        return std::pair{
+            std::vector<float>(d.begin() + long(offset), d.begin() + long(offset + 3 * texels)),
+            std::vector<std::uint16_t>(half.begin() + long(2 * offset),
+                                       half.begin() + long(2 * offset + 4 * texels))};
+      };
+      const auto plain = assemble({}, 0);
+      for (std::size_t row = 0; row < std::size_t(n); ++row) {
+        for (std::size_t col = 0; col < std::size_t(n); ++col) {
+          const float sign = (row + col) % 2 == 0 ? 1.0f : -1.0f;
+          const std::size_t lane = col * 16 + row % 16, i = row * std::size_t(n) + col;
+          const float expected[3] = {sign * dx[lane], sign * h[lane], sign * dz[lane]};
+          for (std::size_t k = 0; k < 3; ++k) {
+            ASSERT_EQ(plain.first[3 * i + k], expected[k]) << row << ", " << col;
+            ASSERT_EQ(plain.second[4 * i + k], ocean::float_to_half(expected[k]));
+          }
+          ASSERT_EQ(plain.second[4 * i + 3], 0);
+        }
+      }
+      const ocean::cpu::AssemblyStores streaming{.stream_displacement = true, .stream_half = true};
+      EXPECT_EQ(assemble(streaming, 0), plain);
+      EXPECT_EQ(assemble(streaming, 4), plain);  // 16 and 32 bytes past a cache line
+    }
+  });
+}
+
 TEST(CpuFused, FramesMatchScalarReference) {
   for_each_target([] {
     for (auto normals : {ocean::NormalMethod::central_difference, ocean::NormalMethod::analytic}) {

@@ -157,6 +157,7 @@ class CpuBackend final : public Backend {
     std::size_t first = 0, count = 1;
   };
   std::vector<CascadeGroup> groups_;
+  AssemblyStores assembly_stores_;
   std::vector<SurfaceArgs> surface_args_;
   std::vector<EvolveArgs> evolve_args_;
   std::vector<StageTimes> chain_times_;  ///< per cascade group, fused central-difference path

@@ -277,7 +277,7 @@ void EvolvePlanesMirrored(const EvolveArgs& a, int block, float* const* out_re,
 // are the rows converted and spread by one 16-bit permutation per 8 texels (zeros in w).
 void AssembleDisplacementAvx3(const float* h, const float* dx, const float* dz, std::size_t n,
                               std::size_t row0, float* displacement,
-                              std::uint16_t* displacement_half) {
+                              std::uint16_t* displacement_half, AssemblyStores stores) {
   const hn::ScalableTag<float> df;
   using V = decltype(hn::Zero(df));
   static_assert(hn::MaxLanes(decltype(df)()) == kLanes);
@@ -299,6 +299,10 @@ void AssembleDisplacementAvx3(const float* h, const float* dx, const float* dz, 
   const __m512i spread0 = _mm512_load_si512(kSpread[0]), spread1 = _mm512_load_si512(kSpread[1]);
   constexpr __mmask32 kXyz = 0x77777777u;
   const float* src[3] = {dx, h, dz};
+  // Every row segment below starts on a cache line when the maps do (N is a multiple of 16).
+  const auto aligned = [](const void* p) { return reinterpret_cast<std::uintptr_t>(p) % 64 == 0; };
+  const bool stream_float = stores.stream_displacement && aligned(displacement);
+  const bool stream_half = stores.stream_half && aligned(displacement_half);
   for (std::size_t c0 = 0; c0 < n; c0 += kLanes) {
     V rows[3][kLanes];  // [t][l]: floats 16t … 16t + 15 of row l's interleaved 48
     for (std::size_t t = 0; t < 3; ++t) {
@@ -313,22 +317,39 @@ void AssembleDisplacementAvx3(const float* h, const float* dx, const float* dz, 
     for (std::size_t l = 0; l < kLanes; ++l) {
       const std::size_t i = (row0 + l) * n + c0;
       float* out = displacement + 3 * i;
-      for (std::size_t t = 0; t < 3; ++t) hn::StoreU(rows[t][l], df, out + 16 * t);
+      for (std::size_t t = 0; t < 3; ++t) {
+        if (stream_float) {
+          _mm512_stream_ps(out + 16 * t, rows[t][l].raw);
+        } else {
+          hn::StoreU(rows[t][l], df, out + 16 * t);
+        }
+      }
       const __m256i h0 = _mm512_cvtps_ph(rows[0][l].raw, _MM_FROUND_NO_EXC);
       const __m256i h1 = _mm512_cvtps_ph(rows[1][l].raw, _MM_FROUND_NO_EXC);
       const __m256i h2 = _mm512_cvtps_ph(rows[2][l].raw, _MM_FROUND_NO_EXC);
       const __m512i lo = _mm512_inserti64x4(_mm512_castsi256_si512(h0), h1, 1);
       const __m512i hi = _mm512_inserti64x4(_mm512_castsi256_si512(h1), h2, 1);
+      const __m512i half_lo = _mm512_maskz_permutexvar_epi16(kXyz, spread0, lo);
+      const __m512i half_hi = _mm512_maskz_permutexvar_epi16(kXyz, spread1, hi);
       std::uint16_t* half = displacement_half + 4 * i;
-      _mm512_storeu_si512(half, _mm512_maskz_permutexvar_epi16(kXyz, spread0, lo));
-      _mm512_storeu_si512(half + 32, _mm512_maskz_permutexvar_epi16(kXyz, spread1, hi));
+      if (stream_half) {
+        _mm512_stream_si512(reinterpret_cast<__m512i*>(half), half_lo);
+        _mm512_stream_si512(reinterpret_cast<__m512i*>(half + 32), half_hi);
+      } else {
+        _mm512_storeu_si512(half, half_lo);
+        _mm512_storeu_si512(half + 32, half_hi);
+      }
     }
   }
+  // Streaming stores are weakly ordered: make them visible before the caller signals that the
+  // rows are done (another thread's surface pass reads them).
+  if (stream_float || stream_half) _mm_sfence();
 }
 #endif
 
 void AssembleDisplacement(const float* h, const float* dx, const float* dz, int n_int, int block,
-                          float* displacement, std::uint16_t* displacement_half) {
+                          float* displacement, std::uint16_t* displacement_half,
+                          AssemblyStores stores) {
   const hn::ScalableTag<float> df;
   const std::size_t step = hn::Lanes(df);
   const auto n = static_cast<std::size_t>(n_int);
@@ -336,10 +357,11 @@ void AssembleDisplacement(const float* h, const float* dx, const float* dz, int 
 #if HWY_TARGET <= HWY_AVX3 && HWY_ARCH_X86
   if constexpr (hn::MaxLanes(decltype(df)()) == kLanes) {
     (void)step;
-    AssembleDisplacementAvx3(h, dx, dz, n, row0, displacement, displacement_half);
+    AssembleDisplacementAvx3(h, dx, dz, n, row0, displacement, displacement_half, stores);
     return;
   }
 #endif
+  (void)stores;  // ordinary stores on the other targets
   // Tile by tile: lane layout → row-major 16×16 with (−1)^(x+y) (eq. 43; tiles start at even
   // rows and columns), then the rows interleaved into float3 and half4.
   alignas(64) float tile[3][kLanes * kLanes];
@@ -704,8 +726,10 @@ void evolve_planes_mirrored(const EvolveArgs& args, int block, float* const* re,
 }
 
 void assemble_displacement(const float* h, const float* dx, const float* dz, int n, int block,
-                           float* displacement, std::uint16_t* displacement_half) {
-  HWY_DYNAMIC_DISPATCH(AssembleDisplacement)(h, dx, dz, n, block, displacement, displacement_half);
+                           float* displacement, std::uint16_t* displacement_half,
+                           AssemblyStores stores) {
+  HWY_DYNAMIC_DISPATCH(AssembleDisplacement)
+  (h, dx, dz, n, block, displacement, displacement_half, stores);
 }
 
 void evolve_texel_reference(const EvolveArgs& a, int row, int col, float* re, float* im) {

@@ -73,11 +73,21 @@ void evolve_planes_mirrored(const EvolveArgs& args, int block, float* const* re,
 /// std::cos/std::sin (the oracle the SIMD kernel is tested against): every plane's value.
 void evolve_texel_reference(const EvolveArgs& args, int row, int col, float* re, float* im);
 
+/// Which maps the displacement assembly writes with streaming (non-temporal) stores, which go
+/// to memory past the caches without reading the lines first: for frames larger than the
+/// caches, whose maps would leave them before anything reads them. Used on AVX-512 where the
+/// rows are 64-byte aligned; elsewhere the stores are ordinary ones. Same bits either way.
+struct AssemblyStores {
+  bool stream_displacement = false;  ///< the float3 map (read again by the surface pass)
+  bool stream_half = false;          ///< the half4 map (not read in the frame)
+};
+
 /// From a row block's transformed planes in lane layout (plane 0 = h + i·Dx, plane 1 = Dz + i·…)
 /// writes rows [16·block, 16·block + 16) of the displacement float3 and half4 maps, applying
 /// (−1)^(x+y) (eq. 43).
 void assemble_displacement(const float* h, const float* dx, const float* dz, int n, int block,
-                           float* displacement, std::uint16_t* displacement_half);
+                           float* displacement, std::uint16_t* displacement_half,
+                           AssemblyStores stores = {});
 
 /// Inputs and outputs of the surface pass (gradients by central differences, normal, Jacobian,
 /// foam, base level of the packed map) of one cascade.
