@@ -302,9 +302,11 @@ void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
       // A block pair with no spectrum in any cascade of the group transforms to zeros: its
       // tiles keep the zeros they were allocated with.
       bool live = sides == 1;
+      bool cascade_live[2] = {true, true};
       for (std::size_t c = group.first; c < group.first + group.count; ++c) {
         const std::vector<int>& rows = cascades_[c].evolution_rows;
-        live = live || rows.empty() || rows[2 * unit] != rows[2 * unit + 1];
+        cascade_live[c - group.first] = rows.empty() || rows[2 * unit] != rows[2 * unit + 1];
+        live = live || cascade_live[c - group.first];
       }
       if (!live) continue;
       const std::size_t block[2] = {unit, blocks - 1 - unit};
@@ -312,6 +314,10 @@ void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
       LaneBlock tile[2][fft::kMaxPlanes];
       LaneBlock input[2][fft::kMaxPlanes];
       bool pruned[fft::kMaxPlanes] = {};  // zero outside rows [N/4, 3N/4)
+      // A plane of one cascade of a pair that has no spectrum in this block pair (a band-limited
+      // cascade beside the full-band one) is zero: not transformed, its tiles keep their zeros.
+      // Plane 1 carries both cascades' Dz.
+      bool zero[fft::kMaxPlanes] = {};
       std::size_t count = 0;
       for (std::size_t c = group.first; c < group.first + group.count; ++c) {
         CascadeState& state = cascades_[c];
@@ -319,6 +325,7 @@ void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
         float* im[2][fft::kMaxPlanes];
         for (std::size_t p = 0; p < state.tile_re.size(); ++p, ++count) {
           pruned[count] = plane_outer_half_zero(group, c, p);
+          zero[count] = !cascade_live[c - group.first] && (p != 1 || group.count == 1);
           for (std::size_t side = 0; side < sides; ++side) {
             const std::size_t origin = block[side] * block_floats;
             LaneBlock& t = tile[side][count];
@@ -339,6 +346,7 @@ void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
       }
       for (std::size_t side = 0; side < sides; ++side) {
         for (std::size_t p = 0; p < count; ++p) {
+          if (zero[p]) continue;
           const LaneBlock t = tile[side][p];
           const LaneBlock other = scratch[side == 0 && p < 3 ? p : 0];
           if (input[side][p].re == t.re && simd_plan_.input_for(t, other).re != t.re) {
