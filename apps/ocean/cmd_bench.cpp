@@ -33,6 +33,7 @@ struct BenchOptions {
   std::string min_time = "0.2";
   std::string backend = "cpu";
   std::string outputs = "all";
+  std::string frame_interval = "0";
   bool json = false;
 };
 
@@ -50,17 +51,28 @@ Stats stats_of(std::vector<double> seconds) {
 using Clock = std::chrono::steady_clock;
 
 // Times body() repeatedly: 2 warm-up runs, then at least 5 runs and about min_time seconds
-// (at most 500 runs).
+// (at most 500 runs). With an interval, the runs start that many seconds apart, as frames of a
+// frame loop do (the thread sleeps in between); min_time then counts the intervals.
 template <typename Body>
-std::vector<double> time_runs(double min_time, Body body) {
-  for (int i = 0; i < 2; ++i) body();
+std::vector<double> time_runs(double min_time, Body body, double interval = 0.0) {
+  const auto pace = [&](Clock::time_point start) {
+    if (interval > 0.0)
+      std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(
+                                                std::chrono::duration<double>(interval)));
+  };
+  for (int i = 0; i < 2; ++i) {
+    const Clock::time_point start = Clock::now();
+    body();
+    pace(start);
+  }
   std::vector<double> samples;
   double total = 0.0;
   while ((samples.size() < 5 || total < min_time) && samples.size() < 500) {
     const Clock::time_point start = Clock::now();
     body();
     samples.push_back(std::chrono::duration<double>(Clock::now() - start).count());
-    total += samples.back();
+    total += std::max(samples.back(), interval);
+    pace(start);
   }
   return samples;
 }
@@ -81,20 +93,23 @@ std::size_t frame_bytes(const CascadeFrame& f) {
 }
 
 Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
-                                    TaskRunner& runner, double min_time) {
+                                    TaskRunner& runner, double min_time, double interval) {
   cpu::CpuBackend backend(options);
   if (Status s = backend.configure(config, runner); !s.ok()) return s;
   Frame frame;
   backend.allocate(frame);
   double t = 0.0;
   std::vector<double> synthesis, finalize, mips;
-  const std::vector<double> frames = time_runs(min_time, [&] {
-    backend.step(t, frame);
-    t += 1.0 / 90.0;
-    synthesis.push_back(backend.last_stage_times().synthesis_s);
-    finalize.push_back(backend.last_stage_times().finalize_s);
-    mips.push_back(backend.last_stage_times().mips_s);
-  });
+  const std::vector<double> frames = time_runs(
+      min_time,
+      [&] {
+        backend.step(t, frame);
+        t += 1.0 / 90.0;
+        synthesis.push_back(backend.last_stage_times().synthesis_s);
+        finalize.push_back(backend.last_stage_times().finalize_s);
+        mips.push_back(backend.last_stage_times().mips_s);
+      },
+      interval);
   const auto drop_warmup = [](std::vector<double>& v) { v.erase(v.begin(), v.begin() + 2); };
   drop_warmup(synthesis), drop_warmup(finalize), drop_warmup(mips);
   return PipelineResult{stats_of(frames),
@@ -121,6 +136,7 @@ struct Planes {
 struct Row {
   int resolution, cascades, threads;
   std::string outputs;
+  double frame_interval_ms = 0.0;
   PipelineResult ours, fftw;
   int fftw_threads = 0;
   Stats ours_fft, fftw_fft;
@@ -144,6 +160,7 @@ nlohmann::ordered_json to_json(const Row& r) {
   j["cascades"] = r.cascades;
   j["threads"] = r.threads;
   j["outputs"] = r.outputs;
+  j["frame_interval_ms"] = r.frame_interval_ms;
   j["ours_ms"] = r.ours.frame.median_ms;
   j["ours_min_ms"] = r.ours.frame.min_ms;
   j["ours_max_ms"] = r.ours.frame.max_ms;
@@ -178,7 +195,10 @@ void print_table(const std::vector<Row>& rows, const std::string& target, double
   std::cout << "SIMD target " << target << ", measured FMA peak " << fixed(peak, 1)
             << " GFLOP/s per thread, copy bandwidth " << fixed(bandwidth, 1) << " GB/s (256 MiB), "
             << fixed(cache_bandwidth, 1) << " GB/s (16 MiB); outputs "
-            << (rows.empty() ? "all" : rows.front().outputs) << "; times are medians in ms\n";
+            << (rows.empty() ? "all" : rows.front().outputs);
+  if (!rows.empty() && rows.front().frame_interval_ms > 0.0)
+    std::cout << "; frames " << fixed(rows.front().frame_interval_ms, 1) << " ms apart";
+  std::cout << "; times are medians in ms\n";
   std::cout << std::setw(6) << "N" << std::setw(4) << "C" << std::setw(5) << "thr" << std::setw(10)
             << "ours" << std::setw(10) << "fftw-pipe" << std::setw(7) << "ratio" << std::setw(10)
             << "ours-fft" << std::setw(10) << "fftw-fft" << std::setw(9) << "GFLOP/s"
@@ -323,7 +343,18 @@ int run_bench(const BenchOptions& o) {
     return report(invalid_argument("--outputs = '" + o.outputs +
                                    "' is unknown: must be one of all, seed000"));
   }
+  Result<double> interval_ms = parse_number("--frame-interval", o.frame_interval);
+  if (!interval_ms.ok()) return report(interval_ms.status());
+  if (!(interval_ms.value() >= 0.0 && interval_ms.value() <= 1000.0)) {
+    return report(invalid_argument("--frame-interval = " + o.frame_interval +
+                                   " is out of range: must be in [0, 1000] ms"));
+  }
+  const double interval = interval_ms.value() * 1e-3;
   if (o.backend == "vulkan") {
+    if (interval > 0.0) {
+      return report(invalid_argument("--frame-interval = " + o.frame_interval +
+                                     ": only the CPU backend's frames can be paced"));
+    }
     return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.outputs, o.json);
   }
   Result<double> min_time = parse_number("--min-time", o.min_time);
@@ -354,8 +385,21 @@ int run_bench(const BenchOptions& o) {
         config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
         config.outputs = outputs;
         std::shared_ptr<TaskRunner> runner = make_tbb_runner(t);
-        Row row{n, c, runner->concurrency(), o.outputs, {}, {}, 0, {}, {}, 0.0, 0.0, 0, false};
-        Result<PipelineResult> ours = run_pipeline(config, {}, *runner, min_time.value());
+        Row row{n,
+                c,
+                runner->concurrency(),
+                o.outputs,
+                interval_ms.value(),
+                {},
+                {},
+                0,
+                {},
+                {},
+                0.0,
+                0.0,
+                0,
+                false};
+        Result<PipelineResult> ours = run_pipeline(config, {}, *runner, min_time.value(), interval);
         if (!ours.ok()) return report(ours.status());
         row.ours = ours.value();
         // The same transforms alone: two planes per cascade, three per pair of cascades (the
@@ -377,7 +421,7 @@ int run_bench(const BenchOptions& o) {
           }
           Result<PipelineResult> fftw = run_pipeline(
               config, {.pipeline = cpu::CpuPipeline::external_fft, .fft = engine.value().get()},
-              *runner, min_time.value());
+              *runner, min_time.value(), interval);
           if (!fftw.ok()) return report(fftw.status());
           const Stats fft_only =
               stats_of(time_runs(min_time.value(), [&] { engine.value()->inverse(planes.views); }));
@@ -434,6 +478,10 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_option("--outputs", options->outputs,
                   "Frame outputs: all (every array), or seed000 (displacement float3 + half4 and "
                   "the RGBA8 chain, no float normal, Jacobian or foam arrays)")
+      ->capture_default_str();
+  cmd->add_option("--frame-interval", options->frame_interval,
+                  "Milliseconds from one timed frame's start to the next, as in a frame loop "
+                  "(0: back to back); the FFT-only runs stay back to back")
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "Print JSON instead of a table");
   return {cmd, [options] { return run_bench(*options); }};

@@ -60,6 +60,22 @@ TEST(BenchCli, Seed000OutputsLeaveOutTheOptionalArrays) {
   EXPECT_GT(b["fftw_pipeline_ms"].get<double>(), 0.0);
 }
 
+// --frame-interval paces the timed frames as a frame loop would (the rows say so); the frames
+// are still timed on their own, so a frame stays far shorter than the interval.
+TEST(BenchCli, FrameIntervalPacesTheFrames) {
+  const ocean_test::CliRun r = ocean_test::run_cli(
+      "bench --json --resolution 16 --cascades 1 --threads 1 --min-time 0 --frame-interval 20");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json row = nlohmann::json::parse(r.out)["rows"][0];
+  EXPECT_EQ(row["frame_interval_ms"].get<double>(), 20.0);
+  EXPECT_GE(row["frames"].get<int>(), 5);
+  EXPECT_LT(row["ours_ms"].get<double>(), 20.0);
+  const ocean_test::CliRun unpaced =
+      ocean_test::run_cli("bench --json --resolution 16 --cascades 1 --threads 1 --min-time 0");
+  ASSERT_EQ(unpaced.exit_code, 0) << unpaced.err;
+  EXPECT_EQ(nlohmann::json::parse(unpaced.out)["rows"][0]["frame_interval_ms"].get<double>(), 0.0);
+}
+
 TEST(BenchCli, TableForPeople) {
   const ocean_test::CliRun r =
       ocean_test::run_cli("bench --resolution 16 --cascades 1 --threads 1 --min-time 0");
@@ -76,6 +92,10 @@ TEST(BenchCli, BadInputIsOneLineAndExitTwo) {
   ocean_test::expect_usage_error("bench --threads nan", "--threads");
   ocean_test::expect_usage_error("bench --min-time -1", "--min-time");
   ocean_test::expect_usage_error("bench --outputs some", "--outputs");
+  ocean_test::expect_usage_error("bench --frame-interval -1", "--frame-interval");
+  ocean_test::expect_usage_error("bench --frame-interval nan", "--frame-interval");
+  ocean_test::expect_usage_error("bench --frame-interval 5000", "--frame-interval");
+  ocean_test::expect_usage_error("bench --backend vulkan --frame-interval 2", "--frame-interval");
 }
 
 }  // namespace
