@@ -146,7 +146,7 @@ class CpuBackend final : public Backend {
   CpuOptions options_;
   SimulationConfig config_;
   TaskRunner* runner_ = nullptr;
-  std::unique_ptr<TaskRunner> serial_ = make_serial_runner();
+  std::unique_ptr<TaskRunner> serial_ = make_serial_runner();  ///< a chain's stages, one thread
   fft::Plan2D plan_;
   fft::SimdPlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
