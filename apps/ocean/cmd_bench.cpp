@@ -319,6 +319,19 @@ int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>
 #endif
 }
 
+// A scalar flag value in [lo, hi] (bounds written as integers in the error, with their unit).
+Result<double> parse_in_range(std::string_view flag, const std::string& text, double lo, double hi,
+                              std::string_view unit) {
+  Result<double> v = parse_number(flag, text);
+  if (!v.ok()) return v;
+  if (!(v.value() >= lo && v.value() <= hi)) {
+    return invalid_argument(std::string(flag) + " = " + text + " is out of range: must be in [" +
+                            std::to_string(static_cast<long long>(lo)) + ", " +
+                            std::to_string(static_cast<long long>(hi)) + "] " + std::string(unit));
+  }
+  return v;
+}
+
 int run_bench(const BenchOptions& o) {
   if (o.backend != "cpu" && o.backend != "vulkan") {
     return report(
@@ -343,12 +356,9 @@ int run_bench(const BenchOptions& o) {
     return report(invalid_argument("--outputs = '" + o.outputs +
                                    "' is unknown: must be one of all, seed000"));
   }
-  Result<double> interval_ms = parse_number("--frame-interval", o.frame_interval);
+  Result<double> interval_ms =
+      parse_in_range("--frame-interval", o.frame_interval, 0.0, 1000.0, "ms");
   if (!interval_ms.ok()) return report(interval_ms.status());
-  if (!(interval_ms.value() >= 0.0 && interval_ms.value() <= 1000.0)) {
-    return report(invalid_argument("--frame-interval = " + o.frame_interval +
-                                   " is out of range: must be in [0, 1000] ms"));
-  }
   const double interval = interval_ms.value() * 1e-3;
   if (o.backend == "vulkan") {
     if (interval > 0.0) {
@@ -357,11 +367,8 @@ int run_bench(const BenchOptions& o) {
     }
     return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.outputs, o.json);
   }
-  Result<double> min_time = parse_number("--min-time", o.min_time);
+  Result<double> min_time = parse_in_range("--min-time", o.min_time, 0.0, 60.0, "s");
   if (!min_time.ok()) return report(min_time.status());
-  if (min_time.value() < 0.0 || min_time.value() > 60.0)
-    return report(
-        invalid_argument("--min-time = " + o.min_time + " is out of range: must be in [0, 60] s"));
 
   const std::string target = fft::active_simd_target();
   const double peak = fft::measure_fma_peak_gflops(0.2);

@@ -316,7 +316,8 @@ void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
       bool pruned[fft::kMaxPlanes] = {};  // zero outside rows [N/4, 3N/4)
       // A plane of one cascade of a pair that has no spectrum in this block pair (a band-limited
       // cascade beside the full-band one) is zero: not transformed, its tiles keep their zeros.
-      // Plane 1 carries both cascades' Dz.
+      // Plane 1 carries both cascades' Dz. (A lone cascade without spectrum here has made the
+      // whole block pair dead above.)
       bool zero[fft::kMaxPlanes] = {};
       std::size_t count = 0;
       for (std::size_t c = group.first; c < group.first + group.count; ++c) {
@@ -325,7 +326,7 @@ void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
         float* im[2][fft::kMaxPlanes];
         for (std::size_t p = 0; p < state.tile_re.size(); ++p, ++count) {
           pruned[count] = plane_outer_half_zero(group, c, p);
-          zero[count] = !cascade_live[c - group.first] && (p != 1 || group.count == 1);
+          zero[count] = !cascade_live[c - group.first] && p != 1;
           for (std::size_t side = 0; side < sides; ++side) {
             const std::size_t origin = block[side] * block_floats;
             LaneBlock& t = tile[side][count];
