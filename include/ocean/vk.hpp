@@ -1,13 +1,15 @@
 // ocean/vk.hpp — the small Vulkan layer shared by the compute backend and the renderer: instance
 // (optionally with the Khronos validation layer), device enumeration and selection, one compute
 // queue, buffers and images with memory-type selection, compute pipelines from SPIR-V words,
-// one-shot command submission and timestamp queries.
+// one-shot command submission and timestamp queries. A Context is either the library's own
+// (create_context) or wraps an engine's instance, device and queue (adopt_context).
 //
 // Style: plain C API of <vulkan/vulkan.h>, POD structs and free functions (after zeux/niagara).
 // Every function that can fail for environmental reasons (no driver, out of memory, device lost)
 // returns Status/Result with a one-line message that says what to do; misuse asserts.
 //
-// Threading: a Context may be shared; its queue must be used from one thread at a time.
+// Threading: a Context may be shared; its queue must be used from one thread at a time (see
+// "Queue access" at adopt_context for every place the library touches it).
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -70,6 +72,8 @@ struct Context {
   std::atomic<std::uint32_t> validation_messages{0};
   /// The last validation message, for test failure output.
   std::string last_validation_message;
+  /// The handles belong to the caller (adopt_context): the destructor destroys none of them.
+  bool adopted = false;
 
   Context() = default;
   Context(const Context&) = delete;
@@ -82,6 +86,61 @@ struct Context {
 Result<std::vector<DeviceInfo>> list_devices();
 /// Creates instance, device and queue. Unusable or absent devices give `unsupported`.
 Result<std::unique_ptr<Context>> create_context(const ContextParams& params = {});
+
+/// An engine's own Vulkan objects, for adopt_context(). The library cannot query how a device was
+/// created, so the caller states the API version and the features it enabled.
+struct AdoptedDevice {
+  VkInstance instance = VK_NULL_HANDLE;
+  VkPhysicalDevice physical = VK_NULL_HANDLE;  ///< one of `instance`'s physical devices
+  VkDevice device = VK_NULL_HANDLE;            ///< created from `physical`
+  /// The family `queue` belongs to: compute, and graphics too with `graphics`.
+  std::uint32_t queue_family = 0;
+  VkQueue queue = VK_NULL_HANDLE;  ///< vkGetDeviceQueue(device, queue_family, any index)
+  /// VkApplicationInfo::apiVersion the instance was created with (VK_API_VERSION_1_2 or later;
+  /// 1.3 with `graphics`). 0 = not stated, an error.
+  std::uint32_t api_version = 0;
+  /// The renderer draws on this context (ContextParams::graphics): Vulkan 1.3 and
+  /// `dynamic_rendering` are required.
+  bool graphics = false;
+  /// VkPhysicalDeviceVulkan13Features::dynamicRendering was enabled at vkCreateDevice.
+  bool dynamic_rendering = false;
+  /// VkPhysicalDeviceFeatures::fillModeNonSolid was enabled (the wireframe view).
+  bool fill_mode_non_solid = false;
+  /// VkPhysicalDeviceFeatures::samplerAnisotropy was enabled (anisotropic filtering).
+  bool sampler_anisotropy = false;
+};
+
+/// A Context around the caller's instance, physical device, device and queue; the VulkanBackend
+/// and the Renderer work on it as on one of create_context().
+///
+/// Ownership and lifetime: the library destroys none of the adopted handles. The caller keeps
+/// them alive, and the device not lost, longer than the Context and everything made on it
+/// (backends, renderers, buffers, images, pipelines, command pools); destroy those, then the
+/// Context, then your own device and instance.
+///
+/// Requirements (checked; one-line Status naming what is missing): handles not null; `physical`
+/// one of `instance`'s devices with Vulkan ≥ 1.2 and `api_version` ≥ 1.2 (`unsupported` for the
+/// device, `invalid_argument` for what the caller passed); `queue_family` in range with compute
+/// (and graphics with `graphics`); with `graphics`, Vulkan 1.3 on both sides and
+/// `dynamic_rendering`. The library needs no device extension. Handles must come through the
+/// system Vulkan loader (the library calls its exported entry points; a loader opened by volk or
+/// dlopen is the same loader). The validation counter (Context::validation_messages) stays at 0:
+/// install your own VK_EXT_debug_utils messenger on your instance.
+///
+/// Queue access: Vulkan requires host access to a VkQueue to be externally synchronised. The
+/// library touches `queue` only in vk::submit() (vkQueueSubmit of one command buffer with a
+/// fence of its own, no semaphores), on the calling thread, from the calls that set up, upload,
+/// step, draw or read back: create_static_buffer(), run_once(), VulkanBackend::configure/step/
+/// submit, Renderer::prepare/draw/read_srgb/read_hdr, and Renderer::record() only
+/// when the patch mesh must change (call prepare() first; record() otherwise leaves submission
+/// to you). Each waits for its own fence before returning, except VulkanBackend::submit()
+/// (read() waits). Destroying or reconfiguring a backend or renderer, and Renderer::resize, call
+/// vkDeviceWaitIdle, which needs every queue of the device externally synchronised. So: do not
+/// use `queue` from another thread while one of those calls runs, and use no queue of the device
+/// while a backend or renderer is configured, resized or destroyed. Calling the library from the
+/// thread that submits your frames satisfies both; giving it a queue of its own (another index
+/// of the family) leaves only the second rule.
+Result<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& adopted);
 
 /// Maps a failed VkResult to a Status: out of memory and device lost get messages that say what
 /// to do; `what` names the operation ("vkQueueSubmit").

@@ -1,5 +1,5 @@
-// Instance, validation messenger, physical-device enumeration and selection, logical device with
-// one compute queue, and VkResult → Status mapping.
+// The library's own context: instance, validation messenger, physical-device selection, logical
+// device with one queue; the device list; VkResult → Status mapping.
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -7,30 +7,19 @@
 #include <mutex>
 #include <string>
 
+#include "device_query.hpp"
 #include "ocean/vk.hpp"
 
 namespace ocean::vk {
 namespace {
 
+using detail::describe;
+using detail::kNoDevice;
+using detail::physical_devices;
+
 constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
-constexpr const char* kNoDevice = "no Vulkan device: install mesa-vulkan-drivers or a GPU driver";
 
 std::mutex g_message_mutex;  // guards Context::last_validation_message across callbacks
-
-std::string version_string(std::uint32_t v) {
-  return std::to_string(VK_API_VERSION_MAJOR(v)) + "." + std::to_string(VK_API_VERSION_MINOR(v)) +
-         "." + std::to_string(VK_API_VERSION_PATCH(v));
-}
-
-const char* type_name(VkPhysicalDeviceType type) {
-  switch (type) {
-    case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
-    case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
-    case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
-    case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
-    default: return "other";
-  }
-}
 
 // Preference when choosing automatically: discrete > integrated > virtual > cpu > other.
 int type_rank(VkPhysicalDeviceType type) {
@@ -116,64 +105,6 @@ Status create_instance(Context& ctx, bool validation,
   return {};
 }
 
-// The first queue family with compute (a graphics+compute family is fine); with `graphics`, the
-// first that has both.
-bool find_compute_family(VkPhysicalDevice physical, std::uint32_t& family, bool& timestamps,
-                         bool graphics = false) {
-  std::uint32_t count = 0;
-  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, nullptr);
-  std::vector<VkQueueFamilyProperties> families(count);
-  vkGetPhysicalDeviceQueueFamilyProperties(physical, &count, families.data());
-  const VkQueueFlags need = VK_QUEUE_COMPUTE_BIT | (graphics ? VK_QUEUE_GRAPHICS_BIT : 0);
-  for (std::uint32_t i = 0; i < count; ++i) {
-    if ((families[i].queueFlags & need) == need) {
-      family = i;
-      timestamps = families[i].timestampValidBits > 0;
-      return true;
-    }
-  }
-  return false;
-}
-
-DeviceInfo describe(VkPhysicalDevice physical) {
-  VkPhysicalDeviceDriverProperties driver{.sType =
-                                              VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
-  VkPhysicalDeviceProperties2 props{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
-                                    .pNext = &driver};
-  vkGetPhysicalDeviceProperties2(physical, &props);
-  DeviceInfo info;
-  info.name = props.properties.deviceName;
-  info.type = type_name(props.properties.deviceType);
-  info.api_version = version_string(props.properties.apiVersion);
-  info.driver = std::string(driver.driverName) + " " + driver.driverInfo;
-  std::uint32_t family = 0;
-  bool timestamps = false;
-  if (props.properties.apiVersion < VK_API_VERSION_1_2) {
-    info.reason = "Vulkan " + info.api_version + " < 1.2: update the driver";
-  } else if (!find_compute_family(physical, family, timestamps)) {
-    info.reason = "no compute queue";
-  } else {
-    info.usable = true;
-  }
-  return info;
-}
-
-Result<std::vector<VkPhysicalDevice>> physical_devices(VkInstance instance) {
-  std::uint32_t count = 0;
-  if (Status s = check(vkEnumeratePhysicalDevices(instance, &count, nullptr),
-                       "vkEnumeratePhysicalDevices");
-      !s.ok())
-    return s;
-  std::vector<VkPhysicalDevice> devices(count);
-  if (Status s = check(vkEnumeratePhysicalDevices(instance, &count, devices.data()),
-                       "vkEnumeratePhysicalDevices");
-      !s.ok())
-    return s;
-  devices.resize(count);
-  if (devices.empty()) return unsupported(kNoDevice);
-  return devices;
-}
-
 }  // namespace
 
 Status check(VkResult result, const char* what) {
@@ -200,6 +131,7 @@ Status check(VkResult result, const char* what) {
 }
 
 Context::~Context() {
+  if (adopted) return;  // the caller's handles: adopt_context()
   if (device != VK_NULL_HANDLE) {
     vkDeviceWaitIdle(device);
     vkDestroyDevice(device, nullptr);
@@ -260,13 +192,11 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
                          std::string(kNoDevice));
   }
   ctx->physical = devices.value()[static_cast<std::size_t>(chosen)];
-  ctx->info = describe(ctx->physical);
-  vkGetPhysicalDeviceProperties(ctx->physical, &ctx->properties);
-  vkGetPhysicalDeviceMemoryProperties(ctx->physical, &ctx->memory);
-  if (!find_compute_family(ctx->physical, ctx->queue_family, ctx->timestamps, params.graphics))
-    return unsupported("Vulkan device '" + ctx->info.name + "' has no graphics queue");
-  ctx->timestamps = ctx->timestamps && ctx->properties.limits.timestampComputeAndGraphics;
-  ctx->timestamp_period_ns = static_cast<double>(ctx->properties.limits.timestampPeriod);
+  bool family_timestamps = false;
+  const bool found = detail::find_compute_family(ctx->physical, ctx->queue_family,
+                                                 family_timestamps, params.graphics);
+  detail::read_device(*ctx, family_timestamps);
+  if (!found) return unsupported("Vulkan device '" + ctx->info.name + "' has no graphics queue");
 
   // The renderer's features: dynamic rendering (core 1.3), wireframe and anisotropic filtering
   // where present.
@@ -291,15 +221,8 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
     enabled.features.samplerAnisotropy = supported.features.samplerAnisotropy;
     ctx->graphics = true;
     ctx->wireframe = supported.features.fillModeNonSolid == VK_TRUE;
-    if (supported.features.samplerAnisotropy == VK_TRUE) {
-      const float most = std::min(16.0f, ctx->properties.limits.maxSamplerAnisotropy);
-      // Software rasterisers (lavapipe) filter anisotropically ~20× slower than trilinearly:
-      // off there unless OCEAN_VK_ANISOTROPY asks for it.
-      const bool cpu = ctx->properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
-      ctx->max_anisotropy = cpu ? 1.0f : most;
-      if (const char* a = std::getenv("OCEAN_VK_ANISOTROPY"); a != nullptr)
-        ctx->max_anisotropy = std::clamp(static_cast<float>(std::atof(a)), 1.0f, most);
-    }
+    if (supported.features.samplerAnisotropy == VK_TRUE)
+      ctx->max_anisotropy = detail::max_anisotropy(ctx->properties);
   }
   if (params.swapchain) {
     std::uint32_t count = 0;

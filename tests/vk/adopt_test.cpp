@@ -1,0 +1,256 @@
+// adopt_context: the test creates its own instance (with the Khronos validation layer and its own
+// messenger where the layer is installed) and device with plain Vulkan calls, hands them to the
+// library, runs the Vulkan compute backend on them and compares a frame with the CPU reference
+// backend, destroys the library objects and then its own device and instance. Missing
+// requirements give one clear line. Skips where no Vulkan device exists.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ocean/backends.hpp"
+#include "ocean/vk.hpp"
+#include "ocean/vk/simulation.hpp"
+
+namespace {
+
+// Conformance bound for FP32 displacement (src/backends/vulkan/README.md,
+// tests/backends/conformance_test.cpp): max |ΔD| ≤ 1e-4·Hs.
+constexpr double kDisplacementBound = 1e-4;
+
+std::atomic<int> g_messages{0};
+std::string g_last_message;
+
+VKAPI_ATTR VkBool32 VKAPI_CALL count_message(VkDebugUtilsMessageSeverityFlagBitsEXT /*severity*/,
+                                             VkDebugUtilsMessageTypeFlagsEXT /*types*/,
+                                             const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                             void* /*user*/) {
+  ++g_messages;
+  g_last_message = data->pMessage != nullptr ? data->pMessage : "";
+  return VK_FALSE;
+}
+
+bool has_instance_layer(const char* name) {
+  std::uint32_t count = 0;
+  vkEnumerateInstanceLayerProperties(&count, nullptr);
+  std::vector<VkLayerProperties> layers(count);
+  vkEnumerateInstanceLayerProperties(&count, layers.data());
+  return std::any_of(layers.begin(), layers.end(), [&](const VkLayerProperties& l) {
+    return std::strcmp(l.layerName, name) == 0;
+  });
+}
+
+// An engine's Vulkan objects, made without the library: Vulkan 1.3 instance, the first device
+// with Vulkan ≥ 1.2 and a compute queue family, one queue, no features, no extensions.
+class EngineDevice : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    g_messages = 0;
+    const char* layer = "VK_LAYER_KHRONOS_validation";
+    validation_ = has_instance_layer(layer);
+    const VkApplicationInfo app{.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO,
+                                .pApplicationName = "engine",
+                                .apiVersion = kApiVersion};
+    const VkDebugUtilsMessengerCreateInfoEXT messenger_info{
+        .sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT,
+        .messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                           VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT,
+        .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT |
+                       VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT,
+        .pfnUserCallback = count_message};
+    const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    const VkInstanceCreateInfo info{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
+                                    .pNext = validation_ ? &messenger_info : nullptr,
+                                    .pApplicationInfo = &app,
+                                    .enabledLayerCount = validation_ ? 1u : 0u,
+                                    .ppEnabledLayerNames = &layer,
+                                    .enabledExtensionCount = validation_ ? 1u : 0u,
+                                    .ppEnabledExtensionNames = &extension};
+    if (vkCreateInstance(&info, nullptr, &instance_) != VK_SUCCESS) {
+      instance_ = VK_NULL_HANDLE;
+      GTEST_SKIP() << "no Vulkan loader or driver";
+    }
+    if (validation_) {
+      auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+      ASSERT_NE(create, nullptr);
+      ASSERT_EQ(create(instance_, &messenger_info, nullptr, &messenger_), VK_SUCCESS);
+    }
+    std::uint32_t count = 0;
+    vkEnumeratePhysicalDevices(instance_, &count, nullptr);
+    std::vector<VkPhysicalDevice> devices(count);
+    vkEnumeratePhysicalDevices(instance_, &count, devices.data());
+    for (VkPhysicalDevice d : devices) {
+      VkPhysicalDeviceProperties p;
+      vkGetPhysicalDeviceProperties(d, &p);
+      if (p.apiVersion < VK_API_VERSION_1_2) continue;
+      std::uint32_t n = 0;
+      vkGetPhysicalDeviceQueueFamilyProperties(d, &n, nullptr);
+      std::vector<VkQueueFamilyProperties> families(n);
+      vkGetPhysicalDeviceQueueFamilyProperties(d, &n, families.data());
+      for (std::uint32_t f = 0; f < n; ++f) {
+        if ((families[f].queueFlags & VK_QUEUE_COMPUTE_BIT) != 0) {
+          physical_ = d;
+          family_ = f;
+          families_ = n;
+          break;
+        }
+      }
+      if (physical_ != VK_NULL_HANDLE) break;
+    }
+    if (physical_ == VK_NULL_HANDLE) GTEST_SKIP() << "no Vulkan 1.2 device with compute";
+    const float priority = 1.0f;
+    const VkDeviceQueueCreateInfo queue{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
+                                        .queueFamilyIndex = family_,
+                                        .queueCount = 1,
+                                        .pQueuePriorities = &priority};
+    const VkDeviceCreateInfo device_info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+                                         .queueCreateInfoCount = 1,
+                                         .pQueueCreateInfos = &queue};
+    ASSERT_EQ(vkCreateDevice(physical_, &device_info, nullptr, &device_), VK_SUCCESS);
+    vkGetDeviceQueue(device_, family_, 0, &queue_);
+  }
+
+  void TearDown() override {
+    if (device_ != VK_NULL_HANDLE) vkDestroyDevice(device_, nullptr);
+    if (messenger_ != VK_NULL_HANDLE) {
+      auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+      destroy(instance_, messenger_, nullptr);
+    }
+    if (instance_ != VK_NULL_HANDLE) vkDestroyInstance(instance_, nullptr);
+    EXPECT_EQ(g_messages.load(), 0) << g_last_message;
+  }
+
+  [[nodiscard]] ocean::vk::AdoptedDevice handles() const {
+    return {.instance = instance_,
+            .physical = physical_,
+            .device = device_,
+            .queue_family = family_,
+            .queue = queue_,
+            .api_version = kApiVersion};
+  }
+
+  static constexpr std::uint32_t kApiVersion = VK_API_VERSION_1_3;
+  bool validation_ = false;
+  VkInstance instance_ = VK_NULL_HANDLE;
+  VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+  VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+  std::uint32_t family_ = 0, families_ = 0;
+  VkDevice device_ = VK_NULL_HANDLE;
+  VkQueue queue_ = VK_NULL_HANDLE;
+};
+
+double significant_height(const ocean::Frame& f) {
+  double var = 0.0;
+  for (const ocean::CascadeFrame& c : f.cascades) {
+    double sum = 0.0, sum2 = 0.0;
+    const std::size_t texels = c.displacement.size() / 3;
+    for (std::size_t i = 0; i < texels; ++i) {
+      const double h = c.displacement[3 * i + 1];
+      sum += h, sum2 += h * h;
+    }
+    const double mean = sum / static_cast<double>(texels);
+    var += sum2 / static_cast<double>(texels) - mean * mean;
+  }
+  return 4.0 * std::sqrt(var);
+}
+
+TEST_F(EngineDevice, VulkanBackendOnAnAdoptedDeviceMatchesTheCpuReference) {
+  auto adopted = ocean::vk::adopt_context(handles());
+  ASSERT_TRUE(adopted.ok()) << adopted.status().message();
+  std::shared_ptr<ocean::vk::Context> ctx = std::move(adopted.value());
+  EXPECT_TRUE(ctx->adopted);
+  EXPECT_EQ(ctx->device, device_);
+  EXPECT_EQ(ctx->queue, queue_);
+  EXPECT_FALSE(ctx->graphics);
+  EXPECT_TRUE(ctx->info.usable);
+
+  ocean::SimulationConfig config;
+  config.resolution = 64;
+  config.cascade_patch_sizes_m = {500.0, 110.0};
+  std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  auto reference = ocean::make_backend("cpu");
+  ASSERT_TRUE(reference.ok()) << reference.status().message();
+  ASSERT_TRUE(reference.value()->configure(config, *runner).ok());
+  ocean::Frame ref, got;
+  reference.value()->allocate(ref);
+  {
+    ocean::vk::VulkanBackend backend(ctx);
+    const ocean::Status configured = backend.configure(config, *runner);
+    ASSERT_TRUE(configured.ok()) << configured.message();
+    backend.allocate(got);
+    for (const double t : {3.0, 3.1}) {
+      reference.value()->step(t, ref);
+      backend.step(t, got);
+      ASSERT_TRUE(backend.status().ok()) << backend.status().message();
+    }
+  }
+  ASSERT_EQ(ref.cascades.size(), got.cascades.size());
+  const double hs = significant_height(ref);
+  ASSERT_GT(hs, 0.0);
+  double worst = 0.0;
+  for (std::size_t c = 0; c < ref.cascades.size(); ++c) {
+    const auto& r = ref.cascades[c].displacement;
+    const auto& g = got.cascades[c].displacement;
+    ASSERT_EQ(r.size(), g.size());
+    for (std::size_t i = 0; i < r.size(); ++i) {
+      ASSERT_TRUE(std::isfinite(g[i])) << "cascade " << c << ", index " << i;
+      worst = std::max(worst, std::abs(static_cast<double>(r[i]) - g[i]));
+    }
+  }
+  std::printf("adopted '%s' (validation layer %s): displacement error %.3g Hs\n",
+              ctx->info.name.c_str(), validation_ ? "on" : "not installed", worst / hs);
+  EXPECT_LE(worst / hs, kDisplacementBound);
+
+  // The library destroyed none of the adopted handles: the device still works after the
+  // context is gone, and the test destroys it (TearDown) under the validation layer.
+  ctx.reset();
+  EXPECT_EQ(vkDeviceWaitIdle(device_), VK_SUCCESS);
+  const VkFenceCreateInfo fence_info{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+  VkFence fence = VK_NULL_HANDLE;
+  ASSERT_EQ(vkCreateFence(device_, &fence_info, nullptr, &fence), VK_SUCCESS);
+  vkDestroyFence(device_, fence, nullptr);
+}
+
+// Each missing requirement is one line of the expected kind that names what to change.
+TEST_F(EngineDevice, MissingRequirementsAreOneClearError) {
+  struct Bad {
+    ocean::vk::AdoptedDevice handles;
+    ocean::ErrorCode code;
+    std::string names;
+  };
+  std::vector<Bad> cases;
+  ocean::vk::AdoptedDevice no_version = handles();
+  no_version.api_version = 0;
+  cases.push_back({no_version, ocean::ErrorCode::invalid_argument, "apiVersion"});
+  ocean::vk::AdoptedDevice old_version = handles();
+  old_version.api_version = VK_API_VERSION_1_1;
+  cases.push_back({old_version, ocean::ErrorCode::invalid_argument, "needs 1.2"});
+  ocean::vk::AdoptedDevice no_device = handles();
+  no_device.device = VK_NULL_HANDLE;
+  cases.push_back({no_device, ocean::ErrorCode::invalid_argument, "must all be set"});
+  ocean::vk::AdoptedDevice bad_family = handles();
+  bad_family.queue_family = families_;
+  cases.push_back({bad_family, ocean::ErrorCode::invalid_argument, "out of range"});
+  // The device was created without dynamic rendering: the renderer cannot draw on it.
+  ocean::vk::AdoptedDevice graphics = handles();
+  graphics.graphics = true;
+  cases.push_back({graphics, ocean::ErrorCode::invalid_argument, "dynamicRendering"});
+  for (const Bad& bad : cases) {
+    SCOPED_TRACE(bad.names);
+    auto ctx = ocean::vk::adopt_context(bad.handles);
+    ASSERT_FALSE(ctx.ok());
+    EXPECT_EQ(ctx.status().code(), bad.code);
+    EXPECT_NE(ctx.status().message().find(bad.names), std::string::npos) << ctx.status().message();
+    EXPECT_EQ(ctx.status().message().find('\n'), std::string::npos);
+  }
+}
+
+}  // namespace
