@@ -1,8 +1,9 @@
 // adopt_context: the test creates its own instance (with the Khronos validation layer and its own
 // messenger where the layer is installed) and device with plain Vulkan calls, hands them to the
 // library, runs the Vulkan compute backend on them and compares a frame with the CPU reference
-// backend, destroys the library objects and then its own device and instance. Missing
-// requirements give one clear line. Skips where no Vulkan device exists.
+// backend, draws with the renderer and compares the pixels with a library-created context's,
+// destroys the library objects and then its own device and instance. Missing requirements give
+// one clear line. Skips where no Vulkan device exists.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include <vector>
 
 #include "ocean/backends.hpp"
+#include "ocean/render.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/simulation.hpp"
 
@@ -47,9 +49,13 @@ bool has_instance_layer(const char* name) {
 }
 
 // An engine's Vulkan objects, made without the library: Vulkan 1.3 instance, the first device
-// with Vulkan ≥ 1.2 and a compute queue family, one queue, no features, no extensions.
+// with Vulkan ≥ 1.2 and a compute queue family, one queue, no features, no extensions. With
+// graphics(): a Vulkan 1.3 device with a graphics+compute family, dynamic rendering on, and
+// fillModeNonSolid and samplerAnisotropy where supported (what create_context enables).
 class EngineDevice : public ::testing::Test {
  protected:
+  [[nodiscard]] virtual bool graphics() const { return false; }
+
   void SetUp() override {
     g_messages = 0;
     const char* layer = "VK_LAYER_KHRONOS_validation";
@@ -86,16 +92,17 @@ class EngineDevice : public ::testing::Test {
     vkEnumeratePhysicalDevices(instance_, &count, nullptr);
     std::vector<VkPhysicalDevice> devices(count);
     vkEnumeratePhysicalDevices(instance_, &count, devices.data());
+    const VkQueueFlags need = VK_QUEUE_COMPUTE_BIT | (graphics() ? VK_QUEUE_GRAPHICS_BIT : 0);
     for (VkPhysicalDevice d : devices) {
       VkPhysicalDeviceProperties p;
       vkGetPhysicalDeviceProperties(d, &p);
-      if (p.apiVersion < VK_API_VERSION_1_2) continue;
+      if (p.apiVersion < (graphics() ? VK_API_VERSION_1_3 : VK_API_VERSION_1_2)) continue;
       std::uint32_t n = 0;
       vkGetPhysicalDeviceQueueFamilyProperties(d, &n, nullptr);
       std::vector<VkQueueFamilyProperties> families(n);
       vkGetPhysicalDeviceQueueFamilyProperties(d, &n, families.data());
       for (std::uint32_t f = 0; f < n; ++f) {
-        if ((families[f].queueFlags & VK_QUEUE_COMPUTE_BIT) != 0) {
+        if ((families[f].queueFlags & need) == need) {
           physical_ = d;
           family_ = f;
           families_ = n;
@@ -104,17 +111,34 @@ class EngineDevice : public ::testing::Test {
       }
       if (physical_ != VK_NULL_HANDLE) break;
     }
-    if (physical_ == VK_NULL_HANDLE) GTEST_SKIP() << "no Vulkan 1.2 device with compute";
+    if (physical_ == VK_NULL_HANDLE) GTEST_SKIP() << "no Vulkan device with the queue needed";
+    VkPhysicalDeviceVulkan13Features supported13{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 supported{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                        .pNext = &supported13};
+    vkGetPhysicalDeviceFeatures2(physical_, &supported);
+    VkPhysicalDeviceVulkan13Features enabled13{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceFeatures2 enabled{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                      .pNext = &enabled13};
+    if (graphics()) {
+      if (supported13.dynamicRendering != VK_TRUE) GTEST_SKIP() << "no dynamic rendering";
+      enabled13.dynamicRendering = VK_TRUE;
+      enabled.features.fillModeNonSolid = supported.features.fillModeNonSolid;
+      enabled.features.samplerAnisotropy = supported.features.samplerAnisotropy;
+    }
     const float priority = 1.0f;
     const VkDeviceQueueCreateInfo queue{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
                                         .queueFamilyIndex = family_,
                                         .queueCount = 1,
                                         .pQueuePriorities = &priority};
     const VkDeviceCreateInfo device_info{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
+                                         .pNext = graphics() ? &enabled : nullptr,
                                          .queueCreateInfoCount = 1,
                                          .pQueueCreateInfos = &queue};
     ASSERT_EQ(vkCreateDevice(physical_, &device_info, nullptr, &device_), VK_SUCCESS);
     vkGetDeviceQueue(device_, family_, 0, &queue_);
+    features_ = enabled.features;
   }
 
   void TearDown() override {
@@ -134,7 +158,11 @@ class EngineDevice : public ::testing::Test {
             .device = device_,
             .queue_family = family_,
             .queue = queue_,
-            .api_version = kApiVersion};
+            .api_version = kApiVersion,
+            .graphics = graphics(),
+            .dynamic_rendering = graphics(),
+            .fill_mode_non_solid = features_.fillModeNonSolid == VK_TRUE,
+            .sampler_anisotropy = features_.samplerAnisotropy == VK_TRUE};
   }
 
   static constexpr std::uint32_t kApiVersion = VK_API_VERSION_1_3;
@@ -145,6 +173,12 @@ class EngineDevice : public ::testing::Test {
   std::uint32_t family_ = 0, families_ = 0;
   VkDevice device_ = VK_NULL_HANDLE;
   VkQueue queue_ = VK_NULL_HANDLE;
+  VkPhysicalDeviceFeatures features_{};
+};
+
+class EngineGraphicsDevice : public EngineDevice {
+ protected:
+  [[nodiscard]] bool graphics() const override { return true; }
 };
 
 double significant_height(const ocean::Frame& f) {
@@ -217,6 +251,65 @@ TEST_F(EngineDevice, VulkanBackendOnAnAdoptedDeviceMatchesTheCpuReference) {
   VkFence fence = VK_NULL_HANDLE;
   ASSERT_EQ(vkCreateFence(device_, &fence_info, nullptr, &fence), VK_SUCCESS);
   vkDestroyFence(device_, fence, nullptr);
+}
+
+// The renderer draws on an adopted graphics device exactly what it draws on a context of its own
+// on the same physical device (CPU upload path: the same bytes in, the same pixels out).
+TEST_F(EngineGraphicsDevice, RendererOnAnAdoptedDeviceDrawsTheSamePixels) {
+  ocean::SimulationConfig config;
+  config.resolution = 64;
+  config.cascade_patch_sizes_m = {200.0, 47.0};
+  std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  auto backend = ocean::make_backend("cpu");
+  ASSERT_TRUE(backend.ok()) << backend.status().message();
+  ASSERT_TRUE(backend.value()->configure(config, *runner).ok());
+  ocean::Frame frame;
+  backend.value()->allocate(frame);
+  backend.value()->step(5.0, frame);
+
+  ocean::render::View view;
+  view.camera = {.position_m = {0.0, 8.0, 0.0},
+                 .target_m = {-100.0, 2.0, -70.0},
+                 .fov_y_rad = 0.9,
+                 .aspect = 1.5,
+                 .near_m = 0.2,
+                 .far_m = 2e5};
+  view.quality = ocean::lod::quality_preset(ocean::lod::QualityPreset::low);
+  view.ocean_size_m = 2048.0;
+  const auto draw = [&](std::shared_ptr<ocean::vk::Context> ctx, std::vector<std::uint8_t>& rgba) {
+    auto renderer = ocean::render::Renderer::make(std::move(ctx), {.width = 96, .height = 64});
+    ASSERT_TRUE(renderer.ok()) << renderer.status().message();
+    ASSERT_TRUE(renderer.value()->configure(config).ok());
+    ASSERT_TRUE(renderer.value()->upload(frame).ok());
+    const ocean::Status drawn = renderer.value()->draw(view);
+    ASSERT_TRUE(drawn.ok()) << drawn.message();
+    ASSERT_TRUE(renderer.value()->read_srgb(rgba).ok());
+  };
+
+  auto adopted = ocean::vk::adopt_context(handles());
+  ASSERT_TRUE(adopted.ok()) << adopted.status().message();
+  std::shared_ptr<ocean::vk::Context> ctx = std::move(adopted.value());
+  EXPECT_TRUE(ctx->graphics);
+  std::vector<std::uint8_t> on_adopted;
+  draw(ctx, on_adopted);
+  ctx.reset();
+
+  // The library's own context on the same physical device, for the reference pixels.
+  auto own = ocean::vk::create_context({.graphics = true});
+  ASSERT_TRUE(own.ok()) << own.status().message();
+  VkPhysicalDeviceProperties mine;  // handles differ between instances: compare the devices
+  vkGetPhysicalDeviceProperties(physical_, &mine);
+  const VkPhysicalDeviceProperties& theirs = own.value()->properties;
+  if (theirs.vendorID != mine.vendorID || theirs.deviceID != mine.deviceID ||
+      std::strcmp(theirs.deviceName, mine.deviceName) != 0)
+    GTEST_SKIP() << "the library picks another device";
+  std::vector<std::uint8_t> on_own;
+  draw(std::move(own.value()), on_own);
+  ASSERT_EQ(on_adopted.size(), std::size_t{96 * 64 * 4});
+  EXPECT_TRUE(on_adopted == on_own) << "the adopted device drew different pixels";
+  const bool lit =
+      std::any_of(on_adopted.begin(), on_adopted.end(), [](std::uint8_t v) { return v > 16; });
+  EXPECT_TRUE(lit) << "black image";
 }
 
 // Each missing requirement is one line of the expected kind that names what to change.
