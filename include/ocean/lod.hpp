@@ -1,4 +1,4 @@
-// ocean/lod.hpp — the adaptive quadtree level of detail of the ocean mesh (seed 000 §5).
+// ocean/lod.hpp — the adaptive quadtree level of detail of the ocean mesh (Aebi, VR Ocean, §5).
 //
 // CPU only, no GPU headers: the core produces plain data (patch instances grouped by stitching
 // configuration, 16 index buffers, a skirt mesh) and a renderer consumes it.
@@ -26,7 +26,7 @@ namespace ocean::lod {
 
 // ---- quality presets (quality.cpp) --------------------------------------------------------------
 
-/// Seed 000 Table 2.
+/// Aebi, VR Ocean, Table 2.
 enum class QualityPreset : std::uint8_t { low, medium, high, ultra };
 
 /// Mesh density and LOD distances.
@@ -51,13 +51,14 @@ std::string_view preset_name(QualityPreset preset);
 /// The preset of a name above; invalid_argument naming `name` otherwise.
 Result<QualityPreset> parse_preset(std::string_view name);
 
-/// Valid ocean sizes S, metres (seed 000 §5.1).
+/// Valid ocean sizes S, metres (Aebi, VR Ocean, §5.1).
 inline constexpr double kMinOceanSize_m = 256.0;
 inline constexpr double kMaxOceanSize_m = 8192.0;
 /// The deepest level L_max can be (eq. L.1); instances store grid coordinates in 8 bits.
 inline constexpr int kMaxLevels = 8;
 
-/// L_max = clamp(⌊log2(S/64) + 0.5⌋, 2, 8) (seed 000 eq. 56, L.1). Precondition: S > 0, finite.
+/// L_max = clamp(⌊log2(S/64) + 0.5⌋, 2, 8) (Aebi, VR Ocean, eq. 56, L.1). Precondition: S > 0,
+/// finite.
 int max_level(double ocean_size_m);
 
 /// invalid_argument naming the field unless V is even in [2, 254], τ > 0 and β ≥ 1 (all finite).
@@ -111,7 +112,7 @@ Status validate(const Camera& camera);
 Mat4 view_projection(const Camera& camera);
 Frustum camera_frustum(const Camera& camera);
 
-/// Seed 000 eqs. 59–60 (L.6): false only when the box centre ± half extents lies wholly
+/// Aebi, VR Ocean, eqs. 59–60 (L.6): false only when the box centre ± half extents lies wholly
 /// outside one plane (tests the corner farthest along each plane normal). Conservative: a box
 /// outside the frustum near an edge or corner can still answer true.
 bool box_visible(const Frustum& frustum, Vec3 centre, Vec3 half_extents);
@@ -119,16 +120,16 @@ bool box_visible(const Frustum& frustum, Vec3 centre, Vec3 half_extents);
 // ---- grid snapping (snapping.cpp) ---------------------------------------------------------------
 
 /// The snap step δ = S/V (L.9): the vertex spacing of the coarsest level, so every level's
-/// vertices stay on one world lattice when the grid moves (seed eq. 69 prints S/(2V); see
-/// docs/lod.md). Precondition: S > 0, V > 0.
+/// vertices stay on one world lattice when the grid moves (Aebi, VR Ocean, eq. 69, prints S/(2V);
+/// see docs/lod.md). Precondition: S > 0, V > 0.
 double snap_step_m(double ocean_size_m, int vertices);
-/// ⌊value/step⌋·step, exact when value/step is representable (seed 000 eq. 69).
+/// ⌊value/step⌋·step, exact when value/step is representable (Aebi, VR Ocean, eq. 69).
 double snap(double value_m, double step_m);
 
 // ---- selection (quadtree.cpp) -------------------------------------------------------------------
 
-/// Edge bits of a stitching configuration (seed 000 eq. 64): the bit is set when the neighbour
-/// across that edge is one level coarser; that edge then drops its odd vertices.
+/// Edge bits of a stitching configuration (Aebi, VR Ocean, eq. 64): the bit is set when the
+/// neighbour across that edge is one level coarser; that edge then drops its odd vertices.
 enum EdgeBit : std::uint8_t { kEast = 1, kNorth = 2, kWest = 4, kSouth = 8 };
 inline constexpr int kConfigurations = 16;
 
@@ -146,7 +147,7 @@ struct LodParams {
   double fixed_centre_x_m = 0.0;
   double fixed_centre_z_m = 0.0;
   /// Largest |y| of the displaced surface, m, for the culling boxes (L.5); negative: 0.015·S
-  /// (seed 000's default h_max = 0.03·S taken as a crest-to-trough range).
+  /// (Aebi's default h_max = 0.03·S taken as a crest-to-trough range).
   double max_vertical_displacement_m = -1.0;
   /// Largest horizontal (choppy) displacement, m, ≥ 0; widens the culling boxes (L.5).
   double max_horizontal_displacement_m = 0.0;
@@ -155,7 +156,7 @@ struct LodParams {
 Status validate(const LodParams& params);
 
 /// One patch to draw: the unit mesh of PatchMeshes scaled by size_m and moved to the centre
-/// (seed 000 eq. 70). 16 bytes, ready for an instance buffer.
+/// (Aebi, VR Ocean, eq. 70). 16 bytes, ready for an instance buffer.
 struct PatchInstance {
   float centre_x_m = 0.0f;  ///< world x of the patch centre, m
   float centre_z_m = 0.0f;  ///< world z of the patch centre, m
@@ -184,7 +185,7 @@ struct LodSelection {
   std::vector<Batch> batches;            ///< ≤ 16, ascending config, empty configs left out
   std::array<std::uint32_t, kMaxLevels + 1> patches_per_level{};
   std::array<std::uint32_t, kConfigurations> patches_per_config{};
-  /// Seed 000's subdivision map: W×W (W = 2^L_max) finest cells, row-major [gy·W + gx], each the
+  /// Aebi's subdivision map: W×W (W = 2^L_max) finest cells, row-major [gy·W + gx], each the
   /// level of the leaf covering it — culled leaves included.
   std::vector<std::uint8_t> subdivision_map;
   int map_width = 0;  ///< W
@@ -199,8 +200,8 @@ struct LodSelection {
 /// a smaller one never allocate. invalid_argument for a size outside [256, 8192].
 Status reserve_selection(LodSelection& selection, double ocean_size_m);
 
-/// Per frame: chooses the patches for `params` (docs/lod.md L.2–L.8): the distance test of seed
-/// eqs. 57–58 over an explicit stack, a 2:1 balancing pass (so that the 16 stitching
+/// Per frame: chooses the patches for `params` (docs/lod.md L.2–L.8): the distance test of Aebi,
+/// VR Ocean, eqs. 57–58 over an explicit stack, a 2:1 balancing pass (so that the 16 stitching
 /// configurations close every crack), the subdivision map, frustum culling of the leaves,
 /// neighbour flags (eqs. 62–64) and batching by configuration (eq. 70).
 /// Allocation: none once reserve_selection was called for this ocean size (vectors are cleared
@@ -215,15 +216,15 @@ Status select_patches(const LodParams& params, LodSelection& selection);
 struct PatchMeshes {
   int vertices = 0;  ///< V
   /// (V+1)² vertices (x, z) in the unit square [−0.5, 0.5]², vertex (i, j) at index
-  /// i + j·(V+1) (seed 000 eqs. 67–68); y = 0.
+  /// i + j·(V+1) (Aebi, VR Ocean, eqs. 67–68); y = 0.
   std::vector<float> positions_xz;
   /// Triangle lists (3 indices per triangle), one per configuration: 8·(V/2)² − (V/2)·popcount
   /// triangles (eq. L.8).
   std::array<std::vector<std::uint16_t>, kConfigurations> indices;
 };
 
-/// Triangle list of one configuration for a V×V-quad patch (seed 000 eqs. 65–68, L.8): V/2 × V/2
-/// cells of 3×3 vertices fanned around their centre; on an edge flagged in `config` the cells
+/// Triangle list of one configuration for a V×V-quad patch (Aebi, VR Ocean, eqs. 65–68, L.8): V/2 ×
+/// V/2 cells of 3×3 vertices fanned around their centre; on an edge flagged in `config` the cells
 /// drop that edge's midpoint. Preconditions: V even in [2, 254], config in [0, 15].
 std::vector<std::uint16_t> build_patch_indices(int vertices, int config);
 /// All 16 index buffers and the vertices. invalid_argument unless V is even in [2, 254].
@@ -231,8 +232,8 @@ Result<PatchMeshes> build_patch_meshes(int vertices);
 
 // ---- skirt (skirt.cpp) --------------------------------------------------------------------------
 
-/// The horizon skirt of seed 000 §5.7 (L.10): a strip of 3 vertex pairs from the north edge of
-/// the ocean square (half-extent S/2) out to the outer half-extent R, drawn 4 times rotated by
+/// The horizon skirt of Aebi, VR Ocean, §5.7 (L.10): a strip of 3 vertex pairs from the north edge
+/// of the ocean square (half-extent S/2) out to the outer half-extent R, drawn 4 times rotated by
 /// 0°, 90°, 180°, 270° about +y around the grid centre, so the four trapezoids tile the square
 /// ring between S/2 and R.
 struct SkirtMesh {

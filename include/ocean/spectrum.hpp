@@ -61,7 +61,7 @@ class Dispersion {
   DispersionParams params_;
 };
 
-/// Loop-period quantisation ω' = ⌊ω/ω0⌋·ω0, ω0 = 2π/T  (seed 000 eq. 16, M.2.4). T > 0.
+/// Loop-period quantisation ω' = ⌊ω/ω0⌋·ω0, ω0 = 2π/T  (Aebi, VR Ocean, eq. 16, M.2.4). T > 0.
 double quantize_omega(double omega, double loop_period_s);
 
 /// The evolution phase ω'·t of every wave vector at one time, exact for arbitrarily large t
@@ -93,7 +93,7 @@ enum class SpectrumModel { pierson_moskowitz, jonswap, tma, phillips };
 /// Fetch law for the fetch-limited JONSWAP peak frequency.
 enum class FetchLaw {
   hasselmann_1973,  ///< ωp = 2π·3.5·(g/U)·(gF/U²)^−0.33 (Hasselmann et al. 1973) — default
-  cube_root,  ///< ωp = 22·(g²/(U·F))^(1/3) (seed 001 eq. 1.9; ≈3 % lower at typical fetch)
+  cube_root,  ///< ωp = 22·(g²/(U·F))^(1/3) (Vincevičius 2024, eq. 1.9; ≈3 % lower at typical fetch)
 };
 /// Kitaigorodskii depth attenuation used by TMA.
 enum class DepthFactor {
@@ -128,11 +128,11 @@ struct FrequencySpectrumParams {
   double depth_m = kInfiniteDepth;  ///< TMA only: water depth h, m
   DepthFactor depth_factor = DepthFactor::exact;
   double gravity_mps2 = kDefaultGravity;
-  // Phillips only (Tessendorf 2001; seed 000 §3.2).
+  // Phillips only (Tessendorf 2001; Aebi, VR Ocean, §3.2).
   /// Dimensionless amplitude A of F(k) = A·e^(−1/(kL)²)/k⁴·D. Unset = calibrated so that Hs
   /// equals Pierson–Moskowitz's for the same wind without the cutoff (M.3.13).
   double phillips_amplitude = kUnset;
-  double small_wave_cutoff_m = 0.0;  ///< l of the factor e^(−k²l²) (seed 000 eq. 10), m ≥ 0
+  double small_wave_cutoff_m = 0.0;  ///< l of the factor e^(−k²l²) (Aebi, VR Ocean, eq. 10), m ≥ 0
 };
 
 /// A validated S(ω) with its derived constants resolved.
@@ -171,7 +171,7 @@ double pierson_moskowitz_wind(double omega, double wind_speed_mps, double gravit
 double pierson_moskowitz_hs_tp(double omega, double hs_m, double tp_s);
 /// DNV-RP-C205 peak-enhancement rule γ(Tp/√Hs)  (M.3.6)
 double jonswap_gamma_dnv(double hs_m, double tp_s);
-/// Hasselmann 1973 / seed-001 fetch law: returns {α, ωp}  (M.3.7, M.3.8)
+/// Hasselmann 1973 / Vincevičius 2024 fetch law: returns {α, ωp}  (M.3.7, M.3.8)
 std::array<double, 2> jonswap_fetch_law(double wind_speed_mps, double fetch_m, double gravity_mps2,
                                         FetchLaw law);
 /// Kitaigorodskii depth factor Φ(ω, h): exact (M.3.9) or Thompson–Vincent (M.3.10).
@@ -187,11 +187,11 @@ Result<SpreadingModel> parse_spreading_model(std::string_view name);
 
 struct SpreadingParams {
   SpreadingModel model = SpreadingModel::donelan_banner;
-  /// power_cosine: exponent of |cos θ|^s; unset = s(α) = 1 + 5α² (seed 000 eq. 6).
+  /// power_cosine: exponent of |cos θ|^s; unset = s(α) = 1 + 5α² (Aebi, VR Ocean, eq. 6).
   /// cos2s: exponent of cos^(2s)(θ/2) (required). Others: unused (frequency dependent).
   double s = kUnset;
   /// power_cosine: wind alignment α ∈ [0, 1]; sets s(α) when s is unset and the counter-wave
-  /// energy fraction σ(α) = 0.01 + 0.49(1 − α)² (seed 000 eq. 8) for |θ| > π/2.
+  /// energy fraction σ(α) = 0.01 + 0.49(1 − α)² (Aebi, VR Ocean, eq. 8) for |θ| > π/2.
   double alpha = 1.0;
   /// power_cosine: apply σ(α) to the back half-plane. false = symmetric |cos θ|^s
   /// (Tessendorf's classic |k̂·ŵ|^n).
@@ -271,7 +271,7 @@ class SeaState {
   static Result<SeaState> make(const SeaStateParams& params);
 
   /// Wave-vector spectrum F(kx, kz) = Σ_systems S(ω)·D(ω, θ − θ_mean)·(dω/dk)/k, m⁴  (M.5.1)
-  /// (seed 001 eq. 1.15 without its grid factors). 0 at k = 0.
+  /// (Vincevičius 2024, eq. 1.15 without its grid factors). 0 at k = 0.
   [[nodiscard]] double wave_vector_spectrum(double kx, double kz) const;
   /// Total height variance m0 of all systems, m².
   [[nodiscard]] double variance_m2() const;
@@ -290,13 +290,13 @@ class SeaState {
 // ---------------------------------------------------------------------------------------------
 
 /// Two independent standard normal variates for (seed, index): a counter-based hash (SplitMix64
-/// finaliser) gives two uniforms, Box–Muller (seed 000 eq. 12) turns them into Gaussians.
+/// finaliser) gives two uniforms, Box–Muller (Aebi, VR Ocean, eq. 12) turns them into Gaussians.
 /// Depends only on its arguments, never on call order or thread: identical across runs and
 /// thread counts, and across machines whose C library computes log/sin/cos identically.
 std::array<double, 2> gaussian_pair(std::uint64_t seed, std::uint64_t index);
 
 /// The square N×N grid of wave vectors of a periodic patch: k(m,n) = 2π/L·(m − N/2, n − N/2)
-/// (seed 000 eq. 2), index i = n·N + m (m along x, n along z).
+/// (Aebi, VR Ocean, eq. 2), index i = n·N + m (m along x, n along z).
 struct SpectrumGrid {
   int resolution = 256;        ///< N, a power of two in [16, 4096]
   double patch_size_m = 1000;  ///< L, the patch side, m > 0
@@ -308,7 +308,7 @@ enum class AmplitudeConvention {
   /// E|h0(k)|² = F(k)·Δk²/2, so E[h²] = Σ F·Δk² ≈ m0 for h = Σ h̃·e^{ik·x} with
   /// h̃ = h0(k) + h0*(−k)  (M.6.2). The default.
   variance_preserving,
-  /// Seed 000's VR-Ocean Phillips: h0 = ξ/√2·√(P'(k)), P' from eqs. 3–5, 7–11 with its grid
+  /// Aebi's VR-Ocean Phillips: h0 = ξ/√2·√(P'(k)), P' from eqs. 3–5, 7–11 with its grid
   /// normalisation A = N^(−1/2)·(e/L)²; only for SpectrumModel::phillips with power_cosine.
   vr_ocean,
 };
@@ -317,7 +317,7 @@ struct InitialSpectrumParams {
   SpectrumGrid grid;
   std::uint64_t seed = 1;
   AmplitudeConvention convention = AmplitudeConvention::variance_preserving;
-  /// Loop period T of the quantised dispersion (seed 000 eq. 16), s; 0 = no quantisation.
+  /// Loop period T of the quantised dispersion (Aebi, VR Ocean, eq. 16), s; 0 = no quantisation.
   double loop_period_s = 200.0;
   /// The band of wavenumbers this patch synthesises, |k| ∈ [k_min, k_max) rad/m: cascades
   /// split the spectrum so that no wave vector is counted twice.
@@ -325,7 +325,7 @@ struct InitialSpectrumParams {
   double k_max_radpm = std::numeric_limits<double>::infinity();
 };
 
-/// Per-wave-vector data of seed 000 eqs. 18–22, planar arrays of N² entries (index n·N + m).
+/// Per-wave-vector data of Aebi, VR Ocean, eqs. 18–22, planar arrays of N² entries (index n·N + m).
 struct InitialSpectrum {
   int resolution = 0;
   double patch_size_m = 0;
@@ -337,12 +337,12 @@ struct InitialSpectrum {
   std::vector<std::complex<double>> h0;
 };
 
-/// h0 for every grid wave vector. Deterministic for a given seed. Zero at DC (seed 000 eq. 14),
-/// outside the band, and on the Nyquist row and column (index 0), whose single aliased
+/// h0 for every grid wave vector. Deterministic for a given seed. Zero at DC (Aebi, VR Ocean, eq.
+/// 14), outside the band, and on the Nyquist row and column (index 0), whose single aliased
 /// component cannot carry the odd-symmetric displacement and slope fields (M.6.3).
 Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p);
 
-/// The VR-Ocean Phillips power P'(k) of seed 000 eqs. 3–11 (directional factor applied once,
+/// The VR-Ocean Phillips power P'(k) of Aebi, VR Ocean, eqs. 3–11 (directional factor applied once,
 /// counter-wave factor σ(α) on the back half-plane).
 struct VrOceanPhillipsParams {
   double wind_speed_mps = 10;        ///< V, m/s
@@ -353,7 +353,7 @@ struct VrOceanPhillipsParams {
 };
 double vr_ocean_phillips_power(double kx, double kz, const VrOceanPhillipsParams& p,
                                const SpectrumGrid& grid);
-/// l_cutoff(β) = 0.001·(0.25·L/0.001)^β, m  (seed 000 eq. 11)
+/// l_cutoff(β) = 0.001·(0.25·L/0.001)^β, m  (Aebi, VR Ocean, eq. 11)
 double vr_ocean_cutoff_length(double beta, double patch_size_m);
 
 }  // namespace ocean

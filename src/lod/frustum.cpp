@@ -1,8 +1,8 @@
 // Camera matrices, frustum planes and the AABB visibility test.
 //
-// Sources: seed 000 §5.2.2 (eqs. 59–61); G. Gribb and K. Hartmann, "Fast Extraction of Viewing
-// Frustum Planes from the World-View-Projection Matrix" (2001), adapted to Vulkan's [0, 1] depth;
-// docs/lod.md L.5–L.6.
+// Sources: Aebi, VR Ocean, §5.2.2 (eqs. 59–61); G. Gribb and K. Hartmann, "Fast Extraction of
+// Viewing Frustum Planes from the World-View-Projection Matrix" (2001), adapted to Vulkan's [0, 1]
+// depth; docs/lod.md L.5–L.6.
 #include <cassert>
 #include <cmath>
 
@@ -123,8 +123,8 @@ Frustum camera_frustum(const Camera& camera) {
   return frustum_from_view_projection(view_projection(camera));
 }
 
-// L.6 (seed eqs. 59–60): the positive vertex is the box corner farthest along n; if even it is
-// outside a plane, the whole box is.
+// L.6 (Aebi, VR Ocean, eqs. 59–60): the positive vertex is the box corner farthest along n; if even
+// it is outside a plane, the whole box is.
 bool box_visible(const Frustum& frustum, Vec3 c, Vec3 e) {
   for (const Plane& p : frustum.planes) {
     const double px = c.x + (p.nx >= 0.0 ? e.x : -e.x);

@@ -1,7 +1,7 @@
 // Quadtree selection: distance-driven subdivision over an explicit stack, 2:1 balancing, the
 // subdivision map, frustum culling, neighbour flags and batching by stitching configuration.
 //
-// Sources: seed 000 §5.2–§5.3.2 and §5.6 (eqs. 57–64, 70); R. Pajarola, "Overview of
+// Sources: Aebi, VR Ocean, §5.2–§5.3.2 and §5.6 (eqs. 57–64, 70); R. Pajarola, "Overview of
 // quadtree-based terrain triangulation and visualization" (2002) for restricted (2:1 balanced)
 // quadtrees; docs/lod.md L.2–L.8.
 #include <algorithm>
@@ -37,7 +37,7 @@ struct Geometry {
   double size;                // S
 };
 
-// L.2 (seed eq. 58): the world centre of node (x, y) at level l.
+// L.2 (Aebi, VR Ocean, eq. 58): the world centre of node (x, y) at level l.
 void node_centre(const Geometry& g, std::uint32_t x, std::uint32_t y, std::uint32_t l, double& cx,
                  double& cz, double& s) {
   s = g.size / static_cast<double>(1u << l);
@@ -54,7 +54,7 @@ void push_children(std::vector<std::uint32_t>& stack, std::uint32_t n) {
   stack.push_back(pack(x, y, l));
 }
 
-// Phase 1, L.3 (seed eq. 57): mark every node that the squared-distance test subdivides.
+// Phase 1, L.3 (Aebi, VR Ocean, eq. 57): mark every node that the squared-distance test subdivides.
 void subdivide(const LodParams& p, const Geometry& g, int max_level, LodSelection& sel) {
   const double tau2 = p.quality.lod_scale * p.quality.lod_scale;
   const Vec3 v = p.camera_position_m;
@@ -103,7 +103,7 @@ void balance(int max_level, LodSelection& sel) {
 }
 
 // Phase 3, L.5–L.6: walk the balanced tree; every leaf fills its block of the subdivision map
-// and is emitted when visible. A leaf's block is written at once, which is what seed 000's
+// and is emitted when visible. A leaf's block is written at once, which is what Aebi's
 // HasRendered flag achieves by descending to the finest level with the flag set (rules 1–3).
 void collect_leaves(const LodParams& p, const Geometry& g, int max_level, LodSelection& sel) {
   const double h =
@@ -138,9 +138,9 @@ void collect_leaves(const LodParams& p, const Geometry& g, int max_level, LodSel
   }
 }
 
-// Phase 4, L.7 (seed eqs. 62–64): one map cell just across each edge. Outside the map counts as
-// the same level. With the tree balanced, a coarser neighbour is exactly one level coarser and
-// covers the whole edge, so one sample per edge decides it.
+// Phase 4, L.7 (Aebi, VR Ocean, eqs. 62–64): one map cell just across each edge. Outside the map
+// counts as the same level. With the tree balanced, a coarser neighbour is exactly one level
+// coarser and covers the whole edge, so one sample per edge decides it.
 std::uint8_t neighbour_flags(const LodSelection& sel, int max_level, const PatchInstance& pi) {
   const int w = sel.map_width;
   const int delta = 1 << (max_level - pi.level);
@@ -223,7 +223,7 @@ Status select_patches(const LodParams& p, LodSelection& sel) {
   const int lmax = max_level(p.ocean_size_m);
   sel.max_level = lmax;
   sel.map_width = 1 << lmax;
-  if (p.follow_camera) {  // L.9 (seed eq. 69)
+  if (p.follow_camera) {  // L.9 (Aebi, VR Ocean, eq. 69)
     const double step = snap_step_m(p.ocean_size_m, p.quality.vertices);
     sel.grid_centre_x_m = snap(p.camera_position_m.x, step);
     sel.grid_centre_z_m = snap(p.camera_position_m.z, step);
@@ -240,7 +240,8 @@ Status select_patches(const LodParams& p, LodSelection& sel) {
   balance(lmax, sel);
   collect_leaves(p, g, lmax, sel);
 
-  // L.8 (seed eq. 70): counting sort by configuration; one batch per non-empty configuration.
+  // L.8 (Aebi, VR Ocean, eq. 70): counting sort by configuration; one batch per non-empty
+  // configuration.
   for (PatchInstance& pi : sel.unsorted) {
     pi.config = neighbour_flags(sel, lmax, pi);
     ++sel.patches_per_config[pi.config];

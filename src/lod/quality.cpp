@@ -1,6 +1,6 @@
 // Quality presets and the depth of the quadtree.
 //
-// Sources: seed 000 §5.1 (Table 2, eq. 56); docs/lod.md L.1.
+// Sources: Aebi, VR Ocean, §5.1 (Table 2, eq. 56); docs/lod.md L.1.
 #include <cmath>
 #include <string>
 
@@ -27,7 +27,7 @@ Result<QualityPreset> parse_preset(std::string_view name) {
                           " is not a preset: must be low, medium, high or ultra");
 }
 
-// L.1 (seed eq. 56). The finest nodes are then about 64 m wide whatever S is.
+// L.1 (Aebi, VR Ocean, eq. 56). The finest nodes are then about 64 m wide whatever S is.
 int max_level(double ocean_size_m) {
   const double l = std::floor(std::log2(ocean_size_m / 64.0) + 0.5);
   if (!(l >= 2.0)) return 2;  // also NaN

@@ -1,6 +1,6 @@
 // The horizon skirt: four trapezoids from the ocean square out to a far square.
 //
-// Sources: seed 000 §5.7; docs/lod.md L.10.
+// Sources: Aebi, VR Ocean, §5.7; docs/lod.md L.10.
 #include <cmath>
 
 #include "ocean/lod.hpp"

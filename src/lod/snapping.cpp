@@ -1,7 +1,7 @@
 // Grid snapping: the ocean square follows the camera in steps that keep every vertex on a fixed
 // world lattice, so vertices never swim.
 //
-// Sources: seed 000 §5.5 (eq. 69); docs/lod.md L.9.
+// Sources: Aebi, VR Ocean, §5.5 (eq. 69); docs/lod.md L.9.
 #include <cmath>
 
 #include "ocean/lod.hpp"
@@ -9,8 +9,8 @@
 namespace ocean::lod {
 
 // L.9. Level l's vertices sit at centre − S/2 + k·S/(2^l·V). With the centre a multiple of
-// S/V and S/2 = (V/2)·(S/V) (V even) every level's lattice is a fixed world lattice. Seed eq. 69
-// prints S/(2V), which moves the level-0 lattice by half its spacing.
+// S/V and S/2 = (V/2)·(S/V) (V even) every level's lattice is a fixed world lattice. Aebi, VR
+// Ocean, eq. 69 prints S/(2V), which moves the level-0 lattice by half its spacing.
 double snap_step_m(double ocean_size_m, int vertices) {
   return ocean_size_m / static_cast<double>(vertices);
 }

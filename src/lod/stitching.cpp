@@ -1,6 +1,6 @@
 // The patch mesh and its 16 edge-stitching index buffers.
 //
-// Sources: seed 000 §5.3.3–§5.4 (eqs. 65–68); docs/lod.md L.8.
+// Sources: Aebi, VR Ocean, §5.3.3–§5.4 (eqs. 65–68); docs/lod.md L.8.
 #include <cassert>
 #include <string>
 
@@ -27,13 +27,13 @@ std::vector<std::uint16_t> build_patch_indices(int vertices, int config) {
   out.reserve(static_cast<std::size_t>(3 * 8 * cells * cells));
   for (int cy = 0; cy < cells; ++cy) {
     for (int cx = 0; cx < cells; ++cx) {
-      // L.8 (seed eq. 65): only boundary cells inherit the patch's edge flags.
+      // L.8 (Aebi, VR Ocean, eq. 65): only boundary cells inherit the patch's edge flags.
       int cell = 0;
       if (cx == cells - 1) cell |= config & kEast;
       if (cy == cells - 1) cell |= config & kNorth;
       if (cx == 0) cell |= config & kWest;
       if (cy == 0) cell |= config & kSouth;
-      // Seed eq. 68.
+      // Aebi, VR Ocean, eq. 68.
       auto idx = [&](int vx, int vy) {
         return static_cast<std::uint16_t>((2 * cx + vx) + (2 * cy + vy) * row);
       };
@@ -68,7 +68,7 @@ Result<PatchMeshes> build_patch_meshes(int vertices) {
   const int row = vertices + 1;
   m.positions_xz.reserve(static_cast<std::size_t>(2 * row * row));
   for (int j = 0; j < row; ++j) {
-    for (int i = 0; i < row; ++i) {  // seed eq. 67
+    for (int i = 0; i < row; ++i) {  // Aebi, VR Ocean, eq. 67
       m.positions_xz.push_back(static_cast<float>(i) / static_cast<float>(vertices) - 0.5f);
       m.positions_xz.push_back(static_cast<float>(j) / static_cast<float>(vertices) - 0.5f);
     }

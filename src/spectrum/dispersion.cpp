@@ -4,7 +4,8 @@
 //   - Lamb, H. (1932) Hydrodynamics, 6th ed., §228 and §267 (ω² = (gk + σk³/ρ)·tanh kh).
 //   - Eckart, C. (1952) The propagation of gravity waves from deep to shallow water, for the
 //     explicit starting guess k ≈ (ω²/g)/√tanh(ω²h/g).
-//   - Tessendorf, J. (2001) Simulating Ocean Water, §3.2, and seed 000 eq. 16 (loop quantisation).
+//   - Tessendorf, J. (2001) Simulating Ocean Water, §3.2, and Aebi, VR Ocean, eq. 16 (loop
+//     quantisation).
 // Equations: docs/math.md §2 (M.2.1–M.2.4).
 #include <cmath>
 

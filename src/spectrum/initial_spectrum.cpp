@@ -1,10 +1,10 @@
 // Initial Fourier amplitudes h0(k) on the patch's wave-vector grid, the loop-quantised ω'(k) and
-// the packed, pre-transformed layout of seed 000 for single-FMA time evolution.
+// the packed, pre-transformed layout of Aebi, VR Ocean, for single-FMA time evolution.
 //
 // This work is based on:
 //   - Tessendorf, J. (2001) Simulating Ocean Water, eqs. 42–43 (h0 = ξ·√(P/2), h̃ = h0·e^{iωt} +
 //     h0*(−k)·e^{−iωt}).
-//   - Seed 000 §3.2.5–3.4 (Box–Muller, DC guard, eq. 16 quantisation, eqs. 18–24 packing).
+//   - Aebi, VR Ocean, §3.2.5–3.4 (Box–Muller, DC guard, eq. 16 quantisation, eqs. 18–24 packing).
 // Amplitude convention and the direction of travel: docs/math.md §6 (M.6.2)–(M.6.5).
 #include <bit>
 #include <cmath>
@@ -74,13 +74,13 @@ Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const Initial
     for (int col = 0; col < n; ++col) {
       const std::size_t i = static_cast<std::size_t>(row) * static_cast<std::size_t>(n) +
                             static_cast<std::size_t>(col);
-      const double kx = dk * (col - half);  // seed 000 eq. 2
+      const double kx = dk * (col - half);  // Aebi, VR Ocean, eq. 2
       const double kz = dk * (row - half);
       const double k = std::hypot(kx, kz);
       double omega = sea.dispersion().omega(k);
       if (p.loop_period_s > 0.0) omega = quantize_omega(omega, p.loop_period_s);  // (M.2.4)
       out.omega[i] = static_cast<float>(omega);
-      // DC guard (seed 000 eq. 14), Nyquist row/column and the band limits (M.6.3).
+      // DC guard (Aebi, VR Ocean, eq. 14), Nyquist row/column and the band limits (M.6.3).
       const bool nyquist = row == 0 || col == 0;
       if ((col == half && row == half) || nyquist || k < p.k_min_radpm || k >= p.k_max_radpm) {
         out.h0[i] = 0.0;
@@ -94,12 +94,12 @@ Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const Initial
         amplitude = 0.5 * std::sqrt(sea.wave_vector_spectrum(kx, kz) * dk * dk);
       } else {
         amplitude =
-            std::sqrt(0.5 * vr_ocean_phillips_power(kx, kz, vr, p.grid));  // seed 000 eq. 13
+            std::sqrt(0.5 * vr_ocean_phillips_power(kx, kz, vr, p.grid));  // Aebi, VR Ocean, eq. 13
       }
       out.h0[i] = {xi_re * amplitude, xi_im * amplitude};
     }
   }
-  // Pack (a, b) = h0(k), (c, d) = h0*(−k) and pre-transform   (M.6.5, seed 000 eqs. 18–22).
+  // Pack (a, b) = h0(k), (c, d) = h0*(−k) and pre-transform   (M.6.5, Aebi, VR Ocean, eqs. 18–22).
   // −k of grid index (col, row) is ((N − col) mod N, (N − row) mod N).
   const unsigned mask = static_cast<unsigned>(n - 1);
   for (int row = 0; row < n; ++row) {

@@ -4,7 +4,7 @@
 //   - Hasselmann, K. et al. (1973) Measurements of wind-wave growth and swell decay during the
 //     Joint North Sea Wave Project (JONSWAP). Dtsch. Hydrogr. Z. A8(12): α = 0.076·x̃^−0.22,
 //     fp = 3.5·(g/U10)·x̃^−0.33 with x̃ = gF/U10², γ = 3.3, σa = 0.07, σb = 0.09.
-//   - Seed 001 eq. (1.9): ωp = 22·(g²/(U10·F))^(1/3) (selectable as FetchLaw::cube_root).
+//   - Vincevičius 2024, eq. 1.9: ωp = 22·(g²/(U10·F))^(1/3) (selectable as FetchLaw::cube_root).
 //   - DNV-RP-C205 (2010) §3.5.5: Hs/Tp form with A_γ = 1 − 0.287·ln γ and the rule
 //     γ = 5 (Tp/√Hs ≤ 3.6), exp(5.75 − 1.15·Tp/√Hs) (3.6 < Tp/√Hs < 5), 1 (Tp/√Hs ≥ 5).
 // Equations: docs/math.md (M.3.4)–(M.3.8).

@@ -1,4 +1,4 @@
-// Phillips spectrum: Tessendorf's wave-vector form, and the VR-Ocean variant of seed 000 with
+// Phillips spectrum: Tessendorf's wave-vector form, and the variant of Aebi, VR Ocean, with
 // its grid normalisation, alignment-dependent spreading and counter-wave suppression.
 //
 // This work is based on:
@@ -6,7 +6,7 @@
 //     J. Fluid Mech. 4(4).
 //   - Tessendorf, J. (2001) Simulating Ocean Water, SIGGRAPH course notes, eqs. 40–42:
 //     P(k) = A·exp(−1/(kL)²)/k⁴·|k̂·ŵ|², L = V²/g, and the small-wave factor exp(−k²l²).
-//   - Seed 000 (Aebi, VR Ocean) §3.2, eqs. 3–11: A = N^(−1/2)·(e/L_patch)², s(α) = 1 + 5α²,
+//   - Aebi, VR Ocean, §3.2, eqs. 3–11: A = N^(−1/2)·(e/L_patch)², s(α) = 1 + 5α²,
 //     σ(α) = 0.01 + 0.49(1 − α)², l_cutoff(β) = 0.001·(0.25·L_patch/0.001)^β.
 // Equations: docs/math.md (M.3.11)–(M.3.14), (M.6.6).
 #include <cmath>
@@ -31,14 +31,14 @@ double phillips_default_amplitude() {
 }
 
 double vr_ocean_cutoff_length(double beta, double patch_size_m) {
-  constexpr double l_min = 0.001;                              // seed 000 §3.2.4
-  return l_min * std::pow(patch_size_m * 0.25 / l_min, beta);  // seed 000 eq. 11
+  constexpr double l_min = 0.001;                              // Aebi, VR Ocean, §3.2.4
+  return l_min * std::pow(patch_size_m * 0.25 / l_min, beta);  // Aebi, VR Ocean, eq. 11
 }
 
 double vr_ocean_phillips_power(double kx, double kz, const VrOceanPhillipsParams& p,
                                const SpectrumGrid& grid) {
   const double k2 = kx * kx + kz * kz;
-  if (!(k2 > 0.0)) return 0.0;  // DC guard, seed 000 eq. 14
+  if (!(k2 > 0.0)) return 0.0;  // DC guard, Aebi, VR Ocean, eq. 14
   const double k = std::sqrt(k2);
   const double n = static_cast<double>(grid.resolution);
   const double a_fft = std::pow(n, -0.25);                         // eq. 5

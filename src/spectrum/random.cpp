@@ -2,7 +2,7 @@
 //
 // This work is based on:
 //   - Box, G. E. P. & Muller, M. E. (1958) A note on the generation of random normal deviates.
-//     Ann. Math. Statist. 29(2); seed 000 eq. 12.
+//     Ann. Math. Statist. 29(2); Aebi, VR Ocean, eq. 12.
 //   - Steele, G. L., Lea, D. & Flood, C. H. (2014) Fast splittable pseudorandom number
 //     generators (SplitMix64 and its finaliser). OOPSLA '14.
 // Equations: docs/math.md (M.6.1).
@@ -30,7 +30,7 @@ std::array<double, 2> gaussian_pair(std::uint64_t seed, std::uint64_t index) {
   const double u2 = static_cast<double>(hash(seed, 2 * index + 1) >> 11) / kTwoPow53;
   const double r = std::sqrt(-2.0 * std::log(u1));
   const double angle = 2.0 * kPi * u2;
-  return {r * std::sin(angle), r * std::cos(angle)};  // seed 000 eq. 12
+  return {r * std::sin(angle), r * std::cos(angle)};  // Aebi, VR Ocean, eq. 12
 }
 
 }  // namespace ocean

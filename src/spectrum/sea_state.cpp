@@ -3,8 +3,9 @@
 //
 // This work is based on:
 //   - Horvath, C. J. (2015) Empirical directional wave spectra for computer graphics. DigiPro '15,
-//     §4: F(k, θ) = S(ω(k))·D(ω, θ)·(dω/dk)/k; seed 001 eq. 1.15 (there with Horvath's factor 2
-//     and the grid cell area folded in; here those live in the amplitude convention, M.6.2).
+//     §4: F(k, θ) = S(ω(k))·D(ω, θ)·(dω/dk)/k; Vincevičius 2024, eq. 1.15 (there with Horvath's
+//     factor 2 and the grid cell area folded in; here those live in the amplitude convention,
+//     M.6.2).
 //   - Holthuijsen, L. H. (2007) Waves in Oceanic and Coastal Waters, §3.5 (Jacobian of the
 //     transformation, dkx·dkz = k·dk·dθ).
 // Equations: docs/math.md §5.

@@ -13,8 +13,8 @@
 //   - Donelan, M. A., Hamilton, J. & Hui, W. H. (1985) Directional spectra of wind-generated
 //     waves. Phil. Trans. R. Soc. A 315; Banner, M. L. (1990) Equilibrium spectra of wind waves.
 //     J. Phys. Oceanogr. 20 (β_s = 10^ε, ε = −0.4 + 0.8393·exp(−0.567·ln((ω/ωp)²)) above 1.6·ωp);
-//     seed 001 eq. 1.13 (which uses the first branch for all ω/ωp < 0.95).
-//   - Seed 000 §3.2.2–3.2.3: power-cosine |cos θ|^s(α), s(α) = 1 + 5α², counter-wave energy
+//     Vincevičius 2024, eq. 1.13 (which uses the first branch for all ω/ωp < 0.95).
+//   - Aebi, VR Ocean, §3.2.2–3.2.3: power-cosine |cos θ|^s(α), s(α) = 1 + 5α², counter-wave energy
 //     σ(α) = 0.01 + 0.49(1 − α)².
 // Equations: docs/math.md §4.
 #include <cmath>

@@ -9,8 +9,8 @@
 //   - Hughes, S. A. (1984) The TMA shallow-water spectrum description and applications. CERC
 //     Technical Report 84-7.
 //   - Thompson, E. F. & Vincent, C. L. (1983) Prediction of wave height in shallow water.
-//     Coastal Structures '83 — the piecewise approximation (seed 001 eq. 1.11), held at 1 for
-//     ω_h ≥ 2 where the printed quadratic would fall again.
+//     Coastal Structures '83 — the piecewise approximation (Vincevičius 2024, eq. 1.11), held at 1
+//     for ω_h ≥ 2 where the printed quadratic would fall again.
 // Equations: docs/math.md (M.3.9), (M.3.10).
 #include <cmath>
 

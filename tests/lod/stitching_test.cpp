@@ -71,7 +71,7 @@ TEST(LodStitching, EveryConfigurationIsAValidWatertightPatch) {
       }
     }
   }
-  // Seed eq. 66: one cell (V = 2): 8 triangles full, 7 with one side, 4 with all four.
+  // Aebi, VR Ocean, eq. 66: one cell (V = 2): 8 triangles full, 7 with one side, 4 with all four.
   EXPECT_EQ(build_patch_indices(2, 0).size(), 24u);
   EXPECT_EQ(build_patch_indices(2, kEast).size(), 21u);
   EXPECT_EQ(build_patch_indices(2, 15).size(), 12u);

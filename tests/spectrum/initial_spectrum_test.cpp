@@ -98,8 +98,8 @@ TEST(InitialSpectrum, VarianceConventionGivesM0) {
   EXPECT_LT(ocean_test::relative_error(realised, grid_variance), 0.06);
 }
 
-// Seed 000 eqs. 18–24: the packed S' evolves as h0(k)·e^{−iωt} + h0*(−k)·e^{+iωt} (energy at k
-// travels along +k), and h̃(−k, t) = h̃*(k, t) so the height field is real.
+// Aebi, VR Ocean, eqs. 18–24: the packed S' evolves as h0(k)·e^{−iωt} + h0*(−k)·e^{+iωt} (energy at
+// k travels along +k), and h̃(−k, t) = h̃*(k, t) so the height field is real.
 TEST(InitialSpectrum, PackedEvolutionMatchesDirectFormulaAndIsHermitian) {
   const SeaState sea = jonswap_sea();
   const int n = 32;
@@ -192,7 +192,7 @@ TEST(InitialSpectrum, VrOceanConventionUsesSeedAmplitude) {
       ocean::vr_ocean_phillips_power(dk * 5, dk * 4, {.wind_speed_mps = 10.0, .alpha = 0.8}, grid);
   EXPECT_NEAR(h.h0[i].real(), xr * std::sqrt(power / 2.0), 1e-12);
   EXPECT_NEAR(h.h0[i].imag(), xi * std::sqrt(power / 2.0), 1e-12);
-  // Only defined for the seed's Phillips + power-cosine.
+  // Only defined for Aebi's Phillips + power-cosine.
   EXPECT_FALSE(
       ocean::make_initial_spectrum(
           jonswap_sea(), {.grid = grid, .convention = ocean::AmplitudeConvention::vr_ocean})

@@ -120,9 +120,9 @@ TEST(Jonswap, NormalisationPreservesHs) {
   }
 }
 
-// Hasselmann et al. (1973): α = 0.076·x̃^−0.22, fp = 3.5·(g/U)·x̃^−0.33, x̃ = gF/U². Seed 001
-// prints ωp = 22·(g²/(U·F))^⅓, i.e. 22/(2π·3.5)·x̃^(0.33−⅓) times Hasselmann's: a few percent
-// lower at the fetches of interest.
+// Hasselmann et al. (1973): α = 0.076·x̃^−0.22, fp = 3.5·(g/U)·x̃^−0.33, x̃ = gF/U². Vincevičius
+// (2024, eq. 1.9) prints ωp = 22·(g²/(U·F))^⅓, i.e. 22/(2π·3.5)·x̃^(0.33−⅓) times Hasselmann's: a
+// few percent lower at the fetches of interest.
 TEST(Jonswap, FetchLaws) {
   const double g = 9.81;
   const double u = 10.0;

@@ -1,5 +1,5 @@
 // Phillips: closed-form moments of the wave-vector form, the default amplitude, and the
-// VR-Ocean variant's published constants (seed 000 §3.2).
+// VR-Ocean variant's published constants (Aebi, VR Ocean, §3.2).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -50,7 +50,7 @@ TEST(Phillips, DefaultAmplitudeMatchesPiersonMoskowitzHs) {
   EXPECT_GT(s(s.peak_omega()), s(s.peak_omega() * 0.99));
 }
 
-// Seed 000 eqs. 6–8 and 11: s(1) = 6 (|cos 60°|^6 = 1/64), σ(1) = 1 %, σ(0) = 50 %,
+// Aebi, VR Ocean, eqs. 6–8 and 11: s(1) = 6 (|cos 60°|^6 = 1/64), σ(1) = 1 %, σ(0) = 50 %,
 // l_cutoff(0) = l_min = 0.001 m, l_cutoff(1) = L_patch/4.
 TEST(Phillips, VrOceanConstants) {
   const ocean::SpectrumGrid grid{.resolution = 256, .patch_size_m = 200.0};

@@ -36,7 +36,7 @@ SeaStateParams wind_sea(ocean::FrequencySpectrumParams spectrum, ocean::Spreadin
   return p;
 }
 
-// Seed 001 eq. 1.15 / Horvath (2015): F(k) = S(ω)·D·(dω/dk)/k keeps ∫∫F dk = ∫S dω.
+// Vincevičius 2024, eq. 1.15 / Horvath (2015): F(k) = S(ω)·D·(dω/dk)/k keeps ∫∫F dk = ∫S dω.
 TEST(SeaState, OmegaToKConversionConservesVariance) {
   const SeaStateParams cases[] = {
       wind_sea({.model = SpectrumModel::jonswap, .wind_speed_mps = 10.0, .fetch_m = 1e5},

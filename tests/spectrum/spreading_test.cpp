@@ -94,7 +94,7 @@ TEST(Spreading, PowerCosineIntegral) {
   EXPECT_NEAR(ocean::cos2s_normalization(0.0), 1.0 / (2.0 * kPi), 1e-15);
 }
 
-// Seed 000: counter-wave energy σ(α) on |θ| > π/2 and s(α) = 1 + 5α².
+// Aebi, VR Ocean, eqs. 6–8: counter-wave energy σ(α) on |θ| > π/2 and s(α) = 1 + 5α².
 TEST(Spreading, PowerCosineSeedRules) {
   const Spreading d = make({.model = SpreadingModel::power_cosine, .alpha = 1.0});
   EXPECT_EQ(d.spread_parameter(1.0), 6.0);
