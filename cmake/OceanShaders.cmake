@@ -1,11 +1,12 @@
 # ocean_embed_shaders(OUT_VAR SHADERS file... DEPENDS include...)
-# Compiles each GLSL file of shaders/ with glslc (stage from the extension) and embeds the SPIR-V
+# Compiles each GLSL file of the calling module's shaders/ folder (the shaders live beside their
+# owner: src/backends/vulkan/shaders, src/render/shaders) with glslc (stage from the extension) and embeds the SPIR-V
 # as a word array (cmake/EmbedSpirv.cmake). The symbol is ocean_spv_<stem> for compute shaders
 # and ocean_spv_<stem>_<ext> for graphics stages (ocean.vert → ocean_spv_ocean_vert). OUT_VAR
 # receives the generated .cpp files.
 function(ocean_embed_shaders out_var)
   cmake_parse_arguments(ARG "" "" "SHADERS;DEPENDS" ${ARGN})
-  set(shader_dir ${PROJECT_SOURCE_DIR}/shaders)
+  set(shader_dir ${CMAKE_CURRENT_SOURCE_DIR}/shaders)
   set(generated)
   foreach(file ${ARG_SHADERS})
     get_filename_component(stem ${file} NAME_WE)

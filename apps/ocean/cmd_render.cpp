@@ -21,10 +21,11 @@
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
+#include "ocean/scene.hpp"
 #include "plot/plot_internal.hpp"
 #include "preset.hpp"
 #include "progress.hpp"
-#include "scene.hpp"
+#include "render_output.hpp"
 #include "view_flags.hpp"
 
 namespace ocean::cli {
@@ -44,7 +45,7 @@ struct RenderOptions {
 enum class OutputKind { png, exr, mp4 };
 
 struct Inputs {
-  SceneParams scene;
+  render::SceneParams scene;
   render::View view;
   OutputKind kind = OutputKind::png;
   double time_s = 0.0, fps = 30.0, warmup_s = 0.0;
@@ -235,9 +236,9 @@ int run_contact_sheet(const RenderOptions& o) {
   const plot::Rgb ink{30, 30, 30};
   plot::detail::draw_text(canvas, kMargin, 12, "ocean render: calm, moderate, storm", 2.0, ink,
                           plot::detail::TextDir::horizontal, true);
-  Result<std::unique_ptr<Scene>> made = Scene::make(first.value().scene);
+  Result<std::unique_ptr<render::Scene>> made = render::Scene::make(first.value().scene);
   if (!made.ok()) return report(made.status());
-  Scene& scene = *made.value();
+  render::Scene& scene = *made.value();
   Progress progress("contact sheet", rows * cols);
   std::vector<std::uint8_t> rgba;
   for (int r = 0; r < rows; ++r) {
@@ -291,9 +292,9 @@ int run_render(const RenderOptions& o) {
     return report(unsupported("--out " + o.out +
                               ": MP4 needs the ffmpeg program (apt-get install ffmpeg); "
                               "or write a PNG sequence"));
-  Result<std::unique_ptr<Scene>> made = Scene::make(in.scene);
+  Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
-  Scene& scene = *made.value();
+  render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
   const int w = in.scene.width, h = in.scene.height;
 

@@ -21,8 +21,9 @@
 #include "commands.hpp"
 #include "io/atomic_file.hpp"
 #include "io/png_image.hpp"
+#include "ocean/scene.hpp"
 #include "preset.hpp"
-#include "scene.hpp"
+#include "render_output.hpp"
 #include "view/frame_times.hpp"
 #include "view/free_camera.hpp"
 #include "view/imgui_layer.hpp"
@@ -50,7 +51,7 @@ struct ViewOptions {
 };
 
 struct Inputs {
-  SceneParams scene;
+  render::SceneParams scene;
   render::View view;
   int quality = 1;
   long long frames = 0;  // 0: until the window closes
@@ -147,9 +148,9 @@ int run_view(const ViewOptions& o) {
   window.value()->framebuffer_size(in.scene.width, in.scene.height);
   in.scene.width = std::max(in.scene.width, 1), in.scene.height = std::max(in.scene.height, 1);
   in.scene.instance_extensions = window.value()->instance_extensions();
-  Result<std::unique_ptr<Scene>> made = Scene::make(in.scene);
+  Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
-  Scene& scene = *made.value();
+  render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
   const vk::Context& ctx = *scene.context();
   if (in.view.debug == render::DebugView::wireframe && !ctx.wireframe)

@@ -34,7 +34,8 @@ Result<double> number_in(std::string_view flag, const std::string& text, double 
   return v.value();
 }
 
-Status parse_view_flags(const ViewFlags& f, int min_size, SceneParams& scene, render::View& v) {
+Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& scene,
+                        render::View& v) {
   if (f.backend != "cpu" && f.backend != "vulkan")
     return invalid_argument("--backend = " + f.backend + " cannot render: must be cpu or vulkan");
   scene.backend = f.backend;

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ocean/render.hpp"
-#include "scene.hpp"
+#include "ocean/scene.hpp"
 
 namespace ocean::cli {
 
@@ -25,7 +25,7 @@ Result<double> number_in(std::string_view flag, const std::string& text, double 
 
 /// Size, backend and validation into `scene`; camera, quality, ocean size and debug view into
 /// `view` (its shading is left alone). `min_size` is the smallest width/height accepted.
-Status parse_view_flags(const ViewFlags& flags, int min_size, SceneParams& scene,
+Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,
                         render::View& view);
 
 }  // namespace ocean::cli

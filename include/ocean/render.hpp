@@ -23,7 +23,7 @@
 #include "ocean/lod.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
-#include "ocean/vk/simulation.hpp"
+#include "ocean/vk/images.hpp"
 
 namespace ocean::render {
 
@@ -133,7 +133,7 @@ class Renderer {
   [[nodiscard]] const RenderStats& stats() const { return stats_; }
   [[nodiscard]] const vk::Context& context() const { return *context_; }
 
-  struct State;  // Vulkan objects (src/render/renderer.cpp)
+  struct State;  // Vulkan objects (src/render/state.hpp)
 
  private:
   Renderer() = default;

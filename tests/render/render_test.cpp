@@ -16,42 +16,18 @@
 
 #include "ocean/backends.hpp"
 #include "ocean/vk/simulation.hpp"
+#include "render/render_helpers.hpp"
 
 namespace {
 
 using ocean::render::DebugView;
 using ocean::render::Renderer;
 using ocean::render::View;
+using ocean::render::testing::eye_level_view;
+using ocean::render::testing::graphics_context;
+using ocean::render::testing::small_config;
 
 constexpr double kPi = std::numbers::pi;
-
-std::shared_ptr<ocean::vk::Context> graphics_context() {
-  auto ctx = ocean::vk::create_context({.validation = true, .graphics = true});
-  if (!ctx.ok()) return nullptr;
-  return std::shared_ptr<ocean::vk::Context>(std::move(ctx).value());
-}
-
-ocean::SimulationConfig small_config() {
-  ocean::SimulationConfig c;
-  c.resolution = 64;
-  c.cascade_patch_sizes_m = {200.0, 47.0};
-  c.sea.wind_sea.spectrum.wind_speed_mps = 12.0;
-  c.sea.wind_sea.spectrum.fetch_m = 100e3;
-  return c;
-}
-
-View eye_level_view(int width, int height) {
-  View v;
-  v.camera = {.position_m = {0.0, 5.0, 0.0},
-              .target_m = {-100.0, 5.0, -70.0},  // level, away from the sun (azimuth 35°)
-              .fov_y_rad = 50.0 * kPi / 180.0,
-              .aspect = static_cast<double>(width) / height,
-              .near_m = 0.2,
-              .far_m = 2e5};
-  v.quality = ocean::lod::quality_preset(ocean::lod::QualityPreset::low);
-  v.ocean_size_m = 2048.0;
-  return v;
-}
 
 struct Rig {
   std::shared_ptr<ocean::vk::Context> ctx;
@@ -327,17 +303,11 @@ TEST(Renderer, VulkanBackendImagesGiveTheCpuPicture) {
   ASSERT_TRUE(cpu->renderer->read_srgb(sa).ok());
   ASSERT_TRUE(gpu->renderer->read_srgb(sb).ok());
   ASSERT_EQ(sa.size(), sb.size());
-  int max_diff = 0;
-  double sum = 0.0;
-  for (std::size_t i = 0; i < sa.size(); ++i) {
-    const int d = std::abs(int(sa[i]) - int(sb[i]));
-    max_diff = std::max(max_diff, d);
-    sum += d;
-  }
+  const ocean::render::testing::PictureDifference d = ocean::render::testing::difference(sa, sb);
   // Same maps within the conformance bounds (RGBA8 within 1 LSB, displacement 1e-4·Hs): the
   // pictures agree to within rounding.
-  EXPECT_LE(sum / static_cast<double>(sa.size()), 0.05);
-  EXPECT_LE(max_diff, 6);
+  EXPECT_LE(d.mean, 0.05);
+  EXPECT_LE(d.max, 6);
 }
 
 TEST(Renderer, DebugViewsAndResizing) {

@@ -17,6 +17,7 @@
 
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
+#include "ocean/vk/images.hpp"
 
 namespace ocean::vk {
 
@@ -32,16 +33,6 @@ struct StageTimings {
   double mips_ms = 0.0;             ///< mip chain of the packed map, every level
   double readback_ms = 0.0;         ///< copies of every output into host-visible memory
   double total_ms = 0.0;            ///< first to last timestamp
-};
-
-/// The simulation's GPU images, valid until the next configure() or destruction. Both stay in
-/// VK_IMAGE_LAYOUT_GENERAL; a frame's writes are complete when step() or read() returns.
-struct SimulationImages {
-  VkImage displacement = VK_NULL_HANDLE;  ///< RGBA16F (Dx, h, Dz, 0), one array layer per cascade
-  VkImageView displacement_view = VK_NULL_HANDLE;
-  VkImage normal_foam = VK_NULL_HANDLE;  ///< RGBA8 unorm (n_x, n_z, blue, smoothness), all mips
-  VkImageView normal_foam_view = VK_NULL_HANDLE;
-  std::uint32_t size = 0, layers = 0, mips = 0;
 };
 
 class VulkanBackend final : public Backend {

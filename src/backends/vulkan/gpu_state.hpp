@@ -8,7 +8,7 @@
 
 #include "ocean/vk.hpp"
 #include "ocean/vk/simulation.hpp"
-#include "ocean_shared.h"
+#include "shaders/ocean_shared.h"
 
 namespace ocean::vk::detail {
 

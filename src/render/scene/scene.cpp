@@ -1,25 +1,40 @@
-// A simulation and a renderer on one Vulkan context (see scene.hpp).
-#include "scene.hpp"
+// A simulation and a renderer on one Vulkan context (ocean/scene.hpp): the CPU backend's frames
+// uploaded, the Vulkan backend's images sampled with no copy.
+#include "ocean/scene.hpp"
 
 #include <cmath>
 
-#include "io/png_image.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/vk/simulation.hpp"
 
-namespace ocean::cli {
+namespace ocean::render {
+
+namespace {
+
+Status check_backend(const std::string& name) {
+  if (name == "cpu" || name == "vulkan") return {};
+  return invalid_argument("scene: backend = " + name + " cannot render: must be cpu or vulkan");
+}
+
+}  // namespace
 
 Result<std::unique_ptr<Scene>> Scene::make(const SceneParams& p) {
-  if (p.backend != "cpu" && p.backend != "vulkan")
-    return invalid_argument("--backend = " + p.backend + " cannot render: must be cpu or vulkan");
-  auto scene = std::unique_ptr<Scene>(new Scene());
-  vk::ContextParams cp{.validation = p.validation,
-                       .graphics = true,
-                       .instance_extensions = p.instance_extensions,
-                       .swapchain = p.swapchain};
+  if (Status s = check_backend(p.backend); !s.ok()) return s;
+  const vk::ContextParams cp{.validation = p.validation,
+                             .graphics = true,
+                             .instance_extensions = p.instance_extensions,
+                             .swapchain = p.swapchain};
   Result<std::unique_ptr<vk::Context>> ctx = vk::create_context(cp);
   if (!ctx.ok()) return ctx.status();
-  scene->context_ = std::shared_ptr<vk::Context>(std::move(ctx).value());
+  return make(std::shared_ptr<vk::Context>(std::move(ctx).value()), p);
+}
+
+Result<std::unique_ptr<Scene>> Scene::make(std::shared_ptr<vk::Context> context,
+                                           const SceneParams& p) {
+  if (Status s = check_backend(p.backend); !s.ok()) return s;
+  if (context == nullptr) return invalid_argument("scene: no Vulkan context");
+  auto scene = std::unique_ptr<Scene>(new Scene());
+  scene->context_ = std::move(context);
   std::unique_ptr<Backend> backend;
   if (p.backend == "vulkan") {
     auto gpu = std::make_unique<vk::VulkanBackend>(scene->context_);
@@ -33,13 +48,15 @@ Result<std::unique_ptr<Scene>> Scene::make(const SceneParams& p) {
   Result<std::unique_ptr<Simulator>> sim = Simulator::make(p.config, std::move(backend));
   if (!sim.ok()) return sim.status();
   scene->simulator_ = std::move(sim).value();
-  Result<std::unique_ptr<render::Renderer>> renderer =
-      render::Renderer::make(scene->context_, {.width = p.width, .height = p.height});
+  Result<std::unique_ptr<Renderer>> renderer =
+      Renderer::make(scene->context_, {.width = p.width, .height = p.height});
   if (!renderer.ok()) return renderer.status();
   scene->renderer_ = std::move(renderer).value();
   if (Status s = scene->renderer_->configure(p.config); !s.ok()) return s;
   return scene;
 }
+
+Scene::~Scene() = default;
 
 Status Scene::step(double time_s) {
   simulator_->step(time_s);
@@ -62,20 +79,4 @@ Status Scene::reconfigure(const SimulationConfig& config) {
   return renderer_->configure(config);
 }
 
-Status write_srgb_png(const std::filesystem::path& path, int width, int height,
-                      const std::vector<std::uint8_t>& rgba) {
-  const std::size_t n = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
-  std::vector<std::uint8_t> rgb(n * 3);
-  for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t c = 0; c < 3; ++c) rgb[3 * i + c] = rgba[4 * i + c];
-  return io::write_png8(path, width, height, 3, rgb.data());
-}
-
-Status validation_status(const vk::Context& context) {
-  const std::uint32_t messages = context.validation_messages.load();
-  if (!context.validation || messages == 0) return {};
-  return {ErrorCode::internal, "Vulkan validation reported " + std::to_string(messages) +
-                                   " messages; last: " + context.last_validation_message};
-}
-
-}  // namespace ocean::cli
+}  // namespace ocean::render

@@ -10,7 +10,7 @@
 
 layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)
 layout(location = 1) in vec3 a_instance;  // centre x, centre z, size (skirt: 0, 0, 1)
-layout(location = 2) in uvec4 a_meta;     // grid x, grid y, level (255: skirt), configuration
+layout(location = 2) in uvec4 a_meta;     // grid x, grid y, level (skirt: OCEAN_RENDER_SKIRT_LEVEL), configuration
 
 layout(location = 0) out vec2 world_xz;     // undisplaced position: where the maps are read
 layout(location = 1) out vec3 world_pos;    // displaced position
@@ -19,26 +19,26 @@ layout(location = 2) flat out uint level;
 float geometry_weight(int c, float spacing_m) {
   // Full while the vertex spacing is below a quarter of the cascade's dominant wavelength, none
   // at half of it (the mesh's Nyquist limit) (R.9).
-  return clamp(2.0 - 4.0 * spacing_m / u.cascades[c].z, 0.0, 1.0);
+  return clamp(2.0 - 4.0 * spacing_m / u.cascades[c].wavelength_m, 0.0, 1.0);
 }
 
 void main() {
   vec2 xz = a_instance.xy + a_position * a_instance.z;
-  vec2 rel = xz - u.grid.xy;
-  float half_size = 0.5 * u.grid.z;
+  vec2 rel = xz - u.grid_centre_m;
+  float half_size = 0.5 * u.ocean_size_m;
   float border = max(abs(rel.x), abs(rel.y));
-  float border_weight = clamp((half_size - border) / u.grid.w, 0.0, 1.0);  // R.10
+  float border_weight = clamp((half_size - border) / u.border_fade_m, 0.0, 1.0);  // R.10
   // The spacing a patch at this distance has at most: a node splits while the camera is closer
   // than τ·s (eq. 57), so a leaf at distance d has s ≤ d/τ·2 and spacing s/V.
-  float d = length(vec3(xz.x, 0.0, xz.y) - u.camera_pos.xyz);
-  float spacing = max(2.0 * d / (u.lod.x * u.lod.y), 1e-3);
+  float d = length(vec3(xz.x, 0.0, xz.y) - u.camera_pos_m);
+  float spacing = max(2.0 * d / (u.lod_scale * u.vertices), 1e-3);
   vec3 displacement = vec3(0.0);
-  int cascades = int(u.lod.w);
+  int cascades = int(u.cascade_count);
   if (border_weight > 0.0) {
     for (int c = 0; c < cascades; ++c) {
       float w = geometry_weight(c, spacing);
       if (w <= 0.0) continue;
-      vec2 uv = xz / u.cascades[c].x + 0.5 / u.cascades[c].y;
+      vec2 uv = xz / u.cascades[c].patch_size_m + 0.5 / u.cascades[c].resolution;
       displacement += w * textureLod(displacement_map, vec3(uv, float(c)), 0.0).xyz;
     }
     displacement *= border_weight;

@@ -5,22 +5,24 @@
 
 layout(location = 0) in vec2 ndc;
 layout(location = 0) out vec4 colour;
-layout(push_constant) uniform Push { mat4 inverse_view_proj; } push;
+layout(push_constant) uniform Push {
+  SkyPush push;
+};
 
 void main() {
   // Vulkan's framebuffer y runs down; the projection is unflipped and the viewport negative,
   // so ndc.y here already points up.
   vec4 far_point = push.inverse_view_proj * vec4(ndc, 1.0, 1.0);
-  vec3 v = normalize(far_point.xyz / far_point.w - u.camera_pos.xyz);
+  vec3 v = normalize(far_point.xyz / far_point.w - u.camera_pos_m);
   vec3 c = sky_radiance(v);
   // Sun disc, angular radius 0.27°, limb-darkened edge over a pixel or so.
-  float cos_sun = dot(v, u.sun_dir.xyz);
+  float cos_sun = dot(v, u.sun_dir);
   float radius = radians(0.27);
   float solid_angle = PI * radius * radius;
   float edge = smoothstep(cos(radius * 1.3), cos(radius), cos_sun);
   // The disc's true radiance (E/Ω) would saturate any exposure; 2 % of it keeps a visible
   // limb in the EXR output.
-  if (v.y > 0.0) c += edge * u.sun_ground.rgb / solid_angle * 0.02;
+  if (v.y > 0.0) c += edge * u.sun_ground / solid_angle * 0.02;
   // No fog on the sky itself: at the horizon it already is the fog's colour (R.8).
   colour = vec4(c, 1.0);
 }

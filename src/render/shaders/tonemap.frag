@@ -1,8 +1,12 @@
 #version 450
 // Exposure and the ACES filmic curve of Narkowicz (2015) "ACES filmic tone mapping curve" on the
 // linear HDR image (R.12); the sRGB transfer happens in the *_SRGB target's store.
-layout(set = 0, binding = 0) uniform sampler2D hdr;
-layout(push_constant) uniform Push { float exposure; } push;
+#include "render_shared.h"
+
+layout(set = 0, binding = OCEAN_RENDER_BINDING_HDR) uniform sampler2D hdr;
+layout(push_constant) uniform Push {
+  TonemapPush push;
+};
 layout(location = 0) in vec2 ndc;
 layout(location = 0) out vec4 colour;
 

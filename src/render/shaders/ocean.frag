@@ -27,8 +27,8 @@ float alpha_squared(float smoothness) {
 }
 
 void main() {
-  int cascades = int(u.lod.w);
-  float alpha0_sq = u.params.y * u.params.y;
+  int cascades = int(u.cascade_count);
+  float alpha0_sq = u.roughness * u.roughness;
   vec2 slope = vec2(0.0);  // Σ of the cascades' surface gradients, as normal x/y and z/y
   float variance = alpha0_sq;
   float no_foam = 1.0;
@@ -37,15 +37,15 @@ void main() {
   vec2 dx = dFdx(world_xz), dy = dFdy(world_xz);
   float footprint = max(length(dx), length(dy));
   for (int c = 0; c < cascades; ++c) {
-    vec2 uv = world_xz / u.cascades[c].x + 0.5 / u.cascades[c].y;
+    vec2 uv = world_xz / u.cascades[c].patch_size_m + 0.5 / u.cascades[c].resolution;
     vec4 t = texture(normal_map, vec3(uv, float(c)));
     vec2 n = t.xy * 2.0 - 1.0;
     float ny = sqrt(max(1.0 - dot(n, n), 0.05));
-    float w = clamp(2.0 - 16.0 * footprint / u.cascades[c].z, 0.0, 1.0);
+    float w = clamp(2.0 - 16.0 * footprint / u.cascades[c].wavelength_m, 0.0, 1.0);
     slope += w * n / ny;
     float extra = max(alpha_squared(t.w) - alpha0_sq, 0.0);
     if (w < 1.0) {  // the cascade's whole slope variance, from its 1×1 mip
-      vec4 coarsest = textureLod(normal_map, vec3(0.5, 0.5, float(c)), u.cascades[c].w);
+      vec4 coarsest = textureLod(normal_map, vec3(0.5, 0.5, float(c)), u.cascades[c].coarsest_mip);
       extra = mix(max(alpha_squared(coarsest.w) - alpha0_sq, 0.0), extra, w);
     }
     variance += extra;
@@ -57,10 +57,10 @@ void main() {
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);
   float foam = 1.0 - no_foam;
 
-  vec3 to_camera = u.camera_pos.xyz - world_pos;
+  vec3 to_camera = u.camera_pos_m - world_pos;
   float distance_m = length(to_camera);
   vec3 V = to_camera / distance_m;
-  vec3 L = u.sun_dir.xyz;
+  vec3 L = u.sun_dir;
   // Normals that face away from the viewer (grazing views of steep waves) are bent back.
   float n_dot_v = dot(N, V);
   if (n_dot_v < 1e-3) {
@@ -74,7 +74,7 @@ void main() {
   float fresnel = fresnel_schlick(n_dot_v);
 
   // Sun specular: GGX with height-correlated Smith masking (R.7), radiance reflected = BRDF·E·cos.
-  vec3 sun_e = u.sun_ground.rgb;
+  vec3 sun_e = u.sun_ground;
   vec3 H = normalize(V + L);
   float n_dot_l = max(dot(N, L), 0.0);
   float n_dot_h = max(dot(N, H), 0.0);
@@ -88,13 +88,13 @@ void main() {
 
   // Light scattered out of the water body (R.11): the water's albedo lit by the sun through the
   // surface and by the sky, plus forward scattering through crests lit from behind.
-  vec3 sky_e = u.sky_ambient.rgb;
+  vec3 sky_e = u.sky_ambient;
   float sun_in = max(L.y, 0.0) * (1.0 - fresnel_schlick(max(L.y, 0.0)));
-  vec3 body = u.water_colour.rgb * (sun_e * sun_in + sky_e) / PI;
-  float crest = clamp(world_pos.y / max(0.5 * u.sky.x, 0.05), 0.0, 2.0);  // height over Hs/2
+  vec3 body = u.water_colour * (sun_e * sun_in + sky_e) / PI;
+  float crest = clamp(world_pos.y / max(0.5 * u.hs_m, 0.05), 0.0, 2.0);  // height over Hs/2
   float g = 0.6, mu = dot(-L, V), hg_d = 1.0 + g * g - 2.0 * g * mu;
   float forward = (1.0 - g * g) / (4.0 * PI * hg_d * sqrt(hg_d));  // Henyey–Greenstein
-  vec3 through = u.water_colour.a * u.water_colour.rgb * sun_e * forward * crest *
+  vec3 through = u.crest_scatter * u.water_colour * sun_e * forward * crest *
                  pow(clamp(0.5 - 0.5 * dot(L, N), 0.0, 1.0), 2.0);
   vec3 s = body + through;
 
@@ -102,13 +102,13 @@ void main() {
   vec3 c = s * (1.0 - fresnel) + fresnel * (env + sun);
 
   // Foam: a bright diffuse layer over the water (R.11).
-  vec3 foam_colour = 0.85 * u.params.x * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
+  vec3 foam_colour = 0.85 * u.foam_brightness * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
 
   // Horizon fog (seed 004, R.8).
   c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
 
-  if (u.lod.z == 1.0) {  // LOD colours
+  if (u.debug_view == OCEAN_RENDER_DEBUG_LOD_COLOURS) {
     vec3 lc = level < 9u ? kLevelColours[level] : vec3(0.5);
     c = mix(c, lc * (0.4 + 0.6 * max(dot(N, L), 0.0)) * 0.5, 0.6);
   }

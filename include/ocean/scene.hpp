@@ -1,0 +1,74 @@
+// ocean/scene.hpp — a simulation and a renderer on one Vulkan context: the glue an engine or a
+// tool would otherwise write between ocean/sim.hpp and ocean/render.hpp. With the CPU backend
+// each simulated Frame is uploaded into the renderer's images; with the Vulkan backend the
+// simulation's GPU images (ocean/vk/images.hpp) are sampled where they are, with no copy. The
+// pictures of the two agree within the backends' conformance bounds (tests/render/scene_test.cpp).
+//
+// Contract: make() creates the context (or takes the caller's), the simulator and the renderer,
+// and configures both; step() and warm_up() simulate and hand the result over without allocating
+// (the CPU upload copies into a staging buffer made by configure). Every failure is a Status:
+// invalid_argument for a backend name other than cpu/vulkan or a bad configuration, unsupported
+// where the context has no graphics queue or no Vulkan device exists, device failures from the
+// Vulkan backend's status(). Threading: one thread drives a scene (it drives the renderer and the
+// simulator, which share the context's queue).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ocean/render.hpp"
+#include "ocean/sim.hpp"
+#include "ocean/vk.hpp"
+
+namespace ocean::vk {
+class VulkanBackend;
+}
+
+namespace ocean::render {
+
+struct SceneParams {
+  SimulationConfig config;      ///< what is simulated (and what the renderer is sized for)
+  std::string backend = "cpu";  ///< cpu (frames uploaded) or vulkan (images sampled, no copy)
+  int width = 1280;             ///< render target, pixels, [1, 16384]
+  int height = 720;             ///< render target, pixels, [1, 16384]
+  // The context the scene creates in make(params); ignored by make(context, params).
+  bool validation = false;  ///< Khronos validation layer on the context
+  /// Instance extensions and the swapchain extension, for a window (ocean view).
+  std::vector<const char*> instance_extensions;
+  bool swapchain = false;
+};
+
+class Scene {
+ public:
+  /// Creates a graphics context from `params` (ContextParams::graphics, validation, extensions),
+  /// then the simulator and the renderer on it.
+  static Result<std::unique_ptr<Scene>> make(const SceneParams& params);
+  /// Uses the caller's context (which must have a graphics queue, as for Renderer::make).
+  static Result<std::unique_ptr<Scene>> make(std::shared_ptr<vk::Context> context,
+                                             const SceneParams& params);
+  ~Scene();
+  Scene(const Scene&) = delete;
+  Scene& operator=(const Scene&) = delete;
+
+  /// Simulates time_s and hands the result to the renderer; the next draw shows it.
+  Status step(double time_s);
+  /// Steps from time_s − warmup_s to time_s at `rate_hz` (ceil(warmup_s·rate_hz) frames), then
+  /// step(time_s), so foam has accumulated as it would have in a running simulation.
+  Status warm_up(double time_s, double warmup_s, double rate_hz = 10.0);
+  /// New configuration for the simulation and the renderer (allocates).
+  Status reconfigure(const SimulationConfig& config);
+
+  [[nodiscard]] Renderer& renderer() { return *renderer_; }
+  [[nodiscard]] Simulator& simulator() { return *simulator_; }
+  [[nodiscard]] const std::shared_ptr<vk::Context>& context() const { return context_; }
+
+ private:
+  Scene() = default;
+  std::shared_ptr<vk::Context> context_;
+  std::unique_ptr<Simulator> simulator_;
+  vk::VulkanBackend* gpu_ = nullptr;  // owned by simulator_ when the backend is vulkan
+  std::unique_ptr<Renderer> renderer_;
+};
+
+}  // namespace ocean::render

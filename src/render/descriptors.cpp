@@ -1,0 +1,152 @@
+// The renderer's samplers and descriptors: one set for the scene (frame uniforms, displacement
+// array, normal/foam array with its mips, the sky-view table) and one for the tone map (the HDR
+// image). Binding numbers: shaders/render_shared.h.
+#include "state.hpp"
+
+namespace ocean::render {
+
+namespace {
+
+Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
+                               float anisotropy, bool repeat_v_too = true) {
+  const VkSamplerAddressMode mode =
+      repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  const VkSamplerAddressMode mode_v = repeat_v_too ? mode : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+  const VkFilter filter = linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
+  const VkSamplerCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+      .magFilter = filter,
+      .minFilter = filter,
+      .mipmapMode = mips ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST,
+      .addressModeU = mode,
+      .addressModeV = mode_v,
+      .addressModeW = mode,
+      .anisotropyEnable = anisotropy > 1.0f ? VK_TRUE : VK_FALSE,
+      .maxAnisotropy = anisotropy,
+      .minLod = 0.0f,
+      .maxLod = mips ? VK_LOD_CLAMP_NONE : 0.0f};
+  VkSampler s = VK_NULL_HANDLE;
+  if (Status st = vk::check(vkCreateSampler(ctx.device, &info, nullptr, &s), "vkCreateSampler");
+      !st.ok())
+    return st;
+  return s;
+}
+
+}  // namespace
+
+void write_scene_images(Renderer::State& st) {
+  const VkDescriptorBufferInfo ubo{st.uniforms.buffer, 0, sizeof(shader::FrameUniforms)};
+  const VkDescriptorImageInfo disp{st.displacement_sampler, st.displacement_view,
+                                   VK_IMAGE_LAYOUT_GENERAL};
+  const VkDescriptorImageInfo normal{st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL};
+  const VkDescriptorImageInfo lut{st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL};
+  VkWriteDescriptorSet writes[4] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_SKY_LUT,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &lut},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_FRAME,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                     .pBufferInfo = &ubo},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_DISPLACEMENT,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &disp},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_NORMAL,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &normal}};
+  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 4u : 2u;
+  vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
+}
+
+void write_tonemap_image(Renderer::State& st) {
+  const VkDescriptorImageInfo image{st.hdr_sampler, st.hdr.view,
+                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+  const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                   .dstSet = st.tonemap_set,
+                                   .dstBinding = OCEAN_RENDER_BINDING_HDR,
+                                   .descriptorCount = 1,
+                                   .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                   .pImageInfo = &image};
+  vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
+}
+
+Status create_descriptors(Renderer::State& st) {
+  const vk::Context& ctx = *st.ctx;
+  Result<VkSampler> s1 = make_sampler(ctx, true, false, true, 1.0f);
+  if (!s1.ok()) return s1.status();
+  st.displacement_sampler = s1.value();
+  Result<VkSampler> s2 = make_sampler(ctx, true, true, true, ctx.max_anisotropy);
+  if (!s2.ok()) return s2.status();
+  st.normal_sampler = s2.value();
+  Result<VkSampler> s3 = make_sampler(ctx, false, false, false, 1.0f);
+  if (!s3.ok()) return s3.status();
+  st.hdr_sampler = s3.value();
+  Result<VkSampler> s4 = make_sampler(ctx, true, false, true, 1.0f, false);
+  if (!s4.ok()) return s4.status();
+  st.lut_sampler = s4.value();
+
+  const VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  const VkDescriptorSetLayoutBinding scene_bindings[] = {
+      {OCEAN_RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
+      {OCEAN_RENDER_BINDING_DISPLACEMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both,
+       nullptr},
+      {OCEAN_RENDER_BINDING_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {OCEAN_RENDER_BINDING_SKY_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
+  const VkDescriptorSetLayoutCreateInfo scene_info{
+      .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+      .bindingCount = OCEAN_RENDER_SCENE_BINDINGS,
+      .pBindings = scene_bindings};
+  if (Status s =
+          vk::check(vkCreateDescriptorSetLayout(ctx.device, &scene_info, nullptr, &st.scene_layout),
+                    "vkCreateDescriptorSetLayout");
+      !s.ok())
+    return s;
+  const VkDescriptorSetLayoutBinding tonemap_binding{OCEAN_RENDER_BINDING_HDR,
+                                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                                                     VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
+  const VkDescriptorSetLayoutCreateInfo tonemap_info{
+      .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+      .bindingCount = 1,
+      .pBindings = &tonemap_binding};
+  if (Status s = vk::check(
+          vkCreateDescriptorSetLayout(ctx.device, &tonemap_info, nullptr, &st.tonemap_layout),
+          "vkCreateDescriptorSetLayout");
+      !s.ok())
+    return s;
+  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4}};
+  const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
+                                             .maxSets = 2,
+                                             .poolSizeCount = 2,
+                                             .pPoolSizes = sizes};
+  if (Status s = vk::check(vkCreateDescriptorPool(ctx.device, &pool_info, nullptr, &st.pool),
+                           "vkCreateDescriptorPool");
+      !s.ok())
+    return s;
+  const VkDescriptorSetLayout layouts[] = {st.scene_layout, st.tonemap_layout};
+  VkDescriptorSet sets[2];
+  const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
+                                          .descriptorPool = st.pool,
+                                          .descriptorSetCount = 2,
+                                          .pSetLayouts = layouts};
+  if (Status s =
+          vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, sets), "vkAllocateDescriptorSets");
+      !s.ok())
+    return s;
+  st.scene_set = sets[0], st.tonemap_set = sets[1];
+  return {};
+}
+
+}  // namespace ocean::render

@@ -1,0 +1,179 @@
+// The recorded frame (Renderer::record): LOD selection with culling boxes that include the
+// waves' reach, pending uploads, the HDR pass (sky, patches by stitching configuration, skirt),
+// the tone-map pass into the sRGB image, and the GPU timestamps around it all.
+#include <chrono>
+#include <cstring>
+
+#include "state.hpp"
+
+namespace ocean::render {
+
+Status Renderer::record(VkCommandBuffer cmd, const View& view) {
+  if (Status s = validate(view); !s.ok()) return s;
+  State& st = *state_;
+  if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
+    return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
+  if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
+  // LOD selection (seed 000 §5) with culling boxes that include the waves' reach.
+  const auto t0 = std::chrono::steady_clock::now();
+  lod::LodParams lp;
+  lp.ocean_size_m = view.ocean_size_m;
+  lp.quality = view.quality;
+  lp.camera_position_m = view.camera.position_m;
+  const lod::Mat4 vp = lod::view_projection(view.camera);  // culling and drawing share it
+  lp.frustum = lod::frustum_from_view_projection(vp);
+  lp.max_vertical_displacement_m = 1.2 * st.hs_m + 0.5;
+  lp.max_horizontal_displacement_m = st.choppiness * st.hs_m;
+  if (Status s = lod::select_patches(lp, st.selection); !s.ok()) return s;
+  const lod::LodSelection& sel = st.selection;
+  stats_.cpu_select_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  auto* inst = static_cast<lod::PatchInstance*>(st.instances.mapped);
+  std::memcpy(inst, sel.instances.data(), sel.instances.size() * sizeof(lod::PatchInstance));
+  const auto skirt_instance = static_cast<std::uint32_t>(sel.instances.size());
+  inst[skirt_instance] = {
+      .centre_x_m = 0.0f, .centre_z_m = 0.0f, .size_m = 1.0f, .level = kSkirtLevel};
+  if (Status s = write_skirt_vertices(st, view); !s.ok()) return s;
+  update_sky(st, view.shading);
+  shader::FrameUniforms u{};
+  fill_uniforms(st, view, vp, u);
+  std::memcpy(st.uniforms.mapped, &u, sizeof(u));
+  const std::array<double, 16> inv = inverse(vp.m);
+  shader::SkyPush sky_push{};
+  for (int i = 0; i < 16; ++i)
+    sky_push.inverse_view_proj.m[i] = static_cast<float>(inv[static_cast<std::size_t>(i)]);
+
+  if (st.has_timestamps) {
+    vkCmdResetQueryPool(cmd, st.timestamps.pool, 0, 2);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, st.timestamps.pool, 0);
+  }
+  if (st.lut_pending) {
+    vk::image_barrier(cmd, st.sky_lut.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                                   .imageExtent = {Sky::kLutWidth, Sky::kLutHeight, 1}};
+    vkCmdCopyBufferToImage(cmd, st.lut_staging.buffer, st.sky_lut.image, VK_IMAGE_LAYOUT_GENERAL, 1,
+                           &region);
+    vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+    st.lut_pending = false;
+  }
+  if (st.upload_pending) {
+    record_uploads(st, cmd);
+    st.upload_pending = false;
+  } else if (st.borrowed) {  // the backend's compute writes → our sampling
+    vk::barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+  }
+  // Host writes of this frame's uniforms and instances.
+  vk::barrier(cmd, VK_PIPELINE_STAGE_HOST_BIT,
+              VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
+                  VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+
+  const std::uint32_t w = st.hdr.width, h = st.hdr.height;
+  vk::image_barrier(
+      cmd, st.hdr.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  vk::image_barrier(
+      cmd, st.depth.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+      VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
+      VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+      VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
+      VK_IMAGE_ASPECT_DEPTH_BIT);
+  const VkRenderingAttachmentInfo colour{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                         .imageView = st.hdr.view,
+                                         .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                         .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 1.0f}}}};
+  const VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                        .imageView = st.depth.view,
+                                        .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
+                                        .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                        .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
+                                        .clearValue = {.depthStencil = {1.0f, 0}}};
+  const VkRenderingInfo scene{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                              .renderArea = {{0, 0}, {w, h}},
+                              .layerCount = 1,
+                              .colorAttachmentCount = 1,
+                              .pColorAttachments = &colour,
+                              .pDepthAttachment = &depth};
+  vkCmdBeginRendering(cmd, &scene);
+  // Clip y is up (lod::perspective); a negative-height viewport puts +y at the top.
+  const VkViewport flipped{
+      0.0f, static_cast<float>(h), static_cast<float>(w), -static_cast<float>(h), 0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {w, h}};
+  vkCmdSetViewport(cmd, 0, 1, &flipped);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.scene_pipeline_layout, 0, 1,
+                          &st.scene_set, 0, nullptr);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.sky);
+  vkCmdPushConstants(cmd, st.scene_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                     sizeof(sky_push), &sky_push);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  stats_ = {.cpu_select_ms = stats_.cpu_select_ms};
+  stats_.draw_calls = 1;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                    view.debug == DebugView::wireframe ? st.wire : st.ocean);
+  const VkDeviceSize zero = 0;
+  vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
+  vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
+  vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
+  for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (seed 000 eq. 70)
+    vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
+    ++stats_.draw_calls;
+    stats_.patches += b.count;
+    stats_.triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
+  }
+  vkCmdBindVertexBuffers(cmd, 0, 1, &st.skirt_vertices.buffer, &zero);
+  vkCmdDrawIndexed(cmd, st.skirt_count, 1, st.skirt_first, 0, skirt_instance);
+  ++stats_.draw_calls;
+  stats_.triangles += st.skirt_count / 3;
+  stats_.patches_per_level = sel.patches_per_level;
+  vkCmdEndRendering(cmd);
+
+  // Tone map HDR → sRGB.
+  vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                    VK_ACCESS_SHADER_READ_BIT);
+  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+  const VkRenderingAttachmentInfo out{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                      .imageView = st.srgb.view,
+                                      .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                      .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                                      .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+  const VkRenderingInfo tonemap{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                .renderArea = {{0, 0}, {w, h}},
+                                .layerCount = 1,
+                                .colorAttachmentCount = 1,
+                                .pColorAttachments = &out};
+  vkCmdBeginRendering(cmd, &tonemap);
+  const VkViewport straight{0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
+  vkCmdSetViewport(cmd, 0, 1, &straight);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap_pipeline_layout, 0, 1,
+                          &st.tonemap_set, 0, nullptr);
+  const shader::TonemapPush push{static_cast<float>(view.shading.exposure)};
+  vkCmdPushConstants(cmd, st.tonemap_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
+                     &push);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  ++stats_.draw_calls;
+  vkCmdEndRendering(cmd);
+  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_READ_BIT);
+  if (st.has_timestamps)
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, st.timestamps.pool, 1);
+  return {};
+}
+
+}  // namespace ocean::render

@@ -1,0 +1,66 @@
+// The renderer's parameter checks and names (ocean/render.hpp): shading values, debug views,
+// views.
+#include <cmath>
+#include <string>
+#include <utility>
+
+#include "ocean/render.hpp"
+
+namespace ocean::render {
+
+Status validate(const ShadingParams& p) {
+  const std::pair<std::string_view, std::array<double, 3>> checks[] = {
+      {"sun_azimuth_deg", {p.sun_azimuth_deg, -360.0, 360.0}},
+      {"sun_elevation_deg", {p.sun_elevation_deg, -89.9, 90.0}},
+      {"sun_irradiance", {p.sun_irradiance, 1e-6, 1e6}},
+      {"sky_brightness", {p.sky_brightness, 0.0, 1e3}},
+      {"aerosol", {p.aerosol, 0.0, 100.0}},
+      {"aerosol_g", {p.aerosol_g, 0.0, 0.99}},
+      {"water_colour[0]", {p.water_colour[0], 0.0, 1.0}},
+      {"water_colour[1]", {p.water_colour[1], 0.0, 1.0}},
+      {"water_colour[2]", {p.water_colour[2], 0.0, 1.0}},
+      {"crest_scatter", {p.crest_scatter, 0.0, 100.0}},
+      {"foam_brightness", {p.foam_brightness, 0.0, 100.0}},
+      {"roughness", {p.roughness, 1e-3, 1.0}},
+      {"fog_density_per_m", {p.fog_density_per_m, 0.0, 1.0}},
+      {"exposure", {p.exposure, 1e-6, 1e6}},
+  };
+  for (const auto& [name, c] : checks) {
+    if (Status s = require_in_range(name, c[0], c[1], c[2]); !s.ok()) return s;
+  }
+  return {};
+}
+
+std::string_view to_string(DebugView view) {
+  switch (view) {
+    case DebugView::shaded: return "shaded";
+    case DebugView::lod_colours: return "lod";
+    case DebugView::wireframe: return "wireframe";
+  }
+  return "shaded";
+}
+
+Result<DebugView> parse_debug_view(std::string_view name) {
+  for (DebugView v : {DebugView::shaded, DebugView::lod_colours, DebugView::wireframe}) {
+    if (name == to_string(v)) return v;
+  }
+  return invalid_argument("view = " + std::string(name) +
+                          " is not a view: must be shaded, lod or wireframe");
+}
+
+Status validate(const View& view) {
+  if (Status s = lod::validate(view.camera); !s.ok()) return s;
+  if (Status s = lod::validate(view.quality); !s.ok()) return s;
+  if (Status s = require_in_range("ocean_size_m", view.ocean_size_m, lod::kMinOceanSize_m,
+                                  lod::kMaxOceanSize_m);
+      !s.ok())
+    return s;
+  if (!std::isfinite(view.skirt_half_extent_m))
+    return invalid_argument("skirt_half_extent_m must be finite");
+  if (view.skirt_half_extent_m > 0.0 && view.skirt_half_extent_m <= 0.5 * view.ocean_size_m)
+    return invalid_argument("skirt_half_extent_m = " + std::to_string(view.skirt_half_extent_m) +
+                            " must exceed half the ocean size");
+  return validate(view.shading);
+}
+
+}  // namespace ocean::render

@@ -1,0 +1,57 @@
+// render_common.glsl — what the ocean renderer's shaders share: the per-frame uniform block and
+// the scene's samplers (layouts and bindings in render_shared.h, shared with the C++ renderer),
+// the analytic sky, and the water's optical constants.
+//
+// Sources (equations in docs/rendering.md, R.n):
+//   - Sky: the table src/render/sky.cpp fills (R.1–R.4), sampled as Hillaire (2020) does.
+//   - Fresnel: Schlick (1994) with water's F0 = 0.02 (seed 004) (R.6).
+
+#ifndef OCEAN_RENDER_COMMON_GLSL
+#define OCEAN_RENDER_COMMON_GLSL
+
+#include "render_shared.h"
+
+#define PI 3.14159265358979
+
+layout(set = 0, binding = OCEAN_RENDER_BINDING_FRAME, std140) uniform Frame {
+  FrameUniforms u;
+};
+
+layout(set = 0, binding = OCEAN_RENDER_BINDING_DISPLACEMENT) uniform sampler2DArray displacement_map;
+layout(set = 0, binding = OCEAN_RENDER_BINDING_NORMAL) uniform sampler2DArray normal_map;
+layout(set = 0, binding = OCEAN_RENDER_BINDING_SKY_LUT) uniform sampler2D sky_lut;
+
+// --- sky (R.1–R.4): the sky-view table of src/render/sky.cpp ---------------------------------
+
+vec3 sky_radiance(vec3 v) {
+  float elevation = asin(clamp(v.y, 0.0, 1.0));
+  float azimuth = atan(v.z, v.x);
+  vec2 uv = vec2(azimuth / (2.0 * PI), sqrt(elevation / (0.5 * PI)));
+  return texture(sky_lut, uv).rgb;
+}
+
+// --- water -----------------------------------------------------------------------------------
+
+float fresnel_schlick(float cos_theta) {  // R.6
+  float m = 1.0 - clamp(cos_theta, 0.0, 1.0);
+  float m2 = m * m;
+  return 0.02 + 0.98 * m2 * m2 * m;
+}
+
+// Horizon-weighted fog of seed 004, read as (1 − exp(−(dρ)²))·(1 − |v_y|)⁴ (R.8).
+float horizon_fog(float distance_m, float view_y) {
+  float d = distance_m * u.fog_density_per_m;
+  float w = 1.0 - abs(view_y);
+  w *= w;
+  return (1.0 - exp(-d * d)) * w * w;
+}
+
+// The colour distant water and the sky fade to: the sky just above the horizon, this azimuth.
+vec3 fog_colour(vec3 view_dir) {
+  vec2 h = view_dir.xz;
+  float len = length(h);
+  vec3 dir = len > 1e-5 ? vec3(h.x / len, 0.02, h.y / len) : vec3(1.0, 0.02, 0.0);
+  return sky_radiance(normalize(dir));
+}
+
+#endif

@@ -1,0 +1,110 @@
+// render_shared.h — the renderer's uniform layouts, push constants, bindings and limits, shared
+// by the C++ renderer (src/render) and its GLSL shaders (one source of truth, after zeux/niagara;
+// the compute side does the same with src/backends/vulkan/shaders/ocean_shared.h). Included by
+// both languages: keep to #define constants and structs of 32-bit scalars and vectors laid out so
+// that std140 (uniform block) and std430 (push constants) equal the C++ layout — every vec3 is
+// followed by one float, every group of scalars fills 16 bytes; the static_asserts below check
+// the offsets the shaders see.
+#ifndef OCEAN_RENDER_SHARED_H
+#define OCEAN_RENDER_SHARED_H
+
+#ifdef __cplusplus
+#include <cstddef>
+namespace ocean::render::shader {
+struct vec2 {
+  float x, y;
+};
+struct vec3 {
+  float x, y, z;
+};
+struct vec4 {
+  float x, y, z, w;
+};
+struct mat4 {
+  float m[16];  // column-major, as GLSL
+};
+#endif
+
+// Limits. OCEAN_RENDER_MAX_CASCADES mirrors validate(SimulationConfig).
+#define OCEAN_RENDER_MAX_CASCADES 8
+// PatchInstance::level of the horizon skirt's single instance (patches use 0 … lod::kMaxLevels).
+#define OCEAN_RENDER_SKIRT_LEVEL 255u
+// FrameUniforms::debug_view
+#define OCEAN_RENDER_DEBUG_SHADED 0.0
+#define OCEAN_RENDER_DEBUG_LOD_COLOURS 1.0
+
+// Set 0 of the scene pipelines (sky, ocean, wireframe).
+#define OCEAN_RENDER_BINDING_FRAME 0         // FrameUniforms, std140, host-written each frame
+#define OCEAN_RENDER_BINDING_DISPLACEMENT 1  // sampler2DArray RGBA16F (Dx, h, Dz, 0), per cascade
+#define OCEAN_RENDER_BINDING_NORMAL 2        // sampler2DArray RGBA8 (n_x, n_z, foam, smoothness)
+#define OCEAN_RENDER_BINDING_SKY_LUT 3       // sampler2D sky radiance, u azimuth, v √elevation
+#define OCEAN_RENDER_SCENE_BINDINGS 4
+// Set 0 of the tone-map pipeline.
+#define OCEAN_RENDER_BINDING_HDR 0  // sampler2D, the linear HDR image
+
+// One cascade as the shaders see it (docs/rendering.md R.9, R.5).
+struct CascadeUniforms {
+  float patch_size_m;  // L
+  float resolution;    // N
+  float wavelength_m;  // λ, the dominant wavelength the mesh must carry
+  float coarsest_mip;  // log2 N: the level of the 1×1 mip
+};
+
+// Everything per frame, one uniform buffer (std140).
+struct FrameUniforms {
+  mat4 view_proj;  // lod::view_projection of the camera, column-major
+  vec3 camera_pos_m;
+  float fov_y_rad;  // vertical field of view
+  vec3 sun_dir;     // unit vector towards the sun
+  float sun_pad;
+  vec3 sun_ground;  // sun irradiance at sea level on a plane facing the sun, RGB
+  float sun_ground_pad;
+  vec3 sky_ambient;  // sky irradiance on a horizontal plane, RGB
+  float sky_ambient_pad;
+  vec3 water_colour;    // single-scattering albedo of the water body, RGB
+  float crest_scatter;  // gain of the light through thin crests
+  float foam_brightness;
+  float roughness;          // base microfacet α0 of the calm surface
+  float fog_density_per_m;  // ρ of the horizon fog (R.8)
+  float shading_pad;
+  vec2 grid_centre_m;   // world x, z of the quadtree's centre
+  float ocean_size_m;   // side S of the quadtree square
+  float border_fade_m;  // width over which the displacement fades out at the border (R.10)
+  float lod_scale;      // τ
+  float vertices;       // V, quads per patch side
+  float debug_view;     // OCEAN_RENDER_DEBUG_*
+  float cascade_count;  // cascades to sample; 0 before any simulation input
+  float hs_m;           // significant wave height Hs of the configured sea
+  float hs_pad0, hs_pad1, hs_pad2;
+  CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
+};
+
+// Push constants of the sky pass (std430).
+struct SkyPush {
+  mat4 inverse_view_proj;
+};
+
+// Push constants of the tone-map pass (std430).
+struct TonemapPush {
+  float exposure;
+};
+
+#ifdef __cplusplus
+// The offsets std140 gives the block's members.
+static_assert(offsetof(FrameUniforms, camera_pos_m) == 64);
+static_assert(offsetof(FrameUniforms, sun_dir) == 80);
+static_assert(offsetof(FrameUniforms, sun_ground) == 96);
+static_assert(offsetof(FrameUniforms, sky_ambient) == 112);
+static_assert(offsetof(FrameUniforms, water_colour) == 128);
+static_assert(offsetof(FrameUniforms, foam_brightness) == 144);
+static_assert(offsetof(FrameUniforms, grid_centre_m) == 160);
+static_assert(offsetof(FrameUniforms, lod_scale) == 176);
+static_assert(offsetof(FrameUniforms, hs_m) == 192);
+static_assert(offsetof(FrameUniforms, cascades) == 208);
+static_assert(sizeof(CascadeUniforms) == 16);
+static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(SkyPush) == 64);
+}  // namespace ocean::render::shader
+#endif
+
+#endif

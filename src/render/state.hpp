@@ -1,0 +1,116 @@
+// What the renderer's files share (src/render, private): the Vulkan objects of a renderer
+// (Renderer::State), its formats and limits, and the steps the public methods are built from,
+// one concern per file:
+//   targets.cpp      the state's lifetime and the HDR, depth and sRGB targets
+//   descriptors.cpp  samplers, descriptor set layouts, the descriptor sets and their writes
+//   pipelines.cpp    shader modules, pipeline layouts, the sky/ocean/wireframe/tone-map pipelines
+//   mesh.cpp         the static patch mesh and the per-frame skirt vertices
+//   inputs.cpp       the simulation's images: own ones filled by upload, or borrowed ones
+//   uniforms.cpp     the sky table and the per-frame uniforms
+//   frame.cpp        the recorded frame: LOD selection, HDR pass, tone-map pass
+//   renderer.cpp     construction, resizing, submission, read-back
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "ocean/render.hpp"
+#include "shaders/render_shared.h"
+
+namespace ocean::render {
+
+inline constexpr int kMaxCascades = OCEAN_RENDER_MAX_CASCADES;
+inline constexpr auto kSkirtLevel = static_cast<std::uint8_t>(OCEAN_RENDER_SKIRT_LEVEL);
+inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+inline constexpr VkFormat kSrgbFormat = VK_FORMAT_R8G8B8A8_SRGB;
+inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
+inline constexpr int kMaxTargetSize = 16384;
+
+struct Renderer::State {
+  const vk::Context* ctx = nullptr;
+  vk::Commands commands;
+  // Targets.
+  vk::Image2D hdr, depth, srgb;
+  vk::Buffer readback;  // large enough for the HDR image (8 bytes per pixel)
+  // Simulation inputs: own images (upload path) or borrowed ones (GPU path).
+  vk::Image displacement, normal_foam;
+  vk::Buffer staging;
+  bool upload_pending = false;
+  bool borrowed = false;
+  VkImageView displacement_view = VK_NULL_HANDLE, normal_view = VK_NULL_HANDLE;
+  std::uint32_t sim_size = 0, sim_layers = 0, sim_mips = 0;
+  // Samplers, descriptors, pipelines.
+  VkSampler displacement_sampler = VK_NULL_HANDLE, normal_sampler = VK_NULL_HANDLE,
+            hdr_sampler = VK_NULL_HANDLE, lut_sampler = VK_NULL_HANDLE;
+  // The sky-view table (R.1–R.4) and what it was computed for.
+  vk::Image2D sky_lut;
+  vk::Buffer lut_staging;
+  bool lut_pending = false;
+  std::optional<ShadingParams> lut_params;  // what the table holds; none before the first draw
+  std::array<double, 3> sun_ground{}, sky_ambient{};
+  VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VkDescriptorSet scene_set = VK_NULL_HANDLE, tonemap_set = VK_NULL_HANDLE;
+  VkPipelineLayout scene_pipeline_layout = VK_NULL_HANDLE, tonemap_pipeline_layout = VK_NULL_HANDLE;
+  VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE,
+             tonemap = VK_NULL_HANDLE;
+  std::vector<VkShaderModule> modules;
+  vk::Buffer uniforms;
+  // Geometry.
+  int vertices = 0;                    // V of the patch mesh now built
+  vk::Buffer patch_vertices, indices;  // static
+  std::array<std::uint32_t, lod::kConfigurations> index_first{}, index_count{};
+  std::uint32_t skirt_first = 0, skirt_count = 0;
+  vk::Buffer instances, skirt_vertices;  // per frame, host-visible
+  lod::LodSelection selection;
+  lod::SkirtMesh skirt;
+  double skirt_size = -1.0, skirt_extent = -1.0;
+  vk::Timestamps timestamps;
+  bool has_timestamps = false;
+  // From configure().
+  int cascades = 0;
+  std::array<shader::CascadeUniforms, kMaxCascades> cascade_params{};
+  double hs_m = 1.0;
+  double choppiness = 1.0;
+
+  ~State();
+  void destroy_targets();
+  void destroy_sim_images();
+};
+
+// targets.cpp: the HDR, depth and sRGB targets and the read-back buffer; points the tone map's
+// descriptor at the new HDR image.
+Status create_targets(Renderer::State& st, int width, int height);
+
+// descriptors.cpp: samplers, both set layouts, the pool and the two sets.
+Status create_descriptors(Renderer::State& st);
+// The scene set's uniform buffer and sky table, and the simulation images when there are any.
+void write_scene_images(Renderer::State& st);
+// The tone map's set: the HDR image.
+void write_tonemap_image(Renderer::State& st);
+
+// pipelines.cpp: pipeline layouts, shader modules and the four pipelines (the wireframe one only
+// where the device has fillModeNonSolid).
+Status create_pipelines(Renderer::State& st);
+
+// mesh.cpp: the patch mesh of V quads per side — vertices and the 16 index lists, plus the
+// skirt's indices (4 rotated copies of its 4 triangles over 24 per-frame vertices).
+Status build_patch_buffers(Renderer::State& st, int vertices);
+// The skirt's 24 vertices in world space around the selection's grid centre, rebuilding the
+// skirt when the ocean size or the skirt's extent changed.
+Status write_skirt_vertices(Renderer::State& st, const View& view);
+
+// inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
+void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
+
+// uniforms.cpp: recomputes the sky-view table and the irradiances when the sky's parameters
+// changed.
+void update_sky(Renderer::State& st, const ShadingParams& shading);
+void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
+                   shader::FrameUniforms& u);
+// Inverse of a 4×4 column-major matrix by cofactors (double precision).
+std::array<double, 16> inverse(const std::array<double, 16>& m);
+
+}  // namespace ocean::render

@@ -1,0 +1,72 @@
+// The renderer's state (state.hpp): its lifetime, and the targets of a draw — the linear HDR
+// image (RGBA16F), its depth (D32), the tone-mapped sRGB image (RGBA8) and the buffer that reads
+// either back.
+#include "state.hpp"
+
+namespace ocean::render {
+
+Renderer::State::~State() {
+  if (ctx == nullptr) return;
+  VkDevice d = ctx->device;
+  vkDeviceWaitIdle(d);
+  destroy_targets();
+  destroy_sim_images();
+  for (VkPipeline p : {sky, ocean, wire, tonemap})
+    if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
+  for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
+  for (VkPipelineLayout l : {scene_pipeline_layout, tonemap_pipeline_layout})
+    if (l != VK_NULL_HANDLE) vkDestroyPipelineLayout(d, l, nullptr);
+  if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(d, pool, nullptr);
+  for (VkDescriptorSetLayout l : {scene_layout, tonemap_layout})
+    if (l != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, l, nullptr);
+  vk::destroy_image(*ctx, sky_lut);
+  vk::destroy_buffer(*ctx, lut_staging);
+  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler})
+    if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
+  for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices})
+    vk::destroy_buffer(*ctx, *b);
+  vk::destroy_timestamps(*ctx, timestamps);
+  vk::destroy_commands(*ctx, commands);
+}
+
+void Renderer::State::destroy_targets() {
+  vk::destroy_image(*ctx, hdr);
+  vk::destroy_image(*ctx, depth);
+  vk::destroy_image(*ctx, srgb);
+  vk::destroy_buffer(*ctx, readback);
+}
+
+void Renderer::State::destroy_sim_images() {
+  vk::destroy_image(*ctx, displacement);
+  vk::destroy_image(*ctx, normal_foam);
+  vk::destroy_buffer(*ctx, staging);
+}
+
+Status create_targets(Renderer::State& st, int width, int height) {
+  const auto w = static_cast<std::uint32_t>(width), h = static_cast<std::uint32_t>(height);
+  Result<vk::Image2D> hdr =
+      vk::create_image_2d(*st.ctx, kHdrFormat, w, h,
+                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  if (!hdr.ok()) return hdr.status();
+  st.hdr = hdr.value();
+  Result<vk::Image2D> depth =
+      vk::create_image_2d(*st.ctx, kDepthFormat, w, h, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
+                          VK_IMAGE_ASPECT_DEPTH_BIT);
+  if (!depth.ok()) return depth.status();
+  st.depth = depth.value();
+  Result<vk::Image2D> srgb =
+      vk::create_image_2d(*st.ctx, kSrgbFormat, w, h,
+                          VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+  if (!srgb.ok()) return srgb.status();
+  st.srgb = srgb.value();
+  Result<vk::Buffer> rb =
+      vk::create_buffer(*st.ctx, static_cast<VkDeviceSize>(w) * h * 8,
+                        VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::readback);
+  if (!rb.ok()) return rb.status();
+  st.readback = rb.value();
+  write_tonemap_image(st);
+  return {};
+}
+
+}  // namespace ocean::render

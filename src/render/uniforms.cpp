@@ -1,0 +1,110 @@
+// The per-frame inputs of the shaders: the sky-view table (recomputed only when the sky
+// changes) and FrameUniforms (shaders/render_shared.h) from the view, the shading and the
+// configured cascades.
+#include "state.hpp"
+
+namespace ocean::render {
+
+namespace {
+
+bool same_sky(const ShadingParams& a, const ShadingParams& b) {
+  return a.sun_azimuth_deg == b.sun_azimuth_deg && a.sun_elevation_deg == b.sun_elevation_deg &&
+         a.sun_irradiance == b.sun_irradiance && a.sky_brightness == b.sky_brightness &&
+         a.aerosol == b.aerosol && a.aerosol_g == b.aerosol_g;
+}
+
+}  // namespace
+
+// Recomputes the sky-view table and the irradiances when the sky's parameters change.
+void update_sky(Renderer::State& st, const ShadingParams& shading) {
+  if (st.lut_params && same_sky(*st.lut_params, shading)) return;
+  const Sky sky(shading);
+  sky.fill_lut({static_cast<float*>(st.lut_staging.mapped),
+                static_cast<std::size_t>(Sky::kLutWidth * Sky::kLutHeight * 4)});
+  st.sun_ground = sky.sun_irradiance_ground();
+  st.sky_ambient = sky.sky_irradiance_horizontal();
+  st.lut_params = shading;
+  st.lut_pending = true;
+}
+
+namespace {
+
+shader::vec3 to_vec3(const std::array<double, 3>& v) {
+  return {static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2])};
+}
+
+}  // namespace
+
+void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
+                   shader::FrameUniforms& u) {
+  const lod::LodSelection& sel = st.selection;
+  for (int i = 0; i < 16; ++i)
+    u.view_proj.m[i] = static_cast<float>(vp.m[static_cast<std::size_t>(i)]);
+  const lod::Vec3 eye = view.camera.position_m;
+  u.camera_pos_m = to_vec3({eye.x, eye.y, eye.z});
+  u.fov_y_rad = static_cast<float>(view.camera.fov_y_rad);
+  const ShadingParams& sh = view.shading;
+  u.sun_dir = to_vec3(sun_direction(sh.sun_azimuth_deg, sh.sun_elevation_deg));
+  u.sun_ground = to_vec3(st.sun_ground);
+  u.sky_ambient = to_vec3(st.sky_ambient);
+  u.water_colour = to_vec3(sh.water_colour);
+  u.crest_scatter = static_cast<float>(sh.crest_scatter);
+  u.foam_brightness = static_cast<float>(sh.foam_brightness);
+  u.roughness = static_cast<float>(sh.roughness);
+  u.fog_density_per_m = static_cast<float>(sh.fog_density_per_m);
+  u.grid_centre_m = {static_cast<float>(sel.grid_centre_x_m),
+                     static_cast<float>(sel.grid_centre_z_m)};
+  u.ocean_size_m = static_cast<float>(view.ocean_size_m);
+  u.border_fade_m = static_cast<float>(0.1 * view.ocean_size_m);  // R.10
+  u.lod_scale = static_cast<float>(view.quality.lod_scale);
+  u.vertices = static_cast<float>(view.quality.vertices);
+  u.debug_view =
+      static_cast<float>(view.debug == DebugView::lod_colours ? OCEAN_RENDER_DEBUG_LOD_COLOURS
+                                                              : OCEAN_RENDER_DEBUG_SHADED);
+  u.cascade_count = static_cast<float>(st.displacement_view != VK_NULL_HANDLE ? st.cascades : 0);
+  u.hs_m = static_cast<float>(st.hs_m);
+  for (int c = 0; c < kMaxCascades; ++c)
+    u.cascades[c] = st.cascade_params[static_cast<std::size_t>(c)];
+}
+
+// Inverse of a 4×4 column-major matrix by cofactors (double precision).
+std::array<double, 16> inverse(const std::array<double, 16>& m) {
+  std::array<double, 16> inv{};
+  inv[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] + m[9] * m[7] * m[14] +
+           m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
+  inv[4] = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] + m[8] * m[6] * m[15] -
+           m[8] * m[7] * m[14] - m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
+  inv[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] + m[8] * m[7] * m[13] +
+           m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
+  inv[12] = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] + m[8] * m[5] * m[14] -
+            m[8] * m[6] * m[13] - m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
+  inv[1] = -m[1] * m[10] * m[15] + m[1] * m[11] * m[14] + m[9] * m[2] * m[15] -
+           m[9] * m[3] * m[14] - m[13] * m[2] * m[11] + m[13] * m[3] * m[10];
+  inv[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] + m[8] * m[3] * m[14] +
+           m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
+  inv[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] - m[8] * m[3] * m[13] -
+           m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
+  inv[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] + m[8] * m[2] * m[13] +
+            m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
+  inv[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] + m[5] * m[3] * m[14] +
+           m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
+  inv[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] - m[4] * m[3] * m[14] -
+           m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
+  inv[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] + m[4] * m[3] * m[13] +
+            m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
+  inv[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] - m[4] * m[2] * m[13] -
+            m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
+  inv[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] - m[5] * m[3] * m[10] -
+           m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
+  inv[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] + m[4] * m[3] * m[10] +
+           m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
+  inv[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] - m[4] * m[3] * m[9] -
+            m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
+  inv[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] + m[4] * m[2] * m[9] +
+            m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
+  const double det = m[0] * inv[0] + m[1] * inv[4] + m[2] * inv[8] + m[3] * inv[12];
+  for (double& v : inv) v /= det;
+  return inv;
+}
+
+}  // namespace ocean::render

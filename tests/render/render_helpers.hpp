@@ -1,0 +1,66 @@
+// What the renderer's and the scene's tests share: a validated graphics context, a small sea, an
+// eye-level view and the difference of two sRGB pictures.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "ocean/render.hpp"
+
+namespace ocean::render::testing {
+
+/// A context with a graphics queue and the Khronos validation layer; nullptr without a device.
+inline std::shared_ptr<vk::Context> graphics_context() {
+  auto ctx = vk::create_context({.validation = true, .graphics = true});
+  if (!ctx.ok()) return nullptr;
+  return std::shared_ptr<vk::Context>(std::move(ctx).value());
+}
+
+/// Two cascades of a 12 m/s wind sea at N = 64.
+inline SimulationConfig small_config() {
+  SimulationConfig c;
+  c.resolution = 64;
+  c.cascade_patch_sizes_m = {200.0, 47.0};
+  c.sea.wind_sea.spectrum.wind_speed_mps = 12.0;
+  c.sea.wind_sea.spectrum.fetch_m = 100e3;
+  return c;
+}
+
+/// A camera 5 m up looking level, away from the sun (azimuth 35°), low LOD quality.
+inline View eye_level_view(int width, int height) {
+  View v;
+  v.camera = {.position_m = {0.0, 5.0, 0.0},
+              .target_m = {-100.0, 5.0, -70.0},
+              .fov_y_rad = 50.0 * std::numbers::pi / 180.0,
+              .aspect = static_cast<double>(width) / height,
+              .near_m = 0.2,
+              .far_m = 2e5};
+  v.quality = lod::quality_preset(lod::QualityPreset::low);
+  v.ocean_size_m = 2048.0;
+  return v;
+}
+
+/// Mean and largest absolute difference of two RGBA8 pictures of equal size, in LSB.
+struct PictureDifference {
+  double mean = 0.0;
+  int max = 0;
+};
+inline PictureDifference difference(const std::vector<std::uint8_t>& a,
+                                    const std::vector<std::uint8_t>& b) {
+  PictureDifference d;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size() && i < b.size(); ++i) {
+    const int e = std::abs(int(a[i]) - int(b[i]));
+    d.max = std::max(d.max, e);
+    sum += e;
+  }
+  d.mean = a.empty() ? 0.0 : sum / static_cast<double>(a.size());
+  return d;
+}
+
+}  // namespace ocean::render::testing
