@@ -22,9 +22,9 @@
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
 #include "plot/plot_internal.hpp"
-#include "preset.hpp"
 #include "progress.hpp"
 #include "scene.hpp"
+#include "simulation_flags.hpp"
 #include "view_flags.hpp"
 
 namespace ocean::cli {
