@@ -80,8 +80,7 @@ int run_validate(const ValidateOptions& o) {
                 << ", packed " << j["packed_lsb"].get<double>() << " LSB on "
                 << 100.0 * j["packed_fraction"].get<double>() << "% of texels\n";
     }
-    std::cout << "max_error_rel_hs " << all.displacement_rel_hs << " (bound "
-              << conformance::kBounds.displacement_rel_hs << ")\n";
+    std::cout << "max_error_rel_hs " << all.displacement_rel_hs << " (bound 1e-4)\n";
   }
   return all.pass() ? kExitOk : kExitFailure;
 }
