@@ -15,8 +15,8 @@
 #include "io/npy.hpp"
 #include "io/png_image.hpp"
 #include "ocean/backends.hpp"
-#include "preset.hpp"
 #include "progress.hpp"
+#include "simulation_flags.hpp"
 
 namespace ocean::cli {
 

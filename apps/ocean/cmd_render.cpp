@@ -23,9 +23,9 @@
 #include "io/png_image.hpp"
 #include "ocean/scene.hpp"
 #include "plot/plot_internal.hpp"
-#include "preset.hpp"
 #include "progress.hpp"
 #include "render_output.hpp"
+#include "simulation_flags.hpp"
 #include "view_flags.hpp"
 
 namespace ocean::cli {

@@ -11,8 +11,8 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "preset.hpp"
-#include "surface_stats.hpp"
+#include "ocean/statistics.hpp"
+#include "simulation_flags.hpp"
 
 namespace ocean::cli {
 
@@ -111,8 +111,9 @@ int run_stats(const StatsOptions& o) {
              config.cascade_patch_sizes_m == SimulationConfig{}.cascade_patch_sizes_m) {
     config.cascade_patch_sizes_m = {1000.0};
   }
+  const std::unique_ptr<TaskRunner> runner = make_tbb_runner();
   Result<SurfaceStats> stats =
-      compute_surface_stats(config, inputs.value().seeds, inputs.value().time_s);
+      compute_surface_stats(config, inputs.value().seeds, inputs.value().time_s, *runner);
   if (!stats.ok()) return report(stats.status());
   const std::vector<Row> table = rows(stats.value());
   if (o.json) {

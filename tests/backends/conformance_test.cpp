@@ -3,13 +3,10 @@
 // configuration. The Vulkan backend runs with the Khronos validation layer and must produce zero
 // messages.
 //
-// Bounds (also in src/backends/vulkan/README.md), relative to Hs = 4·√(Σ_c var h_c):
-//   displacement (FP32)       max |ΔD| ≤ 1e-4·Hs
-//   displacement (FP16 half4) max |ΔD| ≤ 2^-10·|D| + 1e-4·Hs (one half ulp plus the FP32 bound)
-//   normal                    max |Δn| ≤ 1e-4 (unit vector components)
-//   Jacobian                  max |ΔJ| ≤ 1e-4
-//   foam                      max |Δfoam| ≤ 1e-4
-//   packed RGBA8 (all mips)   every channel within 1 LSB; ≤ 0.1 % of texels differ at all
+// The bounds, the comparison and the case list are the library's (ocean/conformance.hpp), the
+// same that `ocean validate` runs.
+#include "ocean/conformance.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -30,140 +27,7 @@ namespace {
 // Validation on for every Vulkan context these tests create (read by vk::create_context).
 const int kValidationOn = setenv("OCEAN_VK_VALIDATION", "1", 0);
 
-constexpr double kDisplacementBound = 1e-4;  // × Hs, FP32 storage
-constexpr double kNormalBound = 1e-4;
-constexpr double kJacobianBound = 1e-4;
-constexpr double kFoamBound = 1e-4;
-constexpr int kPackedLsbBound = 1;
-constexpr double kPackedFractionBound = 1e-3;
-
-struct Case {
-  std::string name;
-  int resolution;
-  std::vector<double> patches_m;
-  ocean::SpectrumModel model;
-  ocean::NormalMethod normals;
-  double loop_period_s;
-  std::vector<double> times_s;  // consecutive frames (foam accumulates between them)
-};
-
-ocean::SimulationConfig make_config(const Case& c) {
-  ocean::SimulationConfig config;
-  config.resolution = c.resolution;
-  config.cascade_patch_sizes_m = c.patches_m;
-  config.normals = c.normals;
-  config.loop_period_s = c.loop_period_s;
-  config.choppiness = 1.2;
-  ocean::FrequencySpectrumParams& s = config.sea.wind_sea.spectrum;
-  s.model = c.model;
-  s.wind_speed_mps = 14.0;
-  s.fetch_m = c.model == ocean::SpectrumModel::phillips ? ocean::kUnset : 80e3;
-  if (c.model == ocean::SpectrumModel::tma) {
-    s.depth_m = 20.0;
-    config.sea.dispersion.depth_m = 20.0;
-  }
-  return config;
-}
-
-// Every case runs against each backend; kept small enough for lavapipe on two cores.
-std::vector<Case> cases() {
-  using M = ocean::SpectrumModel;
-  using N = ocean::NormalMethod;
-  const double day3 = 3 * 86400.0 + 17.25;  // exact looping phase long after the start
-  return {
-      {"64_phillips_3cascades_central",
-       64,
-       {800.0, 190.0, 47.0},
-       M::phillips,
-       N::central_difference,
-       200.0,
-       {0.0, 0.5, 1.0}},
-      {"256_jonswap_2cascades_central",
-       256,
-       {1000.0, 233.0},
-       M::jonswap,
-       N::central_difference,
-       200.0,
-       {day3, day3 + 1.0 / 30}},
-      {"256_tma_3cascades_sobel", 256, {600.0, 140.0, 33.0}, M::tma, N::sobel, 200.0, {2.0, 2.1}},
-      {"128_jonswap_2cascades_analytic_noloop",
-       128,
-       {500.0, 110.0},
-       M::jonswap,
-       N::analytic,
-       0.0,
-       {1000.0, 1000.05}},
-      {"1024_jonswap_1cascade_central",
-       1024,
-       {1000.0},
-       M::jonswap,
-       N::central_difference,
-       200.0,
-       {7.5}},
-  };
-}
-
-struct Errors {
-  double displacement_rel_hs = 0, half_excess = 0, normal = 0, jacobian = 0, foam = 0;
-  int packed_lsb = 0;
-  double packed_fraction = 0;
-};
-
-double significant_height(const ocean::Frame& f) {
-  double var = 0.0;
-  for (const ocean::CascadeFrame& c : f.cascades) {
-    double sum = 0.0, sum2 = 0.0;
-    const std::size_t texels = c.jacobian.size();
-    for (std::size_t i = 0; i < texels; ++i) {
-      const double h = c.displacement[3 * i + 1];
-      sum += h, sum2 += h * h;
-    }
-    const double mean = sum / static_cast<double>(texels);
-    var += sum2 / static_cast<double>(texels) - mean * mean;
-  }
-  return 4.0 * std::sqrt(var);
-}
-
-double max_abs_diff(std::span<const float> a, std::span<const float> b) {
-  double m = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i)
-    m = std::max(m, std::abs(static_cast<double>(a[i]) - static_cast<double>(b[i])));
-  return m;
-}
-
-Errors compare(const ocean::Frame& ref, const ocean::Frame& got) {
-  Errors e;
-  const double hs = significant_height(ref);
-  std::size_t packed_total = 0, packed_differ = 0;
-  for (std::size_t c = 0; c < ref.cascades.size(); ++c) {
-    const ocean::CascadeFrame& r = ref.cascades[c];
-    const ocean::CascadeFrame& g = got.cascades[c];
-    e.displacement_rel_hs =
-        std::max(e.displacement_rel_hs, max_abs_diff(r.displacement, g.displacement) / hs);
-    e.normal = std::max(e.normal, max_abs_diff(r.normal, g.normal));
-    e.jacobian = std::max(e.jacobian, max_abs_diff(r.jacobian, g.jacobian));
-    e.foam = std::max(e.foam, max_abs_diff(r.foam, g.foam));
-    for (std::size_t i = 0; i < r.displacement_half.size(); ++i) {
-      const double a = ocean::half_to_float(r.displacement_half[i]);
-      const double b = ocean::half_to_float(g.displacement_half[i]);
-      const double allowed = std::ldexp(std::abs(a), -10) + kDisplacementBound * hs;
-      e.half_excess = std::max(e.half_excess, std::abs(a - b) / allowed);
-    }
-    for (std::size_t i = 0; i < r.packed_mips.size(); ++i) {
-      int worst = 0;
-      for (int shift = 0; shift < 32; shift += 8) {
-        const int a = static_cast<int>((r.packed_mips[i] >> shift) & 0xffu);
-        const int b = static_cast<int>((g.packed_mips[i] >> shift) & 0xffu);
-        worst = std::max(worst, std::abs(a - b));
-      }
-      e.packed_lsb = std::max(e.packed_lsb, worst);
-      packed_differ += worst > 0 ? 1 : 0;
-    }
-    packed_total += r.packed_mips.size();
-  }
-  e.packed_fraction = static_cast<double>(packed_differ) / static_cast<double>(packed_total);
-  return e;
-}
+using ocean::conformance::kBounds;
 
 class Conformance : public ::testing::TestWithParam<std::string> {
  protected:
@@ -178,36 +42,34 @@ class Conformance : public ::testing::TestWithParam<std::string> {
 
 TEST_P(Conformance, EveryOutputMatchesTheCpuReference) {
   std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
-  for (const Case& c : cases()) {
+  for (const ocean::conformance::Case& c : ocean::conformance::cases()) {
     SCOPED_TRACE(c.name);
-    const ocean::SimulationConfig config = make_config(c);
     auto reference = ocean::make_backend("cpu");
     auto backend = ocean::make_backend(GetParam());
     ASSERT_TRUE(reference.ok()) << reference.status().message();
     ASSERT_TRUE(backend.ok()) << backend.status().message();
-    ASSERT_TRUE(reference.value()->configure(config, *runner).ok());
-    const ocean::Status configured = backend.value()->configure(config, *runner);
-    ASSERT_TRUE(configured.ok()) << configured.message();
-    ocean::Frame ref, got;
-    reference.value()->allocate(ref);
-    backend.value()->allocate(got);
-    for (double t : c.times_s) {
-      reference.value()->step(t, ref);
-      backend.value()->step(t, got);
-      const Errors e = compare(ref, got);
+    const auto frames =
+        ocean::conformance::run_case(c, *reference.value(), *backend.value(), *runner);
+    ASSERT_TRUE(frames.ok()) << frames.status().message();
+    ASSERT_EQ(frames.value().size(), c.times_s.size());
+    for (const ocean::conformance::FrameResult& f : frames.value()) {
+      const double t = f.time_s;
+      const ocean::conformance::Errors& e = f.errors;
       std::printf(
           "[%s] %s t=%.3f: displacement %.3g Hs, half %.3g of bound, normal %.3g, "
           "jacobian %.3g, foam %.3g, packed %d LSB on %.3g%% of texels\n",
-          GetParam().c_str(), c.name.c_str(), t, e.displacement_rel_hs, e.half_excess, e.normal,
-          e.jacobian, e.foam, e.packed_lsb, 100.0 * e.packed_fraction);
-      EXPECT_LE(e.displacement_rel_hs, kDisplacementBound) << "t = " << t;
-      EXPECT_LE(e.half_excess, 1.0) << "t = " << t;
-      EXPECT_LE(e.normal, kNormalBound) << "t = " << t;
-      EXPECT_LE(e.jacobian, kJacobianBound) << "t = " << t;
-      EXPECT_LE(e.foam, kFoamBound) << "t = " << t;
-      EXPECT_LE(e.packed_lsb, kPackedLsbBound) << "t = " << t;
-      EXPECT_LE(e.packed_fraction, kPackedFractionBound) << "t = " << t;
-      EXPECT_EQ(got.time_s, t);
+          GetParam().c_str(), c.name.c_str(), t, e.displacement_rel_hs,
+          e.displacement_half_rel_bound, e.normal, e.jacobian, e.foam, e.packed_lsb,
+          100.0 * e.packed_fraction);
+      EXPECT_LE(e.displacement_rel_hs, kBounds.displacement_rel_hs) << "t = " << t;
+      EXPECT_LE(e.displacement_half_rel_bound, kBounds.displacement_half_rel_bound) << "t = " << t;
+      EXPECT_LE(e.normal, kBounds.normal) << "t = " << t;
+      EXPECT_LE(e.jacobian, kBounds.jacobian) << "t = " << t;
+      EXPECT_LE(e.foam, kBounds.foam) << "t = " << t;
+      EXPECT_LE(e.packed_lsb, kBounds.packed_lsb) << "t = " << t;
+      EXPECT_LE(e.packed_fraction, kBounds.packed_fraction) << "t = " << t;
+      EXPECT_TRUE(e.pass()) << "t = " << t;
+      EXPECT_EQ(f.other_time_s, t);
     }
 #ifdef OCEAN_HAS_VULKAN
     if (auto* vk = dynamic_cast<ocean::vk::VulkanBackend*>(backend.value().get())) {

@@ -1,6 +1,7 @@
-// Statistics of the simulated surface for one configuration over several seeds: measured and
-// spectral significant wave height, height moments, slopes, Jacobian/foam, and two numerical
-// checks (imaginary residue of the height transform, loop error). Used by `ocean stats`.
+// ocean/statistics.hpp — statistics of the simulated surface for one configuration over several
+// seeds: measured and spectral significant wave height, height moments, slopes, Jacobian/foam,
+// and two numerical checks (imaginary residue of the height transform, loop error). What
+// `ocean stats` prints.
 //
 // Everything is measured on cascade 0 (the largest patch): its texels sample the h component of
 // the displacement, its unit normals, Jacobian and foam. With a single cascade that is the whole
@@ -12,8 +13,9 @@
 #include <string>
 
 #include "ocean/sim.hpp"
+#include "ocean/task_runner.hpp"
 
-namespace ocean::cli {
+namespace ocean {
 
 struct SurfaceStats {
   // Inputs, echoed.
@@ -73,7 +75,10 @@ double cox_munk_mean_square_slope(double wind_speed_mps);
 
 /// Simulates `seeds` realisations (config.seed + s) with the CPU backend at `time_s` and measures
 /// them. Invalid configurations, seeds < 1 and non-finite times are invalid_argument.
-Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int seeds,
-                                           double time_s);
+/// The simulations and transforms run on `runner` (the caller's job system; it must outlive the
+/// call); the figures do not depend on which runner. Allocates the simulators and a few fields
+/// of N² values; blocks until done. Thread-safe for distinct runners.
+Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int seeds, double time_s,
+                                           TaskRunner& runner);
 
-}  // namespace ocean::cli
+}  // namespace ocean

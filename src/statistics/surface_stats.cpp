@@ -1,6 +1,4 @@
-// Surface statistics over several seeds (see surface_stats.hpp).
-#include "surface_stats.hpp"
-
+// Surface statistics over several seeds (see ocean/statistics.hpp).
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -11,8 +9,9 @@
 
 #include "ocean/backends.hpp"
 #include "ocean/fft.hpp"
+#include "ocean/statistics.hpp"
 
-namespace ocean::cli {
+namespace ocean {
 
 namespace {
 
@@ -74,8 +73,8 @@ double cox_munk_mean_square_slope(double wind_speed_mps) {
   return 0.003 + 5.12e-3 * wind_speed_mps;
 }
 
-Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int seeds,
-                                           double time_s) {
+Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int seeds, double time_s,
+                                           TaskRunner& runner_ref) {
   if (seeds < 1) {
     return invalid_argument("seeds = " + std::to_string(seeds) + " is out of range: must be >= 1");
   }
@@ -122,7 +121,8 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
     out.hs_sampling_rel_std = 0.5 / std::sqrt(out.independent_wave_vectors * seeds);
   }
 
-  std::shared_ptr<TaskRunner> runner(make_tbb_runner());
+  // The caller's runner, not owned: the simulators below end before this call returns.
+  const std::shared_ptr<TaskRunner> runner(std::shared_ptr<TaskRunner>(), &runner_ref);
   Result<fft::Plan2D> plan = fft::Plan2D::make(n);
   if (!plan.ok()) return plan.status();
 
@@ -211,4 +211,4 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
   return out;
 }
 
-}  // namespace ocean::cli
+}  // namespace ocean

@@ -1,9 +1,9 @@
-// Simulation presets: SimulationConfig ⇄ JSON, preset files, `--set key=value` overrides and
-// the sea-state flags shared with `ocean spectrum`.
+// The flags every simulating subcommand shares: a preset, `--set key=value` overrides, the
+// sea-state flags of `ocean spectrum`, and the grid. The preset format itself is the library's
+// (ocean/preset.hpp).
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -13,14 +13,10 @@
 
 namespace ocean::cli {
 
-/// The JSON form of a configuration (every key, units in the names; unset numbers are null).
+/// The preset document of a configuration as a JSON value (ocean::preset::to_json), for
+/// embedding in the tool's JSON outputs.
 nlohmann::ordered_json to_json(const SimulationConfig& config);
-/// Reads a configuration; unknown keys and wrong types are invalid_argument naming the key path
-/// ("sea.wind_sea.fetch_m: expected a number, got a string").
-Result<SimulationConfig> from_json(const nlohmann::ordered_json& document);
 
-/// Flags every simulating subcommand shares: a preset, overrides, the sea-state flags of
-/// `ocean spectrum`, and the grid.
 struct SimulationFlags {
   std::string preset_path;
   std::vector<std::string> set;  ///< key=value, dotted keys, JSON values (strings may be bare)

@@ -1,0 +1,73 @@
+// ocean/preset.hpp — the preset file format: SimulationConfig ⇄ JSON, the built-in presets by
+// name, and presets assembled in layers (defaults ← preset ← key=value overrides).
+//
+// Format: one JSON object with the keys of SimulationConfig, units in the names ("fetch_m",
+// "direction_deg"); unset numbers are null, "gamma" may be "auto", "depth_m" null is deep water,
+// "sea.swell" null is no swell. Every key is optional (absent keys keep SimulationConfig's
+// defaults); unknown keys and wrong types are errors that name the key's path in the document
+// ("sea.wind_sea.fetch_m: expected a number, got a string"). presets/*.json are examples.
+//
+// Errors are Status/Result values (invalid_argument for content, io_error for files); nothing
+// throws. Every function allocates; all are thread-safe (a Document is used from one thread).
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ocean/sim.hpp"
+
+namespace ocean::preset {
+
+/// The preset document of `config`: every key, in a fixed order. `indent` < 0 writes one line,
+/// otherwise that many spaces per level. Numbers round-trip exactly through from_json.
+std::string to_json(const SimulationConfig& config, int indent = -1);
+
+/// Reads a preset document and validates the configuration (validate() and SeaState::make).
+/// Text that is not JSON is invalid_argument "the document is not valid JSON".
+Result<SimulationConfig> from_json(std::string_view text);
+
+/// The built-in presets (presets/*.json compiled in), in order: "calm", "moderate", "storm".
+std::vector<std::string_view> builtin_names();
+/// The JSON text of a built-in preset; empty when `name` is none of builtin_names().
+std::string_view builtin_json(std::string_view name);
+/// The configuration of a built-in preset; unknown names are invalid_argument.
+Result<SimulationConfig> builtin(std::string_view name);
+
+/// A preset assembled in layers, in the order the calls are made: SimulationConfig's defaults,
+/// then presets merged over them (RFC 7386 merge patch: keys present replace, null removes),
+/// then single-key overrides. config() reads and validates the result.
+class Document {
+ public:
+  Document();  ///< SimulationConfig{} as a document
+  ~Document();
+  Document(Document&&) noexcept;
+  Document& operator=(Document&&) noexcept;
+
+  /// Merges a built-in preset or a preset file. A bare name (no directory, no extension) that
+  /// is not an existing file selects a built-in preset. Errors, `label` being how the caller
+  /// names this input (a flag, a field):
+  ///   invalid_argument "<label> = <name> is neither a file nor a preset: must be calm,
+  ///                     moderate, storm or a JSON file"
+  ///   io_error         "cannot read preset '<path>': <reason>"
+  ///   invalid_argument "preset '<path>' is not valid JSON"
+  /// On error the document is unchanged.
+  Status merge_preset(std::string_view name_or_path, std::string_view label = "preset");
+
+  /// Sets one key: `assignment` is "dotted.key=value", the value JSON or else a bare string
+  /// ("normals=analytic"); missing objects on the path are created. Errors (invalid_argument):
+  ///   "<label> '<assignment>': expected key=value", "<label> '<assignment>': empty key part",
+  ///   "<label> <key>: '<part>' is not inside an object". On error the document may hold the
+  ///   objects created on the path so far.
+  Status set(std::string_view assignment, std::string_view label = "set");
+
+  /// The configuration the document describes (as from_json).
+  [[nodiscard]] Result<SimulationConfig> config() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ocean::preset

@@ -1,0 +1,216 @@
+// The preset format: SimulationConfig ⇄ JSON document (see ocean/preset.hpp).
+#include <cmath>
+#include <string>
+
+#include "json_format.hpp"
+#include "object_reader.hpp"
+#include "ocean/preset.hpp"
+
+namespace ocean::preset {
+
+namespace detail {
+
+namespace {
+
+Json number_or_null(double v) { return std::isnan(v) ? Json(nullptr) : Json(v); }
+
+std::string_view fetch_law_name(FetchLaw law) {
+  return law == FetchLaw::hasselmann_1973 ? "hasselmann" : "cube-root";
+}
+
+Json wave_system_json(const WaveSystemParams& w) {
+  const FrequencySpectrumParams& s = w.spectrum;
+  return Json{
+      {"model", to_string(s.model)},
+      {"wind_speed_mps", number_or_null(s.wind_speed_mps)},
+      {"fetch_m", number_or_null(s.fetch_m)},
+      {"hs_m", number_or_null(s.significant_wave_height_m)},
+      {"tp_s", number_or_null(s.peak_period_s)},
+      {"gamma", std::isnan(s.gamma) ? Json("auto") : Json(s.gamma)},
+      {"fetch_law", fetch_law_name(s.fetch_law)},
+      {"normalization", s.normalization == JonswapNormalization::dnv ? "dnv" : "exact"},
+      {"depth_m", std::isinf(s.depth_m) ? Json(nullptr) : Json(s.depth_m)},
+      {"depth_factor", s.depth_factor == DepthFactor::exact ? "exact" : "thompson-vincent"},
+      {"phillips_amplitude", number_or_null(s.phillips_amplitude)},
+      {"cutoff_length_m", s.small_wave_cutoff_m},
+      {"direction_deg", w.direction_rad * 180.0 / kPi},
+      {"spreading", Json{{"model", to_string(w.spreading.model)},
+                         {"s", number_or_null(w.spreading.s)},
+                         {"alpha", w.spreading.alpha},
+                         {"counter_wave_suppression", w.spreading.counter_wave_suppression}}}};
+}
+
+Status read_wave_system(const Json& doc, const std::string& path, WaveSystemParams& w) {
+  ObjectReader r(doc, path);
+  FrequencySpectrumParams& s = w.spectrum;
+  std::string model(to_string(s.model));
+  r.string("model", model);
+  Result<SpectrumModel> m = parse_spectrum_model(model);
+  if (!m.ok()) return invalid_argument(r.path_of("model") + ": " + m.status().message());
+  s.model = m.value();
+  r.number("wind_speed_mps", s.wind_speed_mps, true);
+  r.number("fetch_m", s.fetch_m, true);
+  r.number("hs_m", s.significant_wave_height_m, true);
+  r.number("tp_s", s.peak_period_s, true);
+  if (const Json* g = r.child("gamma")) {
+    if (g->is_string() && g->get<std::string>() == "auto")
+      s.gamma = kUnset;
+    else if (g->is_number())
+      s.gamma = g->get<double>();
+    else
+      r.fail("gamma", "expected a number or \"auto\"");
+  }
+  std::string fetch_law(fetch_law_name(s.fetch_law)), normalization = "dnv", depth_factor = "exact";
+  if (s.normalization == JonswapNormalization::exact) normalization = "exact";
+  if (s.depth_factor == DepthFactor::thompson_vincent) depth_factor = "thompson-vincent";
+  r.string("fetch_law", fetch_law);
+  r.string("normalization", normalization);
+  r.string("depth_factor", depth_factor);
+  if (const Json* d = r.child("depth_m")) {
+    if (d->is_null())
+      s.depth_m = kInfiniteDepth;
+    else if (d->is_number())
+      s.depth_m = d->get<double>();
+    else
+      r.fail("depth_m", "expected a number or null (deep water)");
+  }
+  r.number("phillips_amplitude", s.phillips_amplitude, true);
+  r.number("cutoff_length_m", s.small_wave_cutoff_m);
+  double direction_deg = w.direction_rad * 180.0 / kPi;
+  r.number("direction_deg", direction_deg);
+  w.direction_rad = direction_deg * kPi / 180.0;
+  if (const Json* spreading = r.child("spreading")) {
+    ObjectReader sr(*spreading, r.path_of("spreading"));
+    std::string sm(to_string(w.spreading.model));
+    sr.string("model", sm);
+    Result<SpreadingModel> parsed = parse_spreading_model(sm);
+    if (!parsed.ok())
+      return invalid_argument(sr.path_of("model") + ": " + parsed.status().message());
+    w.spreading.model = parsed.value();
+    sr.number("s", w.spreading.s, true);
+    sr.number("alpha", w.spreading.alpha);
+    sr.boolean("counter_wave_suppression", w.spreading.counter_wave_suppression);
+    r.adopt(sr.finish());
+  }
+  if (fetch_law == "hasselmann")
+    s.fetch_law = FetchLaw::hasselmann_1973;
+  else if (fetch_law == "cube-root")
+    s.fetch_law = FetchLaw::cube_root;
+  else
+    r.fail("fetch_law", "expected \"hasselmann\" or \"cube-root\"");
+  if (normalization == "dnv")
+    s.normalization = JonswapNormalization::dnv;
+  else if (normalization == "exact")
+    s.normalization = JonswapNormalization::exact;
+  else
+    r.fail("normalization", "expected \"dnv\" or \"exact\"");
+  if (depth_factor == "exact")
+    s.depth_factor = DepthFactor::exact;
+  else if (depth_factor == "thompson-vincent")
+    s.depth_factor = DepthFactor::thompson_vincent;
+  else
+    r.fail("depth_factor", "expected \"exact\" or \"thompson-vincent\"");
+  return r.finish();
+}
+
+}  // namespace
+
+Json to_value(const SimulationConfig& c) {
+  Json sea{{"wind_sea", wave_system_json(c.sea.wind_sea)},
+           {"swell", c.sea.has_swell ? wave_system_json(c.sea.swell) : Json(nullptr)},
+           {"gravity_mps2", c.sea.dispersion.gravity_mps2}};
+  return Json{{"sea", sea},
+              {"resolution", c.resolution},
+              {"cascades_m", c.cascade_patch_sizes_m},
+              {"choppiness", c.choppiness},
+              {"loop_period_s", c.loop_period_s},
+              {"seed", c.seed},
+              {"normals", to_string(c.normals)},
+              {"roughness", c.roughness},
+              {"blue_channel", c.blue_channel == BlueChannel::foam ? "foam" : "jacobian"},
+              {"foam", Json{{"jacobian_start", c.foam.jacobian_start},
+                            {"jacobian_full", c.foam.jacobian_full},
+                            {"decay_per_s", c.foam.decay_per_s}}}};
+}
+
+Result<SimulationConfig> from_value(const Json& document) {
+  SimulationConfig c;
+  ObjectReader r(document, "");
+  if (const Json* sea = r.child("sea")) {
+    ObjectReader sr(*sea, "sea");
+    if (const Json* wind = sr.child("wind_sea")) {
+      if (Status s = read_wave_system(*wind, "sea.wind_sea", c.sea.wind_sea); !s.ok()) return s;
+    }
+    if (const Json* swell = sr.child("swell"); swell != nullptr && !swell->is_null()) {
+      c.sea.has_swell = true;
+      c.sea.swell.spectrum = {.model = SpectrumModel::jonswap};
+      c.sea.swell.spreading = {.model = SpreadingModel::cos2s, .s = 20.0};
+      if (Status s = read_wave_system(*swell, "sea.swell", c.sea.swell); !s.ok()) return s;
+    }
+    double gravity = c.sea.dispersion.gravity_mps2;
+    sr.number("gravity_mps2", gravity);
+    c.sea.dispersion.gravity_mps2 = gravity;
+    c.sea.wind_sea.spectrum.gravity_mps2 = gravity;
+    c.sea.swell.spectrum.gravity_mps2 = gravity;
+    if (Status s = sr.finish(); !s.ok()) return s;
+  }
+  long long resolution = c.resolution, seed = static_cast<long long>(c.seed);
+  r.integer("resolution", resolution);
+  r.integer("seed", seed);
+  if (resolution < 0 || resolution > 1 << 20) resolution = -1;
+  c.resolution = static_cast<int>(resolution);
+  if (seed < 0)
+    return invalid_argument("seed = " + std::to_string(seed) + " is out of range: must be >= 0");
+  c.seed = static_cast<std::uint64_t>(seed);
+  if (const Json* cascades = r.child("cascades_m")) {
+    if (!cascades->is_array())
+      return invalid_argument("cascades_m: expected an array of patch sizes in metres");
+    c.cascade_patch_sizes_m.clear();
+    for (const Json& v : *cascades) {
+      if (!v.is_number())
+        return invalid_argument("cascades_m: expected numbers, got a " +
+                                std::string(v.type_name()));
+      c.cascade_patch_sizes_m.push_back(v.get<double>());
+    }
+  }
+  r.number("choppiness", c.choppiness);
+  r.number("loop_period_s", c.loop_period_s);
+  r.number("roughness", c.roughness);
+  std::string normals(to_string(c.normals)), blue = "foam";
+  r.string("normals", normals);
+  r.string("blue_channel", blue);
+  if (const Json* foam = r.child("foam")) {
+    ObjectReader fr(*foam, "foam");
+    fr.number("jacobian_start", c.foam.jacobian_start);
+    fr.number("jacobian_full", c.foam.jacobian_full);
+    fr.number("decay_per_s", c.foam.decay_per_s);
+    r.adopt(fr.finish());
+  }
+  if (Status s = r.finish(); !s.ok()) return s;
+  Result<NormalMethod> method = parse_normal_method(normals);
+  if (!method.ok()) return method.status();
+  c.normals = method.value();
+  if (blue == "foam")
+    c.blue_channel = BlueChannel::foam;
+  else if (blue == "jacobian")
+    c.blue_channel = BlueChannel::jacobian;
+  else
+    return invalid_argument("blue_channel = '" + blue + "' is unknown: must be foam or jacobian");
+  if (Status s = validate(c); !s.ok()) return s;
+  if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
+  return c;
+}
+
+}  // namespace detail
+
+std::string to_json(const SimulationConfig& config, int indent) {
+  return detail::to_value(config).dump(indent);
+}
+
+Result<SimulationConfig> from_json(std::string_view text) {
+  const detail::Json document = detail::Json::parse(text, nullptr, false);
+  if (document.is_discarded()) return invalid_argument("the document is not valid JSON");
+  return detail::from_value(document);
+}
+
+}  // namespace ocean::preset

@@ -1,0 +1,158 @@
+// The preset format (ocean/preset.hpp): built-in presets, exact round trips through JSON, errors
+// that name the key's path in the document, and presets assembled in layers.
+#include "ocean/preset.hpp"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using ocean::ErrorCode;
+using ocean::SimulationConfig;
+namespace preset = ocean::preset;
+
+std::string error_of(std::string_view json) {
+  const auto r = preset::from_json(json);
+  EXPECT_FALSE(r.ok()) << json;
+  if (r.ok()) return "";
+  EXPECT_EQ(r.status().code(), ErrorCode::invalid_argument) << json;
+  return r.status().message();
+}
+
+TEST(Preset, BuiltinsByName) {
+  const std::vector<std::string_view> names = preset::builtin_names();
+  ASSERT_EQ(names, (std::vector<std::string_view>{"calm", "moderate", "storm"}));
+  for (const std::string_view name : names) {
+    SCOPED_TRACE(std::string(name));
+    EXPECT_FALSE(preset::builtin_json(name).empty());
+    const auto config = preset::builtin(name);
+    ASSERT_TRUE(config.ok()) << config.status().message();
+    EXPECT_TRUE(ocean::validate(config.value()).ok());
+  }
+  EXPECT_TRUE(preset::builtin_json("hurricane").empty());
+  const auto unknown = preset::builtin("hurricane");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_EQ(unknown.status().code(), ErrorCode::invalid_argument);
+  EXPECT_NE(unknown.status().message().find("hurricane"), std::string::npos);
+}
+
+// to_json → from_json → to_json gives the same text: every number round-trips exactly, unset
+// numbers (NaN) are null, deep water (infinite depth) is null, a swell survives.
+TEST(Preset, RoundTripIsExact) {
+  std::vector<SimulationConfig> configs = {SimulationConfig{}};
+  for (const std::string_view name : preset::builtin_names())
+    configs.push_back(preset::builtin(name).value());
+  SimulationConfig odd;
+  odd.choppiness = 0.1 + 0.2;  // not a short decimal
+  odd.sea.wind_sea.direction_rad = 1.0 / 3.0;
+  odd.seed = 1234567890123ull;
+  configs.push_back(odd);
+  for (const SimulationConfig& c : configs) {
+    const std::string text = preset::to_json(c);
+    const auto back = preset::from_json(text);
+    ASSERT_TRUE(back.ok()) << back.status().message() << "\n" << text;
+    EXPECT_EQ(preset::to_json(back.value()), text);
+    EXPECT_EQ(back.value().choppiness, c.choppiness);
+    EXPECT_EQ(back.value().seed, c.seed);
+    EXPECT_EQ(back.value().sea.has_swell, c.sea.has_swell);
+  }
+  const std::string defaults = preset::to_json(SimulationConfig{});
+  EXPECT_NE(defaults.find("\"depth_m\":null"), std::string::npos) << defaults;
+  EXPECT_NE(defaults.find("\"swell\":null"), std::string::npos) << defaults;
+  EXPECT_EQ(preset::to_json(SimulationConfig{}, 2).find('\n') != std::string::npos, true);
+}
+
+TEST(Preset, AbsentKeysKeepTheDefaults) {
+  const auto empty = preset::from_json("{}");
+  ASSERT_TRUE(empty.ok()) << empty.status().message();
+  EXPECT_EQ(preset::to_json(empty.value()), preset::to_json(SimulationConfig{}));
+  const auto some = preset::from_json(R"({"choppiness": 0.5, "normals": "analytic"})");
+  ASSERT_TRUE(some.ok()) << some.status().message();
+  EXPECT_EQ(some.value().choppiness, 0.5);
+  EXPECT_EQ(some.value().normals, ocean::NormalMethod::analytic);
+}
+
+TEST(Preset, ErrorsNameTheJsonPath) {
+  EXPECT_EQ(error_of(R"({"sea": {"wind_sea": {"fetch_m": "far"}}})"),
+            "sea.wind_sea.fetch_m: expected a number, got a string");
+  EXPECT_EQ(error_of(R"({"sea": {"swell": {"bogus": 1}}})"), "sea.swell.bogus: unknown key");
+  EXPECT_EQ(error_of(R"({"sea": {"wind_sea": {"spreading": {"alpha": true}}}})"),
+            "sea.wind_sea.spreading.alpha: expected a number, got a boolean");
+  EXPECT_EQ(error_of(R"({"foam": 3})"), "foam: expected an object");
+  EXPECT_EQ(error_of(R"({"resolution": 2.5})"), "resolution: expected an integer, got a number");
+  EXPECT_EQ(error_of(R"({"colour": "blue"})"), "colour: unknown key");
+  EXPECT_EQ(error_of(R"({"sea": {"wind_sea": {"gamma": "big"}}})"),
+            "sea.wind_sea.gamma: expected a number or \"auto\", got a string");
+  EXPECT_EQ(error_of("[1, 2]"), "the document: expected an object");
+  EXPECT_EQ(error_of("{\"seed\": "), "the document is not valid JSON");
+  // Values the configuration rejects: the message of validate().
+  EXPECT_NE(error_of(R"({"resolution": 100})").find("resolution = 100"), std::string::npos);
+}
+
+TEST(PresetDocument, LayersPresetThenOverrides) {
+  preset::Document doc;
+  ASSERT_TRUE(doc.merge_preset("storm").ok());
+  const auto storm = doc.config();
+  ASSERT_TRUE(storm.ok()) << storm.status().message();
+  EXPECT_EQ(preset::to_json(storm.value()), preset::to_json(preset::builtin("storm").value()));
+
+  ASSERT_TRUE(doc.set("normals=analytic").ok());          // a bare string
+  ASSERT_TRUE(doc.set("sea.wind_sea.fetch_m=5e4").ok());  // a JSON number, dotted key
+  ASSERT_TRUE(doc.set("foam.decay_per_s=0.25").ok());
+  const auto changed = doc.config();
+  ASSERT_TRUE(changed.ok()) << changed.status().message();
+  EXPECT_EQ(changed.value().normals, ocean::NormalMethod::analytic);
+  EXPECT_EQ(changed.value().sea.wind_sea.spectrum.fetch_m, 5e4);
+  EXPECT_EQ(changed.value().foam.decay_per_s, 0.25);
+  EXPECT_EQ(changed.value().resolution, storm.value().resolution);
+}
+
+TEST(PresetDocument, ErrorsNameTheCallersLabel) {
+  preset::Document doc;
+  const ocean::Status unknown = doc.merge_preset("hurricane", "--preset");
+  EXPECT_EQ(unknown.code(), ErrorCode::invalid_argument);
+  EXPECT_EQ(unknown.message(),
+            "--preset = hurricane is neither a file nor a preset: must be calm, moderate, storm "
+            "or a JSON file");
+  EXPECT_EQ(doc.set("seed", "--set").message(), "--set 'seed': expected key=value");
+  EXPECT_EQ(doc.set("=3", "--set").message(), "--set '=3': expected key=value");
+  EXPECT_EQ(doc.set("sea..x=1", "--set").message(), "--set 'sea..x=1': empty key part");
+  EXPECT_EQ(doc.set("seed.x=1", "--set").message(), "--set seed.x: 'x' is not inside an object");
+  EXPECT_EQ(doc.set("seed", "override").message(), "override 'seed': expected key=value");
+  // Unknown keys set by an override are found when the document is read.
+  ASSERT_TRUE(doc.set("sea.wind_sea.fetch=1").ok());
+  EXPECT_EQ(doc.config().status().message(), "sea.wind_sea.fetch: unknown key");
+}
+
+TEST(PresetDocument, ReadsFiles) {
+  const fs::path dir = fs::temp_directory_path() / ("preset_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const fs::path good = dir / "good.json", bad = dir / "bad.json";
+  std::ofstream(good) << R"({"choppiness": 0.7, "sea": {"wind_sea": {"wind_speed_mps": 9}}})";
+  std::ofstream(bad) << "{ not json";
+  preset::Document doc;
+  ASSERT_TRUE(doc.merge_preset(good.string()).ok());
+  const auto config = doc.config();
+  ASSERT_TRUE(config.ok()) << config.status().message();
+  EXPECT_EQ(config.value().choppiness, 0.7);
+  EXPECT_EQ(config.value().sea.wind_sea.spectrum.wind_speed_mps, 9.0);
+
+  const ocean::Status invalid = doc.merge_preset(bad.string());
+  EXPECT_EQ(invalid.code(), ErrorCode::invalid_argument);
+  EXPECT_EQ(invalid.message(), "preset '" + bad.string() + "' is not valid JSON");
+  const ocean::Status missing = doc.merge_preset((dir / "missing.json").string());
+  EXPECT_EQ(missing.code(), ErrorCode::io_error);
+  EXPECT_EQ(missing.message().rfind("cannot read preset '", 0), 0u) << missing.message();
+  // Failed merges leave the document as it was.
+  EXPECT_EQ(preset::to_json(doc.config().value()), preset::to_json(config.value()));
+  fs::remove_all(dir);
+}
+
+}  // namespace
