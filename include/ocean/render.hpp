@@ -3,9 +3,10 @@
 // foam and horizon fog into a linear HDR image, then tone-mapped into an sRGB image.
 //
 // Inputs: either a CPU Frame (upload(): its half-float displacement and packed RGBA8 mips are
-// copied into the renderer's own images at the start of the next draw, as seed 000 applies
-// them), or the GPU images of a VulkanBackend on the same Context (use_simulation_images(): no
-// copy). Outputs: the HDR and the sRGB image, on the device or read back.
+// copied into the renderer's own images at the start of the next draw, as Aebi, VR Ocean, §4.3,
+// applies them), or the GPU images of a VulkanBackend on the same Context
+// (use_simulation_images(): no copy). Outputs: the HDR and the sRGB image, on the device or read
+// back.
 //
 // Contract: make() and configure() allocate; draw()/record() allocate nothing. Every failure is
 // a Status with a one-line message ("no Vulkan device: ...", out of device memory, ...).

@@ -29,9 +29,13 @@ namespace ocean {
 
 /// How surface normals and the Jacobian are obtained from the synthesised fields.
 enum class NormalMethod {
-  central_difference,  ///< central differences of the displacement, toroidal wrap (seed 000 eq. 45)
-  analytic,  ///< inverse FFTs of the slope and displacement-gradient spectra (seeds 001/004)
-  sobel,     ///< 3×3 Sobel filter of the displacement (seed 002)
+  /// Central differences of the displacement, toroidal wrap (Aebi, VR Ocean, eqs. 45–46).
+  central_difference,
+  /// Inverse FFTs of the slope and displacement-gradient spectra (Tessendorf 2001, eq. 37;
+  /// Vincevičius 2024, eq. 2.8; Paleologue 2024, "Computing the Normals").
+  analytic,
+  /// 3×3 Sobel filter of the displacement (Mitchell 2005, §3.2).
+  sobel,
 };
 std::string_view to_string(NormalMethod method);
 Result<NormalMethod> parse_normal_method(std::string_view name);
@@ -39,34 +43,34 @@ Result<NormalMethod> parse_normal_method(std::string_view name);
 /// What the blue channel of the packed RGBA8 map carries.
 enum class BlueChannel {
   foam,      ///< accumulated foam coverage in [0, 1] (what shading needs)
-  jacobian,  ///< saturate(J/2 + 1/2), seed 000 eq. 50
+  jacobian,  ///< saturate(J/2 + 1/2), Aebi, VR Ocean, eq. 50
 };
 
 struct FoamParams {
   /// Foam appears where a cascade's Jacobian falls below `jacobian_start` and is full at
-  /// `jacobian_full` (linear ramp between, M.7.4). J < 0 is a fold (seed 000 §3.8.2), but one
-  /// band of the spectrum rarely folds on its own: the defaults give whitecap coverage of the
-  /// order of Monahan & O'Muircheartaigh (1980), W ≈ 3.84e-6·U10^3.41 (≈1 % at 10 m/s), for the
-  /// default 256² cascades.
+  /// `jacobian_full` (linear ramp between, M.7.4). J < 0 is a fold (Aebi, VR Ocean, eq. 48),
+  /// but one band of the spectrum rarely folds on its own: the defaults give whitecap coverage of
+  /// the order of Monahan & O'Muircheartaigh (1980), W ≈ 3.84e-6·U10^3.41 (≈1 % at 10 m/s), for
+  /// the default 256² cascades.
   double jacobian_start = 0.8;
   double jacobian_full = 0.5;
-  /// Decay of accumulated foam per second (seed 001 §2.4.2); 0 keeps foam forever, large values
-  /// disable accumulation.
+  /// Decay of accumulated foam per second (Vincevičius 2024, §2.4.2); 0 keeps foam forever,
+  /// large values disable accumulation.
   double decay_per_s = 0.6;
 };
 
 /// The per-texel float arrays a frame carries besides those every frame has (the float3 and half4
-/// displacement and the packed RGBA8 chain with its mips: seed 000's output set, all a renderer
-/// uploads). Arrays not requested stay empty and are neither computed into nor written, which
-/// saves 20 bytes per texel of stores and memory; foam still accumulates (in the backend's state)
-/// when the packed map's blue channel carries it.
+/// displacement and the packed RGBA8 chain with its mips: the texture set a renderer needs, all it
+/// uploads, as in Aebi, VR Ocean, §3.7–3.9). Arrays not requested stay empty and are neither
+/// computed into nor written, which saves 20 bytes per texel of stores and memory; foam still
+/// accumulates (in the backend's state) when the packed map's blue channel carries it.
 struct FrameOutputs {
   bool normal = true;    ///< CascadeFrame::normal (float3)
   bool jacobian = true;  ///< CascadeFrame::jacobian
   bool foam = true;      ///< CascadeFrame::foam
   /// Every array (the default).
   static constexpr FrameOutputs all() { return {}; }
-  /// Seed 000's output set only: the displacement (float3 + half4) and the RGBA8 chain.
+  /// Only the texture set a renderer needs: the displacement (float3 + half4) and the RGBA8 chain.
   static constexpr FrameOutputs seed000() { return {false, false, false}; }
   friend bool operator==(const FrameOutputs&, const FrameOutputs&) = default;
 };
@@ -86,12 +90,12 @@ struct SimulationConfig {
   /// Patch side of each cascade, m, largest first. Non-integer ratios keep the patterns of the
   /// cascades from lining up (visible tiling). Each cascade synthesises one band of |k| (M.7.1).
   std::vector<double> cascade_patch_sizes_m = {1000.0, 233.0, 57.0};
-  double choppiness = 1.0;       ///< λ ≥ 0 (seed 000 eq. 25); 0 = heights only
+  double choppiness = 1.0;       ///< λ ≥ 0 (Aebi, VR Ocean, eq. 25); 0 = heights only
   double loop_period_s = 200.0;  ///< T: the surface repeats after T seconds; 0 = never
   std::uint64_t seed = 1;
   AmplitudeConvention convention = AmplitudeConvention::variance_preserving;
   NormalMethod normals = NormalMethod::central_difference;
-  /// Base microfacet roughness r ∈ [0, 1] encoded in the normal length (seed 000 eq. 49).
+  /// Base microfacet roughness r ∈ [0, 1] encoded in the normal length (Aebi, VR Ocean, eq. 49).
   double roughness = 0.1;
   FoamParams foam;
   BlueChannel blue_channel = BlueChannel::foam;
@@ -111,7 +115,7 @@ InitialSpectrumParams cascade_spectrum_params(const SimulationConfig& config, st
 
 /// Number of texels in mip levels 0..log2 N of an N×N map: (4N² − 1)/3.
 std::size_t mip_chain_texels(int resolution);
-/// Offset of mip level m in the contiguous chain (seed 000 eq. 55).
+/// Offset of mip level m in the contiguous chain (Aebi, VR Ocean, eq. 55).
 std::size_t mip_offset(int resolution, int level);
 
 /// The outputs of one cascade for one frame. Arrays are row-major, index row·N + col, in
@@ -172,7 +176,7 @@ class Simulator {
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
 
-  /// Regenerates spectra and buffers for a new configuration (on demand, seed 000 §4.2.1).
+  /// Regenerates spectra and buffers for a new configuration (on demand, Aebi, VR Ocean, §4.2.1).
   Status reconfigure(const SimulationConfig& config);
   /// Computes the frame at time_s synchronously and publishes it.
   void step(double time_s);

@@ -3,8 +3,8 @@
 // and uploads it once; a frame writes the per-frame parameters, resubmits the pre-recorded
 // command buffer and copies the read-back outputs into the Frame.
 //
-// This work is based on: seed 000 §4.2 (stage chain), §4.2.1 (spectrum regenerated on demand);
-// docs/math.md (M.7.3) for the exact looping phase.
+// This work is based on: Aebi, VR Ocean, §4.2 (stage chain), §4.2.1 (spectrum regenerated on
+// demand); docs/math.md (M.7.3) for the exact looping phase.
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -110,7 +110,7 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
   p.j_start = static_cast<float>(config.foam.jacobian_start);
   p.j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
   const float r = static_cast<float>(config.roughness);
-  p.base_length = 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));      // seed 000 eq. 49
+  p.base_length = 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));      // Aebi, VR Ocean, eq. 49
   const float t = std::clamp(3.0f * p.base_length - 2.0f, 0.0f, 1.0f);  // eq. 53
   p.base_smoothness = 1.0f - std::sqrt((1.0f - t) * (1.0f + 0.15f * t));
   for (std::uint32_t c = 0; c < cascades; ++c) {

@@ -1,7 +1,7 @@
 #version 450
 // fft_columns.comp — the second FFT axis: each workgroup transforms one column of one plane of
 // one cascade and applies the (−1)^(col+row) sign that moves DC from the centre of the spectrum
-// (seed 000 eqs. 42–43). Dispatch (N, planes, cascades). Mirrors fft::Plan2D::inverse.
+// (Aebi, VR Ocean, eqs. 42–43). Dispatch (N, planes, cascades). Mirrors fft::Plan2D::inverse.
 #include "common.glsl"
 #include "fft.glsl"
 

@@ -5,7 +5,7 @@
 //
 // This work is based on:
 //   - Tessendorf, J. (2001) Simulating Ocean Water, eqs. 43–44 (evolution), 29 (choppy
-//     displacement), 37 (slopes); seed 000 eqs. 24–30 (single-FMA evolution).
+//     displacement), 37 (slopes); Aebi, VR Ocean, eqs. 24–30 (single-FMA evolution).
 // Equations: docs/math.md (M.6.5), (M.7.2), (M.7.3). Mirrors cpu::evolve and
 // cpu::build_plane_factors.
 #include "common.glsl"

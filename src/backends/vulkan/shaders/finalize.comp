@@ -4,9 +4,10 @@
 // accumulation, and the base level of the packed RGBA8 map. Dispatch (N/8, N/8, cascades).
 //
 // This work is based on:
-//   - Seed 000 §3.7–3.8: eq. 44 (displacement), eqs. 45–46 (central differences, toroidal
-//     wrap), eq. 48 (Jacobian), eq. 49 (normal length), eqs. 50–51 (RGBA8).
-//   - Seed 002 (Sobel normals); seed 001 §2.4 (Jacobian foam and its accumulation).
+//   - Aebi, VR Ocean, §3.7–3.8: eq. 44 (displacement), eqs. 45–46 (central differences,
+//     toroidal wrap), eq. 48 (Jacobian), eq. 49 (normal length), eqs. 50–51 (RGBA8).
+//   - Mitchell 2005, §3.2 (Sobel normals); Vincevičius 2024, §2.3.3, eq. 2.8 (analytic slopes),
+//     §2.4 (Jacobian foam and its accumulation, listing 2.4).
 //   - Tessendorf, J. (2001) Simulating Ocean Water §4.4.
 // Equations: docs/math.md §7. Mirrors cpu::finalize (src/backends/cpu/finalize.cpp).
 #include "common.glsl"
@@ -62,7 +63,7 @@ void main() {
     gx = vec3(p2.y, p1.y, p3.y);
     gz = vec3(p3.y, p2.x, p3.x);
   } else if (params.normal_method == OCEAN_NORMALS_SOBEL) {
-    // Smoothed central difference, weights (1, 2, 1)/8 (seed 002).
+    // Smoothed central difference, weights (1, 2, 1)/8 (Sobel, Mitchell 2005, §3.2).
     gx = ((displacement_at(cascade, c + 1, r - 1) + 2.0 * displacement_at(cascade, c + 1, r) +
            displacement_at(cascade, c + 1, r + 1)) -
           (displacement_at(cascade, c - 1, r - 1) + 2.0 * displacement_at(cascade, c - 1, r) +
@@ -87,7 +88,7 @@ void main() {
   const float len = length(n);
   n = len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
 
-  // Foam: a ramp on J, accumulated with seed 001's decay (M.7.4).
+  // Foam: a ramp on J, accumulated with Vincevičius's (2024) decay, listing 2.4 (M.7.4).
   const float now = clamp((params.j_start - jacobian) / params.j_range, 0.0, 1.0);
   float foam = now;
   if (params.reset_foam == 0u) {

@@ -4,7 +4,7 @@
 // smoothness. Dispatch (size/8, size/8, cascades) per level, level 1 … log2 N.
 //
 // This work is based on:
-//   - Seed 000 §3.9 and §4.4: eq. 52 (box filter), eq. 53 (length → smoothness), eq. 55
+//   - Aebi, VR Ocean, §3.9 and §4.4: eq. 52 (box filter), eq. 53 (length → smoothness), eq. 55
 //     (contiguous mip offsets); Toksvig, M. (2005) Mipmapping normal maps, JGT 10(3).
 // Equations: docs/math.md (M.7.5). Mirrors cpu::build_mips (src/backends/cpu/mips.cpp).
 #include "common.glsl"

@@ -29,7 +29,7 @@ using uint = std::uint32_t;
 #define OCEAN_BINDING_JACOBIAN 8     // float per texel
 #define OCEAN_BINDING_FOAM 9         // float per texel; also the accumulated foam state
 #define OCEAN_BINDING_MIP_WORK 10    // vec4 (n·|n|, blue) per mip texel
-#define OCEAN_BINDING_PACKED 11      // uint RGBA8 per mip texel (seed 000 eq. 51)
+#define OCEAN_BINDING_PACKED 11      // uint RGBA8 per mip texel (Aebi, VR Ocean, eq. 51)
 #define OCEAN_BINDING_DISP_IMAGE 12  // image2DArray rgba16f, one layer per cascade
 #define OCEAN_BINDING_NORMAL_IMAGE 13 // image2DArray rgba8[OCEAN_MAX_MIPS], one view per mip
 #define OCEAN_BINDING_COUNT 14
@@ -56,7 +56,7 @@ struct SimParams {
   float choppiness;  // λ
   float j_start;     // foam ramp (M.7.4)
   float j_range;     // jacobian_start − jacobian_full
-  float base_length;      // normal length from roughness (seed 000 eq. 49)
+  float base_length;      // normal length from roughness (Aebi, VR Ocean, eq. 49)
   float base_smoothness;  // smoothness of base_length (eq. 53)
   uint pad0;
   uint pad1;
