@@ -14,7 +14,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
-  // LOD selection (seed 000 §5) with culling boxes that include the waves' reach.
+  // LOD selection (Aebi, VR Ocean, §5) with culling boxes that include the waves' reach.
   const auto t0 = std::chrono::steady_clock::now();
   lod::LodParams lp;
   lp.ocean_size_m = view.ocean_size_m;
@@ -120,7 +120,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
   vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
-  for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (seed 000 eq. 70)
+  for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (Aebi, VR Ocean, eq. 70)
     vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
     ++stats_.draw_calls;
     stats_.patches += b.count;

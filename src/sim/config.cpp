@@ -1,6 +1,7 @@
 // Simulation configuration: validation, cascade wavenumber bands and the mip-chain layout.
 //
-// Sources: seed 001 §2.5 (cascades against tiling); seed 000 eq. 55 (mip offsets).
+// Sources: Vincevičius 2024, §2.5 (cascades against tiling); Aebi, VR Ocean, eq. 55 (mip
+// offsets).
 // Equations: docs/math.md §7.
 #include <bit>
 #include <cmath>
@@ -119,7 +120,7 @@ std::size_t mip_chain_texels(int resolution) {
 
 std::size_t mip_offset(int resolution, int level) {
   const int log2n = std::countr_zero(static_cast<unsigned>(resolution));
-  // offset(m) = (4N² − 1)/3 − (4^(log2 N + 1 − m) − 1)/3   (seed 000 eq. 55)
+  // offset(m) = (4N² − 1)/3 − (4^(log2 N + 1 − m) − 1)/3   (Aebi, VR Ocean, eq. 55)
   const std::size_t remaining = ((std::size_t{1} << (2 * (log2n + 1 - level))) - 1) / 3;
   return mip_chain_texels(resolution) - remaining;
 }

@@ -120,7 +120,8 @@ TEST(VulkanCli, BenchReportsGpuStages) {
   }
   EXPECT_NEAR(sum, row["gpu_total_ms"].get<double>(), 0.05 * sum + 1e-3);
   EXPECT_EQ(row["outputs"].get<std::string>(), "all");
-  // Seed 000's output set: the optional arrays are not read back, every stage still reported.
+  // The texture set a renderer needs: the optional arrays are not read back, every stage still
+  // reported.
   const ocean_test::CliRun lean = ocean_test::run_cli(
       "bench --backend vulkan --json --resolution 32 --cascades 2 --outputs seed000");
   ASSERT_EQ(lean.exit_code, 0) << lean.err;

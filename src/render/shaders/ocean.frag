@@ -1,9 +1,10 @@
 #version 450
 // Water shading (docs/rendering.md R.5–R.8, R.11): per-pixel normals, foam and roughness from the
-// cascades' mipped maps, sky reflection with Schlick's Fresnel (F0 = 0.02, seed 004), the sun's
-// specular from a GGX microfacet lobe whose roughness the mips encode (seed 000 eqs. 49, 53),
-// light scattered out of the water body and through thin crests, foam, and seed 002's
-// composition fog(s·(1 − r) + r·(env + sun)) with seed 004's horizon fog.
+// cascades' mipped maps, sky reflection with Schlick's Fresnel (F0 = 0.02, Paleologue 2024), the
+// sun's specular from a GGX microfacet lobe whose roughness the mips encode (Aebi, VR Ocean,
+// eqs. 49, 53), light scattered out of the water body and through thin crests, foam, and
+// Mitchell's (2005, §4, eq. 5) composition fog(s·(1 − r) + r·(env + sun)) with Paleologue's
+// (2024) horizon fog.
 //
 // Sources: Walter et al. (2007) "Microfacet models for refraction through rough surfaces" (GGX
 // distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano
@@ -98,14 +99,14 @@ void main() {
                  pow(clamp(0.5 - 0.5 * dot(L, N), 0.0, 1.0), 2.0);
   vec3 s = body + through;
 
-  // Seed 002: s·(1 − r) + r·(env + sun).
+  // Mitchell 2005, eq. 5: s·(1 − r) + r·(env + sun).
   vec3 c = s * (1.0 - fresnel) + fresnel * (env + sun);
 
   // Foam: a bright diffuse layer over the water (R.11).
   vec3 foam_colour = 0.85 * u.foam_brightness * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
 
-  // Horizon fog (seed 004, R.8).
+  // Horizon fog (Paleologue 2024, R.8).
   c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
 
   if (u.debug_view == OCEAN_RENDER_DEBUG_LOD_COLOURS) {

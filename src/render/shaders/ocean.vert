@@ -1,11 +1,11 @@
 #version 450
-// The ocean patches of the quadtree LOD (seed 000 §5, eq. 70) and the horizon skirt: the unit
-// patch mesh scaled and moved per instance, displaced by the sum of the cascades' displacement
-// maps (seed 000 eq. 44; sampling M.7.6). Each cascade's displacement fades out where the mesh
-// is too coarse to carry its dominant wavelength, and all of it fades out towards the border of
-// the ocean square, where the flat skirt begins (docs/rendering.md R.9, R.10). Both weights are
-// functions of the world position and the camera alone, so vertices that two patches share get
-// the same displacement and the stitched mesh stays closed.
+// The ocean patches of the quadtree LOD (Aebi, VR Ocean, §5, eq. 70) and the horizon skirt
+// (§5.7): the unit patch mesh scaled and moved per instance, displaced by the sum of the cascades'
+// displacement maps (Aebi, VR Ocean, eq. 44; sampling M.7.6). Each cascade's displacement fades
+// out where the mesh is too coarse to carry its dominant wavelength, and all of it fades out
+// towards the border of the ocean square, where the flat skirt begins (docs/rendering.md R.9,
+// R.10). Both weights are functions of the world position and the camera alone, so vertices that
+// two patches share get the same displacement and the stitched mesh stays closed.
 #include "render_common.glsl"
 
 layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)

@@ -4,7 +4,9 @@
 //
 // Sources (equations in docs/rendering.md, R.n):
 //   - Sky: the table src/render/sky.cpp fills (R.1–R.4), sampled as Hillaire (2020) does.
-//   - Fresnel: Schlick (1994) with water's F0 = 0.02 (seed 004) (R.6).
+//   - Fresnel: Schlick (1994) with water's F0 = 0.02 (Paleologue 2024, "Fresnel Reflection")
+//     (R.6).
+//   - Horizon fog: Paleologue 2024, "A bit of fog" (R.8).
 
 #ifndef OCEAN_RENDER_COMMON_GLSL
 #define OCEAN_RENDER_COMMON_GLSL
@@ -38,7 +40,7 @@ float fresnel_schlick(float cos_theta) {  // R.6
   return 0.02 + 0.98 * m2 * m2 * m;
 }
 
-// Horizon-weighted fog of seed 004, read as (1 − exp(−(dρ)²))·(1 − |v_y|)⁴ (R.8).
+// Horizon-weighted fog of Paleologue (2024), read as (1 − exp(−(dρ)²))·(1 − |v_y|)⁴ (R.8).
 float horizon_fog(float distance_m, float view_y) {
   float d = distance_m * u.fog_density_per_m;
   float w = 1.0 - abs(view_y);
