@@ -22,7 +22,7 @@ void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_
   const bool looping = loop_period_s > 0.0;
   const std::size_t record = evolution_record(looping);
   const auto n = static_cast<std::size_t>(state.resolution);
-  constexpr auto kLanes = static_cast<std::size_t>(fft::SimdPlan2D::kBlock);
+  constexpr auto kLanes = static_cast<std::size_t>(fft::LanePlan2D::kBlock);
   const std::size_t blocks = n / kLanes;
   const std::size_t stored = mirror_pairs && blocks >= 2 ? blocks / 2 : blocks;
   state.evolution_spectrum = AlignedFloats(stored * n * record);
@@ -64,7 +64,7 @@ void build_kernel_inputs(CascadeState& state, double loop_period_s, bool mirror_
 // row → (N − row) mod N (the mirror row), or [0, N) where no such interval is smaller.
 void build_row_ranges(CascadeState& state) {
   const auto n = static_cast<std::size_t>(state.resolution);
-  constexpr auto kLanes = static_cast<std::size_t>(fft::SimdPlan2D::kBlock);
+  constexpr auto kLanes = static_cast<std::size_t>(fft::LanePlan2D::kBlock);
   const std::size_t blocks = n / kLanes;
   const auto has_spectrum = [&](std::size_t row, std::size_t col) {
     const auto& s = state.spectrum.packed[row * n + col];
@@ -149,10 +149,10 @@ fft::SplitComplex plane_of(CascadeState& state, std::size_t p) {
 /// K lane blocks of the largest size on a worker's stack (no allocation in the frame path).
 template <std::size_t K>
 struct StackLanes {
-  static constexpr std::size_t kFloats = fft::SimdPlan2D::kBlock * fft::kMaxSimdSize;
+  static constexpr std::size_t kFloats = fft::LanePlan2D::kBlock * fft::kMaxSimdSize;
   alignas(64) float re[K][kFloats];
   alignas(64) float im[K][kFloats];
-  fft::SimdPlan2D::LaneBlock operator[](std::size_t i) { return {re[i], im[i]}; }
+  fft::LanePlan2D::LaneBlock operator[](std::size_t i) { return {re[i], im[i]}; }
 };
 
 }  // namespace
@@ -165,7 +165,7 @@ Status CpuBackend::configure(const SimulationConfig& config, TaskRunner& runner)
   if (!sea.ok()) return sea.status();
   Result<fft::Plan2D> plan = fft::Plan2D::make(config.resolution);
   if (!plan.ok()) return plan.status();
-  Result<fft::SimdPlan2D> simd_plan = fft::SimdPlan2D::make(config.resolution);
+  Result<fft::LanePlan2D> simd_plan = fft::LanePlan2D::make(config.resolution);
   if (!simd_plan.ok()) return simd_plan.status();
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
   const auto texels =
@@ -280,14 +280,14 @@ void CpuBackend::prepare_evolution(double time_s) {
 
 void CpuBackend::synthesise_fused(TaskRunner& runner, std::size_t first_group,
                                   std::size_t group_count, Frame& out) {
-  using LaneBlock = fft::SimdPlan2D::LaneBlock;
+  using LaneBlock = fft::LanePlan2D::LaneBlock;
   const int n = config_.resolution;
   const auto blocks = static_cast<std::size_t>(simd_plan_.blocks());
   const std::size_t items = group_count * blocks;
   // Column blocks in mirror pairs (b, N/16 − 1 − b) from N = 32: h̃(−k) = conj h̃(k).
   const std::size_t sides = blocks >= 2 ? 2 : 1;
   const std::size_t units = blocks / sides;
-  constexpr std::size_t kLane = fft::SimdPlan2D::kBlock;
+  constexpr std::size_t kLane = fft::LanePlan2D::kBlock;
   const std::size_t block_floats = kLane * static_cast<std::size_t>(n);
   // Columns: every (group, column block pair) evolves h̃ once per cascade and writes each
   // plane's spectrum where transform() wants it, so the result lands in the plane's tile

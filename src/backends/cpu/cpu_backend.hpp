@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "kernels.hpp"
+#include "fft/lane_plan.hpp"
 #include "ocean/fft.hpp"
 #include "ocean/sim.hpp"
 
@@ -148,7 +149,7 @@ class CpuBackend final : public Backend {
   TaskRunner* runner_ = nullptr;
   std::unique_ptr<TaskRunner> serial_ = make_serial_runner();  ///< a chain's stages, one thread
   fft::Plan2D plan_;
-  fft::SimdPlan2D simd_plan_;
+  fft::LanePlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
   /// Cascades transformed together: pairs sharing plane 1 (Dz of the first in its real part,
   /// of the second in its imaginary part: 3 transforms for 2 cascades instead of 4) when the
