@@ -94,20 +94,20 @@ std::size_t frame_bytes(const CascadeFrame& f) {
 
 Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
                                     TaskRunner& runner, double min_time, double interval) {
-  cpu::CpuBackend backend(options);
-  if (Status s = backend.configure(config, runner); !s.ok()) return s;
+  const std::unique_ptr<cpu::CpuBackend> backend = cpu::make_cpu_backend(options);
+  if (Status s = backend->configure(config, runner); !s.ok()) return s;
   Frame frame;
-  backend.allocate(frame);
+  backend->allocate(frame);
   double t = 0.0;
   std::vector<double> synthesis, finalize, mips;
   const std::vector<double> frames = time_runs(
       min_time,
       [&] {
-        backend.step(t, frame);
+        backend->step(t, frame);
         t += 1.0 / 90.0;
-        synthesis.push_back(backend.last_stage_times().synthesis_s);
-        finalize.push_back(backend.last_stage_times().finalize_s);
-        mips.push_back(backend.last_stage_times().mips_s);
+        synthesis.push_back(backend->last_stage_times().synthesis_s);
+        finalize.push_back(backend->last_stage_times().finalize_s);
+        mips.push_back(backend->last_stage_times().mips_s);
       },
       interval);
   const auto drop_warmup = [](std::vector<double>& v) { v.erase(v.begin(), v.begin() + 2); };
@@ -117,7 +117,7 @@ Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOpti
                         stats_of(finalize),
                         stats_of(mips),
                         frames.size(),
-                        backend.state_bytes_per_cascade(),
+                        backend->state_bytes_per_cascade(),
                         frame_bytes(frame.cascades.front())};
 }
 

@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "cpu/cpu_backend.hpp"
+#include "ocean/cpu_backend.hpp"
 #include "ocean/core.hpp"
 
 namespace ocean::cli {
