@@ -12,7 +12,7 @@
 namespace {
 
 struct Fixture {
-  ocean::cpu::CpuBackend backend;
+  ocean::cpu::CpuBackendImpl backend;
   ocean::Frame frame;
   std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
   ocean::cpu::CascadeState state;

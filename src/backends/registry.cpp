@@ -1,8 +1,8 @@
 // The backend table: every backend by name, with a clear answer for those not built in.
 #include <string>
 
-#include "cpu/cpu_backend.hpp"
 #include "ocean/backends.hpp"
+#include "ocean/cpu_backend.hpp"
 #include "ocean/fft.hpp"
 #ifdef OCEAN_HAS_VULKAN
 #include "ocean/vk/simulation.hpp"
@@ -40,7 +40,7 @@ std::vector<BackendInfo> backend_table(bool probe) {
 std::vector<BackendInfo> list_backends() { return backend_table(true); }
 
 Result<std::unique_ptr<Backend>> make_backend(std::string_view name) {
-  if (name == "cpu") return std::unique_ptr<Backend>(std::make_unique<cpu::CpuBackend>());
+  if (name == "cpu") return std::unique_ptr<Backend>(cpu::make_cpu_backend());
 #ifdef OCEAN_HAS_VULKAN
   if (name == "vulkan") {
     Result<std::unique_ptr<vk::VulkanBackend>> b = vk::make_vulkan_backend();

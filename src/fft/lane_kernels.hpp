@@ -7,8 +7,6 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "ocean/fft.hpp"
-
 namespace ocean::fft::detail {
 
 /// Signals transformed together by one kernel call (one AVX-512 vector, two AVX2 vectors).
@@ -20,8 +18,14 @@ struct LaneBuffer {
   std::size_t stride;  ///< floats between consecutive elements (≥ kLanes)
 };
 
-// Stage (ocean/fft.hpp): radix 16, 8 or 4 on sub-transforms of length ns (product of the radices
-// of the previous stages); twiddles w^r, r = 1..radix−1, for k ∈ [0, ns) start at `twiddle`.
+/// One stage of the SIMD plan: radix 16, 8 or 4 on sub-transforms of length ns (product of the
+/// radices of the previous stages); twiddles w^r, r = 1..radix−1, for k ∈ [0, ns) start at
+/// `twiddle`.
+struct Stage {
+  int radix;
+  int ns;
+  std::size_t twiddle;
+};
 
 struct StageTable {
   int n;

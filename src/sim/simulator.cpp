@@ -1,18 +1,24 @@
 // Simulator: owns a backend and two frames (front, back); kick/wait overlaps the next frame's
 // computation with reading the current one (seed 000 §4.3 double buffering).
-#include <tbb/task_group.h>
-
 #include "ocean/sim.hpp"
 
 namespace ocean {
 
+// The background step runs on the runner's async slot. The slot keeps only a reference to the
+// job, so the job (and the frame time it reads) lives here, as long as the slot.
 struct Simulator::Async {
-  tbb::task_group group;
+  struct Job {
+    Simulator* sim = nullptr;
+    double time_s = 0.0;
+    void operator()() const { sim->backend_->step(time_s, sim->frames_[1 - sim->front_]); }
+  };
+  std::unique_ptr<AsyncSlot> slot;
+  Job job;
   bool pending = false;
 };
 
 Simulator::~Simulator() {
-  if (async_) async_->group.wait();
+  if (async_) async_->slot->wait();
 }
 
 Result<std::unique_ptr<Simulator>> Simulator::make(const SimulationConfig& config,
@@ -23,6 +29,8 @@ Result<std::unique_ptr<Simulator>> Simulator::make(const SimulationConfig& confi
   sim->runner_ = runner ? std::move(runner) : std::shared_ptr<TaskRunner>(make_tbb_runner());
   sim->backend_ = std::move(backend);
   sim->async_ = std::make_unique<Async>();
+  sim->async_->slot = sim->runner_->make_async_slot();
+  sim->async_->job.sim = sim.get();
   if (Status s = sim->reconfigure(config); !s.ok()) return s;
   return sim;
 }
@@ -47,14 +55,14 @@ void Simulator::step(double time_s) {
 
 void Simulator::kick(double time_s) {
   wait();
-  Frame& back = frames_[1 - front_];
+  async_->job.time_s = time_s;
   async_->pending = true;
-  async_->group.run([this, &back, time_s] { backend_->step(time_s, back); });
+  async_->slot->kick(async_->job);
 }
 
 void Simulator::wait() {
   if (!async_->pending) return;
-  async_->group.wait();
+  async_->slot->wait();
   async_->pending = false;
   front_ = 1 - front_;
 }

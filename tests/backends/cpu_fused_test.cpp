@@ -16,7 +16,7 @@
 
 namespace {
 
-using ocean::cpu::CpuBackend;
+using ocean::cpu::CpuBackendImpl;
 using ocean::cpu::CpuOptions;
 using ocean::cpu::CpuPipeline;
 
@@ -42,7 +42,7 @@ void for_each_target(Body body) {
 }
 
 ocean::Frame run(const ocean::SimulationConfig& config, CpuPipeline pipeline, int steps) {
-  CpuBackend backend(CpuOptions{.pipeline = pipeline});
+  CpuBackendImpl backend(CpuOptions{.pipeline = pipeline});
   auto runner = ocean::make_tbb_runner();
   EXPECT_TRUE(backend.configure(config, *runner).ok());
   ocean::Frame frame;
@@ -360,7 +360,7 @@ TEST(CpuFused, PairedCascadesMatchUnpairedReference) {
       expect_frames_agree(run(config, CpuPipeline::fused_simd, 2), reference);
 
       ScalarEngine engine(n);
-      CpuBackend backend(CpuOptions{.pipeline = CpuPipeline::external_fft, .fft = &engine});
+      CpuBackendImpl backend(CpuOptions{.pipeline = CpuPipeline::external_fft, .fft = &engine});
       auto runner = ocean::make_tbb_runner();
       ASSERT_TRUE(backend.configure(config, *runner).ok());
       ocean::Frame frame;
@@ -375,7 +375,7 @@ TEST(CpuFused, PairedCascadesMatchUnpairedReference) {
 }
 
 TEST(CpuFused, ExternalPipelineNeedsAnEngine) {
-  CpuBackend backend(CpuOptions{.pipeline = CpuPipeline::external_fft});
+  CpuBackendImpl backend(CpuOptions{.pipeline = CpuPipeline::external_fft});
   auto runner = ocean::make_serial_runner();
   const ocean::Status s = backend.configure(ocean::SimulationConfig{}, *runner);
   ASSERT_FALSE(s.ok());

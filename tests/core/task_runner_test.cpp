@@ -1,10 +1,13 @@
 // Task runners cover every index exactly once, whatever the grain and thread count, also when a
-// body runs a parallel loop of its own (the CPU backend's chained frame does).
+// body runs a parallel loop of its own (the CPU backend's chained frame does); async slots run
+// a job inline (serial), concurrently with the caller (oneTBB), or on an engine's own threads.
 #include "ocean/task_runner.hpp"
 
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -48,6 +51,111 @@ TEST(TaskRunner, NestedLoopsCoverEveryIndexOnce) {
     });
     for (std::size_t i = 0; i < hits.size(); ++i) ASSERT_EQ(hits[i].load(), 1) << i;
   }
+}
+
+TEST(TaskRunner, SerialSlotRunsTheJobInlineInKick) {
+  auto runner = ocean::make_serial_runner();
+  auto slot = runner->make_async_slot();
+  const std::thread::id caller = std::this_thread::get_id();
+  int runs = 0;
+  std::thread::id ran_on;
+  auto job = [&] {
+    ++runs;
+    ran_on = std::this_thread::get_id();
+  };
+  slot->kick(job);
+  EXPECT_EQ(runs, 1);  // before wait()
+  EXPECT_EQ(ran_on, caller);
+  slot->wait();
+  slot->wait();  // nothing in flight: returns at once
+  EXPECT_EQ(runs, 1);
+}
+
+// The job waits for the caller to pass kick(): it can finish only if it runs concurrently.
+TEST(TaskRunner, TbbSlotRunsTheJobConcurrentlyWithTheCaller) {
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one hardware thread";
+  auto runner = ocean::make_tbb_runner();
+  auto slot = runner->make_async_slot();
+  std::atomic<bool> kicked{false}, saw_kick{false};
+  std::vector<std::atomic<int>> hits(1000);
+  auto job = [&] {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (!kicked.load() && std::chrono::steady_clock::now() < deadline) std::this_thread::yield();
+    saw_kick = kicked.load();
+    runner->parallel_for(hits.size(), 16, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) hits[i].fetch_add(1);
+    });
+  };
+  for (int round = 0; round < 3; ++round) {
+    kicked = false;
+    saw_kick = false;
+    slot->kick(job);
+    kicked = true;
+    slot->wait();
+    EXPECT_TRUE(saw_kick.load());
+  }
+  for (const auto& h : hits) ASSERT_EQ(h.load(), 3);
+}
+
+// An engine's job system: parallel_for on the caller's thread, async jobs on a thread the
+// engine owns. The default slot of a runner that does not override make_async_slot runs inline.
+class EngineRunner final : public ocean::TaskRunner {
+ public:
+  void parallel_for(std::size_t n, std::size_t /*grain*/,
+                    ocean::FunctionRef<void(std::size_t, std::size_t)> body) override {
+    if (n > 0) body(0, n);
+  }
+  [[nodiscard]] int concurrency() const override { return 2; }
+  [[nodiscard]] std::unique_ptr<ocean::AsyncSlot> make_async_slot() override {
+    return std::make_unique<ThreadSlot>();
+  }
+
+ private:
+  class ThreadSlot final : public ocean::AsyncSlot {
+   public:
+    ~ThreadSlot() override { wait(); }
+    void kick(ocean::FunctionRef<void()> job) override { worker_ = std::thread(job); }
+    void wait() override {
+      if (worker_.joinable()) worker_.join();
+    }
+
+   private:
+    std::thread worker_;
+  };
+};
+
+class LoopOnlyRunner final : public ocean::TaskRunner {
+ public:
+  void parallel_for(std::size_t n, std::size_t /*grain*/,
+                    ocean::FunctionRef<void(std::size_t, std::size_t)> body) override {
+    if (n > 0) body(0, n);
+  }
+  [[nodiscard]] int concurrency() const override { return 1; }
+};
+
+TEST(TaskRunner, EngineRunnersPlugInTheirOwnAsyncJobs) {
+  EngineRunner engine;
+  auto slot = engine.make_async_slot();
+  const std::thread::id caller = std::this_thread::get_id();
+  std::thread::id ran_on = caller;
+  std::size_t covered = 0;
+  auto job = [&] {
+    ran_on = std::this_thread::get_id();
+    engine.parallel_for(100, 10, [&](std::size_t b, std::size_t e) { covered += e - b; });
+  };
+  slot->kick(job);
+  slot->wait();
+  EXPECT_NE(ran_on, caller);
+  EXPECT_EQ(covered, 100u);
+
+  LoopOnlyRunner loops;
+  auto inline_slot = loops.make_async_slot();
+  int runs = 0;
+  auto count = [&] { ++runs; };
+  inline_slot->kick(count);
+  EXPECT_EQ(runs, 1);
+  inline_slot->wait();
+  EXPECT_EQ(runs, 1);
 }
 
 }  // namespace

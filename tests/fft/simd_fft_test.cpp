@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "fft/fft_test_util.hpp"
+#include "fft/lane_plan.hpp"
 #include "ocean/fft.hpp"
 
 namespace {
 
+using ocean::fft::LanePlan2D;
 using ocean::fft::SimdPlan2D;
 using ocean::fft::SplitComplex;
 using ocean::fft::test::relative_rms;
@@ -77,7 +79,7 @@ TEST(SimdFft2D, MatchesScalarReferenceWithSignCorrection) {
 TEST(SimdFft2D, PrunedOuterHalfGivesTheSameBits) {
   for_each_target([&](bool best) {
     for (int n = 32; n <= (best ? 2048 : 256); n *= 2) {
-      const auto plan = SimdPlan2D::make(n).value();
+      const auto plan = LanePlan2D::make(n).value();
       ASSERT_EQ(plan.prunes_outer_half(), n >= 64) << n;
       if (!plan.prunes_outer_half()) continue;
       const auto un = static_cast<std::size_t>(n);
@@ -92,12 +94,12 @@ TEST(SimdFft2D, PrunedOuterHalfGivesTheSameBits) {
         }
       }
       alignas(64) static float buffers[4][2][16 * 2048];
-      const SimdPlan2D::LaneBlock full{buffers[0][0], buffers[0][1]};
-      const SimdPlan2D::LaneBlock full_scratch{buffers[1][0], buffers[1][1]};
-      const SimdPlan2D::LaneBlock pruned{buffers[2][0], buffers[2][1]};
-      const SimdPlan2D::LaneBlock pruned_scratch{buffers[3][0], buffers[3][1]};
-      const SimdPlan2D::LaneBlock a = plan.input_for(full, full_scratch);
-      const SimdPlan2D::LaneBlock b = plan.input_for(pruned, pruned_scratch);
+      const LanePlan2D::LaneBlock full{buffers[0][0], buffers[0][1]};
+      const LanePlan2D::LaneBlock full_scratch{buffers[1][0], buffers[1][1]};
+      const LanePlan2D::LaneBlock pruned{buffers[2][0], buffers[2][1]};
+      const LanePlan2D::LaneBlock pruned_scratch{buffers[3][0], buffers[3][1]};
+      const LanePlan2D::LaneBlock a = plan.input_for(full, full_scratch);
+      const LanePlan2D::LaneBlock b = plan.input_for(pruned, pruned_scratch);
       std::memcpy(a.re, in_re.data(), floats * sizeof(float));
       std::memcpy(a.im, in_im.data(), floats * sizeof(float));
       std::memcpy(b.re, in_re.data(), floats * sizeof(float));

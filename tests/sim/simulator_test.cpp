@@ -164,6 +164,69 @@ TEST(Simulator, KickComputesInTheBackground) {
 
 // The height query inverts the horizontal displacement: a surface point that started at a
 // texel p and was displaced to p + D_xz(p) reports h(p).
+// An engine's own job system: a runner that counts what the simulator asks of it and runs
+// everything on the calling thread. kick/wait go through its async slot (no other threads), and
+// the frames equal those of step().
+class CountingRunner final : public ocean::TaskRunner {
+ public:
+  struct Counts {
+    int loops = 0, slots = 0, kicks = 0, waits = 0;
+  };
+  void parallel_for(std::size_t n, std::size_t /*grain*/,
+                    ocean::FunctionRef<void(std::size_t, std::size_t)> body) override {
+    ++counts.loops;
+    if (n > 0) body(0, n);
+  }
+  [[nodiscard]] int concurrency() const override { return 1; }
+  [[nodiscard]] std::unique_ptr<ocean::AsyncSlot> make_async_slot() override {
+    ++counts.slots;
+    return std::make_unique<Slot>(counts);
+  }
+  Counts counts;
+
+ private:
+  class Slot final : public ocean::AsyncSlot {
+   public:
+    explicit Slot(Counts& counts) : counts_(counts) {}
+    void kick(ocean::FunctionRef<void()> job) override {
+      ++counts_.kicks;
+      job();
+    }
+    void wait() override { ++counts_.waits; }
+
+   private:
+    Counts& counts_;
+  };
+};
+
+TEST(Simulator, KickAndWaitRunOnTheCallersRunner) {
+  const ocean::SimulationConfig c = small_config();
+  auto runner = std::make_shared<CountingRunner>();
+  auto kicked = make(c, runner);
+  auto stepped = make(c, std::shared_ptr<ocean::TaskRunner>(ocean::make_serial_runner()));
+  EXPECT_EQ(runner->counts.slots, 1);
+  for (double t : {1.0, 1.5, 2.0}) {
+    const int loops = runner->counts.loops;
+    kicked->kick(t);
+    EXPECT_GT(runner->counts.loops, loops);  // the step's loops ran on this runner
+    kicked->wait();
+    stepped->step(t);
+    for (std::size_t k = 0; k < c.cascade_patch_sizes_m.size(); ++k) {
+      const auto& a = kicked->frame().cascades[k];
+      const auto& b = stepped->frame().cascades[k];
+      EXPECT_EQ(a.displacement, b.displacement);
+      EXPECT_EQ(a.displacement_half, b.displacement_half);
+      EXPECT_EQ(a.normal, b.normal);
+      EXPECT_EQ(a.jacobian, b.jacobian);
+      EXPECT_EQ(a.foam, b.foam);
+      EXPECT_EQ(a.packed_mips, b.packed_mips);
+    }
+  }
+  EXPECT_EQ(runner->counts.kicks, 3);
+  EXPECT_GE(runner->counts.waits, 3);
+  EXPECT_EQ(runner->counts.slots, 1);  // made once, at set-up
+}
+
 TEST(Simulator, HeightQueriesInvertTheDisplacement) {
   ocean::SimulationConfig c = small_config();
   c.cascade_patch_sizes_m = {250.0};

@@ -7,7 +7,9 @@
 #include <span>
 #include <vector>
 
+#include "fft/lane_plan.hpp"
 #include "kernels.hpp"
+#include "ocean/cpu_backend.hpp"
 #include "ocean/fft.hpp"
 #include "ocean/sim.hpp"
 
@@ -47,6 +49,11 @@ struct CascadeState {
   int mip_work_level = 0;
 };
 
+/// Plane p of the reference pipeline's row-major planes as a split-complex view.
+inline fft::SplitComplex plane_of(CascadeState& state, std::size_t p) {
+  return {state.plane_re[p].data(), state.plane_im[p].data()};
+}
+
 /// Number of complex planes a normal method needs (two real fields per plane, M.7.2).
 int plane_count(NormalMethod method);
 /// Fills state.factor for the configured method and choppiness (M.7.2).
@@ -83,43 +90,16 @@ float normal_length_from_roughness(float roughness);
 /// Normal length → smoothness, seed 000 eq. 53.
 float smoothness_from_normal_length(float length);
 
-/// A third-party FFT engine for baseline measurements: unnormalised inverse 2D transforms of
-/// N×N split-complex planes in place, without the (−1)^(x+y) shift.
-class ExternalFft {
+/// The CPU backend (ocean/cpu_backend.hpp): configuration and the three pipelines' frames.
+class CpuBackendImpl final : public CpuBackend {
  public:
-  virtual ~ExternalFft() = default;
-  virtual void inverse(std::span<const fft::SplitComplex> planes) = 0;
-};
-
-enum class CpuPipeline {
-  fused_simd,        ///< SIMD evolution fused into the column FFT, assembly into the row FFT
-  scalar_reference,  ///< scalar evolution, radix-2 FFT, scalar assembly: the oracle
-  external_fft,      ///< as scalar_reference with the FFT replaced by an ExternalFft
-};
-
-struct CpuOptions {
-  CpuPipeline pipeline = CpuPipeline::fused_simd;
-  ExternalFft* fft = nullptr;  ///< required for external_fft; not owned
-};
-
-/// Wall time of the stages of the last step, seconds.
-struct StageTimes {
-  double synthesis_s = 0.0;  ///< evolution + FFT + displacement assembly
-  double finalize_s = 0.0;   ///< gradients, normals, Jacobian, foam, base-level packing
-  double mips_s = 0.0;       ///< mip chain
-};
-
-class CpuBackend final : public Backend {
- public:
-  explicit CpuBackend(CpuOptions options = {}) : options_(options) {}
+  explicit CpuBackendImpl(CpuOptions options = {}) : options_(options) {}
   [[nodiscard]] std::string_view name() const override { return "cpu"; }
   Status configure(const SimulationConfig& config, TaskRunner& runner) override;
   void allocate(Frame& frame) const override;
   void step(double time_s, Frame& out) override;
-  [[nodiscard]] const StageTimes& last_stage_times() const { return times_; }
-  /// Bytes of the state kept for one cascade (spectra, kernel inputs, planes, foam, mip work),
-  /// not counting the frame the caller owns.
-  [[nodiscard]] std::size_t state_bytes_per_cascade() const;
+  [[nodiscard]] const StageTimes& last_stage_times() const override { return times_; }
+  [[nodiscard]] std::size_t state_bytes_per_cascade() const override;
 
  private:
   struct CascadeGroup;
@@ -148,7 +128,7 @@ class CpuBackend final : public Backend {
   TaskRunner* runner_ = nullptr;
   std::unique_ptr<TaskRunner> serial_ = make_serial_runner();  ///< a chain's stages, one thread
   fft::Plan2D plan_;
-  fft::SimdPlan2D simd_plan_;
+  fft::LanePlan2D simd_plan_;
   std::vector<CascadeState> cascades_;
   /// Cascades transformed together: pairs sharing plane 1 (Dz of the first in its real part,
   /// of the second in its imaginary part: 3 transforms for 2 cascades instead of 4) when the

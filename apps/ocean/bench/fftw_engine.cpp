@@ -1,5 +1,5 @@
 // FFTW loaded with dlopen: the handful of entry points the baseline needs.
-#include "fftw_engine.hpp"
+#include "bench/fftw_engine.hpp"
 
 #include <dlfcn.h>
 #include <fftw3.h>

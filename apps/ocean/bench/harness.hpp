@@ -1,0 +1,77 @@
+// `ocean bench`'s timing harness: repeated runs with warm-up and optional pacing, medians, and
+// one CPU pipeline configuration timed frame by frame with its stage times.
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+#include "ocean/cpu_backend.hpp"
+#include "ocean/fft.hpp"
+
+namespace ocean::cli::bench {
+
+struct Stats {
+  double median_ms = 0.0, min_ms = 0.0, max_ms = 0.0;
+};
+
+/// Median, minimum and maximum of `seconds` (not empty), in ms.
+Stats stats_of(std::vector<double> seconds);
+
+using Clock = std::chrono::steady_clock;
+
+// Times body() repeatedly: 2 warm-up runs, then at least 5 runs and about min_time seconds
+// (at most 500 runs). With an interval, the runs start that many seconds apart, as frames of a
+// frame loop do (the thread sleeps in between); min_time then counts the intervals.
+template <typename Body>
+std::vector<double> time_runs(double min_time, Body body, double interval = 0.0) {
+  const auto pace = [&](Clock::time_point start) {
+    if (interval > 0.0)
+      std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(
+                                                std::chrono::duration<double>(interval)));
+  };
+  for (int i = 0; i < 2; ++i) {
+    const Clock::time_point start = Clock::now();
+    body();
+    pace(start);
+  }
+  std::vector<double> samples;
+  double total = 0.0;
+  while ((samples.size() < 5 || total < min_time) && samples.size() < 500) {
+    const Clock::time_point start = Clock::now();
+    body();
+    samples.push_back(std::chrono::duration<double>(Clock::now() - start).count());
+    total += std::max(samples.back(), interval);
+    pace(start);
+  }
+  return samples;
+}
+
+struct PipelineResult {
+  Stats frame;
+  Stats synthesis, finalize, mips;
+  std::size_t frames = 0;
+  std::size_t state_bytes_per_cascade = 0;
+  std::size_t frame_bytes_per_cascade = 0;  ///< the arrays of one cascade's outputs
+};
+
+/// Times the CPU backend with `options` on `config`: frames back to back (or `interval` s apart)
+/// for about min_time seconds after two warm-up frames.
+Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
+                                    TaskRunner& runner, double min_time, double interval);
+
+// Scratch planes for the FFT-only measurements: `count` N×N split-complex planes.
+struct Planes {
+  std::vector<std::vector<float>> re, im;
+  std::vector<fft::SplitComplex> views;
+  Planes(int n, std::size_t count) {
+    const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+    re.assign(count, std::vector<float>(texels, 0.5f));
+    im.assign(count, std::vector<float>(texels, -0.25f));
+    for (std::size_t p = 0; p < count; ++p) views.push_back({re[p].data(), im[p].data()});
+  }
+};
+
+}  // namespace ocean::cli::bench
