@@ -218,7 +218,9 @@ int run_bake(const BakeOptions& o) {
                     "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 x %zu cascades",
                     std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(), hs, t,
                     c.resolution, c.cascade_patch_sizes_m.size());
-      if (Status s = write_contact_sheet(frame, title, o.contact_sheet); !s.ok()) return report(s);
+      const Result<SheetSize> sheet =
+          write_contact_sheet(frame_maps_sheet(frame, title), o.contact_sheet);
+      if (!sheet.ok()) return report(sheet.status());
     }
     progress.update(f + 1);
   }
