@@ -216,6 +216,10 @@ Status write_layout_png(const std::string& path, const Inputs& in, const lod::Lo
     canvas.fill({box.x0, box.y0, box.x1, box.y0 + 1.0}, kEdge);
     canvas.fill({box.x0, box.y0, box.x0 + 1.0, box.y1}, kEdge);
   }
+  // The square's right and bottom edges, which no patch draws.
+  const double east = px(sel.grid_centre_x_m + half), south = py(sel.grid_centre_z_m - half);
+  canvas.fill({px(sel.grid_centre_x_m - half), south, east + 1.0, south + 1.0}, kEdge);
+  canvas.fill({east, py(sel.grid_centre_z_m + half), east + 1.0, south + 1.0}, kEdge);
   const plot::Box map{0.0, 0.0, static_cast<double>(kMapPx), static_cast<double>(kMapPx)};
   // The horizontal field of view: the view direction ± half the horizontal angle.
   const double yaw = std::atan2(in.camera.target_m.z - eye.z, in.camera.target_m.x - eye.x);

@@ -20,7 +20,7 @@ constexpr plot::Font kLabelFont{.size_px = 15.0};
 constexpr plot::Font kTitleFont{.size_px = 21.0, .bold = true};
 constexpr int kMargin = 16;  // around and between tiles
 constexpr int kLabel = 26;   // band above each tile for its label
-constexpr int kTitle = 46;   // band at the top for the title
+constexpr int kTitle = 54;   // band at the top for the title
 constexpr int kMapTile = 300;
 
 Rgb lerp(Rgb a, Rgb b, double t) {

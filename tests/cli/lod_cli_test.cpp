@@ -113,9 +113,14 @@ TEST(CliLod, LayoutPictureShowsTheLevelsAndTheCamera) {
     }
     return n;
   };
-  // The coarsest level's colour, culled grey and the camera's red on the map; the key has
-  // swatches of them and dark text.
-  EXPECT_GT(count(49, 54, 149, 0, 900) + count(69, 117, 180, 0, 900), 1000);
+  // Patches in the colours of their levels, culled grey and the camera's red on the map; the
+  // key has swatches of them and dark text.
+  const int levels[][3] = {{49, 54, 149},   {69, 117, 180},  {116, 173, 209},
+                           {171, 217, 233}, {254, 224, 144}, {253, 174, 97},
+                           {244, 109, 67},  {215, 48, 39},   {165, 0, 38}};
+  int patch_pixels = 0;
+  for (const auto& c : levels) patch_pixels += count(c[0], c[1], c[2], 0, 900);
+  EXPECT_GT(patch_pixels, 100000);
   EXPECT_GT(count(225, 225, 225, 0, 900), 1000);
   EXPECT_GT(count(220, 0, 0, 0, 900), 20);
   EXPECT_GT(count(69, 117, 180, 900, 1150), 100);
