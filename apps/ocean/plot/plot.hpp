@@ -161,7 +161,8 @@ struct Scale {
 /// Where a panel was drawn: its plot area (the inside of the frame), the axis scales, and the
 /// legend's box (unset when no series has a label). The legend lies inside the plot area in the
 /// first of the corners and edge midpoints where its box meets no curve, or else to the right of
-/// the plot area, which then shrinks to make room.
+/// the plot area, which then shrinks to make room (in a panel too narrow for that, in the upper
+/// right corner after all).
 struct PanelLayout {
   Box plot;
   Scale x, y;
