@@ -215,10 +215,12 @@ int run_bake(const BakeOptions& o) {
     if (f == 0 && !o.contact_sheet.empty()) {
       char title[200];
       std::snprintf(title, sizeof title,
-                    "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 x %zu cascades",
+                    "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 × %zu cascades",
                     std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(), hs, t,
                     c.resolution, c.cascade_patch_sizes_m.size());
-      if (Status s = write_contact_sheet(frame, title, o.contact_sheet); !s.ok()) return report(s);
+      const Result<SheetSize> sheet =
+          write_contact_sheet(frame_maps_sheet(frame, title), o.contact_sheet);
+      if (!sheet.ok()) return report(sheet.status());
     }
     progress.update(f + 1);
   }

@@ -139,34 +139,49 @@ std::string obj_text(const lod::LodSelection& sel, const lod::PatchMeshes& meshe
 
 // ---- top-down PNG ------------------------------------------------------------------------------
 
-struct Raster {
-  plot::Image image;
-  double x_min, z_max, scale;  // world → pixel
-  void set(int px, int py, plot::Rgb c) {
-    if (px < 0 || py < 0 || px >= image.width || py >= image.height) return;
-    const auto o = static_cast<std::size_t>((py * image.width + px) * 3);
-    image.rgb[o] = c.r;
-    image.rgb[o + 1] = c.g;
-    image.rgb[o + 2] = c.b;
+// Patch colours by level, coarse (dark blue) to fine (red).
+constexpr std::array<plot::Rgb, 9> kLevel = {{{49, 54, 149},
+                                              {69, 117, 180},
+                                              {116, 173, 209},
+                                              {171, 217, 233},
+                                              {254, 224, 144},
+                                              {253, 174, 97},
+                                              {244, 109, 67},
+                                              {215, 48, 39},
+                                              {165, 0, 38}}};
+constexpr plot::Rgb kCulled{225, 225, 225};
+constexpr plot::Rgb kEdge{40, 40, 40};
+constexpr plot::Rgb kEye{220, 0, 0};
+constexpr plot::Rgb kInk{25, 25, 25};
+constexpr int kMapPx = 900;  // the square of the map
+constexpr int kKeyPx = 250;  // the key to its right
+
+// The key: one swatch per level, culled patches, the camera and its field of view.
+void draw_key(plot::Canvas& canvas, const lod::LodSelection& sel, double ocean_size_m) {
+  const plot::Font font{.size_px = 15.0}, bold{.size_px = 16.0, .bold = true};
+  const double x = kMapPx + 20.0;
+  double y = 34.0;
+  canvas.text({x, y}, "patch level (side)", bold, kInk);
+  const auto swatch = [&](plot::Rgb fill, const std::string& label) {
+    y += 26.0;
+    canvas.fill({x, y - 14.0, x + 22.0, y + 2.0}, fill);
+    canvas.outline({x, y - 14.0, x + 22.0, y + 2.0}, kEdge, 1.0);
+    canvas.text({x + 32.0, y}, label, font, kInk);
+  };
+  for (int l = 0; l <= sel.max_level; ++l) {
+    std::ostringstream label;
+    label << l << " (" << ocean_size_m / (1 << l) << " m)";
+    swatch(kLevel[static_cast<std::size_t>(l)], label.str());
   }
-  int px(double x) const { return static_cast<int>(std::floor((x - x_min) * scale)); }
-  int py(double z) const { return static_cast<int>(std::floor((z_max - z) * scale)); }
-  void rect(double xa, double za, double xb, double zb, plot::Rgb fill, plot::Rgb edge) {
-    const int x1 = px(xa), x2 = px(xb), y1 = py(zb), y2 = py(za);
-    for (int y = y1; y <= y2; ++y) {
-      for (int x = x1; x <= x2; ++x) set(x, y, (x == x1 || y == y1) ? edge : fill);
-    }
-  }
-  void line(double xa, double za, double xb, double zb, plot::Rgb c) {
-    const double len = std::hypot(xb - xa, zb - za) * scale;
-    const int n = std::max(1, static_cast<int>(len));
-    for (int k = 0; k <= n; ++k) {
-      const double t = static_cast<double>(k) / n;
-      const int x = px(xa + t * (xb - xa)), y = py(za + t * (zb - za));
-      for (int d = 0; d < 4; ++d) set(x + d % 2, y + d / 2, c);
-    }
-  }
-};
+  swatch(kCulled, "culled");
+  y += 30.0;
+  canvas.disc({x + 11.0, y - 6.0}, 5.0, kEye);
+  canvas.text({x + 32.0, y}, "camera", font, kInk);
+  y += 26.0;
+  const plot::Point fov[] = {{x, y - 6.0}, {x + 22.0, y - 6.0}};
+  canvas.polyline(fov, {.color = {0, 0, 0}, .width_px = 2.0});
+  canvas.text({x + 32.0, y}, "field of view", font, kInk);
+}
 
 Status write_layout_png(const std::string& path, const Inputs& in, const lod::LodSelection& sel) {
   // All leaves (grey when culled) from a second, unculled selection.
@@ -180,19 +195,13 @@ Status write_layout_png(const std::string& path, const Inputs& in, const lod::Lo
   const double x_hi = std::max(sel.grid_centre_x_m + half, eye.x) + 0.05 * half;
   const double z_lo = std::min(sel.grid_centre_z_m - half, eye.z) - 0.05 * half;
   const double z_hi = std::max(sel.grid_centre_z_m + half, eye.z) + 0.05 * half;
-  const int size_px = 900;
-  const double scale = size_px / std::max(x_hi - x_lo, z_hi - z_lo);
-  Raster r{
-      {size_px, size_px, std::vector<std::uint8_t>(size_px * size_px * 3, 255)}, x_lo, z_hi, scale};
-  static constexpr std::array<plot::Rgb, 9> kLevel = {{{49, 54, 149},
-                                                       {69, 117, 180},
-                                                       {116, 173, 209},
-                                                       {171, 217, 233},
-                                                       {254, 224, 144},
-                                                       {253, 174, 97},
-                                                       {244, 109, 67},
-                                                       {215, 48, 39},
-                                                       {165, 0, 38}}};
+  const double scale = kMapPx / std::max(x_hi - x_lo, z_hi - z_lo);
+  // World (x, z) to pixels: east to the right, north up.
+  const auto px = [&](double x) { return std::floor((x - x_lo) * scale); };
+  const auto py = [&](double z) { return std::floor((z_hi - z) * scale); };
+  Result<plot::Canvas> made = plot::Canvas::make(kMapPx + kKeyPx, kMapPx, {255, 255, 255});
+  if (!made.ok()) return made.status();
+  plot::Canvas& canvas = made.value();
   auto drawn = [&](const lod::PatchInstance& q) {
     return std::any_of(sel.instances.begin(), sel.instances.end(), [&](const auto& s) {
       return s.level == q.level && s.grid_x == q.grid_x && s.grid_y == q.grid_y;
@@ -200,27 +209,35 @@ Status write_layout_png(const std::string& path, const Inputs& in, const lod::Lo
   };
   for (const lod::PatchInstance& q : all.instances) {
     const double h = 0.5 * q.size_m;
-    const plot::Rgb fill = drawn(q) ? kLevel[q.level] : plot::Rgb{225, 225, 225};
-    r.rect(q.centre_x_m - h, q.centre_z_m - h, q.centre_x_m + h, q.centre_z_m + h, fill,
-           {40, 40, 40});
+    const plot::Box box{px(q.centre_x_m - h), py(q.centre_z_m + h), px(q.centre_x_m + h) + 1.0,
+                        py(q.centre_z_m - h) + 1.0};
+    canvas.fill(box, drawn(q) ? kLevel[q.level] : kCulled);
+    // The top and left edges: neighbours draw the others, so every edge is one pixel wide.
+    canvas.fill({box.x0, box.y0, box.x1, box.y0 + 1.0}, kEdge);
+    canvas.fill({box.x0, box.y0, box.x0 + 1.0, box.y1}, kEdge);
   }
+  // The square's right and bottom edges, which no patch draws.
+  const double east = px(sel.grid_centre_x_m + half), south = py(sel.grid_centre_z_m - half);
+  canvas.fill({px(sel.grid_centre_x_m - half), south, east + 1.0, south + 1.0}, kEdge);
+  canvas.fill({east, py(sel.grid_centre_z_m + half), east + 1.0, south + 1.0}, kEdge);
+  const plot::Box map{0.0, 0.0, static_cast<double>(kMapPx), static_cast<double>(kMapPx)};
   // The horizontal field of view: the view direction ± half the horizontal angle.
   const double yaw = std::atan2(in.camera.target_m.z - eye.z, in.camera.target_m.x - eye.x);
   const double half_h = std::atan(std::tan(0.5 * in.camera.fov_y_rad) * in.camera.aspect);
   const double reach = 2.0 * p.ocean_size_m;
   const bool vertical = std::hypot(in.camera.target_m.x - eye.x, in.camera.target_m.z - eye.z) <
                         1e-9 * std::abs(in.camera.target_m.y - eye.y);
+  const plot::Point eye_px{px(eye.x) + 0.5, py(eye.z) + 0.5};
   if (!vertical) {
     for (double a : {yaw - half_h, yaw + half_h}) {
-      r.line(eye.x, eye.z, eye.x + reach * std::cos(a), eye.z + reach * std::sin(a), {0, 0, 0});
+      const plot::Point ray[] = {
+          eye_px, {px(eye.x + reach * std::cos(a)) + 0.5, py(eye.z + reach * std::sin(a)) + 0.5}};
+      canvas.polyline(ray, {.color = {0, 0, 0}, .width_px = 2.0}, map);
     }
   }
-  for (int dy = -4; dy <= 4; ++dy) {
-    for (int dx = -4; dx <= 4; ++dx) {
-      if (dx * dx + dy * dy <= 16) r.set(r.px(eye.x) + dx, r.py(eye.z) + dy, {220, 0, 0});
-    }
-  }
-  return plot::write_png(r.image, path);
+  canvas.disc(eye_px, 5.0, kEye);
+  draw_key(canvas, sel, p.ocean_size_m);
+  return canvas.write_png(path);
 }
 
 int run_lod(const LodOptions& o) {

@@ -18,11 +18,11 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "contact_sheet.hpp"
 #include "io/atomic_file.hpp"
 #include "io/exr.hpp"
 #include "io/png_image.hpp"
 #include "ocean/scene.hpp"
-#include "plot/plot_internal.hpp"
 #include "progress.hpp"
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
@@ -229,13 +229,8 @@ int run_contact_sheet(const RenderOptions& o) {
   Result<Inputs> first = parse_inputs(tile);
   if (!first.ok()) return report(first.status());
   const int w = first.value().scene.width, h = first.value().scene.height;
-  constexpr int kMargin = 12, kLabel = 26, kTitle = 44;
   const int cols = 3, rows = 3;
-  plot::detail::Canvas canvas(kMargin + cols * (w + kMargin),
-                              kTitle + rows * (kLabel + h + kMargin), {250, 250, 250});
-  const plot::Rgb ink{30, 30, 30};
-  plot::detail::draw_text(canvas, kMargin, 12, "ocean render: calm, moderate, storm", 2.0, ink,
-                          plot::detail::TextDir::horizontal, true);
+  ContactSheet sheet{.title = "ocean render: calm, moderate, storm", .columns = cols};
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(first.value().scene);
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
@@ -257,26 +252,21 @@ int run_contact_sheet(const RenderOptions& o) {
       view.camera.target_m = {sv.target[0], sv.target[1] + lift, sv.target[2]};
       if (Status s = scene.renderer().draw(view); !s.ok()) return report(s);
       if (Status s = scene.renderer().read_srgb(rgba); !s.ok()) return report(s);
-      const int x0 = kMargin + c * (w + kMargin);
-      const int y0 = kTitle + r * (kLabel + h + kMargin) + kLabel;
       char label[160];
       std::snprintf(label, sizeof label, "%s, Hs %.1f m, %s", kSheetSeas[r], hs, sv.name);
-      plot::detail::draw_text(canvas, x0, y0 - 20, label, 1.5, ink);
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-          const std::uint8_t* p = &rgba[static_cast<std::size_t>(4 * (y * w + x))];
-          canvas.blend(x0 + x, y0 + y, {p[0], p[1], p[2]}, 1.0f);
-        }
+      plot::Image picture{w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w * h) * 3)};
+      for (std::size_t i = 0; i < static_cast<std::size_t>(w * h); ++i) {
+        for (std::size_t k = 0; k < 3; ++k) picture.rgb[3 * i + k] = rgba[4 * i + k];
+      }
+      sheet.tiles.push_back({label, std::move(picture)});
       progress.update(r * cols + c + 1);
     }
   }
   progress.finish();
-  const plot::Image image = std::move(canvas).take();
-  if (Status s = io::write_png8(o.contact_sheet, image.width, image.height, 3, image.rgb.data());
-      !s.ok())
-    return report(s);
-  std::cout << "wrote " << o.contact_sheet << " (" << image.width << "x" << image.height
-            << ", 9 views on " << scene.context()->info.name << ")\n";
+  const Result<SheetSize> written = write_contact_sheet(sheet, o.contact_sheet);
+  if (!written.ok()) return report(written.status());
+  std::cout << "wrote " << o.contact_sheet << " (" << written.value().width << "x"
+            << written.value().height << ", 9 views on " << scene.context()->info.name << ")\n";
   return kExitOk;
 }
 

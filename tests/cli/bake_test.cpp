@@ -1,5 +1,6 @@
 // `ocean bake`: files agree with the simulator bit for bit, loops have T·fps frames, every
-// format reads back, and bad input leaves nothing behind.
+// format reads back, the contact sheet has its tiles and labels, and bad input leaves nothing
+// behind.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -98,6 +99,44 @@ TEST(Bake, LoopWritesOnePeriodAndEveryFormatReadsBack) {
   ASSERT_TRUE(exr.ok());
   EXPECT_EQ(exr.value().channel_names.size(), 5u);
   EXPECT_TRUE(ocean::io::read_exr(dir.path / "displacement_c0_f00002.exr").ok());
+}
+
+TEST(Bake, ContactSheetShowsEachCascadesMapsUnderLabels) {
+  TempDir dir("bake_sheet_");
+  const fs::path sheet = dir.path / "sheet.png";
+  ASSERT_EQ(run("--resolution 64 --cascades 100,30 --out " + (dir.path / "maps").string() +
+                " --contact-sheet " + sheet.string()),
+            0);
+  const auto png = ocean::io::read_png(sheet);
+  ASSERT_TRUE(png.ok()) << png.status().message();
+  const auto& im = png.value();
+  // Four 300 px tiles a row with 16 px margins; a 54 px title band; per cascade a 26 px label
+  // band, the tile and a margin.
+  EXPECT_EQ(im.width, 16 + 4 * (300 + 16));
+  EXPECT_EQ(im.height, 54 + 2 * (26 + 300 + 16));
+  ASSERT_EQ(im.channels, 3);
+  const auto dark_in_rows = [&](int y0, int y1) {
+    int n = 0;
+    for (int y = y0; y < y1; ++y) {
+      for (int x = 0; x < im.width; ++x) {
+        const std::size_t i = (static_cast<std::size_t>(y) * im.width + x) * 3;
+        n += im.samples[i] < 100 && im.samples[i + 1] < 100 && im.samples[i + 2] < 100;
+      }
+    }
+    return n;
+  };
+  EXPECT_GT(dark_in_rows(0, 54), 200);   // the title
+  EXPECT_GT(dark_in_rows(54, 80), 200);  // the first row's labels
+  // An unwritable sheet: exit 1 with one line, nothing left at that path.
+  std::string err;
+  const fs::path missing = dir.path / "missing" / "sheet.png";
+  EXPECT_EQ(run("--resolution 16 --cascades 50 --out " + (dir.path / "maps2").string() +
+                    " --contact-sheet " + missing.string(),
+                &err),
+            1);
+  EXPECT_NE(err.find("cannot write"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_FALSE(fs::exists(missing.parent_path()));
 }
 
 TEST(Bake, PresetAndOverrides) {

@@ -1,5 +1,5 @@
-// `ocean lod`: counts, the OBJ export (watertight, only the square's boundary is open) and the
-// usage and runtime error contracts.
+// `ocean lod`: counts, the OBJ export (watertight, only the square's boundary is open), the
+// layout picture and the usage and runtime error contracts.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/cli_run.hpp"
+#include "io/png_image.hpp"
 
 namespace {
 
@@ -89,6 +90,49 @@ TEST(CliLod, ObjOfTheWholeSquareIsWatertight) {
     ASSERT_EQ(n, boundary ? 1 : 2) << x0 << "," << z0 << " - " << x1 << "," << z1;
   }
   std::filesystem::remove(path);
+}
+
+TEST(CliLod, LayoutPictureShowsTheLevelsAndTheCamera) {
+  const auto path = temp_file("layout.png");
+  const auto r =
+      run_cli("lod --camera 0,30,0 --target 100,0,100 --ocean-size 4096 --png " + path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto png = ocean::io::read_png(path);
+  ASSERT_TRUE(png.ok()) << png.status().message();
+  const auto& im = png.value();
+  EXPECT_EQ(im.width, 1150);  // the 900 px map and its key
+  EXPECT_EQ(im.height, 900);
+  ASSERT_EQ(im.channels, 3);
+  const auto count = [&](int r0, int g0, int b0, int x0, int x1) {
+    int n = 0;
+    for (int y = 0; y < im.height; ++y) {
+      for (int x = x0; x < x1; ++x) {
+        const std::size_t i = (static_cast<std::size_t>(y) * im.width + x) * 3;
+        n += im.samples[i] == r0 && im.samples[i + 1] == g0 && im.samples[i + 2] == b0;
+      }
+    }
+    return n;
+  };
+  // Patches in the colours of their levels, culled grey and the camera's red on the map; the
+  // key has swatches of them and dark text.
+  const int levels[][3] = {{49, 54, 149},   {69, 117, 180},  {116, 173, 209},
+                           {171, 217, 233}, {254, 224, 144}, {253, 174, 97},
+                           {244, 109, 67},  {215, 48, 39},   {165, 0, 38}};
+  int patch_pixels = 0;
+  for (const auto& c : levels) patch_pixels += count(c[0], c[1], c[2], 0, 900);
+  EXPECT_GT(patch_pixels, 100000);
+  EXPECT_GT(count(225, 225, 225, 0, 900), 1000);
+  EXPECT_GT(count(220, 0, 0, 0, 900), 20);
+  EXPECT_GT(count(69, 117, 180, 900, 1150), 100);
+  EXPECT_GT(count(25, 25, 25, 900, 1150), 100);
+  std::filesystem::remove(path);
+  // An unwritable picture: one line, exit 1, nothing left.
+  const auto bad = temp_file("missing_png_dir") / "x.png";
+  const auto failed = run_cli("lod --camera 0,10,0 --target 1,0,0 --png " + bad.string());
+  EXPECT_EQ(failed.exit_code, 1);
+  EXPECT_NE(failed.err.find("cannot write"), std::string::npos) << failed.err;
+  EXPECT_EQ(std::count(failed.err.begin(), failed.err.end(), '\n'), 1) << failed.err;
+  EXPECT_FALSE(std::filesystem::exists(bad.parent_path()));
 }
 
 TEST(CliLod, UsageErrors) {

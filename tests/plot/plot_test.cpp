@@ -1,10 +1,12 @@
-// Tests for the PNG line-plot module: ticks, labels, rendering, input validation, PNG output.
+// Tests for the figures of the plot module: ticks, labels, rendering, legend placement, input
+// validation, PNG output.
 #include "plot.hpp"
 
 #include <gtest/gtest.h>
 #include <png.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -190,6 +192,38 @@ TEST(PlotRender, BackgroundCornersAndSeriesColour) {
   EXPECT_GT(hits, 50);
 }
 
+TEST(PlotRender, TickLabelsAreDrawnBesideTheAxes) {
+  Axes ax;
+  ax.series.push_back(line({0, 1, 2, 3, 4}, {0, 1, 4, 9, 16}));
+  const Figure f = one_panel(ax);
+  Result<std::vector<PanelLayout>> l = layout(f);
+  Result<Image> im = render(f);
+  ASSERT_TRUE(l.ok() && im.ok());
+  const Box plot = l.value()[0].plot;
+  const auto dark_in = [&](int x0, int y0, int x1, int y1) {
+    int n = 0;
+    for (int y = std::max(y0, 0); y < std::min(y1, im.value().height); ++y) {
+      for (int x = std::max(x0, 0); x < std::min(x1, im.value().width); ++x) {
+        const Rgb c = pixel(im.value(), x, y);
+        n += c.r < 110 && c.g < 110 && c.b < 110 ? 1 : 0;
+      }
+    }
+    return n;
+  };
+  // Below the frame and its ticks: the x labels; left of them: the y labels.
+  const int frame_and_ticks = 12;
+  EXPECT_GT(dark_in(static_cast<int>(plot.x0), static_cast<int>(plot.y1) + frame_and_ticks,
+                    static_cast<int>(plot.x1), 450),
+            30);
+  EXPECT_GT(dark_in(0, static_cast<int>(plot.y0), static_cast<int>(plot.x0) - frame_and_ticks,
+                    static_cast<int>(plot.y1)),
+            30);
+  // Nothing dark to the right of the plot area, where no labels belong.
+  EXPECT_EQ(dark_in(static_cast<int>(plot.x1) + 2, static_cast<int>(plot.y0) + 2, 800,
+                    static_cast<int>(plot.y1) - 2),
+            0);
+}
+
 TEST(PlotRender, NonFinitePointsLeaveGaps) {
   const Rgb green{20, 160, 40};
   Axes ax;
@@ -340,9 +374,99 @@ TEST(PlotRender, BadInputsAreInvalidArgument) {
   expect_invalid(crowded, "panels too small");
 }
 
+// ---- legends ------------------------------------------------------------------------------------
+
+/// Whether any segment of any curve of the panel, as drawn, meets the box.
+bool legend_meets_a_curve(const Axes& ax, const PanelLayout& l) {
+  const Box& b = *l.legend;
+  for (const Series& s : ax.series) {
+    const double reach = 0.5 * s.width_px;
+    const Box near{b.x0 - reach, b.y0 - reach, b.x1 + reach, b.y1 + reach};
+    for (std::size_t i = 1; i < s.x.size(); ++i) {
+      const Point p{l.x(s.x[i - 1]), l.y(s.y[i - 1])}, q{l.x(s.x[i]), l.y(s.y[i])};
+      if (detail::segment_meets_box(p, q, near)) return true;
+    }
+  }
+  return false;
+}
+
+Series labelled(std::string label, std::vector<double> x, std::vector<double> y) {
+  Series s = line(std::move(x), std::move(y));
+  s.label = std::move(label);
+  return s;
+}
+
+TEST(PlotLegend, AvoidsTheCurvesInsideThePlotArea) {
+  // A rising curve fills the upper right and lower left; a falling one the upper left and lower
+  // right: the legend must go to the middle of an edge.
+  std::vector<double> x, up, down;
+  for (int i = 0; i <= 100; ++i) {
+    x.push_back(i / 100.0);
+    up.push_back(i / 100.0);
+    down.push_back(1.0 - i / 100.0);
+  }
+  Axes ax;
+  ax.series.push_back(labelled("rising", x, up));
+  ax.series.push_back(labelled("falling", x, down));
+  const Figure f = one_panel(ax);
+  Result<std::vector<PanelLayout>> l = layout(f);
+  ASSERT_TRUE(l.ok()) << l.status().message();
+  const PanelLayout& p = l.value()[0];
+  ASSERT_TRUE(p.legend.has_value());
+  EXPECT_FALSE(legend_meets_a_curve(ax, p));
+  // Inside the plot area.
+  EXPECT_GE(p.legend->x0, p.plot.x0);
+  EXPECT_LE(p.legend->x1, p.plot.x1);
+  EXPECT_GE(p.legend->y0, p.plot.y0);
+  EXPECT_LE(p.legend->y1, p.plot.y1);
+}
+
+TEST(PlotLegend, GoesBesideThePlotWhenEveryPlaceInsideIsTaken) {
+  // A zigzag over the whole plot area leaves no clear place inside.
+  std::vector<double> x, y;
+  for (int i = 0; i <= 400; ++i) {
+    x.push_back(i);
+    y.push_back(i % 2);
+  }
+  Axes ax;
+  ax.series.push_back(labelled("zigzag", x, y));
+  Result<std::vector<PanelLayout>> l = layout(one_panel(ax));
+  ASSERT_TRUE(l.ok()) << l.status().message();
+  const PanelLayout& p = l.value()[0];
+  ASSERT_TRUE(p.legend.has_value());
+  EXPECT_GT(p.legend->x0, p.plot.x1);
+  EXPECT_LE(p.legend->x1, 800.0);
+  EXPECT_FALSE(legend_meets_a_curve(ax, p));
+  // No labels, no legend.
+  ax.series[0].label.clear();
+  l = layout(one_panel(ax));
+  ASSERT_TRUE(l.ok());
+  EXPECT_FALSE(l.value()[0].legend.has_value());
+}
+
+TEST(PlotLegend, IsDrawnWithItsLabels) {
+  Axes ax;
+  ax.series.push_back(labelled("first", {0, 1}, {0, 0.1}));
+  const Figure f = one_panel(ax);
+  Result<std::vector<PanelLayout>> l = layout(f);
+  ASSERT_TRUE(l.ok());
+  Result<Image> im = render(f);
+  ASSERT_TRUE(im.ok());
+  const Box b = *l.value()[0].legend;
+  // Text inside the box: dark pixels.
+  int dark = 0;
+  for (int y = static_cast<int>(b.y0) + 1; y < static_cast<int>(b.y1) - 1; ++y) {
+    for (int x = static_cast<int>(b.x0) + 1; x < static_cast<int>(b.x1) - 1; ++x) {
+      const Rgb c = pixel(im.value(), x, y);
+      dark += c.r < 100 && c.g < 100 && c.b < 100 ? 1 : 0;
+    }
+  }
+  EXPECT_GT(dark, 20);
+}
+
 // ---- PNG output ---------------------------------------------------------------------------------
 
-TEST(PlotPng, MissingDirectoryIsIoErrorAndLeavesNothing) {
+TEST(PlotPng, MissingDirectoryIsAOneLineIoErrorAndLeavesNothing) {
   TempDir dir;
   const fs::path target = dir.path() / "no_such_dir" / "x.png";
   Axes ax;
@@ -353,6 +477,7 @@ TEST(PlotPng, MissingDirectoryIsIoErrorAndLeavesNothing) {
   EXPECT_NE(s.message().find("cannot write '" + target.string() + "'"), std::string::npos)
       << s.message();
   EXPECT_NE(s.message().find("No such file or directory"), std::string::npos) << s.message();
+  EXPECT_EQ(s.message().find('\n'), std::string::npos) << s.message();
   EXPECT_FALSE(fs::exists(target));
   EXPECT_FALSE(fs::exists(target.parent_path()));
   EXPECT_TRUE(fs::is_empty(dir.path()));
@@ -369,7 +494,7 @@ TEST(PlotPng, WrittenFileReadsBackWithLibpng) {
   ASSERT_TRUE(im.ok()) << im.status().message();
   // Written twice: the second write replaces the first atomically.
   ASSERT_TRUE(write_png(f, target).ok());
-  const Status s = write_png(im.value(), target);
+  const Status s = write_png(f, target);
   ASSERT_TRUE(s.ok()) << s.message();
 
   png_image pi{};
@@ -388,15 +513,13 @@ TEST(PlotPng, WrittenFileReadsBackWithLibpng) {
   EXPECT_EQ(entries, 1);
 }
 
-TEST(PlotPng, RejectsMalformedImagesAndPaths) {
+TEST(PlotPng, RejectsBadPathsAndFigures) {
   TempDir dir;
-  Image bad{4, 4, std::vector<std::uint8_t>(10)};
-  Status s = write_png(bad, dir.path() / "bad.png");
+  Axes ax;
+  ax.series.push_back(line({0, 1}, {0, 1}));
+  Status s = write_png(one_panel(ax), dir.path() / "");
   EXPECT_EQ(s.code(), ErrorCode::invalid_argument);
-  const Image ok_image{2, 2, std::vector<std::uint8_t>(12, 128)};
-  s = write_png(ok_image, dir.path() / "");
-  EXPECT_EQ(s.code(), ErrorCode::invalid_argument);
-  s = write_png(ok_image, dir.path());  // a directory
+  s = write_png(one_panel(ax), dir.path());  // a directory
   EXPECT_EQ(s.code(), ErrorCode::io_error) << s.message();
   EXPECT_TRUE(fs::is_directory(dir.path()));
   EXPECT_TRUE(fs::is_empty(dir.path()));

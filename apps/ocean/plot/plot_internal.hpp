@@ -1,8 +1,6 @@
-// Internal interfaces of the plot module: glyph lookup, the raster canvas, text and tick helpers.
+// Internal interfaces of the plot module: text markup, legends, ticks and ranges.
 #pragma once
 
-#include <array>
-#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -12,84 +10,33 @@
 
 namespace ocean::plot::detail {
 
-// ---- font (font.cpp) ----------------------------------------------------------------------------
-/// Glyph cell: 5 columns, 9 rows; rows 0..6 sit above the baseline (cap height 7), rows 7..8 hold
-/// descenders. Each row is a 5-bit mask, bit 4 = leftmost column. Advance is 6 columns.
-inline constexpr int kGlyphCols = 5;
-inline constexpr int kGlyphRows = 9;
-inline constexpr int kCapRows = 7;
-inline constexpr int kAdvanceCols = 6;
-using Glyph = std::array<std::uint8_t, kGlyphRows>;
-
-/// The glyph of a Unicode code point; a boxed '?' for anything not in the font.
-const Glyph& glyph_for(char32_t code_point);
-/// Decodes UTF-8 leniently: an invalid byte becomes U+FFFD.
-std::u32string decode_utf8(std::string_view text);
+// ---- text (text.cpp) ----------------------------------------------------------------------------
+/// A piece of text split at its superscript markup ('-' after a '^' becomes U+2212 minus).
+struct TextRun {
+  std::string text;
+  bool superscript = false;
+};
+std::vector<TextRun> parse_markup(std::string_view text);
 
 // ---- canvas (canvas.cpp) ------------------------------------------------------------------------
-/// Half-open pixel rectangle [x0, x1) x [y0, y1).
-struct Rect {
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  [[nodiscard]] int width() const { return x1 - x0; }
-  [[nodiscard]] int height() const { return y1 - y0; }
-  [[nodiscard]] bool empty() const { return x1 <= x0 || y1 <= y0; }
-};
-Rect intersect(const Rect& a, const Rect& b);
+/// Whether any part of the segment a–b lies inside the box (Liang–Barsky clipping).
+bool segment_meets_box(Point a, Point b, const Box& box);
 
-struct Point {
-  double x, y;
+// ---- figures (figure.cpp, legend.cpp) -----------------------------------------------------------
+/// Fonts and distances of a figure, in pixels, scaled with the figure's size.
+struct Style {
+  Font text, title, figure_title;
+  double pad = 0.0, gap = 0.0, tick = 0.0, minor_tick = 0.0;
+  int frame = 1;  ///< frame and tick line width, whole pixels (crisp)
 };
 
-class Canvas {
- public:
-  Canvas(int width, int height, Rgb background);
-  [[nodiscard]] int width() const { return width_; }
-  [[nodiscard]] int height() const { return height_; }
-  [[nodiscard]] Rect bounds() const { return {0, 0, width_, height_}; }
-  /// Blends color over the pixel with opacity alpha in [0, 1]; outside pixels are ignored.
-  void blend(int x, int y, Rgb color, float alpha);
-  void fill_rect(const Rect& r, Rgb color, float alpha = 1.0f);
-  [[nodiscard]] Rgb pixel(int x, int y) const;
-  Image take() &&;
-
- private:
-  int width_, height_;
-  std::vector<std::uint8_t> rgb_;
-};
-
-/// A float coverage buffer over a rectangle, composited onto a canvas in one go so that
-/// overlapping pieces of one shape (polyline joints, glyph cells) do not double-blend.
-class Mask {
- public:
-  explicit Mask(const Rect& area);
-  /// Adds the exact area of the axis-aligned box [x0,x1] x [y0,y1] to the pixels it overlaps.
-  void add_box(double x0, double y0, double x1, double y1);
-  /// Max-combines an antialiased round-capped segment of the given width.
-  void add_segment(Point a, Point b, double width);
-  void composite(Canvas& canvas, Rgb color, float alpha = 1.0f) const;
-  [[nodiscard]] const Rect& area() const { return area_; }
-
- private:
-  Rect area_;
-  std::vector<float> cov_;
-};
-
-/// Strokes a polyline (a NaN point breaks it) clipped to `clip`, solid or dashed.
-void stroke_polyline(Canvas& canvas, const std::vector<Point>& points, Rgb color, double width,
-                     bool dashed, const Rect& clip);
-
-// ---- text (canvas.cpp) --------------------------------------------------------------------------
-enum class TextDir { horizontal, up };  ///< `up`: rotated 90 degrees counter-clockwise
-struct TextSize {
-  int width = 0;   ///< advance length in pixels
-  int above = 0;   ///< pixels a superscript rises above the cap line (0 when none)
-  int height = 0;  ///< cap height in pixels (descenders not included)
-};
-TextSize measure_text(std::string_view text, double scale);
-/// Draws text whose cap line starts at (x, y_top) (for `up`: (x, y) is the bottom-left corner
-/// of the rotated cap box, text runs upwards). `bold` double-strikes one pixel to the right.
-void draw_text(Canvas& canvas, int x, int y_top, std::string_view text, double scale, Rgb color,
-               TextDir dir = TextDir::horizontal, bool bold = false);
+/// Width and height of the panel's legend box; unset when no series has a label.
+std::optional<Point> legend_size(const Canvas& canvas, const Axes& axes, const Style& style);
+/// The legend's box inside `plot`: the first of the corners and edge midpoints where the box
+/// meets none of the curves (pixel coordinates, one polyline per series of `axes`, NaN = gap).
+std::optional<Box> legend_inside(Point size, const Box& plot, const Axes& axes,
+                                 const std::vector<std::vector<Point>>& curves, const Style& style);
+void draw_legend(Canvas& canvas, const Axes& axes, const Box& box, const Style& style);
 
 // ---- axes (axes.cpp) ----------------------------------------------------------------------------
 /// 1-2-5 ticks inside [lo, hi], at most max_ticks of them (at least two when the range allows).
