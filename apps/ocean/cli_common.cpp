@@ -25,6 +25,15 @@ constexpr std::pair<std::string_view, std::string_view> kFlagNames[] = {
 
 const std::string kNoText;
 
+// "<flag> = '<text>' is unknown: must be a or b".
+template <class E, std::size_t N>
+Result<E> parse_name(std::string_view flag, const std::array<EnumName<E>, N>& table,
+                     const std::string& text) {
+  if (std::optional<E> value = value_of(table, text)) return *value;
+  return invalid_argument(std::string(flag) + " = '" + text + "' is unknown: must be " +
+                          name_list(table, ", ", " or "));
+}
+
 bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 std::string with_flag_names(std::string message) {
@@ -52,7 +61,7 @@ int report(const Status& status) {
 }
 
 void add_spectrum_flags(CLI::App& command, SpectrumFlags& f) {
-  command.add_option("--model", f.model, "pierson-moskowitz | jonswap | tma | phillips")
+  command.add_option("--model", f.model, name_list(kSpectrumModelNames, " | ", " | "))
       ->capture_default_str();
   command.add_option("--hs", f.hs, "significant wave height Hs, m (with --tp)");
   command.add_option("--tp", f.tp, "peak period Tp, s (with --hs)");
@@ -61,7 +70,9 @@ void add_spectrum_flags(CLI::App& command, SpectrumFlags& f) {
   command.add_option("--fetch", f.fetch, "fetch, m (jonswap/tma from wind)");
   command.add_option("--gamma", f.gamma, "JONSWAP peak enhancement, >= 1, or 'auto'");
   command.add_option("--depth", f.depth, "water depth, m (tma)");
-  command.add_option("--depth-factor", f.depth_factor, "exact | thompson-vincent (tma)")
+  command
+      .add_option("--depth-factor", f.depth_factor,
+                  name_list(kDepthFactorNames, " | ", " | ") + " (tma)")
       ->capture_default_str();
   command.add_option("--gravity", f.gravity, "gravitational acceleration, m/s^2 (default 9.81)");
   command
@@ -100,27 +111,17 @@ Result<FrequencySpectrumParams> to_params(const SpectrumFlags& f) {
     if (!v.ok()) return v.status();
     *value = v.value();
   }
-  if (f.depth_factor == "exact")
-    p.depth_factor = DepthFactor::exact;
-  else if (f.depth_factor == "thompson-vincent")
-    p.depth_factor = DepthFactor::thompson_vincent;
-  else
-    return invalid_argument("--depth-factor = '" + f.depth_factor +
-                            "' is unknown: must be exact or thompson-vincent");
-  if (f.fetch_law == "hasselmann")
-    p.fetch_law = FetchLaw::hasselmann_1973;
-  else if (f.fetch_law == "cube-root")
-    p.fetch_law = FetchLaw::cube_root;
-  else
-    return invalid_argument("--fetch-law = '" + f.fetch_law +
-                            "' is unknown: must be hasselmann or cube-root");
-  if (f.normalization == "dnv")
-    p.normalization = JonswapNormalization::dnv;
-  else if (f.normalization == "exact")
-    p.normalization = JonswapNormalization::exact;
-  else
-    return invalid_argument("--normalization = '" + f.normalization +
-                            "' is unknown: must be dnv or exact");
+  Result<DepthFactor> depth_factor =
+      parse_name("--depth-factor", kDepthFactorNames, f.depth_factor);
+  if (!depth_factor.ok()) return depth_factor.status();
+  p.depth_factor = depth_factor.value();
+  Result<FetchLaw> fetch_law = parse_name("--fetch-law", kFetchLawNames, f.fetch_law);
+  if (!fetch_law.ok()) return fetch_law.status();
+  p.fetch_law = fetch_law.value();
+  Result<JonswapNormalization> normalization =
+      parse_name("--normalization", kJonswapNormalizationNames, f.normalization);
+  if (!normalization.ok()) return normalization.status();
+  p.normalization = normalization.value();
   if (f.hs.empty() && f.tp.empty() && f.wind_speed.empty()) {
     // The default sea state: a fresh breeze over a long fetch.
     p.wind_speed_mps = 10.0;

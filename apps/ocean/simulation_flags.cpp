@@ -35,15 +35,16 @@ nlohmann::ordered_json to_json(const SimulationConfig& config) {
 }
 
 void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
-  command.add_option("--preset", f.preset_path,
-                     "calm, moderate, storm or a preset JSON file (see presets/)");
+  command.add_option(
+      "--preset", f.preset_path,
+      name_list(preset::builtin_names(), ", ", ", ") + " or a preset JSON file (see presets/)");
   command.add_option("--set", f.set, "override a preset key: --set sea.wind_sea.fetch_m=5e4");
   add_spectrum_flags(command, f.sea);
   add_option(command, kResolution, f.resolution, "grid size N per cascade (power of two, 16-2048)");
   add_option(command, kSeed, f.seed, "random seed (integer)");
   add_option(command, kChoppiness, f.choppiness, "horizontal displacement lambda >= 0");
   add_option(command, kCascades, f.cascades, "patch sizes L1,L2,... in metres, largest first");
-  command.add_option("--normals", f.normals, "central-difference | analytic | sobel");
+  command.add_option("--normals", f.normals, name_list(kNormalMethodNames, " | ", " | "));
   add_option(command, kLoopPeriod, f.loop_period, "loop period T, s (0 = no loop)");
 }
 

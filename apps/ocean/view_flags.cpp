@@ -25,7 +25,8 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
                      "a point the camera looks at (default " + f.target + ")");
   add_option(command, kFov, f.fov, "vertical field of view, degrees (default " + f.fov + ")");
   command.add_option("--quality", f.quality,
-                     "LOD quality: low, medium, high, ultra (default " + f.quality + ")");
+                     "LOD quality: " + name_list(lod::kQualityPresetNames, ", ", ", ") +
+                         " (default " + f.quality + ")");
   add_option(
       command, kOceanSize, f.ocean_size,
       "side of the LOD square around the camera, m (256..8192, default " + f.ocean_size + ")");
@@ -73,16 +74,16 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
     return invalid_argument("--camera/--target: " + s.message());
   Result<lod::QualityPreset> preset = lod::parse_preset(f.quality);
   if (!preset.ok())
-    return invalid_argument("--quality = " + f.quality +
-                            " is not a quality: must be low, medium, high or ultra");
+    return invalid_argument("--quality = " + f.quality + " is not a quality: must be " +
+                            name_list(lod::kQualityPresetNames, ", ", " or "));
   v.quality = lod::quality_preset(preset.value());
   Result<double> size = parse(kOceanSize, f.ocean_size);
   if (!size.ok()) return size.status();
   v.ocean_size_m = size.value();
   Result<render::DebugView> debug = render::parse_debug_view(f.view);
   if (!debug.ok())
-    return invalid_argument("--view = " + f.view +
-                            " is not a view: must be shaded, lod or wireframe");
+    return invalid_argument("--view = " + f.view + " is not a view: must be " +
+                            name_list(render::kDebugViewNames, ", ", " or "));
   v.debug = debug.value();
   return {};
 }

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "ocean/core.hpp"
+#include "ocean/names.hpp"
 
 namespace ocean::lod {
 
@@ -46,9 +47,16 @@ constexpr Quality quality_preset(QualityPreset preset) {
   }
   return {};
 }
-/// "low", "medium", "high", "ultra".
+/// The names of the quality presets in flags, panels and messages.
+inline constexpr std::array<EnumName<QualityPreset>, 4> kQualityPresetNames{{
+    {QualityPreset::low, "low"},
+    {QualityPreset::medium, "medium"},
+    {QualityPreset::high, "high"},
+    {QualityPreset::ultra, "ultra"},
+}};
+/// The preset's name in kQualityPresetNames: "low", "medium", "high", "ultra".
 std::string_view preset_name(QualityPreset preset);
-/// The preset of a name above; invalid_argument naming `name` otherwise.
+/// The preset of a name in kQualityPresetNames; invalid_argument naming `name` otherwise.
 Result<QualityPreset> parse_preset(std::string_view name);
 
 /// Valid ocean sizes S, metres (Aebi, VR Ocean, §5.1).

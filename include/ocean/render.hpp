@@ -51,13 +51,24 @@ Status validate(const ShadingParams& params);
 /// Looks for the sky: "clear" (the defaults), "hazy", "overcast" (thick haze, no visible sun
 /// disc, grey water: storms), "sunset" (sun 4° up). invalid_argument for other names.
 Result<ShadingParams> sky_preset(std::string_view name);
+/// The names sky_preset knows, in the order messages and help texts list them.
+inline constexpr std::array<std::string_view, 4> kSkyNames = {"clear", "hazy", "overcast",
+                                                              "sunset"};
 
 enum class DebugView : std::uint8_t {
   shaded,       ///< the water as it looks
   lod_colours,  ///< shading tinted by quadtree level
   wireframe,    ///< the LOD mesh's edges only (needs fillModeNonSolid)
 };
+/// The names of the debug views in flags and messages.
+inline constexpr std::array<EnumName<DebugView>, 3> kDebugViewNames{{
+    {DebugView::shaded, "shaded"},
+    {DebugView::lod_colours, "lod"},
+    {DebugView::wireframe, "wireframe"},
+}};
+/// The view's name in kDebugViewNames ("shaded" for a value outside the enum).
 std::string_view to_string(DebugView view);
+/// The view of a name in kDebugViewNames; invalid_argument listing the names otherwise.
 Result<DebugView> parse_debug_view(std::string_view name);
 
 /// One picture's camera, mesh and look.

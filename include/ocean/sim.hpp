@@ -37,7 +37,15 @@ enum class NormalMethod {
   /// 3×3 Sobel filter of the displacement (Mitchell 2005, §3.2).
   sobel,
 };
+/// The names of the normal methods in presets, flags and messages.
+inline constexpr std::array<EnumName<NormalMethod>, 3> kNormalMethodNames{{
+    {NormalMethod::central_difference, "central-difference"},
+    {NormalMethod::analytic, "analytic"},
+    {NormalMethod::sobel, "sobel"},
+}};
+/// The method's name in kNormalMethodNames.
 std::string_view to_string(NormalMethod method);
+/// The method of a name in kNormalMethodNames; invalid_argument listing the names otherwise.
 Result<NormalMethod> parse_normal_method(std::string_view name);
 
 /// What the blue channel of the packed RGBA8 map carries.
@@ -45,6 +53,11 @@ enum class BlueChannel {
   foam,      ///< accumulated foam coverage in [0, 1] (what shading needs)
   jacobian,  ///< saturate(J/2 + 1/2), Aebi, VR Ocean, eq. 50
 };
+/// The names of the blue-channel contents in presets and messages.
+inline constexpr std::array<EnumName<BlueChannel>, 2> kBlueChannelNames{{
+    {BlueChannel::foam, "foam"},
+    {BlueChannel::jacobian, "jacobian"},
+}};
 
 struct FoamParams {
   /// Foam appears where a cascade's Jacobian falls below `jacobian_start` and is full at

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "ocean/core.hpp"
+#include "ocean/names.hpp"
 
 namespace ocean {
 
@@ -106,7 +107,30 @@ enum class JonswapNormalization {
   exact,  ///< numerically scaled so that 4·√m0 equals the requested Hs exactly
 };
 
+/// The names of the spectrum models, fetch laws, depth factors and normalisations in presets,
+/// flags and messages (ocean::name_of, value_of, name_list read them).
+inline constexpr std::array<EnumName<SpectrumModel>, 4> kSpectrumModelNames{{
+    {SpectrumModel::pierson_moskowitz, "pierson-moskowitz"},
+    {SpectrumModel::jonswap, "jonswap"},
+    {SpectrumModel::tma, "tma"},
+    {SpectrumModel::phillips, "phillips"},
+}};
+inline constexpr std::array<EnumName<FetchLaw>, 2> kFetchLawNames{{
+    {FetchLaw::hasselmann_1973, "hasselmann"},
+    {FetchLaw::cube_root, "cube-root"},
+}};
+inline constexpr std::array<EnumName<DepthFactor>, 2> kDepthFactorNames{{
+    {DepthFactor::exact, "exact"},
+    {DepthFactor::thompson_vincent, "thompson-vincent"},
+}};
+inline constexpr std::array<EnumName<JonswapNormalization>, 2> kJonswapNormalizationNames{{
+    {JonswapNormalization::dnv, "dnv"},
+    {JonswapNormalization::exact, "exact"},
+}};
+
+/// The model's name in kSpectrumModelNames.
 std::string_view to_string(SpectrumModel model);
+/// The model of a name in kSpectrumModelNames; invalid_argument listing the names otherwise.
 Result<SpectrumModel> parse_spectrum_model(std::string_view name);
 
 struct FrequencySpectrumParams {
@@ -182,7 +206,17 @@ double tma_depth_factor(double omega, double depth_m, double gravity_mps2, Depth
 // ---------------------------------------------------------------------------------------------
 
 enum class SpreadingModel { power_cosine, cos2s, mitsuyasu, hasselmann, donelan_banner };
+/// The names of the spreading models in presets, flags and messages.
+inline constexpr std::array<EnumName<SpreadingModel>, 5> kSpreadingModelNames{{
+    {SpreadingModel::power_cosine, "power-cosine"},
+    {SpreadingModel::cos2s, "cos2s"},
+    {SpreadingModel::mitsuyasu, "mitsuyasu"},
+    {SpreadingModel::hasselmann, "hasselmann"},
+    {SpreadingModel::donelan_banner, "donelan-banner"},
+}};
+/// The model's name in kSpreadingModelNames.
 std::string_view to_string(SpreadingModel model);
+/// The model of a name in kSpreadingModelNames; invalid_argument listing the names otherwise.
 Result<SpreadingModel> parse_spreading_model(std::string_view name);
 
 struct SpreadingParams {

@@ -8,23 +8,12 @@
 
 namespace ocean::lod {
 
-std::string_view preset_name(QualityPreset preset) {
-  switch (preset) {
-    case QualityPreset::low: return "low";
-    case QualityPreset::medium: return "medium";
-    case QualityPreset::high: return "high";
-    case QualityPreset::ultra: return "ultra";
-  }
-  return "unknown";
-}
+std::string_view preset_name(QualityPreset preset) { return name_of(kQualityPresetNames, preset); }
 
 Result<QualityPreset> parse_preset(std::string_view name) {
-  for (QualityPreset p :
-       {QualityPreset::low, QualityPreset::medium, QualityPreset::high, QualityPreset::ultra}) {
-    if (name == preset_name(p)) return p;
-  }
-  return invalid_argument("preset = " + std::string(name) +
-                          " is not a preset: must be low, medium, high or ultra");
+  if (std::optional<QualityPreset> p = value_of(kQualityPresetNames, name)) return *p;
+  return invalid_argument("preset = " + std::string(name) + " is not a preset: must be " +
+                          name_list(kQualityPresetNames, ", ", " or "));
 }
 
 // L.1 (Aebi, VR Ocean, eq. 56). The finest nodes are then about 64 m wide whatever S is.

@@ -1,5 +1,6 @@
 // The preset format: SimulationConfig ⇄ JSON document (see ocean/preset.hpp).
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "json_format.hpp"
@@ -14,10 +15,6 @@ namespace {
 
 Json number_or_null(double v) { return std::isnan(v) ? Json(nullptr) : Json(v); }
 
-std::string_view fetch_law_name(FetchLaw law) {
-  return law == FetchLaw::hasselmann_1973 ? "hasselmann" : "cube-root";
-}
-
 Json wave_system_json(const WaveSystemParams& w) {
   const FrequencySpectrumParams& s = w.spectrum;
   return Json{
@@ -27,10 +24,10 @@ Json wave_system_json(const WaveSystemParams& w) {
       {"hs_m", number_or_null(s.significant_wave_height_m)},
       {"tp_s", number_or_null(s.peak_period_s)},
       {"gamma", std::isnan(s.gamma) ? Json("auto") : Json(s.gamma)},
-      {"fetch_law", fetch_law_name(s.fetch_law)},
-      {"normalization", s.normalization == JonswapNormalization::dnv ? "dnv" : "exact"},
+      {"fetch_law", name_of(kFetchLawNames, s.fetch_law)},
+      {"normalization", name_of(kJonswapNormalizationNames, s.normalization)},
       {"depth_m", std::isinf(s.depth_m) ? Json(nullptr) : Json(s.depth_m)},
-      {"depth_factor", s.depth_factor == DepthFactor::exact ? "exact" : "thompson-vincent"},
+      {"depth_factor", name_of(kDepthFactorNames, s.depth_factor)},
       {"phillips_amplitude", number_or_null(s.phillips_amplitude)},
       {"cutoff_length_m", s.small_wave_cutoff_m},
       {"direction_deg", w.direction_rad * 180.0 / kPi},
@@ -60,9 +57,9 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
     else
       r.fail("gamma", "expected a number or \"auto\"");
   }
-  std::string fetch_law(fetch_law_name(s.fetch_law)), normalization = "dnv", depth_factor = "exact";
-  if (s.normalization == JonswapNormalization::exact) normalization = "exact";
-  if (s.depth_factor == DepthFactor::thompson_vincent) depth_factor = "thompson-vincent";
+  std::string fetch_law(name_of(kFetchLawNames, s.fetch_law));
+  std::string normalization(name_of(kJonswapNormalizationNames, s.normalization));
+  std::string depth_factor(name_of(kDepthFactorNames, s.depth_factor));
   r.string("fetch_law", fetch_law);
   r.string("normalization", normalization);
   r.string("depth_factor", depth_factor);
@@ -92,24 +89,19 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
     sr.boolean("counter_wave_suppression", w.spreading.counter_wave_suppression);
     r.adopt(sr.finish());
   }
-  if (fetch_law == "hasselmann")
-    s.fetch_law = FetchLaw::hasselmann_1973;
-  else if (fetch_law == "cube-root")
-    s.fetch_law = FetchLaw::cube_root;
+  if (std::optional<FetchLaw> law = value_of(kFetchLawNames, fetch_law))
+    s.fetch_law = *law;
   else
-    r.fail("fetch_law", "expected \"hasselmann\" or \"cube-root\"");
-  if (normalization == "dnv")
-    s.normalization = JonswapNormalization::dnv;
-  else if (normalization == "exact")
-    s.normalization = JonswapNormalization::exact;
+    r.fail("fetch_law", "expected " + name_list(kFetchLawNames, ", ", " or ", "\""));
+  if (std::optional<JonswapNormalization> n = value_of(kJonswapNormalizationNames, normalization))
+    s.normalization = *n;
   else
-    r.fail("normalization", "expected \"dnv\" or \"exact\"");
-  if (depth_factor == "exact")
-    s.depth_factor = DepthFactor::exact;
-  else if (depth_factor == "thompson-vincent")
-    s.depth_factor = DepthFactor::thompson_vincent;
+    r.fail("normalization",
+           "expected " + name_list(kJonswapNormalizationNames, ", ", " or ", "\""));
+  if (std::optional<DepthFactor> d = value_of(kDepthFactorNames, depth_factor))
+    s.depth_factor = *d;
   else
-    r.fail("depth_factor", "expected \"exact\" or \"thompson-vincent\"");
+    r.fail("depth_factor", "expected " + name_list(kDepthFactorNames, ", ", " or ", "\""));
   return r.finish();
 }
 
@@ -127,7 +119,7 @@ Json to_value(const SimulationConfig& c) {
               {"seed", c.seed},
               {"normals", to_string(c.normals)},
               {"roughness", c.roughness},
-              {"blue_channel", c.blue_channel == BlueChannel::foam ? "foam" : "jacobian"},
+              {"blue_channel", name_of(kBlueChannelNames, c.blue_channel)},
               {"foam", Json{{"jacobian_start", c.foam.jacobian_start},
                             {"jacobian_full", c.foam.jacobian_full},
                             {"decay_per_s", c.foam.decay_per_s}}}};
@@ -176,7 +168,7 @@ Result<SimulationConfig> from_value(const Json& document) {
   r.number("choppiness", c.choppiness);
   r.number("loop_period_s", c.loop_period_s);
   r.number("roughness", c.roughness);
-  std::string normals(to_string(c.normals)), blue = "foam";
+  std::string normals(to_string(c.normals)), blue(name_of(kBlueChannelNames, c.blue_channel));
   r.string("normals", normals);
   r.string("blue_channel", blue);
   if (const Json* foam = r.child("foam")) {
@@ -190,12 +182,11 @@ Result<SimulationConfig> from_value(const Json& document) {
   Result<NormalMethod> method = parse_normal_method(normals);
   if (!method.ok()) return method.status();
   c.normals = method.value();
-  if (blue == "foam")
-    c.blue_channel = BlueChannel::foam;
-  else if (blue == "jacobian")
-    c.blue_channel = BlueChannel::jacobian;
+  if (std::optional<BlueChannel> b = value_of(kBlueChannelNames, blue))
+    c.blue_channel = *b;
   else
-    return invalid_argument("blue_channel = '" + blue + "' is unknown: must be foam or jacobian");
+    return invalid_argument("blue_channel = '" + blue + "' is unknown: must be " +
+                            name_list(kBlueChannelNames, ", ", " or "));
   if (Status s = validate(c); !s.ok()) return s;
   if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
   return c;

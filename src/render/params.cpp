@@ -31,21 +31,12 @@ Status validate(const ShadingParams& p) {
   return {};
 }
 
-std::string_view to_string(DebugView view) {
-  switch (view) {
-    case DebugView::shaded: return "shaded";
-    case DebugView::lod_colours: return "lod";
-    case DebugView::wireframe: return "wireframe";
-  }
-  return "shaded";
-}
+std::string_view to_string(DebugView view) { return name_of(kDebugViewNames, view, "shaded"); }
 
 Result<DebugView> parse_debug_view(std::string_view name) {
-  for (DebugView v : {DebugView::shaded, DebugView::lod_colours, DebugView::wireframe}) {
-    if (name == to_string(v)) return v;
-  }
-  return invalid_argument("view = " + std::string(name) +
-                          " is not a view: must be shaded, lod or wireframe");
+  if (std::optional<DebugView> v = value_of(kDebugViewNames, name)) return *v;
+  return invalid_argument("view = " + std::string(name) + " is not a view: must be " +
+                          name_list(kDebugViewNames, ", ", " or "));
 }
 
 Status validate(const View& view) {

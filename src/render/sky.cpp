@@ -45,13 +45,14 @@ std::array<double, 3> sun_direction(double azimuth_deg, double elevation_deg) {
 
 Result<ShadingParams> sky_preset(std::string_view name) {
   ShadingParams p;
-  if (name == "clear") return p;
-  if (name == "hazy") {
+  if (name == kSkyNames[0]) return p;  // clear: the defaults
+  if (name == kSkyNames[1]) {          // hazy
     p.aerosol = 6.0;
     p.fog_density_per_m = 1.2e-4;
     return p;
   }
-  if (name == "overcast") {  // a thick, forward-scattering-poor layer: diffuse grey light
+  if (name ==
+      kSkyNames[2]) {  // overcast:  // a thick, forward-scattering-poor layer: diffuse grey light
     p.sun_elevation_deg = 55.0;
     p.aerosol = 40.0;
     p.aerosol_g = 0.3;
@@ -61,15 +62,15 @@ Result<ShadingParams> sky_preset(std::string_view name) {
     p.water_colour = {0.008, 0.014, 0.016};
     return p;
   }
-  if (name == "sunset") {
+  if (name == kSkyNames[3]) {  // sunset
     p.sun_elevation_deg = 4.0;
     p.sun_azimuth_deg = 15.0;
     p.aerosol = 2.0;
     p.exposure = 0.6;
     return p;
   }
-  return invalid_argument("sky = " + std::string(name) +
-                          " is not a sky: must be clear, hazy, overcast or sunset");
+  return invalid_argument("sky = " + std::string(name) + " is not a sky: must be " +
+                          name_list(kSkyNames, ", ", " or "));
 }
 
 double air_mass(double mu) {

@@ -11,22 +11,12 @@
 
 namespace ocean {
 
-std::string_view to_string(NormalMethod method) {
-  switch (method) {
-    case NormalMethod::central_difference: return "central-difference";
-    case NormalMethod::analytic: return "analytic";
-    case NormalMethod::sobel: return "sobel";
-  }
-  return "unknown";
-}
+std::string_view to_string(NormalMethod method) { return name_of(kNormalMethodNames, method); }
 
 Result<NormalMethod> parse_normal_method(std::string_view name) {
-  for (NormalMethod m :
-       {NormalMethod::central_difference, NormalMethod::analytic, NormalMethod::sobel}) {
-    if (name == to_string(m)) return m;
-  }
-  return invalid_argument("normals = '" + std::string(name) +
-                          "' is unknown: must be one of central-difference, analytic, sobel");
+  if (std::optional<NormalMethod> m = value_of(kNormalMethodNames, name)) return *m;
+  return invalid_argument("normals = '" + std::string(name) + "' is unknown: must be one of " +
+                          name_list(kNormalMethodNames, ", ", ", "));
 }
 
 Status validate(const SimulationConfig& c) {

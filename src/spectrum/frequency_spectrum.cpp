@@ -3,29 +3,19 @@
 // Sources for each model are cited in pierson_moskowitz.cpp, jonswap.cpp, tma.cpp and
 // phillips.cpp. Equations: docs/math.md §3.
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "internal.hpp"
 
 namespace ocean {
 
-std::string_view to_string(SpectrumModel model) {
-  switch (model) {
-    case SpectrumModel::pierson_moskowitz: return "pierson-moskowitz";
-    case SpectrumModel::jonswap: return "jonswap";
-    case SpectrumModel::tma: return "tma";
-    case SpectrumModel::phillips: return "phillips";
-  }
-  return "unknown";
-}
+std::string_view to_string(SpectrumModel model) { return name_of(kSpectrumModelNames, model); }
 
 Result<SpectrumModel> parse_spectrum_model(std::string_view name) {
-  for (SpectrumModel m : {SpectrumModel::pierson_moskowitz, SpectrumModel::jonswap,
-                          SpectrumModel::tma, SpectrumModel::phillips}) {
-    if (name == to_string(m)) return m;
-  }
-  return invalid_argument("model = '" + std::string(name) +
-                          "' is unknown: must be one of pierson-moskowitz, jonswap, tma, phillips");
+  if (std::optional<SpectrumModel> m = value_of(kSpectrumModelNames, name)) return *m;
+  return invalid_argument("model = '" + std::string(name) + "' is unknown: must be one of " +
+                          name_list(kSpectrumModelNames, ", ", ", "));
 }
 
 namespace {

@@ -18,32 +18,20 @@
 //     σ(α) = 0.01 + 0.49(1 − α)².
 // Equations: docs/math.md §4.
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "ocean/spectrum.hpp"
 
 namespace ocean {
 
-std::string_view to_string(SpreadingModel model) {
-  switch (model) {
-    case SpreadingModel::power_cosine: return "power-cosine";
-    case SpreadingModel::cos2s: return "cos2s";
-    case SpreadingModel::mitsuyasu: return "mitsuyasu";
-    case SpreadingModel::hasselmann: return "hasselmann";
-    case SpreadingModel::donelan_banner: return "donelan-banner";
-  }
-  return "unknown";
-}
+std::string_view to_string(SpreadingModel model) { return name_of(kSpreadingModelNames, model); }
 
 Result<SpreadingModel> parse_spreading_model(std::string_view name) {
-  for (SpreadingModel m :
-       {SpreadingModel::power_cosine, SpreadingModel::cos2s, SpreadingModel::mitsuyasu,
-        SpreadingModel::hasselmann, SpreadingModel::donelan_banner}) {
-    if (name == to_string(m)) return m;
-  }
+  if (std::optional<SpreadingModel> m = value_of(kSpreadingModelNames, name)) return *m;
   return invalid_argument("spreading model = '" + std::string(name) +
-                          "' is unknown: must be one of power-cosine, cos2s, mitsuyasu, "
-                          "hasselmann, donelan-banner");
+                          "' is unknown: must be one of " +
+                          name_list(kSpreadingModelNames, ", ", ", "));
 }
 
 double cos2s_normalization(double s) {

@@ -62,8 +62,8 @@ Result<Inputs> parse_inputs(const LodOptions& o) {
   if (!target.ok()) return target.status();
   Result<lod::QualityPreset> preset = lod::parse_preset(o.preset);
   if (!preset.ok())
-    return invalid_argument("--preset = " + o.preset +
-                            " is not a preset: must be low, medium, high or ultra");
+    return invalid_argument("--preset = " + o.preset + " is not a preset: must be " +
+                            name_list(lod::kQualityPresetNames, ", ", " or "));
   in.preset = preset.value();
   Result<double> size = parse(kOceanSize, o.ocean_size);
   if (!size.ok()) return size.status();
@@ -329,7 +329,9 @@ Command add_lod_command(CLI::App& app) {
   command->add_option("--camera", options->camera, "camera position X,Y,Z, m (Y up)")->required();
   command->add_option("--target", options->target, "point the camera looks at X,Y,Z, m")
       ->required();
-  command->add_option("--preset", options->preset, "quality: low, medium, high or ultra")
+  command
+      ->add_option("--preset", options->preset,
+                   "quality: " + name_list(lod::kQualityPresetNames, ", ", " or "))
       ->capture_default_str();
   add_option(*command, kOceanSize, options->ocean_size, "side S of the ocean square, m")
       ->capture_default_str();

@@ -83,8 +83,8 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (sky.empty()) sky = o.sim.preset_path == "storm" ? "overcast" : "clear";
   Result<render::ShadingParams> shading = render::sky_preset(sky);
   if (!shading.ok())
-    return invalid_argument("--sky = " + sky +
-                            " is not a sky: must be clear, hazy, overcast or sunset");
+    return invalid_argument("--sky = " + sky + " is not a sky: must be " +
+                            name_list(render::kSkyNames, ", ", " or "));
   v.shading = shading.value();
   if (!o.sun_elevation.empty()) {
     Result<double> e = parse(kSunElevation, o.sun_elevation);
@@ -374,8 +374,9 @@ Command add_render_command(CLI::App& app) {
   add_option(*command, kSunAzimuth, o->sun_azimuth, "sun azimuth from +x towards +z, degrees");
   add_option(*command, kExposure, o->exposure, "exposure before tone mapping (default 0.45)");
   command->add_option("--sky", o->sky,
-                      "clear, hazy, overcast or sunset (default: overcast for --preset storm, "
-                      "else clear); the --sun-* and --exposure flags adjust it");
+                      name_list(render::kSkyNames, ", ", " or ") +
+                          " (default: overcast for --preset storm, else clear); the --sun-* and "
+                          "--exposure flags adjust it");
   command->add_option("--contact-sheet", o->contact_sheet,
                       "instead of one picture: a PNG of the calm, moderate and storm presets from "
                       "a low grazing, an eye-level and a high camera (tiles --width x --height, "

@@ -30,8 +30,8 @@ void sim_slider(const char* label, double& v, double lo, double hi, const char* 
 
 void sea_section(PanelState& state, bool& changed) {
   SeaControls& s = state.sea;
-  if (ImGui::Combo("spectrum", &s.model, kSpectrumModelNames.data(),
-                   static_cast<int>(kSpectrumModelNames.size())))
+  if (ImGui::Combo("spectrum", &s.model, kSpectrumModelLabels.data(),
+                   static_cast<int>(kSpectrumModelLabels.size())))
     changed = true;
   const bool phillips = s.model == static_cast<int>(SpectrumModel::phillips);
   const bool jonswap_family = s.model == static_cast<int>(SpectrumModel::jonswap) ||
@@ -109,9 +109,8 @@ void shading_section(render::ShadingParams& sh) {
 
 void view_section(PanelState& state, render::View& view, const PanelStats& stats,
                   PanelActions& actions) {
-  constexpr std::array<const char*, 4> presets = {"low", "medium", "high", "ultra"};
-  if (ImGui::Combo("LOD preset", &state.quality, presets.data(),
-                   static_cast<int>(presets.size()))) {
+  if (ImGui::Combo("LOD preset", &state.quality, kQualityPresetLabels.data(),
+                   static_cast<int>(kQualityPresetLabels.size()))) {
     view.quality = lod::quality_preset(static_cast<lod::QualityPreset>(state.quality));
     actions.quality_changed = true;
   }

@@ -44,7 +44,7 @@ SeaControls sea_controls(const SimulationConfig& c) {
 }
 
 Result<SimulationConfig> to_config(const SeaControls& s, const SimulationConfig& base) {
-  if (s.model < 0 || s.model >= static_cast<int>(kSpectrumModelNames.size()))
+  if (s.model < 0 || s.model >= static_cast<int>(kSpectrumModelLabels.size()))
     return invalid_argument("spectrum model index " + std::to_string(s.model) + " is unknown");
   if (s.cascades < 1 || s.cascades > kMaxPanelCascades)
     return invalid_argument("cascades = " + std::to_string(s.cascades) +

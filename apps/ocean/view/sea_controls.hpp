@@ -7,19 +7,31 @@
 #include <array>
 #include <cstdint>
 
+#include "ocean/lod.hpp"
 #include "ocean/sim.hpp"
 
 namespace ocean::cli::view {
 
-/// The spectrum models the panel offers, in SpectrumModel order (combo index = enum value).
-inline constexpr std::array<const char*, 4> kSpectrumModelNames = {"pierson-moskowitz", "jonswap",
-                                                                   "tma", "phillips"};
+/// The names of a library table as C strings for a combo box, in table order (the tables are in
+/// enum order, so combo index = enum value).
+template <class E, std::size_t N>
+constexpr std::array<const char*, N> combo_labels(const std::array<EnumName<E>, N>& table) {
+  std::array<const char*, N> labels{};
+  for (std::size_t i = 0; i < N; ++i) labels[i] = table[i].name.data();
+  return labels;
+}
+/// The spectrum models the panel offers.
+inline constexpr std::array<const char*, kSpectrumModelNames.size()> kSpectrumModelLabels =
+    combo_labels(kSpectrumModelNames);
+/// The LOD quality presets the panel offers.
+inline constexpr std::array<const char*, lod::kQualityPresetNames.size()> kQualityPresetLabels =
+    combo_labels(lod::kQualityPresetNames);
 /// Resolutions the panel offers: powers of two 64..512 (combo index i → 64·2^i).
 inline constexpr std::array<int, 4> kPanelResolutions = {64, 128, 256, 512};
 inline constexpr int kMaxPanelCascades = 8;  ///< SimulationConfig allows 1..8 cascades
 
 struct SeaControls {
-  int model = 1;          ///< index into kSpectrumModelNames
+  int model = 1;          ///< index into kSpectrumModelLabels
   bool from_wind = true;  ///< wind (+ fetch for jonswap/tma); false: Hs and Tp
   double wind_speed_mps = 10.0;
   double fetch_km = 100.0;  ///< jonswap/tma from wind
