@@ -69,7 +69,7 @@ std::string errno_message(int err) noexcept;
 
 // ---- NumPy .npy (format 1.0, little-endian float32, C order) -------------------------------
 
-/// Largest number of dimensions write_npy and read_npy accept (NumPy 1.x's NPY_MAXDIMS).
+/// Largest number of dimensions write_npy accepts (NumPy 1.x's NPY_MAXDIMS).
 inline constexpr std::size_t kNpyMaxDims = 32;
 
 /// Writes `data` as a NumPy .npy file (format version 1.0, dtype '<f4', fortran_order False).
@@ -88,9 +88,9 @@ ocean::Status write_npy(const std::filesystem::path& path, const float* data,
 
 // ---- OpenEXR scanline images (ZIP compressed, half or float channels) -----------------------
 
-/// Largest width or height write_exr and read_exr accept.
+/// Largest width or height write_exr accepts.
 inline constexpr int kExrMaxDimension = 16384;
-/// Largest number of channels write_exr and read_exr accept.
+/// Largest number of channels write_exr accepts.
 inline constexpr int kExrMaxChannels = 1024;
 
 /// How samples are stored in the file (values are always passed as float).
@@ -120,7 +120,7 @@ ocean::Status write_exr(const std::filesystem::path& path, int width, int height
 
 // ---- PNG images from raw samples (8-bit 1–4 channels, 16-bit gray) -------------------------
 
-/// Largest width or height the PNG writers and reader accept (libpng's default user limit).
+/// Largest width or height the PNG writers accept (libpng's default user limit).
 inline constexpr int kPngMaxDimension = 1000000;
 
 /// Writes an 8-bit PNG: `channels` 1 = gray, 2 = gray+alpha, 3 = RGB, 4 = RGBA.

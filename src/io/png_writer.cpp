@@ -19,8 +19,8 @@
 namespace ocean::io {
 namespace {
 
-// Shared by reading and writing: the open file, the errno of a failed read or write, and the
-// message of the libpng error that aborted the operation.
+// The open file, the errno of a failed write, and the message of the libpng error that aborted
+// the operation.
 struct PngIo {
   std::FILE* file = nullptr;
   int err = 0;
