@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_run.hpp"
-#include "io/npy.hpp"
 #include "ocean/backends.hpp"
+#include "support/npy_reader.hpp"
 
 namespace {
 

@@ -19,8 +19,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/png_image.hpp"
+#include "ocean/io.hpp"
 #include "ocean/scene.hpp"
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
