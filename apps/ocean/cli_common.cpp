@@ -1,9 +1,9 @@
 // Shared pieces of the ocean command-line tool (see cli_common.hpp).
 #include "cli_common.hpp"
 
-#include <charconv>
 #include <cmath>
 #include <iostream>
+#include <tuple>
 #include <utility>
 
 namespace ocean::cli {
@@ -22,6 +22,8 @@ constexpr std::pair<std::string_view, std::string_view> kFlagNames[] = {
     {"small_wave_cutoff_m", "--cutoff-length"},
     {"alpha", "--alpha"},
 };
+
+const std::string kNoText;
 
 bool is_word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
@@ -47,46 +49,6 @@ std::string with_flag_names(std::string message) {
 int report(const Status& status) {
   std::cerr << "ocean: error: " << with_flag_names(status.message()) << "\n";
   return status.code() == ErrorCode::invalid_argument ? kExitUsage : kExitFailure;
-}
-
-Result<double> parse_number(std::string_view flag, const std::string& text) {
-  double value = 0.0;
-  const char* first = text.data();
-  const char* last = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(first, last, value);
-  if (text.empty() || ec != std::errc() || ptr != last) {
-    return invalid_argument(std::string(flag) + " = '" + text + "' is not a number");
-  }
-  if (std::isnan(value)) return require_finite(flag, value);  // NaN is never a valid value
-  return value;
-}
-
-Result<std::vector<double>> parse_number_list(std::string_view flag, const std::string& text) {
-  std::vector<double> values;
-  if (text.empty()) return invalid_argument(std::string(flag) + " is empty: give W1,W2,...");
-  std::size_t start = 0;
-  while (start <= text.size()) {
-    const std::size_t comma = text.find(',', start);
-    const std::size_t end = comma == std::string::npos ? text.size() : comma;
-    Result<double> v = parse_number(flag, text.substr(start, end - start));
-    if (!v.ok()) return v.status();
-    values.push_back(v.value());
-    if (comma == std::string::npos) break;
-    start = comma + 1;
-  }
-  return values;
-}
-
-Result<std::array<double, 3>> parse_triple(std::string_view flag, const std::string& text) {
-  Result<std::vector<double>> v = parse_number_list(flag, text);
-  if (!v.ok()) return v.status();
-  if (v.value().size() != 3) {
-    return invalid_argument(std::string(flag) + " = " + text + " must be three numbers X,Y,Z");
-  }
-  for (double c : v.value()) {
-    if (Status s = require_finite(flag, c); !s.ok()) return s;
-  }
-  return std::array<double, 3>{v.value()[0], v.value()[1], v.value()[2]};
 }
 
 void add_spectrum_flags(CLI::App& command, SpectrumFlags& f) {
@@ -121,28 +83,22 @@ Result<FrequencySpectrumParams> to_params(const SpectrumFlags& f) {
   Result<SpectrumModel> model = parse_spectrum_model(f.model);
   if (!model.ok()) return Status(model.status().code(), "--model: " + model.status().message());
   p.model = model.value();
-  const std::pair<const std::string*, double*> scalars[] = {
-      {&f.hs, &p.significant_wave_height_m},
-      {&f.tp, &p.peak_period_s},
-      {&f.wind_speed, &p.wind_speed_mps},
-      {&f.fetch, &p.fetch_m},
-      {&f.depth, &p.depth_m},
-      {&f.gravity, &p.gravity_mps2},
-      {&f.phillips_amplitude, &p.phillips_amplitude},
-      {&f.cutoff_length, &p.small_wave_cutoff_m}};
-  const std::string_view names[] = {
-      "--hs",    "--tp",      "--wind-speed",         "--fetch",
-      "--depth", "--gravity", "--phillips-amplitude", "--cutoff-length"};
-  for (std::size_t i = 0; i < std::size(scalars); ++i) {
-    if (scalars[i].first->empty()) continue;
-    Result<double> v = parse_number(names[i], *scalars[i].first);
+  // Any number but NaN: FrequencySpectrum::make checks the values and names the flags.
+  const std::tuple<std::string_view, const std::string*, double*> scalars[] = {
+      {"--hs", &f.hs, &p.significant_wave_height_m},
+      {"--tp", &f.tp, &p.peak_period_s},
+      {"--wind-speed", &f.wind_speed, &p.wind_speed_mps},
+      {"--fetch", &f.fetch, &p.fetch_m},
+      {"--depth", &f.depth, &p.depth_m},
+      {"--gravity", &f.gravity, &p.gravity_mps2},
+      {"--phillips-amplitude", &f.phillips_amplitude, &p.phillips_amplitude},
+      {"--cutoff-length", &f.cutoff_length, &p.small_wave_cutoff_m},
+      {"--gamma", f.gamma == "auto" ? &kNoText : &f.gamma, &p.gamma}};
+  for (const auto& [flag, text, value] : scalars) {
+    if (text->empty()) continue;
+    Result<double> v = parse(NumberOption<double>{.flag = flag}, *text);
     if (!v.ok()) return v.status();
-    *scalars[i].second = v.value();
-  }
-  if (!f.gamma.empty() && f.gamma != "auto") {
-    Result<double> v = parse_number("--gamma", f.gamma);
-    if (!v.ok()) return v.status();
-    p.gamma = v.value();
+    *value = v.value();
   }
   if (f.depth_factor == "exact")
     p.depth_factor = DepthFactor::exact;

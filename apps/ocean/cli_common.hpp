@@ -1,14 +1,14 @@
-// Shared pieces of the ocean command-line tool: error reporting, number parsing, the spectrum
-// flags that several subcommands accept, and JSON output.
+// Shared pieces of the ocean command-line tool: error reporting, the spectrum flags that several
+// subcommands accept, and JSON output. Number flags are parsed by options.hpp.
 #pragma once
 
 #include <CLI/CLI.hpp>
-#include <array>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
 #include "ocean/spectrum.hpp"
+#include "options.hpp"
 
 namespace ocean::cli {
 
@@ -20,14 +20,6 @@ inline constexpr int kExitUsage = 2;
 /// Prints "ocean: error: <message>" on stderr (with library field names rewritten to the flags
 /// that set them) and returns the exit code for the status (2 for invalid arguments, else 1).
 int report(const Status& status);
-
-/// Parses a scalar flag value ("3.5", "inf"). The error names the flag.
-Result<double> parse_number(std::string_view flag, const std::string& text);
-/// Parses a comma-separated list of numbers; empty lists and empty items are errors.
-Result<std::vector<double>> parse_number_list(std::string_view flag, const std::string& text);
-
-/// Parses "X,Y,Z": exactly three finite numbers. The error names the flag.
-Result<std::array<double, 3>> parse_triple(std::string_view flag, const std::string& text);
 
 /// The sea-state flags of `ocean spectrum`, reused by later subcommands.
 struct SpectrumFlags {

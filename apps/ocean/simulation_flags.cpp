@@ -7,6 +7,29 @@
 
 namespace ocean::cli {
 
+namespace {
+// ocean::validate checks the values and names the fields; these flags only refuse what is not a
+// number of the right kind.
+constexpr NumberOption<double> kChoppiness{.flag = "--choppiness"};
+constexpr NumberOption<double> kLoopPeriod{.flag = "--loop-period"};
+constexpr NumberOption<double> kCascades{.flag = "--cascades"};
+// The power-of-two range is ocean::validate's ("resolution = 100 is out of range ..."); here only
+// a whole number small enough for an int.
+constexpr NumberOption<int> kResolution{.flag = "--resolution",
+                                        .accept = Accept::integer_in_range,
+                                        .lo = -1e6,
+                                        .hi = 1e6,
+                                        .echo = Echo::text,
+                                        .says = "a power of two in [16, 2048]"};
+// Below 2^53, where every integer is exact as a double.
+constexpr NumberOption<std::uint64_t> kSeed{.flag = "--seed",
+                                            .accept = Accept::integer_in_range,
+                                            .lo = 0.0,
+                                            .hi = 9e15,
+                                            .echo = Echo::text,
+                                            .says = "an integer >= 0"};
+}  // namespace
+
 nlohmann::ordered_json to_json(const SimulationConfig& config) {
   return nlohmann::ordered_json::parse(preset::to_json(config));
 }
@@ -16,13 +39,12 @@ void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
                      "calm, moderate, storm or a preset JSON file (see presets/)");
   command.add_option("--set", f.set, "override a preset key: --set sea.wind_sea.fetch_m=5e4");
   add_spectrum_flags(command, f.sea);
-  command.add_option("--resolution", f.resolution,
-                     "grid size N per cascade (power of two, 16-2048)");
-  command.add_option("--seed", f.seed, "random seed (integer)");
-  command.add_option("--choppiness", f.choppiness, "horizontal displacement lambda >= 0");
-  command.add_option("--cascades", f.cascades, "patch sizes L1,L2,... in metres, largest first");
+  add_option(command, kResolution, f.resolution, "grid size N per cascade (power of two, 16-2048)");
+  add_option(command, kSeed, f.seed, "random seed (integer)");
+  add_option(command, kChoppiness, f.choppiness, "horizontal displacement lambda >= 0");
+  add_option(command, kCascades, f.cascades, "patch sizes L1,L2,... in metres, largest first");
   command.add_option("--normals", f.normals, "central-difference | analytic | sobel");
-  command.add_option("--loop-period", f.loop_period, "loop period T, s (0 = no loop)");
+  add_option(command, kLoopPeriod, f.loop_period, "loop period T, s (0 = no loop)");
 }
 
 Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
@@ -48,33 +70,28 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
     c.sea.dispersion.gravity_mps2 = spectrum.value().gravity_mps2;
     c.sea.dispersion.depth_m = kInfiniteDepth;
   }
-  const std::pair<const std::string*, const char*> numbers[] = {{&f.choppiness, "--choppiness"},
-                                                                {&f.loop_period, "--loop-period"}};
-  for (const auto& [text, flag] : numbers) {
-    if (text->empty()) continue;
-    Result<double> v = parse_number(flag, *text);
+  if (!f.choppiness.empty()) {
+    Result<double> v = parse(kChoppiness, f.choppiness);
     if (!v.ok()) return v.status();
-    (text == &f.choppiness ? c.choppiness : c.loop_period_s) = v.value();
+    c.choppiness = v.value();
+  }
+  if (!f.loop_period.empty()) {
+    Result<double> v = parse(kLoopPeriod, f.loop_period);
+    if (!v.ok()) return v.status();
+    c.loop_period_s = v.value();
   }
   if (!f.resolution.empty()) {
-    Result<double> v = parse_number("--resolution", f.resolution);
+    Result<int> v = parse(kResolution, f.resolution);
     if (!v.ok()) return v.status();
-    if (v.value() != std::floor(v.value()) || std::abs(v.value()) > 1e6) {
-      return invalid_argument("--resolution = " + f.resolution +
-                              " is out of range: must be a power of two in [16, 2048]");
-    }
-    c.resolution = static_cast<int>(v.value());
+    c.resolution = v.value();
   }
   if (!f.seed.empty()) {
-    Result<double> v = parse_number("--seed", f.seed);
+    Result<std::uint64_t> v = parse(kSeed, f.seed);
     if (!v.ok()) return v.status();
-    if (v.value() < 0 || v.value() != std::floor(v.value()) || v.value() > 9e15) {
-      return invalid_argument("--seed = " + f.seed + " is out of range: must be an integer >= 0");
-    }
-    c.seed = static_cast<std::uint64_t>(v.value());
+    c.seed = v.value();
   }
   if (!f.cascades.empty()) {
-    Result<std::vector<double>> sizes = parse_number_list("--cascades", f.cascades);
+    Result<std::vector<double>> sizes = parse_list(kCascades, f.cascades);
     if (!sizes.ok()) return sizes.status();
     c.cascade_patch_sizes_m = sizes.value();
   }

@@ -4,9 +4,18 @@
 #include <cmath>
 #include <numbers>
 
-#include "cli_common.hpp"
+#include "options.hpp"
 
 namespace ocean::cli {
+
+namespace {
+constexpr NumberOption<double> kFov{
+    .flag = "--fov", .accept = Accept::in_range, .lo = 1.0, .hi = 170.0};
+constexpr NumberOption<double> kOceanSize{.flag = "--ocean-size",
+                                          .accept = Accept::in_range,
+                                          .lo = lod::kMinOceanSize_m,
+                                          .hi = lod::kMaxOceanSize_m};
+}  // namespace
 
 void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
   command.add_option("--width", f.width, what + " width, pixels (default " + f.width + ")");
@@ -14,11 +23,11 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
   command.add_option("--camera", f.camera, "eye X,Y,Z in metres, Y up (default " + f.camera + ")");
   command.add_option("--target", f.target,
                      "a point the camera looks at (default " + f.target + ")");
-  command.add_option("--fov", f.fov, "vertical field of view, degrees (default " + f.fov + ")");
+  add_option(command, kFov, f.fov, "vertical field of view, degrees (default " + f.fov + ")");
   command.add_option("--quality", f.quality,
                      "LOD quality: low, medium, high, ultra (default " + f.quality + ")");
-  command.add_option(
-      "--ocean-size", f.ocean_size,
+  add_option(
+      command, kOceanSize, f.ocean_size,
       "side of the LOD square around the camera, m (256..8192, default " + f.ocean_size + ")");
   command.add_option("--view", f.view, "shaded, lod (colours by level) or wireframe");
   command.add_option("--backend", f.backend,
@@ -27,22 +36,19 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
                    "enable the Khronos validation layer; fail if it reports anything");
 }
 
-Result<double> number_in(std::string_view flag, const std::string& text, double lo, double hi) {
-  Result<double> v = parse_number(flag, text);
-  if (!v.ok()) return v.status();
-  if (Status s = require_in_range(flag, v.value(), lo, hi); !s.ok()) return s;
-  return v.value();
-}
-
 Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& scene,
                         render::View& v) {
   if (f.backend != "cpu" && f.backend != "vulkan")
     return invalid_argument("--backend = " + f.backend + " cannot render: must be cpu or vulkan");
   scene.backend = f.backend;
   scene.validation = f.validation;
-  Result<double> w = number_in("--width", f.width, min_size, 16384);
+  const auto side = [min_size](std::string_view flag) {
+    return NumberOption<double>{
+        .flag = flag, .accept = Accept::in_range, .lo = static_cast<double>(min_size), .hi = 16384};
+  };
+  Result<double> w = parse(side("--width"), f.width);
   if (!w.ok()) return w.status();
-  Result<double> h = number_in("--height", f.height, min_size, 16384);
+  Result<double> h = parse(side("--height"), f.height);
   if (!h.ok()) return h.status();
   if (w.value() != std::floor(w.value()) || h.value() != std::floor(h.value()))
     return invalid_argument("--width and --height must be whole numbers of pixels");
@@ -52,7 +58,7 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
   if (!eye.ok()) return eye.status();
   Result<std::array<double, 3>> target = parse_triple("--target", f.target);
   if (!target.ok()) return target.status();
-  Result<double> fov = number_in("--fov", f.fov, 1.0, 170.0);
+  Result<double> fov = parse(kFov, f.fov);
   if (!fov.ok()) return fov.status();
   v.camera = {.position_m = {eye.value()[0], eye.value()[1], eye.value()[2]},
               .target_m = {target.value()[0], target.value()[1], target.value()[2]},
@@ -70,8 +76,7 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
     return invalid_argument("--quality = " + f.quality +
                             " is not a quality: must be low, medium, high or ultra");
   v.quality = lod::quality_preset(preset.value());
-  Result<double> size =
-      number_in("--ocean-size", f.ocean_size, lod::kMinOceanSize_m, lod::kMaxOceanSize_m);
+  Result<double> size = parse(kOceanSize, f.ocean_size);
   if (!size.ok()) return size.status();
   v.ocean_size_m = size.value();
   Result<render::DebugView> debug = render::parse_debug_view(f.view);

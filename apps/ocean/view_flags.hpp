@@ -20,9 +20,6 @@ struct ViewFlags {
 /// Registers the flags; `what` names the image ("image" or "window") in the help.
 void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what);
 
-/// A number flag within [lo, hi]; the error names the flag.
-Result<double> number_in(std::string_view flag, const std::string& text, double lo, double hi);
-
 /// Size, backend and validation into `scene`; camera, quality, ocean size and debug view into
 /// `view` (its shading is left alone). `min_size` is the smallest width/height accepted.
 Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,

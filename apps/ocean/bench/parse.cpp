@@ -1,46 +1,32 @@
-// `ocean bench`'s flag parsers.
+// `ocean bench`'s list flags (see parse.hpp).
 #include "bench/parse.hpp"
 
-#include <cmath>
 #include <sstream>
-
-#include "cli_common.hpp"
 
 namespace ocean::cli::bench {
 
-Result<std::vector<int>> parse_ints(std::string_view flag, const std::string& text, int lo, int hi,
+Result<std::vector<int>> parse_ints(const NumberOption<int>& item, const std::string& text,
                                     bool allow_all) {
+  std::string says = "an integer in [" + std::to_string(static_cast<int>(item.lo)) + ", " +
+                     std::to_string(static_cast<int>(item.hi)) + "]" +
+                     (allow_all ? " or 'all'" : "");
+  NumberOption<int> option = item;
+  option.echo = Echo::quoted_text;
+  option.says = says;
   std::vector<int> out;
   std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    if (allow_all && item == "all") {
+  std::string word;
+  while (std::getline(stream, word, ',')) {
+    if (allow_all && word == "all") {
       out.push_back(0);
       continue;
     }
-    Result<double> v = parse_number(flag, item);
+    Result<int> v = parse(option, word);
     if (!v.ok()) return v.status();
-    if (v.value() != std::floor(v.value()) || v.value() < lo || v.value() > hi) {
-      return invalid_argument(std::string(flag) + " = '" + item +
-                              "' is out of range: must be an integer in [" + std::to_string(lo) +
-                              ", " + std::to_string(hi) + "]" + (allow_all ? " or 'all'" : ""));
-    }
-    out.push_back(static_cast<int>(v.value()));
+    out.push_back(v.value());
   }
-  if (out.empty()) return invalid_argument(std::string(flag) + " is empty");
+  if (out.empty()) return invalid_argument(std::string(item.flag) + " is empty");
   return out;
-}
-
-Result<double> parse_in_range(std::string_view flag, const std::string& text, double lo, double hi,
-                              std::string_view unit) {
-  Result<double> v = parse_number(flag, text);
-  if (!v.ok()) return v;
-  if (!(v.value() >= lo && v.value() <= hi)) {
-    return invalid_argument(std::string(flag) + " = " + text + " is out of range: must be in [" +
-                            std::to_string(static_cast<long long>(lo)) + ", " +
-                            std::to_string(static_cast<long long>(hi)) + "] " + std::string(unit));
-  }
-  return v;
 }
 
 }  // namespace ocean::cli::bench

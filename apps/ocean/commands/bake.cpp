@@ -19,6 +19,15 @@ namespace ocean::cli {
 
 namespace {
 
+constexpr NumberOption<double> kFps{
+    .flag = "--fps", .accept = Accept::in_range, .lo = 1e-3, .hi = 1e4};
+constexpr NumberOption<double> kTime{.flag = "--time", .accept = Accept::finite};
+constexpr NumberOption<long long> kFrames{.flag = "--frames",
+                                          .accept = Accept::integer_in_range,
+                                          .lo = 1.0,
+                                          .hi = 1e6,
+                                          .echo = Echo::text};
+
 struct BakeOptions {
   SimulationFlags sim;
   std::string out;
@@ -47,12 +56,10 @@ int run_bake(const BakeOptions& o) {
   Result<SimulationConfig> config = resolve_config(o.sim);
   if (!config.ok()) return report(config.status());
   const SimulationConfig& c = config.value();
-  Result<double> fps = parse_number("--fps", o.fps);
+  Result<double> fps = parse(kFps, o.fps);
   if (!fps.ok()) return report(fps.status());
-  if (Status s = require_in_range("--fps", fps.value(), 1e-3, 1e4); !s.ok()) return report(s);
-  Result<double> start = parse_number("--time", o.time);
+  Result<double> start = parse(kTime, o.time);
   if (!start.ok()) return report(start.status());
-  if (Status s = require_finite("--time", start.value()); !s.ok()) return report(s);
   long long frames = 1;
   if (o.loop) {
     if (!o.frames.empty()) return report(invalid_argument("give --frames N or --loop, not both"));
@@ -63,14 +70,9 @@ int run_bake(const BakeOptions& o) {
       return report(invalid_argument("--loop at --fps " + o.fps + " gives " +
                                      std::to_string(frames) + " frames: must be 1 to 1000000"));
   } else if (!o.frames.empty()) {
-    Result<double> v = parse_number("--frames", o.frames);
+    Result<long long> v = parse(kFrames, o.frames);
     if (!v.ok()) return report(v.status());
-    if (v.value() != std::floor(v.value()) || v.value() < 1 ||
-        v.value() > static_cast<double>(bake::kMaxFrames)) {
-      return report(invalid_argument("--frames = " + o.frames +
-                                     " is out of range: must be an integer in [1, 1000000]"));
-    }
-    frames = static_cast<long long>(v.value());
+    frames = v.value();
   }
   params.frame_count = frames;
   params.fps = fps.value();
@@ -105,10 +107,10 @@ Command add_bake_command(CLI::App& app) {
   add_simulation_flags(*command, o->sim);
   command->add_option("--out", o->out, "output directory (created if missing)");
   command->add_option("--format", o->formats, "exr | png | npy (repeatable; default npy)");
-  command->add_option("--frames", o->frames, "number of frames (default 1)");
+  add_option(*command, kFrames, o->frames, "number of frames (default 1)");
   command->add_flag("--loop", o->loop, "one whole loop period of frames at --fps");
-  command->add_option("--fps", o->fps, "frames per second")->capture_default_str();
-  command->add_option("--time", o->time, "time of the first frame, s")->capture_default_str();
+  add_option(*command, kFps, o->fps, "frames per second")->capture_default_str();
+  add_option(*command, kTime, o->time, "time of the first frame, s")->capture_default_str();
   command->add_option("--backend", o->backend, "simulation backend (see ocean info)")
       ->capture_default_str();
   command->add_option("--contact-sheet", o->contact_sheet,

@@ -27,7 +27,6 @@ namespace ocean::cli {
 namespace {
 
 using bench::measure_copy_bandwidth_gbps;
-using bench::parse_in_range;
 using bench::parse_ints;
 using bench::PipelineResult;
 using bench::Planes;
@@ -39,6 +38,25 @@ using bench::Stats;
 using bench::stats_of;
 using bench::time_runs;
 using bench::to_json;
+
+constexpr NumberOption<int> kResolution{
+    .flag = "--resolution", .accept = Accept::integer_in_range, .lo = 16, .hi = 2048};
+constexpr NumberOption<int> kCascades{
+    .flag = "--cascades", .accept = Accept::integer_in_range, .lo = 1, .hi = 4};
+constexpr NumberOption<int> kThreads{
+    .flag = "--threads", .accept = Accept::integer_in_range, .lo = 1, .hi = 256};
+constexpr NumberOption<double> kFrameInterval{.flag = "--frame-interval",
+                                              .accept = Accept::in_range,
+                                              .lo = 0.0,
+                                              .hi = 1000.0,
+                                              .echo = Echo::text,
+                                              .unit = "ms"};
+constexpr NumberOption<double> kMinTime{.flag = "--min-time",
+                                        .accept = Accept::in_range,
+                                        .lo = 0.0,
+                                        .hi = 60.0,
+                                        .echo = Echo::text,
+                                        .unit = "s"};
 
 struct BenchOptions {
   std::string resolutions = "64,128,256,512,1024,2048";
@@ -56,17 +74,17 @@ int run_bench(const BenchOptions& o) {
     return report(
         invalid_argument("--backend = '" + o.backend + "' is unknown: must be one of cpu, vulkan"));
   }
-  Result<std::vector<int>> resolutions = parse_ints("--resolution", o.resolutions, 16, 2048, false);
+  Result<std::vector<int>> resolutions = parse_ints(kResolution, o.resolutions, false);
   if (!resolutions.ok()) return report(resolutions.status());
   for (int n : resolutions.value()) {
     if (!std::has_single_bit(static_cast<unsigned>(n)))
       return report(
           invalid_argument("--resolution = " + std::to_string(n) + " is not a power of two"));
   }
-  Result<std::vector<int>> cascades = parse_ints("--cascades", o.cascades, 1, 4, false);
+  Result<std::vector<int>> cascades = parse_ints(kCascades, o.cascades, false);
   if (!cascades.ok()) return report(cascades.status());
   const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  Result<std::vector<int>> threads = parse_ints("--threads", o.threads, 1, 256, true);
+  Result<std::vector<int>> threads = parse_ints(kThreads, o.threads, true);
   if (!threads.ok()) return report(threads.status());
   FrameOutputs outputs;
   if (o.outputs == "textures") {
@@ -75,8 +93,7 @@ int run_bench(const BenchOptions& o) {
     return report(invalid_argument("--outputs = '" + o.outputs +
                                    "' is unknown: must be one of all, textures"));
   }
-  Result<double> interval_ms =
-      parse_in_range("--frame-interval", o.frame_interval, 0.0, 1000.0, "ms");
+  Result<double> interval_ms = parse(kFrameInterval, o.frame_interval);
   if (!interval_ms.ok()) return report(interval_ms.status());
   const double interval = interval_ms.value() * 1e-3;
   if (o.backend == "vulkan") {
@@ -86,7 +103,7 @@ int run_bench(const BenchOptions& o) {
     }
     return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.outputs, o.json);
   }
-  Result<double> min_time = parse_in_range("--min-time", o.min_time, 0.0, 60.0, "s");
+  Result<double> min_time = parse(kMinTime, o.min_time);
   if (!min_time.ok()) return report(min_time.status());
 
   const std::string target = fft::active_simd_target();
@@ -191,23 +208,23 @@ Command add_bench_command(CLI::App& app) {
   auto options = std::make_shared<BenchOptions>();
   CLI::App* cmd = app.add_subcommand(
       "bench", "Time the CPU pipeline against the same pipeline on FFTW and FFTW alone");
-  cmd->add_option("--resolution", options->resolutions,
-                  "Comma-separated grid sizes N (powers of two, 16…2048)")
+  add_option(*cmd, kResolution, options->resolutions,
+             "Comma-separated grid sizes N (powers of two, 16…2048)")
       ->capture_default_str();
-  cmd->add_option("--cascades", options->cascades, "Comma-separated cascade counts (1…4)")
+  add_option(*cmd, kCascades, options->cascades, "Comma-separated cascade counts (1…4)")
       ->capture_default_str();
-  cmd->add_option("--threads", options->threads, "Comma-separated thread counts, or 'all'")
+  add_option(*cmd, kThreads, options->threads, "Comma-separated thread counts, or 'all'")
       ->capture_default_str();
-  cmd->add_option("--min-time", options->min_time, "Seconds of timed runs per measurement")
+  add_option(*cmd, kMinTime, options->min_time, "Seconds of timed runs per measurement")
       ->capture_default_str();
   cmd->add_option("--backend", options->backend, "Backend to measure")->capture_default_str();
   cmd->add_option("--outputs", options->outputs,
                   "Frame outputs: all (every array), or textures (displacement float3 + half4 and "
                   "the RGBA8 chain, no float normal, Jacobian or foam arrays)")
       ->capture_default_str();
-  cmd->add_option("--frame-interval", options->frame_interval,
-                  "Milliseconds from one timed frame's start to the next, as in a frame loop "
-                  "(0: back to back); the FFT-only runs stay back to back")
+  add_option(*cmd, kFrameInterval, options->frame_interval,
+             "Milliseconds from one timed frame's start to the next, as in a frame loop "
+             "(0: back to back); the FFT-only runs stay back to back")
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "Print JSON instead of a table");
   return {cmd, [options] { return run_bench(*options); }};

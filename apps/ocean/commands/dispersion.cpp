@@ -10,6 +10,12 @@
 namespace ocean::cli {
 
 namespace {
+// Dispersion::make checks depth and gravity and names the flags.
+constexpr NumberOption<double> kDepth{.flag = "--depth"};
+constexpr NumberOption<double> kGravity{.flag = "--gravity"};
+constexpr NumberOption<double> kK{.flag = "--k", .accept = Accept::non_negative};
+constexpr NumberOption<double> kOmega{.flag = "--omega", .accept = Accept::non_negative};
+
 struct DispersionOptions {
   std::string depth, gravity, k, omega;
   bool capillary = false;
@@ -22,12 +28,12 @@ int run_dispersion(const DispersionOptions& o) {
   }
   DispersionParams params;
   if (!o.depth.empty()) {
-    Result<double> v = parse_number("--depth", o.depth);
+    Result<double> v = parse(kDepth, o.depth);
     if (!v.ok()) return report(v.status());
     params.depth_m = v.value();
   }
   if (!o.gravity.empty()) {
-    Result<double> v = parse_number("--gravity", o.gravity);
+    Result<double> v = parse(kGravity, o.gravity);
     if (!v.ok()) return report(v.status());
     params.gravity_mps2 = v.value();
   }
@@ -36,12 +42,10 @@ int run_dispersion(const DispersionOptions& o) {
   if (!dispersion.ok()) return report(dispersion.status());
   const Dispersion& d = dispersion.value();
   const bool from_k = !o.k.empty();
-  Result<std::vector<double>> input =
-      from_k ? parse_number_list("--k", o.k) : parse_number_list("--omega", o.omega);
+  Result<std::vector<double>> input = from_k ? parse_list(kK, o.k) : parse_list(kOmega, o.omega);
   if (!input.ok()) return report(input.status());
   std::vector<double> k, omega, cg;
   for (double v : input.value()) {
-    if (Status s = require_non_negative(from_k ? "--k" : "--omega", v); !s.ok()) return report(s);
     const double kk = from_k ? v : d.wavenumber(v);
     k.push_back(kk);
     omega.push_back(from_k ? d.omega(v) : v);
@@ -75,10 +79,10 @@ Command add_dispersion_command(CLI::App& app) {
   auto o = std::make_shared<DispersionOptions>();
   CLI::App* command = app.add_subcommand(
       "dispersion", "Finite-depth dispersion omega^2 = g k tanh(k h): k <-> omega, group velocity");
-  command->add_option("--depth", o->depth, "water depth, m (default: deep water)");
-  command->add_option("--gravity", o->gravity, "gravitational acceleration, m/s^2 (default 9.81)");
-  command->add_option("--k", o->k, "wavenumbers K1,K2,..., rad/m");
-  command->add_option("--omega", o->omega, "angular frequencies W1,W2,..., rad/s");
+  add_option(*command, kDepth, o->depth, "water depth, m (default: deep water)");
+  add_option(*command, kGravity, o->gravity, "gravitational acceleration, m/s^2 (default 9.81)");
+  add_option(*command, kK, o->k, "wavenumbers K1,K2,..., rad/m");
+  add_option(*command, kOmega, o->omega, "angular frequencies W1,W2,..., rad/s");
   command->add_flag("--capillary", o->capillary, "include sea-water surface tension");
   command->add_flag("--json", o->json, "print JSON {\"k\",\"omega\",\"group_velocity\"}");
   return {command, [o] { return run_dispersion(*o); }};

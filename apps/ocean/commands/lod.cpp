@@ -25,6 +25,16 @@ namespace ocean::cli {
 
 namespace {
 
+constexpr NumberOption<double> kOceanSize{.flag = "--ocean-size",
+                                          .accept = Accept::in_range,
+                                          .lo = lod::kMinOceanSize_m,
+                                          .hi = lod::kMaxOceanSize_m};
+constexpr NumberOption<double> kFov{
+    .flag = "--fov", .accept = Accept::in_range, .lo = 1.0, .hi = 170.0};
+constexpr NumberOption<double> kAspect{
+    .flag = "--aspect", .accept = Accept::in_range, .lo = 0.05, .hi = 20.0};
+constexpr NumberOption<double> kCentre{.flag = "--center"};  // two finite numbers, checked below
+
 struct LodOptions {
   std::string camera, target, centre;
   std::string preset = "medium", ocean_size = "1024", fov = "60", aspect = "1.7778";
@@ -55,19 +65,12 @@ Result<Inputs> parse_inputs(const LodOptions& o) {
     return invalid_argument("--preset = " + o.preset +
                             " is not a preset: must be low, medium, high or ultra");
   in.preset = preset.value();
-  Result<double> size = parse_number("--ocean-size", o.ocean_size);
+  Result<double> size = parse(kOceanSize, o.ocean_size);
   if (!size.ok()) return size.status();
-  if (Status s = require_in_range("--ocean-size", size.value(), lod::kMinOceanSize_m,
-                                  lod::kMaxOceanSize_m);
-      !s.ok()) {
-    return s;
-  }
-  Result<double> fov = parse_number("--fov", o.fov);
+  Result<double> fov = parse(kFov, o.fov);
   if (!fov.ok()) return fov.status();
-  if (Status s = require_in_range("--fov", fov.value(), 1.0, 170.0); !s.ok()) return s;
-  Result<double> aspect = parse_number("--aspect", o.aspect);
+  Result<double> aspect = parse(kAspect, o.aspect);
   if (!aspect.ok()) return aspect.status();
-  if (Status s = require_in_range("--aspect", aspect.value(), 0.05, 20.0); !s.ok()) return s;
   in.camera = {.position_m = eye.value(),
                .target_m = target.value(),
                .fov_y_rad = fov.value() * std::numbers::pi / 180.0,
@@ -84,7 +87,7 @@ Result<Inputs> parse_inputs(const LodOptions& o) {
                .frustum = lod::camera_frustum(in.camera),
                .cull = !o.no_cull};
   if (!o.centre.empty()) {
-    Result<std::vector<double>> c = parse_number_list("--center", o.centre);
+    Result<std::vector<double>> c = parse_list(kCentre, o.centre);
     if (!c.ok()) return c.status();
     if (c.value().size() != 2 || !std::isfinite(c.value()[0]) || !std::isfinite(c.value()[1])) {
       return invalid_argument("--center = " + o.centre + " must be two finite numbers X,Z");
@@ -328,13 +331,13 @@ Command add_lod_command(CLI::App& app) {
       ->required();
   command->add_option("--preset", options->preset, "quality: low, medium, high or ultra")
       ->capture_default_str();
-  command->add_option("--ocean-size", options->ocean_size, "side S of the ocean square, m")
+  add_option(*command, kOceanSize, options->ocean_size, "side S of the ocean square, m")
       ->capture_default_str();
-  command->add_option("--center", options->centre,
-                      "fix the grid centre at X,Z, m (default: the camera, snapped)");
-  command->add_option("--fov", options->fov, "vertical field of view, degrees")
+  add_option(*command, kCentre, options->centre,
+             "fix the grid centre at X,Z, m (default: the camera, snapped)");
+  add_option(*command, kFov, options->fov, "vertical field of view, degrees")
       ->capture_default_str();
-  command->add_option("--aspect", options->aspect, "width/height")->capture_default_str();
+  add_option(*command, kAspect, options->aspect, "width/height")->capture_default_str();
   command->add_flag("--no-cull", options->no_cull,
                     "keep patches outside the view frustum (the whole square)");
   command->add_option("--out", options->out,

@@ -40,6 +40,21 @@ struct RenderOptions {
   bool json = false;
 };
 
+constexpr NumberOption<double> kSunElevation{
+    .flag = "--sun-elevation", .accept = Accept::in_range, .lo = -10.0, .hi = 90.0};
+constexpr NumberOption<double> kSunAzimuth{
+    .flag = "--sun-azimuth", .accept = Accept::in_range, .lo = -360.0, .hi = 360.0};
+constexpr NumberOption<double> kExposure{
+    .flag = "--exposure", .accept = Accept::in_range, .lo = 1e-3, .hi = 1e3};
+constexpr NumberOption<double> kTime{
+    .flag = "--time", .accept = Accept::in_range, .lo = 0.0, .hi = 1e9};
+constexpr NumberOption<long long> kFrames{
+    .flag = "--frames", .accept = Accept::whole_in_range, .lo = 1.0, .hi = 1e6};
+constexpr NumberOption<double> kFps{
+    .flag = "--fps", .accept = Accept::in_range, .lo = 1e-3, .hi = 1000.0};
+constexpr NumberOption<double> kWarmup{
+    .flag = "--warmup", .accept = Accept::in_range, .lo = 0.0, .hi = 600.0};
+
 enum class OutputKind { png, exr, mp4 };
 
 struct Inputs {
@@ -70,32 +85,30 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
                             " is not a sky: must be clear, hazy, overcast or sunset");
   v.shading = shading.value();
   if (!o.sun_elevation.empty()) {
-    Result<double> e = number_in("--sun-elevation", o.sun_elevation, -10.0, 90.0);
+    Result<double> e = parse(kSunElevation, o.sun_elevation);
     if (!e.ok()) return e.status();
     v.shading.sun_elevation_deg = e.value();
   }
   if (!o.sun_azimuth.empty()) {
-    Result<double> a = number_in("--sun-azimuth", o.sun_azimuth, -360.0, 360.0);
+    Result<double> a = parse(kSunAzimuth, o.sun_azimuth);
     if (!a.ok()) return a.status();
     v.shading.sun_azimuth_deg = a.value();
   }
   if (!o.exposure.empty()) {
-    Result<double> e = number_in("--exposure", o.exposure, 1e-3, 1e3);
+    Result<double> e = parse(kExposure, o.exposure);
     if (!e.ok()) return e.status();
     v.shading.exposure = e.value();
   }
-  Result<double> t = number_in("--time", o.time, 0.0, 1e9);
+  Result<double> t = parse(kTime, o.time);
   if (!t.ok()) return t.status();
   in.time_s = t.value();
-  Result<double> frames = number_in("--frames", o.frames, 1, 1e6);
+  Result<long long> frames = parse(kFrames, o.frames);
   if (!frames.ok()) return frames.status();
-  if (frames.value() != std::floor(frames.value()))
-    return invalid_argument("--frames = " + o.frames + " must be a whole number");
-  in.frames = static_cast<long long>(frames.value());
-  Result<double> fps = number_in("--fps", o.fps, 1e-3, 1000.0);
+  in.frames = frames.value();
+  Result<double> fps = parse(kFps, o.fps);
   if (!fps.ok()) return fps.status();
   in.fps = fps.value();
-  Result<double> warmup = number_in("--warmup", o.warmup, 0.0, 600.0);
+  Result<double> warmup = parse(kWarmup, o.warmup);
   if (!warmup.ok()) return warmup.status();
   in.warmup_s = warmup.value();
   const std::string ext = std::filesystem::path(o.out).extension().string();
@@ -350,14 +363,14 @@ Command add_render_command(CLI::App& app) {
       "--out", o->out,
       "output .png (sRGB), .exr (linear HDR) or .mp4 (needs ffmpeg); sequences "
       "number PNG/EXR frames (name_00000.png or a %05d pattern); default ocean.png");
-  command->add_option("--time", o->time, "simulated time of the first frame, s (default 20)");
-  command->add_option("--frames", o->frames, "number of frames (default 1)");
-  command->add_option("--fps", o->fps, "frames per second of a sequence (default 30)");
-  command->add_option("--warmup", o->warmup,
-                      "seconds simulated before the first frame so foam builds up (default 4)");
-  command->add_option("--sun-elevation", o->sun_elevation, "sun above the horizon, degrees");
-  command->add_option("--sun-azimuth", o->sun_azimuth, "sun azimuth from +x towards +z, degrees");
-  command->add_option("--exposure", o->exposure, "exposure before tone mapping (default 0.45)");
+  add_option(*command, kTime, o->time, "simulated time of the first frame, s (default 20)");
+  add_option(*command, kFrames, o->frames, "number of frames (default 1)");
+  add_option(*command, kFps, o->fps, "frames per second of a sequence (default 30)");
+  add_option(*command, kWarmup, o->warmup,
+             "seconds simulated before the first frame so foam builds up (default 4)");
+  add_option(*command, kSunElevation, o->sun_elevation, "sun above the horizon, degrees");
+  add_option(*command, kSunAzimuth, o->sun_azimuth, "sun azimuth from +x towards +z, degrees");
+  add_option(*command, kExposure, o->exposure, "exposure before tone mapping (default 0.45)");
   command->add_option("--sky", o->sky,
                       "clear, hazy, overcast or sunset (default: overcast for --preset storm, "
                       "else clear); the --sun-* and --exposure flags adjust it");

@@ -11,6 +11,8 @@
 namespace ocean::cli {
 
 namespace {
+constexpr NumberOption<double> kOmega{.flag = "--omega", .accept = Accept::non_negative};
+
 struct SpectrumOptions {
   SpectrumFlags sea;
   std::string omega;
@@ -28,12 +30,9 @@ int run_spectrum(const SpectrumOptions& o) {
   if (!spectrum.ok()) return report(spectrum.status());
   std::vector<double> omega;
   if (!o.omega.empty()) {
-    Result<std::vector<double>> list = parse_number_list("--omega", o.omega);
+    Result<std::vector<double>> list = parse_list(kOmega, o.omega);
     if (!list.ok()) return report(list.status());
     omega = std::move(list).value();
-    for (double w : omega) {
-      if (Status s = require_non_negative("--omega", w); !s.ok()) return report(s);
-    }
   }
   if (!o.plot_path.empty()) {
     Result<plot::Figure> figure = make_sea_state_figure(params.value());
@@ -72,7 +71,7 @@ Command add_spectrum_command(CLI::App& app) {
   CLI::App* command =
       app.add_subcommand("spectrum", "Evaluate a one-sided wave spectrum S(omega), m^2 s/rad");
   add_spectrum_flags(*command, options->sea);
-  command->add_option("--omega", options->omega, "angular frequencies W1,W2,..., rad/s");
+  add_option(*command, kOmega, options->omega, "angular frequencies W1,W2,..., rad/s");
   command->add_flag("--json", options->json, "print JSON {\"omega\":[...],\"S\":[...]}");
   command->add_option("--plot", options->plot_path,
                       "draw the sea-state figure (spectra, spreading, depth, dispersion) to a PNG");

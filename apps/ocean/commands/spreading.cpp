@@ -9,6 +9,16 @@
 namespace ocean::cli {
 
 namespace {
+// Spreading::make checks s and alpha and names the flags.
+constexpr NumberOption<double> kS{.flag = "--s"};
+constexpr NumberOption<double> kAlpha{.flag = "--alpha"};
+constexpr NumberOption<double> kOmegaRatio{.flag = "--omega-ratio", .accept = Accept::positive};
+constexpr NumberOption<double> kWindSpeed{
+    .flag = "--wind-speed", .accept = Accept::in_range, .lo = 1e-3, .hi = 100.0};
+constexpr NumberOption<double> kFetch{
+    .flag = "--fetch", .accept = Accept::in_range, .lo = 1.0, .hi = 1e8};
+constexpr NumberOption<double> kTheta{.flag = "--theta", .accept = Accept::finite};
+
 struct SpreadingOptions {
   std::string model = "donelan-banner";
   std::string s, alpha, omega_ratio = "1", wind_speed, fetch, theta;
@@ -24,18 +34,17 @@ int run_spreading(const SpreadingOptions& o) {
   SpreadingParams params{.model = model.value()};
   params.counter_wave_suppression = !o.symmetric;
   if (!o.s.empty()) {
-    Result<double> v = parse_number("--s", o.s);
+    Result<double> v = parse(kS, o.s);
     if (!v.ok()) return report(v.status());
     params.s = v.value();
   }
   if (!o.alpha.empty()) {
-    Result<double> v = parse_number("--alpha", o.alpha);
+    Result<double> v = parse(kAlpha, o.alpha);
     if (!v.ok()) return report(v.status());
     params.alpha = v.value();
   }
-  Result<double> ratio = parse_number("--omega-ratio", o.omega_ratio);
+  Result<double> ratio = parse(kOmegaRatio, o.omega_ratio);
   if (!ratio.ok()) return report(ratio.status());
-  if (Status s = require_positive("--omega-ratio", ratio.value()); !s.ok()) return report(s);
   // Peak frequency: from wind and fetch (Hasselmann 1973) when given, else a nominal 1 rad/s
   // (the ratio models depend on ω/ωp only).
   SpreadingContext context{.omega_p = 1.0};
@@ -45,13 +54,13 @@ int run_spreading(const SpreadingOptions& o) {
     return report(invalid_argument("--wind-speed and --fetch must be given together"));
   }
   if (!o.wind_speed.empty()) {
-    Result<double> u = parse_number("--wind-speed", o.wind_speed);
+    // Both are parsed before either is range-checked.
+    Result<double> u = parse(NumberOption<double>{.flag = kWindSpeed.flag}, o.wind_speed);
     if (!u.ok()) return report(u.status());
-    Result<double> f = parse_number("--fetch", o.fetch);
+    Result<double> f = parse(NumberOption<double>{.flag = kFetch.flag}, o.fetch);
     if (!f.ok()) return report(f.status());
-    if (Status s = require_in_range("--wind-speed", u.value(), 1e-3, 100.0); !s.ok())
-      return report(s);
-    if (Status s = require_in_range("--fetch", f.value(), 1.0, 1e8); !s.ok()) return report(s);
+    if (Status s = check(kWindSpeed, u.value(), o.wind_speed); !s.ok()) return report(s);
+    if (Status s = check(kFetch, f.value(), o.fetch); !s.ok()) return report(s);
     context.wind_speed_mps = u.value();
     context.omega_p =
         jonswap_fetch_law(u.value(), f.value(), kDefaultGravity, FetchLaw::hasselmann_1973)[1];
@@ -61,11 +70,8 @@ int run_spreading(const SpreadingOptions& o) {
   }
   Result<Spreading> spreading = Spreading::make(params, context);
   if (!spreading.ok()) return report(spreading.status());
-  Result<std::vector<double>> theta = parse_number_list("--theta", o.theta);
+  Result<std::vector<double>> theta = parse_list(kTheta, o.theta);
   if (!theta.ok()) return report(theta.status());
-  for (double t : theta.value()) {
-    if (Status s = require_finite("--theta", t); !s.ok()) return report(s);
-  }
   const double omega = ratio.value() * context.omega_p;
   std::vector<double> d;
   for (double t : theta.value()) d.push_back(spreading.value()(omega, t));
@@ -95,16 +101,16 @@ Command add_spreading_command(CLI::App& app) {
       ->add_option("--model", o->model,
                    "power-cosine | cos2s | mitsuyasu | hasselmann | donelan-banner")
       ->capture_default_str();
-  command->add_option("--s", o->s, "exponent (power-cosine: |cos|^s; cos2s: cos^2s(theta/2))");
-  command->add_option("--alpha", o->alpha,
-                      "power-cosine wind alignment in [0,1]: s = 1 + 5 alpha^2, counter-wave "
-                      "energy 0.01 + 0.49 (1 - alpha)^2");
+  add_option(*command, kS, o->s, "exponent (power-cosine: |cos|^s; cos2s: cos^2s(theta/2))");
+  add_option(*command, kAlpha, o->alpha,
+             "power-cosine wind alignment in [0,1]: s = 1 + 5 alpha^2, counter-wave "
+             "energy 0.01 + 0.49 (1 - alpha)^2");
   command->add_flag("--symmetric", o->symmetric,
                     "power-cosine without counter-wave suppression (Tessendorf's |k.w|^s)");
-  command->add_option("--omega-ratio", o->omega_ratio, "omega/omega_p")->capture_default_str();
-  command->add_option("--wind-speed", o->wind_speed, "U10, m/s (mitsuyasu, hasselmann)");
-  command->add_option("--fetch", o->fetch, "fetch, m (sets omega_p by Hasselmann 1973)");
-  command->add_option("--theta", o->theta, "angles from the mean direction T1,T2,..., rad");
+  add_option(*command, kOmegaRatio, o->omega_ratio, "omega/omega_p")->capture_default_str();
+  add_option(*command, kWindSpeed, o->wind_speed, "U10, m/s (mitsuyasu, hasselmann)");
+  add_option(*command, kFetch, o->fetch, "fetch, m (sets omega_p by Hasselmann 1973)");
+  add_option(*command, kTheta, o->theta, "angles from the mean direction T1,T2,..., rad");
   command->add_flag("--json", o->json, "print JSON {\"theta\":[...],\"D\":[...]}");
   return {command, [o] { return run_spreading(*o); }};
 }

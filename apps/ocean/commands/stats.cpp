@@ -18,6 +18,16 @@ namespace ocean::cli {
 
 namespace {
 
+constexpr NumberOption<int> kSeeds{.flag = "--seeds",
+                                   .accept = Accept::integer_in_range,
+                                   .lo = 1.0,
+                                   .hi = 1e5,
+                                   .echo = Echo::text};
+constexpr NumberOption<double> kTime{.flag = "--time", .accept = Accept::finite};
+// The range SimulationConfig accepts for a cascade.
+constexpr NumberOption<double> kPatchSize{
+    .flag = "--patch-size", .accept = Accept::in_range, .lo = 0.01, .hi = 1e6};
+
 struct StatsOptions {
   SimulationFlags simulation;
   std::string patch_size, seeds = "8", time = "0";
@@ -75,23 +85,15 @@ struct Inputs {
 
 Result<Inputs> parse_inputs(const StatsOptions& o) {
   Inputs in;
-  Result<double> seeds = parse_number("--seeds", o.seeds);
+  Result<int> seeds = parse(kSeeds, o.seeds);
   if (!seeds.ok()) return seeds.status();
-  if (!(seeds.value() >= 1.0 && seeds.value() <= 100000.0) ||
-      seeds.value() != std::floor(seeds.value())) {
-    return invalid_argument("--seeds = " + o.seeds +
-                            " is out of range: must be an integer in [1, 100000]");
-  }
-  in.seeds = static_cast<int>(seeds.value());
-  Result<double> time = parse_number("--time", o.time);
+  in.seeds = seeds.value();
+  Result<double> time = parse(kTime, o.time);
   if (!time.ok()) return time.status();
-  if (Status s = require_finite("--time", time.value()); !s.ok()) return s;
   in.time_s = time.value();
   if (!o.patch_size.empty()) {
-    Result<double> size = parse_number("--patch-size", o.patch_size);
+    Result<double> size = parse(kPatchSize, o.patch_size);
     if (!size.ok()) return size.status();
-    // The range SimulationConfig accepts for a cascade.
-    if (Status s = require_in_range("--patch-size", size.value(), 0.01, 1e6); !s.ok()) return s;
     in.patch_size_m = size.value();
   }
   return in;
@@ -138,12 +140,12 @@ Command add_stats_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "stats", "Statistics of the simulated surface (Hs, height moments, slopes, foam) over seeds");
   add_simulation_flags(*command, options->simulation);
-  command->add_option("--patch-size", options->patch_size,
-                      "one cascade of this patch side, m (overrides --cascades; default 1000)");
-  command
-      ->add_option("--seeds", options->seeds, "number of realisations: seed, seed+1, ..., seed+N-1")
+  add_option(*command, kPatchSize, options->patch_size,
+             "one cascade of this patch side, m (overrides --cascades; default 1000)");
+  add_option(*command, kSeeds, options->seeds,
+             "number of realisations: seed, seed+1, ..., seed+N-1")
       ->capture_default_str();
-  command->add_option("--time", options->time, "simulation time t, s")->capture_default_str();
+  add_option(*command, kTime, options->time, "simulation time t, s")->capture_default_str();
   command->add_flag("--json", options->json, "print JSON instead of a table");
   return {command, [options] { return run_stats(*options); }};
 }

@@ -43,6 +43,9 @@ constexpr double kWarmup_s = 4.0;
 // so that screenshots are reproducible.
 constexpr double kFixedStep_s = 1.0 / 30.0;
 
+constexpr NumberOption<long long> kFrames{
+    .flag = "--frames", .accept = Accept::whole_in_range, .lo = 0.0, .hi = 1e9};
+
 struct ViewOptions {
   SimulationFlags sim;
   ViewFlags picture{.quality = "medium"};
@@ -68,11 +71,9 @@ Result<Inputs> parse_inputs(const ViewOptions& o) {
   in.scene.swapchain = true;
   if (Status s = parse_view_flags(o.picture, 64, in.scene, in.view); !s.ok()) return s;
   in.quality = static_cast<int>(lod::parse_preset(o.picture.quality).value());
-  Result<double> frames = number_in("--frames", o.frames, 0, 1e9);
+  Result<long long> frames = parse(kFrames, o.frames);
   if (!frames.ok()) return frames.status();
-  if (frames.value() != std::floor(frames.value()))
-    return invalid_argument("--frames = " + o.frames + " must be a whole number");
-  in.frames = static_cast<long long>(frames.value());
+  in.frames = frames.value();
   if (!o.screenshot.empty() && std::filesystem::path(o.screenshot).extension() != ".png")
     return invalid_argument("--screenshot = " + o.screenshot + ": the name must end in .png");
   return in;
@@ -288,9 +289,9 @@ Command add_view_command(CLI::App& app) {
       "view", "the ocean in a window: free camera and a panel with every parameter");
   add_simulation_flags(*command, o->sim);
   add_view_flags(*command, o->picture, "window");
-  command->add_option("--frames", o->frames,
-                      "draw N frames then exit (simulated time advances 1/30 s per frame); "
-                      "default 0: until the window is closed");
+  add_option(*command, kFrames, o->frames,
+             "draw N frames then exit (simulated time advances 1/30 s per frame); "
+             "default 0: until the window is closed");
   command->add_option("--screenshot", o->screenshot,
                       "after the last frame, save the 3D view (without the panel) as this PNG");
   return {command, [o] { return run_view(*o); }};
