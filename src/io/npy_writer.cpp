@@ -7,38 +7,20 @@
 #include <string>
 #include <vector>
 
+#include "format_detail.hpp"
 #include "ocean/io.hpp"
 
 namespace ocean::io {
 namespace {
+
+using detail::byte_swap;
+using detail::element_count;
 
 constexpr char kMagic[] = "\x93NUMPY";
 constexpr std::size_t kMagicLen = 6;
 constexpr std::size_t kPreludeLen = 10;  // magic, major, minor, uint16 header length
 constexpr std::size_t kAlign = 64;
 constexpr std::size_t kGrowthAxisMaxDigits = 21;  // numpy's spare room for the first axis
-
-// Product of the dimensions, or nullopt when the element count or its byte size overflows.
-std::optional<std::size_t> element_count(std::span<const std::size_t> shape) {
-  std::size_t n = 1;
-  for (const std::size_t d : shape) {
-    if (d != 0 && n > std::numeric_limits<std::size_t>::max() / d) return std::nullopt;
-    n *= d;
-  }
-  if (n > static_cast<std::size_t>(std::numeric_limits<std::ptrdiff_t>::max()) / sizeof(float)) {
-    return std::nullopt;
-  }
-  return n;
-}
-
-// Only used on big-endian hosts: .npy '<f4' data are little-endian.
-void byte_swap(std::span<float> values) {
-  for (float& v : values) {
-    const auto u = std::bit_cast<std::uint32_t>(v);
-    v = std::bit_cast<float>((u >> 24U) | ((u >> 8U) & 0xFF00U) | ((u << 8U) & 0xFF0000U) |
-                             (u << 24U));
-  }
-}
 
 }  // namespace
 

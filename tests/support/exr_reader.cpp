@@ -14,41 +14,15 @@
 #include <string>
 #include <vector>
 
+#include "io/format_detail.hpp"
 #include "ocean/io.hpp"
 
 namespace ocean::io {
 namespace {
 
-std::string with_path(const char* verb, const std::filesystem::path& path, const std::string& why) {
-  std::string message = "cannot ";
-  message.append(verb).append(" '").append(path.string()).append("': ").append(why);
-  return message;
-}
-
-// An io_error naming the path; never throws (drops the message if even that cannot be built).
-Status failure(const char* verb, const std::filesystem::path& path, const char* why) noexcept {
-  try {
-    return io_error(with_path(verb, path, why));
-  } catch (...) {
-    return {ErrorCode::io_error, std::string()};
-  }
-}
-
-struct FdGuard {
-  int fd = -1;
-  FdGuard() = default;
-  FdGuard(const FdGuard&) = delete;
-  FdGuard& operator=(const FdGuard&) = delete;
-  ~FdGuard() {
-    if (fd >= 0) ::close(fd);
-  }
-  // Closes now and returns 0 or the errno of a failing close.
-  int close_now() {
-    const int result = ::close(fd) == 0 || errno == EINTR ? 0 : errno;
-    fd = -1;
-    return result;
-  }
-};
+using detail::failure;
+using detail::FdGuard;
+using detail::with_path;
 
 // Checks that the file can be opened and starts with the OpenEXR magic number.
 Status check_magic(const std::filesystem::path& path) {
