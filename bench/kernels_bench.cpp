@@ -103,7 +103,7 @@ void BM_SurfaceRows(benchmark::State& state) {
   if (!select_target(state, static_cast<int>(state.range(1)))) return;
   Fixture f(n);
   auto& c = f.frame.cascades[0];
-  const bool all = state.range(2) == 0;  // else seed 000's output set: no float normal, J, foam
+  const bool all = state.range(2) == 0;  // else the texture set: no float normal, J, foam
   ocean::cpu::SurfaceArgs args{.n = n,
                                .displacement = c.displacement.data(),
                                .inv_spacing = float(n) / 500.0f,

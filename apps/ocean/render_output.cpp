@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "io/png_image.hpp"
+#include "ocean/io.hpp"
 
 namespace ocean::cli {
 

@@ -34,8 +34,9 @@ inline constexpr int kMaxPlanes = 8;
 /// Supported sizes: powers of two in [2, kMaxSize].
 inline constexpr int kMaxSize = 4096;
 
-/// Radix-2 decimation-in-time Cooley–Tukey (seed 000 §3.6) with a bit-reversed load and a
-/// precomputed twiddle table (computed in double precision, stored as float).
+/// Radix-2 decimation-in-time Cooley–Tukey (Cooley & Tukey 1965; Aebi, VR Ocean, §3.6) with a
+/// bit-reversed load and a precomputed twiddle table (computed in double precision, stored as
+/// float).
 class Plan1D {
  public:
   static Result<Plan1D> make(int n);
@@ -57,13 +58,13 @@ class Plan1D {
 };
 
 /// Separable 2D inverse transform on N×N planes: all rows, then all columns (gathered into
-/// local buffers, seed 000 eqs. 40–41), each butterfly applied to every plane (eq. 39).
+/// local buffers, Aebi, VR Ocean, eqs. 40–41), each butterfly applied to every plane (eq. 39).
 class Plan2D {
  public:
   static Result<Plan2D> make(int n);
   [[nodiscard]] int size() const { return plan_.size(); }
   /// In place. With sign_correct, output (col, row) is multiplied by (−1)^(col+row)
-  /// (seed 000 eqs. 42–43), which turns a centred spectrum (DC at N/2, N/2) into the field.
+  /// (Aebi, VR Ocean, eqs. 42–43), which turns a centred spectrum (DC at N/2, N/2) into the field.
   /// planes.size() ≤ kMaxPlanes.
   void inverse(std::span<const SplitComplex> planes, TaskRunner& runner, bool sign_correct) const;
 

@@ -84,7 +84,7 @@ struct FrameOutputs {
   /// Every array (the default).
   static constexpr FrameOutputs all() { return {}; }
   /// Only the texture set a renderer needs: the displacement (float3 + half4) and the RGBA8 chain.
-  static constexpr FrameOutputs seed000() { return {false, false, false}; }
+  static constexpr FrameOutputs textures() { return {false, false, false}; }
   friend bool operator==(const FrameOutputs&, const FrameOutputs&) = default;
 };
 

@@ -3,9 +3,9 @@
 // This work is based on:
 //   - Cooley, J. W. & Tukey, J. W. (1965) An algorithm for the machine calculation of complex
 //     Fourier series. Math. Comp. 19(90).
-//   - Seed 000 §3.6: bit-reversed load (eq. 36), butterflies (eqs. 32, 34–35), local buffers
-//     (eq. 38), dual-spectrum processing (eq. 39), column gather/scatter (eqs. 40–41), sign
-//     correction (eqs. 42–43).
+//   - Aebi, VR Ocean, §3.6: bit-reversed load (eq. 36), butterflies (eqs. 32, 34–35), local
+//     buffers (eq. 38), dual-spectrum processing (eq. 39), column gather/scatter (eqs. 40–41),
+//     sign correction (eqs. 42–43).
 // Convention: x[n] = Σ_k X[k]·e^{+2πi·k·n/N} (docs/conventions.md).
 #include "ocean/fft.hpp"
 
@@ -33,7 +33,8 @@ Result<Plan1D> Plan1D::make(int n) {
   plan.log2n_ = std::countr_zero(static_cast<unsigned>(n));
   const auto size = static_cast<std::size_t>(n);
   plan.bit_reverse_.resize(size);
-  for (std::uint32_t i = 0; i < size; ++i) {  // reverse the low log2 N bits (seed 000 eq. 36)
+  // Reverse the low log2 N bits (Aebi, VR Ocean, eq. 36).
+  for (std::uint32_t i = 0; i < size; ++i) {
     std::uint32_t r = 0;
     for (int b = 0; b < plan.log2n_; ++b) r |= ((i >> b) & 1u) << (plan.log2n_ - 1 - b);
     plan.bit_reverse_[i] = r;
@@ -109,7 +110,7 @@ void Plan2D::inverse(std::span<const SplitComplex> planes, TaskRunner& runner,
   const int n = plan_.size();
   const std::size_t count = planes.size();
   // One pass over rows (stride 1) or columns (stride N). Local buffers live on the stack:
-  // kMaxPlanes·2·kMaxSize floats = 256 KiB at most (seed 000 §3.6.5).
+  // kMaxPlanes·2·kMaxSize floats = 256 KiB at most (Aebi, VR Ocean, §3.6.5).
   const auto pass = [&](bool columns) {
     runner.parallel_for(static_cast<std::size_t>(n), 4, [&](std::size_t begin, std::size_t end) {
       float local_re[kMaxPlanes][kMaxSize];

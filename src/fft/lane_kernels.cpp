@@ -7,7 +7,8 @@
 //     What is the fast Fourier transform? Proc. IEEE 55(10) (the autosort formulation).
 //   - Govindaraju, N. K. et al. (2008) High performance discrete Fourier transforms on graphics
 //     processors, SC'08 (the per-element indexing of a mixed-radix Stockham stage).
-//   - Seed 000 §3.6: twiddles hoisted into tables, dual-spectrum processing, sign correction.
+//   - Aebi, VR Ocean, §3.6: twiddles hoisted into tables, dual-spectrum processing, sign
+//     correction.
 // Convention: x[n] = Σ_k X[k]·e^{+2πi·k·n/N} (docs/conventions.md).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "fft/lane_kernels.cpp"

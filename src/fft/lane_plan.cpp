@@ -3,7 +3,7 @@
 //
 // This work is based on:
 //   - Stockham autosort / Govindaraju et al. (2008): see lane_kernels.cpp.
-//   - Seed 000 §3.6.5: per-thread local buffers on the stack; eqs. 42–43 (sign correction).
+//   - Aebi, VR Ocean, §3.6.5: per-thread local buffers on the stack; eqs. 42–43 (sign correction).
 // Convention: x[n] = Σ_k X[k]·e^{+2πi·k·n/N} (docs/conventions.md).
 #include "fft/lane_plan.hpp"
 

@@ -1,5 +1,5 @@
 // Simulator: owns a backend and two frames (front, back); kick/wait overlaps the next frame's
-// computation with reading the current one (seed 000 §4.3 double buffering).
+// computation with reading the current one (Aebi, VR Ocean, §4.3: double buffering).
 #include "ocean/sim.hpp"
 
 namespace ocean {

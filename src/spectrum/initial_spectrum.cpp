@@ -31,7 +31,7 @@ Status validate_vr_ocean(const SeaState& sea) {
       w.spreading().params().model != SpreadingModel::power_cosine) {
     return invalid_argument(
         "amplitude convention vr_ocean needs a single phillips wave system "
-        "with power-cosine spreading (seed 000 §3.2)");
+        "with power-cosine spreading (Aebi, VR Ocean, §3.2)");
   }
   return {};
 }

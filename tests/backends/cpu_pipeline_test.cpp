@@ -1,6 +1,6 @@
 // The CPU scalar reference pipeline stage by stage on hand-made spectra: one wave vector gives the
 // analytic cosine and trochoid, a flat sea gives J = 1, foam accumulates and decays as
-// published, packing and smoothness follow seed 000 eqs. 49–55.
+// published, packing and smoothness follow Aebi, VR Ocean, eqs. 49–55.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -147,7 +147,7 @@ TEST(CpuPipeline, FlatSeaHasUnitJacobianAndUpNormals) {
   for (std::uint32_t v : p.frame.packed_mips) ASSERT_EQ(v, expected);
 }
 
-// Seed 001 listing 2.4: foam_t = max(foam_{t−1} − decay·dt/max(now, 0.5), now).
+// Vincevičius 2024, listing 2.4: foam_t = max(foam_{t−1} − decay·dt/max(now, 0.5), now).
 TEST(CpuPipeline, FoamAccumulatesAndDecays) {
   const int n = 32;
   Pipeline p(n, 20.0, ocean::NormalMethod::central_difference, 1.0);
@@ -172,7 +172,7 @@ TEST(CpuPipeline, FoamAccumulatesAndDecays) {
   EXPECT_EQ(p.frame.foam[crest], 0.0f);
 }
 
-// Seed 000 eqs. 49, 53, 50–51.
+// Aebi, VR Ocean, eqs. 49, 53, 50–51.
 TEST(CpuPipeline, RoughnessSmoothnessAndPacking) {
   EXPECT_FLOAT_EQ(ocean::cpu::normal_length_from_roughness(0.0f), 1.0f);
   EXPECT_NEAR(ocean::cpu::normal_length_from_roughness(1.0f), 0.5f, 1e-6f);
@@ -187,8 +187,9 @@ TEST(CpuPipeline, RoughnessSmoothnessAndPacking) {
   EXPECT_EQ(ocean::cpu::pack_rgba8(0.0f, 0.0f, 2.0f, -1.0f), 128u | (128u << 8) | (255u << 16));
 }
 
-// Mip offsets (seed 000 eq. 55) and averaging of unnormalised normals (eq. 52): a checkerboard
-// of two tilted normals averages to a shorter vector, i.e. a rougher (less smooth) level 1.
+// Mip offsets (Aebi, VR Ocean, eq. 55) and averaging of unnormalised normals (eq. 52): a
+// checkerboard of two tilted normals averages to a shorter vector, i.e. a rougher (less smooth)
+// level 1.
 TEST(CpuPipeline, MipChainLayoutAndToksvigSmoothness) {
   EXPECT_EQ(ocean::mip_chain_texels(256), (4u * 256u * 256u - 1u) / 3u);
   EXPECT_EQ(ocean::mip_offset(256, 0), 0u);

@@ -13,10 +13,10 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_run.hpp"
-#include "io/exr.hpp"
-#include "io/npy.hpp"
-#include "io/png_image.hpp"
 #include "ocean/backends.hpp"
+#include "support/exr_reader.hpp"
+#include "support/npy_reader.hpp"
+#include "support/png_reader.hpp"
 
 namespace {
 

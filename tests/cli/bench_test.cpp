@@ -42,17 +42,17 @@ TEST(BenchCli, JsonRowsHaveTheDocumentedFields) {
   }
 }
 
-// Seed 000's output set: the same rows without the float normal, Jacobian and foam arrays (20
-// bytes per texel less memory per cascade).
-TEST(BenchCli, Seed000OutputsLeaveOutTheOptionalArrays) {
+// The texture set a renderer needs (--outputs textures): the same rows without the float normal,
+// Jacobian and foam arrays (20 bytes per texel less memory per cascade).
+TEST(BenchCli, TextureOutputsLeaveOutTheOptionalArrays) {
   const std::string flags = "bench --json --resolution 16 --cascades 1 --threads 1 --min-time 0";
   const ocean_test::CliRun all = ocean_test::run_cli(flags);
-  const ocean_test::CliRun lean = ocean_test::run_cli(flags + " --outputs seed000");
+  const ocean_test::CliRun lean = ocean_test::run_cli(flags + " --outputs textures");
   ASSERT_EQ(all.exit_code, 0) << all.err;
   ASSERT_EQ(lean.exit_code, 0) << lean.err;
   const auto row_of = [](const std::string& out) { return nlohmann::json::parse(out)["rows"][0]; };
   const nlohmann::json a = row_of(all.out), b = row_of(lean.out);
-  EXPECT_EQ(b["outputs"].get<std::string>(), "seed000");
+  EXPECT_EQ(b["outputs"].get<std::string>(), "textures");
   EXPECT_EQ(
       a["memory_per_cascade_bytes"].get<double>() - b["memory_per_cascade_bytes"].get<double>(),
       16.0 * 16.0 * 20.0);

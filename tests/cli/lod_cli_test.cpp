@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cli/cli_run.hpp"
-#include "io/png_image.hpp"
+#include "support/png_reader.hpp"
 
 namespace {
 

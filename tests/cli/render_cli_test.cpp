@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_run.hpp"
-#include "io/exr.hpp"
-#include "io/png_image.hpp"
 #include "ocean/vk.hpp"
+#include "support/exr_reader.hpp"
+#include "support/png_reader.hpp"
 
 namespace {
 

@@ -16,8 +16,8 @@
 #include <string>
 
 #include "cli/cli_run.hpp"
-#include "io/png_image.hpp"
 #include "ocean/backends.hpp"
+#include "support/png_reader.hpp"
 
 namespace {
 

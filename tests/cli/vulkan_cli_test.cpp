@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_run.hpp"
-#include "io/npy.hpp"
 #include "ocean/backends.hpp"
+#include "support/npy_reader.hpp"
 
 namespace {
 
@@ -123,11 +123,11 @@ TEST(VulkanCli, BenchReportsGpuStages) {
   // The texture set a renderer needs: the optional arrays are not read back, every stage still
   // reported.
   const ocean_test::CliRun lean = ocean_test::run_cli(
-      "bench --backend vulkan --json --resolution 32 --cascades 2 --outputs seed000");
+      "bench --backend vulkan --json --resolution 32 --cascades 2 --outputs textures");
   ASSERT_EQ(lean.exit_code, 0) << lean.err;
   const nlohmann::json lean_json = nlohmann::json::parse(lean.out);
   const auto& lean_row = lean_json["rows"][0];
-  EXPECT_EQ(lean_row["outputs"].get<std::string>(), "seed000");
+  EXPECT_EQ(lean_row["outputs"].get<std::string>(), "textures");
   EXPECT_GT(lean_row["gpu_stages_ms"]["readback"].get<double>(), 0.0);
 }
 

@@ -11,10 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "io/exr.hpp"
-#include "io/npy.hpp"
-#include "io/png_image.hpp"
 #include "io_test_util.hpp"
+#include "support/exr_reader.hpp"
+#include "support/npy_reader.hpp"
+#include "support/png_reader.hpp"
 
 namespace ocean::io {
 namespace {

@@ -1,4 +1,6 @@
 // Tests for the io module: atomic replacement, .npy, OpenEXR and PNG round trips and bad inputs.
+#include "ocean/io.hpp"
+
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 
@@ -9,11 +11,10 @@
 #include <stdexcept>
 #include <thread>
 
-#include "io/atomic_file.hpp"
-#include "io/exr.hpp"
-#include "io/npy.hpp"
-#include "io/png_image.hpp"
 #include "io_test_util.hpp"
+#include "support/exr_reader.hpp"
+#include "support/npy_reader.hpp"
+#include "support/png_reader.hpp"
 
 namespace ocean::io {
 namespace {

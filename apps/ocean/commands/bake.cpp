@@ -1,8 +1,10 @@
-// `ocean bake`: simulates frames (or one whole loop) and writes displacement, normal, Jacobian,
-// foam and the packed normal/foam/smoothness mip chain as .npy, PNG and/or OpenEXR, every file
-// atomically, with a manifest.json describing what was written.
+// `ocean bake`: the flags of a bake (frames or one whole loop, formats, times) turned into the
+// library's BakeParams (ocean/bake.hpp, which writes the files and the manifest), a progress bar,
+// and the first frame's contact sheet.
+#include "ocean/bake.hpp"
+
 #include <cmath>
-#include <fstream>
+#include <cstdio>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -10,11 +12,6 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
-#include "io/atomic_file.hpp"
-#include "io/exr.hpp"
-#include "io/npy.hpp"
-#include "io/png_image.hpp"
-#include "ocean/backends.hpp"
 #include "progress.hpp"
 #include "simulation_flags.hpp"
 
@@ -40,122 +37,19 @@ struct BakeOptions {
   std::string contact_sheet;
 };
 
-struct FrameWriter {
-  std::filesystem::path dir;
-  std::set<std::string> formats;
-  double height_range_m;  // PNG height maps map [−range, +range] to [0, 65535]
-  nlohmann::ordered_json files = nlohmann::ordered_json::array();
-
-  Status write(const CascadeFrame& c, const std::string& stem) {
-    const int n = c.resolution;
-    const auto un = static_cast<std::size_t>(n);
-    const auto texels = un * un;
-    const auto record = [&](const std::string& name) {
-      files.push_back(name);
-      return dir / name;
-    };
-    if (formats.contains("npy")) {
-      const std::size_t vec3[] = {un, un, 3}, scalar[] = {un, un};
-      if (Status s =
-              io::write_npy(record("displacement_" + stem + ".npy"), c.displacement.data(), vec3);
-          !s.ok())
-        return s;
-      if (Status s = io::write_npy(record("normal_" + stem + ".npy"), c.normal.data(), vec3);
-          !s.ok())
-        return s;
-      if (Status s = io::write_npy(record("jacobian_" + stem + ".npy"), c.jacobian.data(), scalar);
-          !s.ok())
-        return s;
-      if (Status s = io::write_npy(record("foam_" + stem + ".npy"), c.foam.data(), scalar); !s.ok())
-        return s;
-    }
-    if (formats.contains("exr")) {
-      std::vector<float> planes(6 * texels);
-      for (std::size_t i = 0; i < texels; ++i) {
-        for (std::size_t k = 0; k < 3; ++k) {
-          planes[k * texels + i] = c.displacement[3 * i + k];
-          planes[(3 + k) * texels + i] = c.normal[3 * i + k];
-        }
-      }
-      const io::ExrChannel displacement[] = {
-          {"R", planes.data()}, {"G", planes.data() + texels}, {"B", planes.data() + 2 * texels}};
-      if (Status s = io::write_exr(record("displacement_" + stem + ".exr"), n, n, displacement,
-                                   io::ExrPixelType::float32);
-          !s.ok()) {
-        return s;
-      }
-      const io::ExrChannel maps[] = {{"normal.X", planes.data() + 3 * texels},
-                                     {"normal.Y", planes.data() + 4 * texels},
-                                     {"normal.Z", planes.data() + 5 * texels},
-                                     {"jacobian", c.jacobian.data()},
-                                     {"foam", c.foam.data()}};
-      if (Status s =
-              io::write_exr(record("maps_" + stem + ".exr"), n, n, maps, io::ExrPixelType::half);
-          !s.ok()) {
-        return s;
-      }
-    }
-    // The packed normal/foam/smoothness chain, one image per mip level.
-    const int levels = std::countr_zero(static_cast<unsigned>(n));
-    for (int level = 0; level <= levels; ++level) {
-      const int size = n >> level;
-      const auto count = static_cast<std::size_t>(size) * static_cast<std::size_t>(size);
-      const std::uint32_t* packed = c.packed_mips.data() + mip_offset(n, level);
-      const std::string name = "nfs_" + stem + "_mip" + std::to_string(level);
-      std::vector<std::uint8_t> rgba(4 * count);
-      for (std::size_t i = 0; i < count; ++i) {
-        for (std::size_t k = 0; k < 4; ++k)
-          rgba[4 * i + k] = static_cast<std::uint8_t>(packed[i] >> (8 * k));
-      }
-      if (formats.contains("png")) {
-        if (Status s = io::write_png8(record(name + ".png"), size, size, 4, rgba.data()); !s.ok())
-          return s;
-      }
-      if (formats.contains("exr") || formats.contains("npy")) {
-        std::vector<float> values(4 * count);
-        for (std::size_t i = 0; i < 4 * count; ++i) values[i] = rgba[i] / 255.0f;
-        if (formats.contains("npy")) {
-          const std::size_t shape[] = {static_cast<std::size_t>(size),
-                                       static_cast<std::size_t>(size), 4};
-          if (Status s = io::write_npy(record(name + ".npy"), values.data(), shape); !s.ok())
-            return s;
-        }
-        if (formats.contains("exr")) {
-          std::vector<float> planar(4 * count);
-          for (std::size_t i = 0; i < count; ++i) {
-            for (std::size_t k = 0; k < 4; ++k) planar[k * count + i] = values[4 * i + k];
-          }
-          const io::ExrChannel ch[] = {{"R", planar.data()},
-                                       {"G", planar.data() + count},
-                                       {"B", planar.data() + 2 * count},
-                                       {"A", planar.data() + 3 * count}};
-          if (Status s =
-                  io::write_exr(record(name + ".exr"), size, size, ch, io::ExrPixelType::half);
-              !s.ok())
-            return s;
-        }
-      }
-    }
-    if (formats.contains("png")) {
-      std::vector<std::uint16_t> height(texels);
-      for (std::size_t i = 0; i < texels; ++i) {
-        const double t = 0.5 + 0.5 * c.displacement[3 * i + 1] / height_range_m;
-        height[i] = static_cast<std::uint16_t>(std::lround(std::clamp(t, 0.0, 1.0) * 65535.0));
-      }
-      if (Status s = io::write_png16_gray(record("height_" + stem + ".png"), n, n, height.data());
-          !s.ok())
-        return s;
-    }
-    return {};
-  }
-};
-
 int run_bake(const BakeOptions& o) {
   if (o.out.empty()) return report(invalid_argument("bake needs --out DIR"));
-  std::set<std::string> formats(o.formats.begin(), o.formats.end());
-  if (formats.empty()) formats = {"npy"};
+  bake::BakeParams params{.output_dir = o.out};
+  const std::set<std::string> formats(o.formats.begin(), o.formats.end());
+  if (!formats.empty()) params.formats = {.npy = false, .png = false, .exr = false};
   for (const std::string& f : formats) {
-    if (f != "npy" && f != "png" && f != "exr") {
+    if (f == "npy") {
+      params.formats.npy = true;
+    } else if (f == "png") {
+      params.formats.png = true;
+    } else if (f == "exr") {
+      params.formats.exr = true;
+    } else {
       return report(invalid_argument("--format = '" + f + "' is unknown: must be exr, png or npy"));
     }
   }
@@ -171,8 +65,8 @@ int run_bake(const BakeOptions& o) {
     if (!o.frames.empty()) return report(invalid_argument("give --frames N or --loop, not both"));
     if (!(c.loop_period_s > 0))
       return report(invalid_argument("--loop needs a loop period > 0 (--loop-period)"));
-    frames = std::llround(c.loop_period_s * fps.value());
-    if (frames < 1 || frames > 1000000)
+    frames = bake::loop_frame_count(c, fps.value());
+    if (frames < 1 || frames > bake::kMaxFrames)
       return report(invalid_argument("--loop at --fps " + o.fps + " gives " +
                                      std::to_string(frames) + " frames: must be 1 to 1000000"));
   } else if (!o.frames.empty()) {
@@ -180,60 +74,26 @@ int run_bake(const BakeOptions& o) {
     if (!v.ok()) return report(v.status());
     frames = v.value();
   }
-  // Fail on an unusable output directory before any simulation work.
-  if (Status s = io::ensure_directory(o.out); !s.ok()) return report(s);
-  Result<std::unique_ptr<Simulator>> sim = make_simulator(c, o.backend);
-  if (!sim.ok()) return report(sim.status());
-  const double hs = 4.0 * std::sqrt(SeaState::make(c.sea).value().variance_m2());
-  FrameWriter writer{.dir = o.out, .formats = formats, .height_range_m = std::max(hs, 1e-3)};
-  nlohmann::ordered_json manifest{
-      {"generator", "ocean bake"},
-      {"backend", o.backend},
-      {"config", to_json(c)},
-      {"fps", fps.value()},
-      {"formats", formats},
-      {"height_png_range_m", writer.height_range_m},
-      {"layout",
-       "row-major [row][col][channel]; texel (col,row) starts at world (col, row)*L/N; "
-       "displacement = (Dx, h, Dz) m; nfs = RGBA8 (normal x, normal z, foam, smoothness)"},
-      {"cascades", nlohmann::ordered_json::array()},
-      {"frames", nlohmann::ordered_json::array()}};
-  for (double size : c.cascade_patch_sizes_m)
-    manifest["cascades"].push_back({{"patch_size_m", size}, {"resolution", c.resolution}});
+  params.frame_count = frames;
+  params.fps = fps.value();
+  params.start_time_s = start.value();
   Progress progress("bake", frames);
-  for (long long f = 0; f < frames; ++f) {
-    const double t = start.value() + static_cast<double>(f) / fps.value();
-    sim.value()->step(t);
-    writer.files = nlohmann::ordered_json::array();
-    char index[24];
-    std::snprintf(index, sizeof index, "%05lld", f);
-    const Frame& frame = sim.value()->frame();
-    for (std::size_t k = 0; k < frame.cascades.size(); ++k) {
-      if (Status s = writer.write(frame.cascades[k], "c" + std::to_string(k) + "_f" + index);
-          !s.ok()) {
-        return report(s);
-      }
-    }
-    manifest["frames"].push_back({{"index", f}, {"time_s", t}, {"files", writer.files}});
-    if (f == 0 && !o.contact_sheet.empty()) {
+  const auto on_frame = [&](const bake::FrameDone& done) -> Status {
+    if (done.index == 0 && !o.contact_sheet.empty()) {
       char title[200];
-      std::snprintf(title, sizeof title,
-                    "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 × %zu cascades",
-                    std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(), hs, t,
-                    c.resolution, c.cascade_patch_sizes_m.size());
+      std::snprintf(
+          title, sizeof title, "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 × %zu cascades",
+          std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(),
+          bake::height_png_range_m(c), done.time_s, c.resolution, c.cascade_patch_sizes_m.size());
       const Result<SheetSize> sheet =
-          write_contact_sheet(frame_maps_sheet(frame, title), o.contact_sheet);
-      if (!sheet.ok()) return report(sheet.status());
+          write_contact_sheet(frame_maps_sheet(*done.frame, title), o.contact_sheet);
+      if (!sheet.ok()) return sheet.status();
     }
-    progress.update(f + 1);
-  }
-  progress.finish();
-  const std::string text = manifest.dump(2) + "\n";
-  if (Status s = io::write_bytes_atomically(std::filesystem::path(o.out) / "manifest.json",
-                                            {std::as_bytes(std::span(text.data(), text.size()))});
-      !s.ok()) {
-    return report(s);
-  }
+    progress.update(done.index + 1);
+    if (done.index + 1 == done.frame_count) progress.finish();
+    return {};
+  };
+  if (Status s = bake::bake(c, o.backend, params, on_frame); !s.ok()) return report(s);
   std::cerr << "ocean: wrote " << frames << " frame(s) to " << o.out << "\n";
   return kExitOk;
 }

@@ -87,11 +87,11 @@ int run_bench(const BenchOptions& o) {
   Result<std::vector<int>> threads = parse_ints(kThreads, o.threads, true);
   if (!threads.ok()) return report(threads.status());
   FrameOutputs outputs;
-  if (o.outputs == "seed000") {
-    outputs = FrameOutputs::seed000();
+  if (o.outputs == "textures") {
+    outputs = FrameOutputs::textures();
   } else if (o.outputs != "all") {
     return report(invalid_argument("--outputs = '" + o.outputs +
-                                   "' is unknown: must be one of all, seed000"));
+                                   "' is unknown: must be one of all, textures"));
   }
   Result<double> interval_ms = parse(kFrameInterval, o.frame_interval);
   if (!interval_ms.ok()) return report(interval_ms.status());
@@ -219,7 +219,7 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--backend", options->backend, "Backend to measure")->capture_default_str();
   cmd->add_option("--outputs", options->outputs,
-                  "Frame outputs: all (every array), or seed000 (displacement float3 + half4 and "
+                  "Frame outputs: all (every array), or textures (displacement float3 + half4 and "
                   "the RGBA8 chain, no float normal, Jacobian or foam arrays)")
       ->capture_default_str();
   add_option(*cmd, kFrameInterval, options->frame_interval,

@@ -1,6 +1,6 @@
-// `ocean lod`: the quadtree LOD selection for one camera (seed 000 §5): patch counts per level
-// and per stitching configuration, the selected mesh as OBJ (world space, undisplaced, skirt
-// excluded) and optionally a top-down PNG of the layout.
+// `ocean lod`: the quadtree LOD selection for one camera (Aebi, VR Ocean, §5): patch counts per
+// level and per stitching configuration, the selected mesh as OBJ (world space, undisplaced,
+// skirt excluded) and optionally a top-down PNG of the layout.
 #include "ocean/lod.hpp"
 
 #include <algorithm>
@@ -18,7 +18,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "io/atomic_file.hpp"
+#include "ocean/io.hpp"
 #include "plot/plot.hpp"
 
 namespace ocean::cli {

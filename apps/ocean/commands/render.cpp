@@ -19,9 +19,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
-#include "io/atomic_file.hpp"
-#include "io/exr.hpp"
-#include "io/png_image.hpp"
+#include "ocean/io.hpp"
 #include "ocean/scene.hpp"
 #include "progress.hpp"
 #include "render_output.hpp"
@@ -75,7 +73,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (!config.ok()) return config.status();
   in.scene.config = std::move(config).value();
   // The renderer uploads the displacement and the RGBA8 chain: no float normals, J or foam.
-  in.scene.config.outputs = FrameOutputs::seed000();
+  in.scene.config.outputs = FrameOutputs::textures();
   if (Status s = parse_view_flags(o.picture, 1, in.scene, in.view); !s.ok()) return s;
   render::View& v = in.view;
   // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.

@@ -19,8 +19,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
-#include "io/atomic_file.hpp"
-#include "io/png_image.hpp"
+#include "ocean/io.hpp"
 #include "ocean/scene.hpp"
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
@@ -68,7 +67,7 @@ Result<Inputs> parse_inputs(const ViewOptions& o) {
   if (!config.ok()) return config.status();
   in.scene.config = std::move(config).value();
   // The renderer uploads the displacement and the RGBA8 chain: no float normals, J or foam.
-  in.scene.config.outputs = FrameOutputs::seed000();
+  in.scene.config.outputs = FrameOutputs::textures();
   in.scene.swapchain = true;
   if (Status s = parse_view_flags(o.picture, 64, in.scene, in.view); !s.ok()) return s;
   in.quality = static_cast<int>(lod::parse_preset(o.picture.quality).value());

@@ -10,7 +10,7 @@
 #include <utility>
 
 #include "cairo_state.hpp"
-#include "io/png_image.hpp"
+#include "ocean/io.hpp"
 #include "plot_internal.hpp"
 
 namespace ocean::plot {

@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/png_image.hpp"
+#include "ocean/io.hpp"
 #include "plot_internal.hpp"
 
 namespace ocean::plot {

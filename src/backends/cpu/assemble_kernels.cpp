@@ -2,7 +2,8 @@
 // transposed back tile by tile with the (−1)^(x+y) shift into the float3 and half4 maps.
 // Compiled once per instruction set by Highway.
 //
-// This work is based on: seed 000 eq. 43 (sign correction), eq. 44 (displacement assembly).
+// This work is based on: Aebi, VR Ocean, eq. 43 (sign correction), eq. 44 (displacement
+// assembly).
 #undef HWY_TARGET_INCLUDE
 #define HWY_TARGET_INCLUDE "cpu/assemble_kernels.cpp"
 #include <hwy/cache_control.h>

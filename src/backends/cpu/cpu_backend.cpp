@@ -1,7 +1,7 @@
 // CPU backend: configuration (spectra per cascade band, plans, buffers) and the per-frame stage
-// chain (seed 000 §4.2). The default pipeline fuses the SIMD evolution into the column FFT and
-// the displacement assembly into the row FFT, over all cascades' 16-line blocks at once; the
-// scalar reference pipeline (evolve → radix-2 FFT → assemble) is kept as the oracle and for
+// chain (Aebi, VR Ocean, §4.2). The default pipeline fuses the SIMD evolution into the column
+// FFT and the displacement assembly into the row FFT, over all cascades' 16-line blocks at once;
+// the scalar reference pipeline (evolve → radix-2 FFT → assemble) is kept as the oracle and for
 // external FFT engines. Both then share finalize and the mips.
 #include "cpu_backend.hpp"
 

@@ -80,14 +80,14 @@ void assemble_displacement_reference(const CascadeState& state, const float* dz,
 /// gradient planes in analytic mode).
 void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
               CascadeFrame& out, TaskRunner& runner);
-/// Box-filtered mip chain with normal-length smoothness (seed 000 eqs. 52–55).
+/// Box-filtered mip chain with normal-length smoothness (Aebi, VR Ocean, eqs. 52–55).
 void build_mips(CascadeState& state, CascadeFrame& out, TaskRunner& runner);
 
-/// RGBA8 packing of seed 000 eqs. 50–51 from a unit normal, blue value and smoothness.
+/// RGBA8 packing of Aebi, VR Ocean, eqs. 50–51, from a unit normal, blue value and smoothness.
 std::uint32_t pack_rgba8(float nx, float nz, float blue, float smoothness);
-/// Roughness → normal length, seed 000 eq. 49.
+/// Roughness → normal length (Aebi, VR Ocean, eq. 49).
 float normal_length_from_roughness(float roughness);
-/// Normal length → smoothness, seed 000 eq. 53.
+/// Normal length → smoothness (Aebi, VR Ocean, eq. 53).
 float smoothness_from_normal_length(float length);
 
 /// The CPU backend (ocean/cpu_backend.hpp): configuration and the three pipelines' frames.

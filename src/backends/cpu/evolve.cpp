@@ -3,8 +3,8 @@
 // This work is based on:
 //   - Tessendorf, J. (2001) Simulating Ocean Water, eqs. 43–44 (evolution), 29 (choppy
 //     displacement), 37 (slopes).
-//   - Seed 000 eqs. 24–30 (single-FMA evolution, i·k̂·h̃ displacement spectrum); seeds 001/004
-//     (slope spectrum i·k·h̃).
+//   - Aebi, VR Ocean, eqs. 24–30 (single-FMA evolution, i·k̂·h̃ displacement spectrum);
+//     Vincevičius 2024, eq. 2.8, and Paleologue 2024 (slope spectrum i·k·h̃).
 // Equations: docs/math.md (M.6.5), (M.7.2), (M.7.3).
 #include <cmath>
 

@@ -3,7 +3,7 @@
 // column FFT reads it. Compiled once per instruction set by Highway.
 //
 // This work is based on:
-//   - Seed 000 eqs. 24–30 (single-FMA evolution of the packed spectrum); Tessendorf (2001)
+//   - Aebi, VR Ocean, eqs. 24–30 (single-FMA evolution of the packed spectrum); Tessendorf (2001)
 //     eqs. 43–44.
 //   - The sine and cosine are Taylor polynomials on [−π/4, π/4] after reduction to quarter
 //     turns (Cody & Waite 1980, Software Manual for the Elementary Functions, ch. 8):

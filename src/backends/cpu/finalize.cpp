@@ -2,9 +2,11 @@
 // accumulation, and the base level of the packed RGBA8 map.
 //
 // This work is based on:
-//   - Seed 000 §3.7–3.8: eq. 44 (displacement assembly), eqs. 45–46 (central differences with
-//     toroidal wrap), eq. 48 (Jacobian), eq. 49 (roughness → normal length), eqs. 50–51 (RGBA8).
-//   - Seed 002: Sobel-filtered normals. Seed 001 §2.4 (Jacobian foam, accumulation listing 2.4).
+//   - Aebi, VR Ocean, §3.7–3.8: eq. 44 (displacement assembly), eqs. 45–46 (central differences
+//     with toroidal wrap), eq. 48 (Jacobian), eq. 49 (roughness → normal length), eqs. 50–51
+//     (RGBA8).
+//   - Mitchell 2005: Sobel-filtered normals. Vincevičius 2024, §2.4 (Jacobian foam, accumulation
+//     listing 2.4).
 //   - Tessendorf, J. (2001) Simulating Ocean Water §4.4 (Jacobian of the choppy map).
 // Equations: docs/math.md §7.
 #include <algorithm>
@@ -16,7 +18,7 @@
 namespace ocean::cpu {
 
 float normal_length_from_roughness(float r) {
-  return 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));  // seed 000 eq. 49
+  return 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));  // Aebi, VR Ocean, eq. 49
 }
 
 float smoothness_from_normal_length(float length) {
@@ -43,7 +45,7 @@ struct Gradients {
 
 enum class Stencil { central, sobel };
 
-// Derivatives of the displacement field at (col, row) with toroidal wrap (seed 000 eq. 46).
+// Derivatives of the displacement field at (col, row) with toroidal wrap (Aebi, VR Ocean, eq. 46).
 template <Stencil kStencil>
 Gradients stencil_gradients(const float* d, int n, int col, int row, float inv_spacing) {
   const int mask = n - 1;
@@ -115,7 +117,8 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
             } else {
               nx = 0.0f, ny = 1.0f, nz = 0.0f;
             }
-            // Foam: a ramp on J, accumulated with seed 001's decay (M.7.4).
+            // Foam: a ramp on J, accumulated with the decay of Vincevičius 2024, §2.4.2
+            // (M.7.4).
             const float now = std::clamp((j_start - jacobian) / j_range, 0.0f, 1.0f);
             float foam = now;
             if (!reset_foam) {

@@ -116,10 +116,10 @@ struct SurfaceArgs {
 /// and 1 are not written). Each displacement row is deinterleaved once into a ring of three.
 void surface_row_quads(const SurfaceArgs& args, int first, int count);
 
-/// One row of mip level `level` ≥ 1 from level − 1 (seed 000 eqs. 52–53): 2×2 box filter of the
-/// float4 work values (roughness-scaled normal, blue), smoothness from the filtered normal's
-/// length, RGBA8 packing. `packed` points at the start of the whole RGBA8 chain, `work` at the
-/// work values of level `work_level` ≤ level − 1, followed by the levels below it.
+/// One row of mip level `level` ≥ 1 from level − 1 (Aebi, VR Ocean, eqs. 52–53): 2×2 box filter
+/// of the float4 work values (roughness-scaled normal, blue), smoothness from the filtered
+/// normal's length, RGBA8 packing. `packed` points at the start of the whole RGBA8 chain, `work`
+/// at the work values of level `work_level` ≤ level − 1, followed by the levels below it.
 void mip_row(int n, int level, int row, float* work, int work_level, std::uint32_t* packed);
 
 }  // namespace ocean::cpu

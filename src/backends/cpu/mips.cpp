@@ -2,7 +2,7 @@
 // roughness-scaled normals, whose shrinking length becomes smoothness.
 //
 // This work is based on:
-//   - Seed 000 §3.9 and §4.4: eq. 52 (box filter of unnormalised normals), eq. 53 (normal
+//   - Aebi, VR Ocean, §3.9 and §4.4: eq. 52 (box filter of unnormalised normals), eq. 53 (normal
 //     length → smoothness), eq. 55 (contiguous mip offsets); Toksvig, M. (2005) Mipmapping
 //     normal maps, J. Graphics Tools 10(3) (normal length as a variance measure).
 // Equations: docs/math.md (M.7.5).

@@ -1,12 +1,9 @@
-// io/exr.cpp — OpenEXR writing through an fd-backed stream (atomic, errors checked) and reading.
-#include "io/exr.hpp"
-
+// src/io/exr_writer.cpp — OpenEXR writing through an fd-backed stream (atomic, errors checked).
 #include <ImfChannelList.h>
 #include <ImfCompression.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfIO.h>
-#include <ImfInputFile.h>
 #include <ImfOutputFile.h>
 #include <fcntl.h>
 #include <half.h>
@@ -21,41 +18,15 @@
 #include <system_error>
 #include <vector>
 
-#include "io/atomic_file.hpp"
+#include "format_detail.hpp"
+#include "ocean/io.hpp"
 
 namespace ocean::io {
 namespace {
 
-std::string with_path(const char* verb, const std::filesystem::path& path, const std::string& why) {
-  std::string message = "cannot ";
-  message.append(verb).append(" '").append(path.string()).append("': ").append(why);
-  return message;
-}
-
-// An io_error naming the path; never throws (drops the message if even that cannot be built).
-Status failure(const char* verb, const std::filesystem::path& path, const char* why) noexcept {
-  try {
-    return io_error(with_path(verb, path, why));
-  } catch (...) {
-    return {ErrorCode::io_error, std::string()};
-  }
-}
-
-struct FdGuard {
-  int fd = -1;
-  FdGuard() = default;
-  FdGuard(const FdGuard&) = delete;
-  FdGuard& operator=(const FdGuard&) = delete;
-  ~FdGuard() {
-    if (fd >= 0) ::close(fd);
-  }
-  // Closes now and returns 0 or the errno of a failing close.
-  int close_now() {
-    const int result = ::close(fd) == 0 || errno == EINTR ? 0 : errno;
-    fd = -1;
-    return result;
-  }
-};
+using detail::failure;
+using detail::FdGuard;
+using detail::with_path;
 
 // An OpenEXR output stream on a file descriptor that remembers the first write error, because
 // OutputFile's destructor (which writes the line offset table) swallows exceptions.
@@ -157,72 +128,6 @@ Status write_to(const std::filesystem::path& temporary, int width, int height,
   return Status::ok_status();
 }
 
-// Checks that the file can be opened and starts with the OpenEXR magic number.
-Status check_magic(const std::filesystem::path& path) {
-  FdGuard guard;
-  do {
-    guard.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  } while (guard.fd < 0 && errno == EINTR);
-  if (guard.fd < 0) return io_error(with_path("read", path, errno_message(errno)));
-  unsigned char magic[4] = {};
-  ssize_t got = 0;
-  do {
-    got = ::read(guard.fd, magic, sizeof magic);
-  } while (got < 0 && errno == EINTR);
-  if (got < 0) return io_error(with_path("read", path, errno_message(errno)));
-  if (got != 4 || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 || magic[3] != 0x01) {
-    return io_error(with_path("read", path, "not an OpenEXR file (wrong magic)"));
-  }
-  return Status::ok_status();
-}
-
-Result<ExrImage> read_checked(const std::filesystem::path& path) {
-  Imf::InputFile file(path.c_str());
-  const Imf::Header& header = file.header();
-  const Imath::Box2i window = header.dataWindow();
-  const std::int64_t w = std::int64_t{window.max.x} - window.min.x + 1;
-  const std::int64_t h = std::int64_t{window.max.y} - window.min.y + 1;
-  if (w < 1 || w > kExrMaxDimension || h < 1 || h > kExrMaxDimension) {
-    return io_error(with_path("read", path,
-                              "data window " + std::to_string(w) + "x" + std::to_string(h) +
-                                  " is out of range [1, " + std::to_string(kExrMaxDimension) +
-                                  "]"));
-  }
-  ExrImage image;
-  image.width = static_cast<int>(w);
-  image.height = static_cast<int>(h);
-  for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
-    const Imf::Channel& channel = it.channel();
-    const std::string name = it.name();
-    if (channel.xSampling != 1 || channel.ySampling != 1) {
-      return io_error(with_path("read", path, "channel '" + name + "' is subsampled"));
-    }
-    if (channel.type != Imf::HALF && channel.type != Imf::FLOAT) {
-      return io_error(with_path(
-          "read", path, "channel '" + name + "' is not HALF or FLOAT (UINT is unsupported)"));
-    }
-    if (image.channel_names.size() == static_cast<std::size_t>(kExrMaxChannels)) {
-      return io_error(
-          with_path("read", path, "more than " + std::to_string(kExrMaxChannels) + " channels"));
-    }
-    image.channel_names.push_back(name);
-    image.pixel_types.push_back(channel.type == Imf::HALF ? ExrPixelType::half
-                                                          : ExrPixelType::float32);
-  }
-  if (image.channel_names.empty()) return io_error(with_path("read", path, "no channels"));
-  image.planes.resize(image.channel_names.size());
-  Imf::FrameBuffer frame_buffer;
-  for (std::size_t i = 0; i < image.planes.size(); ++i) {
-    image.planes[i].assign(static_cast<std::size_t>(w * h), 0.0f);
-    frame_buffer.insert(image.channel_names[i],
-                        Imf::Slice::Make(Imf::FLOAT, image.planes[i].data(), window, sizeof(float),
-                                         sizeof(float) * static_cast<std::size_t>(w)));
-  }
-  file.setFrameBuffer(frame_buffer);
-  file.readPixels(window.min.y, window.max.y);
-  return image;
-}
-
 }  // namespace
 
 Status write_exr(const std::filesystem::path& path, int width, int height,
@@ -236,17 +141,6 @@ Status write_exr(const std::filesystem::path& path, int width, int height,
     return failure("write", path, e.what());
   } catch (...) {
     return failure("write", path, "unknown exception");
-  }
-}
-
-Result<ExrImage> read_exr(const std::filesystem::path& path) {
-  try {
-    if (Status s = check_magic(path); !s.ok()) return s;
-    return read_checked(path);
-  } catch (const std::exception& e) {
-    return failure("read", path, e.what());
-  } catch (...) {
-    return failure("read", path, "unknown exception");
   }
 }
 

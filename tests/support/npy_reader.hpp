@@ -1,4 +1,4 @@
-// io/npy.hpp — NumPy .npy (format 1.0, little-endian float32, C order) writer and strict reader.
+// tests/support/npy_reader.hpp — the strict .npy reader the tests check written files with.
 #pragma once
 
 #include <cstddef>
@@ -6,12 +6,9 @@
 #include <span>
 #include <vector>
 
-#include "ocean/core.hpp"
+#include "ocean/io.hpp"
 
 namespace ocean::io {
-
-/// Largest number of dimensions write_npy and read_npy accept (NumPy 1.x's NPY_MAXDIMS).
-inline constexpr std::size_t kNpyMaxDims = 32;
 
 /// An array read from a .npy file: `data` holds product(shape) floats in C (row-major) order.
 /// An empty `shape` is a 0-d array holding one value.
@@ -19,20 +16,6 @@ struct NpyArray {
   std::vector<std::size_t> shape;
   std::vector<float> data;
 };
-
-/// Writes `data` as a NumPy .npy file (format version 1.0, dtype '<f4', fortran_order False).
-///
-/// Contract:
-///  - `data` points to product(shape) floats in C order (last index fastest); it may be null only
-///    when that product is 0. An empty `shape` writes a 0-d array of one value.
-///  - The header is laid out byte for byte as numpy.save writes it (including its spare space for
-///    growing the first axis), padded with spaces and ended by '\n' so that the data start at a
-///    multiple of 64 bytes. Values are stored bit-exactly (NaN payloads included), little-endian.
-///  - Written atomically (see write_atomically): on failure `path` keeps its old contents.
-///  - invalid_argument for more than kNpyMaxDims dimensions, a size that overflows, or null data;
-///    io_error "cannot write '<path>': <reason>" for file system failures. Never throws.
-ocean::Status write_npy(const std::filesystem::path& path, const float* data,
-                        std::span<const std::size_t> shape);
 
 /// Reads a .npy file written by write_npy or numpy.save of a float32 C-order array.
 ///

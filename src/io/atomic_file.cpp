@@ -1,6 +1,4 @@
-// io/atomic_file.cpp — write-to-temporary, fsync, rename-over-target, fsync-directory.
-#include "io/atomic_file.hpp"
-
+// src/io/atomic_file.cpp — write-to-temporary, fsync, rename-over-target, fsync-directory.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -11,6 +9,8 @@
 #include <exception>
 #include <string>
 #include <system_error>
+
+#include "ocean/io.hpp"
 
 namespace ocean::io {
 namespace {

@@ -1,5 +1,5 @@
-// io/npy.cpp — .npy 1.0 float32 writing (numpy.save's exact header) and a strict, fuzz-safe reader.
-#include "io/npy.hpp"
+// tests/support/npy_reader.cpp — a strict, fuzz-safe .npy 1.0 float32 reader.
+#include "support/npy_reader.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -16,38 +16,18 @@
 #include <string>
 #include <string_view>
 
-#include "io/atomic_file.hpp"
+#include "io/format_detail.hpp"
+#include "ocean/io.hpp"
 
 namespace ocean::io {
 namespace {
 
+using detail::byte_swap;
+using detail::element_count;
+
 constexpr char kMagic[] = "\x93NUMPY";
 constexpr std::size_t kMagicLen = 6;
 constexpr std::size_t kPreludeLen = 10;  // magic, major, minor, uint16 header length
-constexpr std::size_t kAlign = 64;
-constexpr std::size_t kGrowthAxisMaxDigits = 21;  // numpy's spare room for the first axis
-
-// Product of the dimensions, or nullopt when the element count or its byte size overflows.
-std::optional<std::size_t> element_count(std::span<const std::size_t> shape) {
-  std::size_t n = 1;
-  for (const std::size_t d : shape) {
-    if (d != 0 && n > std::numeric_limits<std::size_t>::max() / d) return std::nullopt;
-    n *= d;
-  }
-  if (n > static_cast<std::size_t>(std::numeric_limits<std::ptrdiff_t>::max()) / sizeof(float)) {
-    return std::nullopt;
-  }
-  return n;
-}
-
-// Only used on big-endian hosts: .npy '<f4' data are little-endian.
-void byte_swap(std::span<float> values) {
-  for (float& v : values) {
-    const auto u = std::bit_cast<std::uint32_t>(v);
-    v = std::bit_cast<float>((u >> 24U) | ((u >> 8U) & 0xFF00U) | ((u << 8U) & 0xFF0000U) |
-                             (u << 24U));
-  }
-}
 
 // ---- header parsing: the subset of Python literal syntax that .npy headers use ------------------
 class HeaderParser {
@@ -228,55 +208,6 @@ Result<NpyArray> read_fd(int fd, const std::filesystem::path& path) {
 }
 
 }  // namespace
-
-Status write_npy(const std::filesystem::path& path, const float* data,
-                 std::span<const std::size_t> shape) {
-  try {
-    if (shape.size() > kNpyMaxDims) {
-      return invalid_argument("npy shape has " + std::to_string(shape.size()) +
-                              " dimensions: at most " + std::to_string(kNpyMaxDims));
-    }
-    const std::optional<std::size_t> count = element_count(shape);
-    if (!count) return invalid_argument("npy shape is too large: its size overflows");
-    if (data == nullptr && *count > 0) return invalid_argument("npy data pointer is null");
-
-    // Exactly what numpy.save writes: sorted keys, repr() of the values, spare spaces.
-    std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (";
-    for (std::size_t i = 0; i < shape.size(); ++i) {
-      if (i > 0) header.append(", ");
-      header.append(std::to_string(shape[i]));
-    }
-    header.append(shape.size() == 1 ? ",), }" : "), }");
-    if (!shape.empty()) {
-      header.append(
-          kGrowthAxisMaxDigits - std::min(kGrowthAxisMaxDigits, std::to_string(shape[0]).size()),
-          ' ');
-    }
-    const std::size_t unpadded = kPreludeLen + header.size() + 1;  // + '\n'
-    header.append(kAlign - unpadded % kAlign, ' ').push_back('\n');
-    const std::size_t header_len = header.size();  // at most ~1000 bytes for 32 dimensions
-
-    std::string prelude(kMagic, kMagicLen);
-    prelude.append({'\x01', '\x00', static_cast<char>(header_len & 0xFFU),
-                    static_cast<char>(header_len >> 8U)});
-    prelude.append(header);
-
-    std::span<const std::byte> payload;
-    std::vector<float> swapped;
-    if (*count > 0) {
-      if constexpr (std::endian::native == std::endian::big) {
-        swapped.assign(data, data + *count);
-        byte_swap(swapped);
-        data = swapped.data();
-      }
-      payload = std::as_bytes(std::span<const float>(data, *count));
-    }
-    return write_bytes_atomically(path, {std::as_bytes(std::span<const char>(prelude)), payload});
-  } catch (const std::exception& e) {
-    return io_error(
-        std::string("cannot write '").append(path.string()).append("': ").append(e.what()));
-  }
-}
 
 Result<NpyArray> read_npy(const std::filesystem::path& path) {
   try {

@@ -1,0 +1,144 @@
+// ocean/io.hpp — writing files atomically: the crash-safe file replacement every output of the
+// library goes through, and the NumPy .npy, OpenEXR and PNG writers built on it.
+//
+// Every writer replaces its file atomically (a reader sees the old file or the complete new one,
+// never a partial one), reports failures as Status values naming the path, and never throws.
+// libpng and OpenEXR are private dependencies: this header includes neither.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <initializer_list>
+#include <span>
+#include <string>
+
+#include "ocean/core.hpp"
+
+namespace ocean::io {
+
+// ---- atomic file replacement ---------------------------------------------------------------
+
+/// Produces the new contents of a file by writing them to `temporary`, which already exists
+/// (empty) when the callback runs. Returns ok, or a Status whose message is the reason for the
+/// failure (e.g. "No space left on device"); the message ends up in the final error unchanged.
+using WriteCallback = std::function<ocean::Status(const std::filesystem::path& temporary)>;
+
+/// Replaces (or creates) `path` with the file produced by `write`, so that at every moment `path`
+/// either holds its old contents or the complete new ones — never a partial file.
+///
+/// Contract:
+///  - Creates a new, uniquely named temporary ".<name>.tmp-<pid>-<counter>" in the directory of
+///    `path` (permissions 0666 minus the umask), calls `write(temporary)`, fsyncs the temporary,
+///    renames it over `path` and fsyncs the directory (best effort: a failing directory fsync
+///    does not fail the call, the data are already complete).
+///  - The directory of `path` must exist; it is not created (see ensure_directory).
+///  - If `path` is a symbolic link, the link itself is replaced, not its target.
+///  - On any failure the temporary is removed, `path` is untouched and the result is io_error
+///    "cannot write '<path>': <reason>", the reason coming from errno (strerror text, e.g.
+///    "No such file or directory") or from the message of the Status returned by `write`.
+///    Exceptions thrown by `write` are caught and reported the same way.
+///  - A `path` that is empty or does not end in a file name ("dir/", ".", "..") or an empty
+///    callback is invalid_argument, and nothing is created.
+///  - Never throws. Safe to call from several threads at once (distinct temporaries).
+ocean::Status write_atomically(const std::filesystem::path& path, const WriteCallback& write);
+
+/// Atomically replaces `path` with the concatenation of `parts` (write_atomically with a callback
+/// that writes the bytes, retrying short writes and EINTR). Same contract as write_atomically.
+/// Empty parts are allowed; no part is copied.
+ocean::Status write_bytes_atomically(const std::filesystem::path& path,
+                                     std::initializer_list<std::span<const std::byte>> parts);
+
+/// Makes sure `dir` exists as a directory, creating it and any missing parents.
+///
+/// Contract: ok if `dir` is (or now is) a directory, including when it already existed or was
+/// created concurrently by someone else; an empty `dir` means the current directory and is ok.
+/// Otherwise io_error "cannot create directory '<dir>': <reason>", e.g. "'<component>' exists
+/// and is not a directory" or "Permission denied". Never throws.
+ocean::Status ensure_directory(const std::filesystem::path& dir);
+
+/// Checks, before long work, that a file could be created at `path`: its directory (the
+/// current one when `path` has none) exists and is writable. io_error "cannot write '<path>':
+/// No such file or directory" or "...: Permission denied" otherwise. Never throws.
+ocean::Status check_parent_writable(const std::filesystem::path& path);
+
+/// The strerror text for an errno value, e.g. "No such file or directory". Never throws (returns
+/// an empty string if even building the message fails).
+std::string errno_message(int err) noexcept;
+
+// ---- NumPy .npy (format 1.0, little-endian float32, C order) -------------------------------
+
+/// Largest number of dimensions write_npy accepts (NumPy 1.x's NPY_MAXDIMS).
+inline constexpr std::size_t kNpyMaxDims = 32;
+
+/// Writes `data` as a NumPy .npy file (format version 1.0, dtype '<f4', fortran_order False).
+///
+/// Contract:
+///  - `data` points to product(shape) floats in C order (last index fastest); it may be null only
+///    when that product is 0. An empty `shape` writes a 0-d array of one value.
+///  - The header is laid out byte for byte as numpy.save writes it (including its spare space for
+///    growing the first axis), padded with spaces and ended by '\n' so that the data start at a
+///    multiple of 64 bytes. Values are stored bit-exactly (NaN payloads included), little-endian.
+///  - Written atomically (see write_atomically): on failure `path` keeps its old contents.
+///  - invalid_argument for more than kNpyMaxDims dimensions, a size that overflows, or null data;
+///    io_error "cannot write '<path>': <reason>" for file system failures. Never throws.
+ocean::Status write_npy(const std::filesystem::path& path, const float* data,
+                        std::span<const std::size_t> shape);
+
+// ---- OpenEXR scanline images (ZIP compressed, half or float channels) -----------------------
+
+/// Largest width or height write_exr accepts.
+inline constexpr int kExrMaxDimension = 16384;
+/// Largest number of channels write_exr accepts.
+inline constexpr int kExrMaxChannels = 1024;
+
+/// How samples are stored in the file (values are always passed as float).
+enum class ExrPixelType { half, float32 };
+
+/// One channel to write: `data` points to width*height floats, row-major, row 0 the top row.
+struct ExrChannel {
+  std::string name;
+  const float* data = nullptr;
+};
+
+/// Writes a single-part scanline OpenEXR file with ZIP compression; every channel has the same
+/// pixel `type`. Data window and display window are (0,0)-(width-1,height-1), line order
+/// increasing y, so row 0 of each channel is the top row of the image.
+///
+/// Contract:
+///  - invalid_argument (nothing written) unless 1 <= width, height <= kExrMaxDimension, there are
+///    1..kExrMaxChannels channels, each with non-null data and a unique, non-empty name of at most
+///    255 bytes without NUL characters.
+///  - float32 stores values bit-exactly. half rounds to nearest; magnitudes beyond 65504 become
+///    infinities, NaN stays NaN.
+///  - Written atomically (see write_atomically): on failure `path` keeps its old contents and
+///    the result is io_error "cannot write '<path>': <reason>". Write errors that OpenEXR would
+///    swallow while finishing the file are detected too. Never throws.
+ocean::Status write_exr(const std::filesystem::path& path, int width, int height,
+                        std::span<const ExrChannel> channels, ExrPixelType type);
+
+// ---- PNG images from raw samples (8-bit 1–4 channels, 16-bit gray) -------------------------
+
+/// Largest width or height the PNG writers accept (libpng's default user limit).
+inline constexpr int kPngMaxDimension = 1000000;
+
+/// Writes an 8-bit PNG: `channels` 1 = gray, 2 = gray+alpha, 3 = RGB, 4 = RGBA.
+///
+/// Contract:
+///  - `pixels` holds width*height*channels bytes, rows top to bottom, channels interleaved
+///    (alpha not premultiplied). Samples are stored exactly; no gamma or colour-space chunk is
+///    written, no filtering of values.
+///  - invalid_argument (nothing written) unless 1 <= width, height <= kPngMaxDimension, channels
+///    is 1..4, `pixels` is non-null and the byte size does not overflow.
+///  - Written atomically (see write_atomically); io_error "cannot write '<path>': <reason>" on
+///    failure, leaving `path` as it was. Never throws.
+ocean::Status write_png8(const std::filesystem::path& path, int width, int height, int channels,
+                         const std::uint8_t* pixels);
+
+/// Writes a 16-bit grayscale PNG from native-endian samples (stored big-endian in the file, as
+/// PNG requires); otherwise the same contract as write_png8 with channels = 1.
+ocean::Status write_png16_gray(const std::filesystem::path& path, int width, int height,
+                               const std::uint16_t* pixels);
+
+}  // namespace ocean::io
