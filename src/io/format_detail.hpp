@@ -1,6 +1,6 @@
 // src/io/format_detail.hpp — small helpers the file-format writers share with the test readers
 // (tests/support), which reach this private header through the source tree: error messages that
-// name the path, a closing file-descriptor guard, the .npy element count and byte swap.
+// name the path, a closing file-descriptor guard, the .npy prelude, element count and byte swap.
 #pragma once
 
 #include <unistd.h>
@@ -52,6 +52,12 @@ struct FdGuard {
     return result;
   }
 };
+
+/// The .npy 1.0 prelude: the magic string, then major and minor version and the uint16 length
+/// of the header that follows.
+inline constexpr char kNpyMagic[] = "\x93NUMPY";
+inline constexpr std::size_t kNpyMagicLen = 6;
+inline constexpr std::size_t kNpyPreludeLen = 10;
 
 /// Product of the dimensions, or nullopt when the element count or its byte size overflows.
 inline std::optional<std::size_t> element_count(std::span<const std::size_t> shape) {

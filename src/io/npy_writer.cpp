@@ -16,9 +16,9 @@ namespace {
 using detail::byte_swap;
 using detail::element_count;
 
-constexpr char kMagic[] = "\x93NUMPY";
-constexpr std::size_t kMagicLen = 6;
-constexpr std::size_t kPreludeLen = 10;  // magic, major, minor, uint16 header length
+using detail::kNpyMagic;
+using detail::kNpyMagicLen;
+using detail::kNpyPreludeLen;
 constexpr std::size_t kAlign = 64;
 constexpr std::size_t kGrowthAxisMaxDigits = 21;  // numpy's spare room for the first axis
 
@@ -47,11 +47,11 @@ Status write_npy(const std::filesystem::path& path, const float* data,
           kGrowthAxisMaxDigits - std::min(kGrowthAxisMaxDigits, std::to_string(shape[0]).size()),
           ' ');
     }
-    const std::size_t unpadded = kPreludeLen + header.size() + 1;  // + '\n'
+    const std::size_t unpadded = kNpyPreludeLen + header.size() + 1;  // + '\n'
     header.append(kAlign - unpadded % kAlign, ' ').push_back('\n');
     const std::size_t header_len = header.size();  // at most ~1000 bytes for 32 dimensions
 
-    std::string prelude(kMagic, kMagicLen);
+    std::string prelude(kNpyMagic, kNpyMagicLen);
     prelude.append({'\x01', '\x00', static_cast<char>(header_len & 0xFFU),
                     static_cast<char>(header_len >> 8U)});
     prelude.append(header);

@@ -15,24 +15,15 @@
 #include <string>
 
 #include "ocean/io.hpp"
+#include "png_detail.hpp"
 
 namespace ocean::io {
 namespace {
 
-// The open file, the errno of a failed write, and the message of the libpng error that aborted
-// the operation.
-struct PngIo {
-  std::FILE* file = nullptr;
-  int err = 0;
-  char message[256] = {};
-};
-
-void on_error(png_structp png, png_const_charp message) {
-  auto* io = static_cast<PngIo*>(png_get_error_ptr(png));
-  std::snprintf(io->message, sizeof io->message, "%s", message != nullptr ? message : "error");
-  png_longjmp(png, 1);
-}
-void on_warning(png_structp /*png*/, png_const_charp /*message*/) {}
+using detail::png_on_error;
+using detail::png_on_warning;
+using detail::png_reason;
+using detail::PngIo;
 
 void on_write(png_structp png, png_bytep data, std::size_t n) {
   auto* io = static_cast<PngIo*>(png_get_io_ptr(png));
@@ -47,10 +38,6 @@ void on_flush(png_structp png) {
     io->err = errno != 0 ? errno : EIO;
     png_error(png, "write failed");
   }
-}
-
-std::string reason(const PngIo& io) {
-  return io.err != 0 ? errno_message(io.err) : std::string(io.message);
 }
 
 struct Layout {
@@ -84,7 +71,8 @@ Status write_to(const std::filesystem::path& temporary, const Layout& layout) {
   PngIo io;
   io.file = std::fopen(temporary.c_str(), "wb");
   if (io.file == nullptr) return io_error(errno_message(errno));
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &io, on_error, on_warning);
+  png_structp png =
+      png_create_write_struct(PNG_LIBPNG_VER_STRING, &io, png_on_error, png_on_warning);
   png_infop info = png != nullptr ? png_create_info_struct(png) : nullptr;
   if (info == nullptr) {
     png_destroy_write_struct(&png, nullptr);
@@ -96,7 +84,7 @@ Status write_to(const std::filesystem::path& temporary, const Layout& layout) {
   png_destroy_write_struct(&png, &info);
   if (!ok) {
     std::fclose(io.file);
-    return io_error("PNG encoding failed: " + reason(io));
+    return io_error("PNG encoding failed: " + png_reason(io));
   }
   if (std::fclose(io.file) != 0) return io_error(errno_message(errno));
   return Status::ok_status();

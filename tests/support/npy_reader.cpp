@@ -25,9 +25,9 @@ namespace {
 using detail::byte_swap;
 using detail::element_count;
 
-constexpr char kMagic[] = "\x93NUMPY";
-constexpr std::size_t kMagicLen = 6;
-constexpr std::size_t kPreludeLen = 10;  // magic, major, minor, uint16 header length
+using detail::kNpyMagic;
+using detail::kNpyMagicLen;
+using detail::kNpyPreludeLen;
 
 // ---- header parsing: the subset of Python literal syntax that .npy headers use ------------------
 class HeaderParser {
@@ -166,21 +166,22 @@ Result<NpyArray> read_fd(int fd, const std::filesystem::path& path) {
   if (!S_ISREG(st.st_mode)) return bad("not a regular file");
   const auto file_size = static_cast<std::uint64_t>(st.st_size);
 
-  unsigned char prelude[kPreludeLen] = {};
-  const std::size_t got = static_cast<std::size_t>(std::min<std::uint64_t>(file_size, kPreludeLen));
+  unsigned char prelude[kNpyPreludeLen] = {};
+  const std::size_t got =
+      static_cast<std::size_t>(std::min<std::uint64_t>(file_size, kNpyPreludeLen));
   if (const int err = read_exact(fd, prelude, got); err != 0) {
     return err > 0 ? os_error(err) : bad("file shrank while reading");
   }
-  if (got < kMagicLen || std::memcmp(prelude, kMagic, kMagicLen) != 0) {
+  if (got < kNpyMagicLen || std::memcmp(prelude, kNpyMagic, kNpyMagicLen) != 0) {
     return bad("not a .npy file (wrong magic)");
   }
-  if (got < kPreludeLen) return bad("truncated header");
+  if (got < kNpyPreludeLen) return bad("truncated header");
   if (prelude[6] != 1 || prelude[7] != 0) {
     return bad("npy format version " + std::to_string(prelude[6]) + "." +
                std::to_string(prelude[7]) + " is not supported (only 1.0)");
   }
   const std::size_t header_len = std::size_t{prelude[8]} | (std::size_t{prelude[9]} << 8U);
-  if (file_size < kPreludeLen + header_len) return bad("truncated header");
+  if (file_size < kNpyPreludeLen + header_len) return bad("truncated header");
   std::string header(header_len, '\0');
   if (const int err = read_exact(fd, header.data(), header_len); err != 0) {
     return err > 0 ? os_error(err) : bad("truncated header");
@@ -190,7 +191,7 @@ Result<NpyArray> read_fd(int fd, const std::filesystem::path& path) {
   if (auto problem = HeaderParser(header).parse(array)) return bad(*problem);
   const std::optional<std::size_t> count = element_count(array.shape);
   if (!count) return bad("the size of 'shape' overflows");
-  const std::uint64_t available = file_size - kPreludeLen - header_len;
+  const std::uint64_t available = file_size - kNpyPreludeLen - header_len;
   const std::uint64_t expected = static_cast<std::uint64_t>(*count) * sizeof(float);
   if (available < expected) {
     return bad("truncated data: the shape needs " + std::to_string(expected) +

@@ -15,37 +15,25 @@
 #include <limits>
 #include <string>
 
+#include "io/png_detail.hpp"
 #include "ocean/io.hpp"
 
 namespace ocean::io {
 namespace {
 
+using detail::png_on_error;
+using detail::png_on_warning;
+using detail::png_reason;
+using detail::PngIo;
+
 constexpr std::uint64_t kMaxSampleBytes = std::uint64_t{1} << 30;
 
-// Shared by reading and writing: the open file, the errno of a failed read or write, and the
-// message of the libpng error that aborted the operation.
-struct PngIo {
-  std::FILE* file = nullptr;
-  int err = 0;
-  char message[256] = {};
-};
-
-void on_error(png_structp png, png_const_charp message) {
-  auto* io = static_cast<PngIo*>(png_get_error_ptr(png));
-  std::snprintf(io->message, sizeof io->message, "%s", message != nullptr ? message : "error");
-  png_longjmp(png, 1);
-}
-void on_warning(png_structp /*png*/, png_const_charp /*message*/) {}
 void on_read(png_structp png, png_bytep data, std::size_t n) {
   auto* io = static_cast<PngIo*>(png_get_io_ptr(png));
   if (std::fread(data, 1, n, io->file) != n) {
     if (std::ferror(io->file) != 0) io->err = errno != 0 ? errno : EIO;
     png_error(png, io->err != 0 ? "read failed" : "truncated file");
   }
-}
-
-std::string reason(const PngIo& io) {
-  return io.err != 0 ? errno_message(io.err) : std::string(io.message);
 }
 
 bool read_header(png_structp png, png_infop info) {
@@ -68,7 +56,8 @@ Result<PngImage> read_opened(PngIo& io, const std::filesystem::path& path) {
   const auto fail = [&](const std::string& why) -> Status {
     return io_error(std::string("cannot read '").append(path.string()).append("': ").append(why));
   };
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &io, on_error, on_warning);
+  png_structp png =
+      png_create_read_struct(PNG_LIBPNG_VER_STRING, &io, png_on_error, png_on_warning);
   png_infop info = png != nullptr ? png_create_info_struct(png) : nullptr;
   if (info == nullptr) {
     png_destroy_read_struct(&png, nullptr, nullptr);
@@ -81,7 +70,7 @@ Result<PngImage> read_opened(PngIo& io, const std::filesystem::path& path) {
   } destroy{&png, &info};
   png_set_read_fn(png, &io, on_read);
   png_set_user_limits(png, kPngMaxDimension, kPngMaxDimension);
-  if (!read_header(png, info)) return fail(reason(io));
+  if (!read_header(png, info)) return fail(png_reason(io));
 
   PngImage image;
   image.width = static_cast<int>(png_get_image_width(png, info));
@@ -102,7 +91,7 @@ Result<PngImage> read_opened(PngIo& io, const std::filesystem::path& path) {
   std::vector<png_byte> bytes(row_bytes * h);
   std::vector<png_bytep> rows(h);
   for (std::size_t y = 0; y < h; ++y) rows[y] = bytes.data() + y * row_bytes;
-  if (!read_rows(png, info, rows.data())) return fail(reason(io));
+  if (!read_rows(png, info, rows.data())) return fail(png_reason(io));
 
   image.samples.resize(samples_per_row * h);
   if (image.bit_depth == 8) {
