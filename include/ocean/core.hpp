@@ -79,4 +79,10 @@ Status require_in_range(std::string_view name, double value, double lo, double h
 /// Formats a double the way messages and JSON print it: shortest form that round-trips.
 std::string format_number(double value);
 
+/// A value typed by a user, made safe to echo in a one-line message: at most `max_bytes` bytes of
+/// it (cut on a UTF-8 character boundary, then "..." and the full length in bytes), with control
+/// characters, invalid UTF-8 and backslashes written as C-style escapes (\n, \t, \xHH, \\).
+/// A 300 MB argument comes back as about `max_bytes` bytes; the result never holds a newline.
+std::string excerpt(std::string_view text, std::size_t max_bytes = 80);
+
 }  // namespace ocean

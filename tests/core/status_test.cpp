@@ -53,3 +53,28 @@ TEST(FormatNumber, ShortestRoundTrip) {
 }
 
 }  // namespace
+
+TEST(Excerpt, ShortPrintableTextComesBackAsItIs) {
+  EXPECT_EQ(ocean::excerpt("calm"), "calm");
+  EXPECT_EQ(ocean::excerpt("mer calme, 19.47°"), "mer calme, 19.47°");  // UTF-8 kept
+}
+
+TEST(Excerpt, ControlBytesInvalidUtf8AndBackslashesAreEscaped) {
+  EXPECT_EQ(ocean::excerpt("a\nb\tc\\d"), "a\\nb\\tc\\\\d");
+  EXPECT_EQ(ocean::excerpt(std::string("x\0y", 3)), "x\\x00y");
+  EXPECT_EQ(ocean::excerpt("\xff\xfe"), "\\xff\\xfe");
+  EXPECT_EQ(ocean::excerpt("\xc0\xaf"), "\\xc0\\xaf");          // overlong '/'
+  EXPECT_EQ(ocean::excerpt("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a UTF-16 surrogate
+  EXPECT_EQ(ocean::excerpt("\xe2\x82"), "\\xe2\\x82");          // cut sequence
+}
+
+TEST(Excerpt, LongTextIsCutOnACharacterBoundaryAndSaysHowLongItWas) {
+  const std::string huge(300'000'000, 'w');
+  const std::string shown = ocean::excerpt(huge);
+  EXPECT_EQ(shown, std::string(80, 'w') + "... (300000000 bytes)");
+  // "é" is two bytes: a cut between them would leave half a character.
+  std::string accents;
+  for (int i = 0; i < 50; ++i) accents += "\xc3\xa9";
+  const std::string cut = ocean::excerpt(accents, 5);
+  EXPECT_EQ(cut, "\xc3\xa9\xc3\xa9... (100 bytes)");
+}
