@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -111,9 +112,10 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndNoStdout) {
 }
 
 TEST(Cli, PlotWritesPngAtomically) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ocean_cli_plot_test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  // A directory of its own (mkdtemp), so that runs side by side do not share it.
+  std::string name = (std::filesystem::temp_directory_path() / "ocean_cli_plot_XXXXXX").string();
+  ASSERT_NE(::mkdtemp(name.data()), nullptr);
+  const std::filesystem::path dir = name;
   const std::filesystem::path png = dir / "sea.png";
   const CliRun r = run("spectrum --plot " + png.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
