@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli/cli_run.hpp"
+#include "ocean/conformance.hpp"
 
 namespace {
 
@@ -131,6 +132,26 @@ TEST(Cli, PlotWritesPngAtomically) {
   EXPECT_NE(bad.err.find("missing"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
   std::filesystem::remove_all(dir);
+}
+
+// `ocean validate --backend cpu` compares the CPU backend's fused SIMD pipeline with its scalar
+// reference pipeline (not the backend with itself) and holds it to the CPU bounds.
+TEST(Cli, ValidateCpuComparesTheTwoCpuPipelines) {
+  const CliRun r = run("validate --backend cpu --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["pass"].get<bool>());
+  const ocean::conformance::Bounds& bounds = ocean::conformance::kCpuBounds;
+  EXPECT_EQ(j["bounds"]["height_rel_hs"].get<double>(), bounds.height_rel_hs);
+  EXPECT_EQ(j["bounds"]["displacement_rel_hs"].get<double>(), bounds.displacement_rel_hs);
+  EXPECT_EQ(j["bounds"]["foam"].get<double>(), bounds.foam);
+  EXPECT_EQ(j["cases"].size(), ocean::conformance::cases().size());
+  // Two computations that round differently: errors above zero, within the bounds.
+  const double max_error = j["max_error_rel_hs"].get<double>();
+  EXPECT_GT(max_error, 0.0);
+  EXPECT_LE(max_error, bounds.displacement_rel_hs);
+  EXPECT_GT(j["errors"]["normal"].get<double>(), 0.0);
+  EXPECT_LE(j["errors"]["normal"].get<double>(), bounds.normal);
 }
 
 TEST(Cli, HelpExitsZero) {
