@@ -4,7 +4,6 @@
 // is not a regular file is refused, not replaced.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -18,17 +17,7 @@ namespace fs = std::filesystem;
 using ocean_test::CliRun;
 using ocean_test::run_cli;
 using ocean_test::run_cli_after;
-
-// A scratch directory, removed at the end of the test.
-struct ScratchDir {
-  fs::path path;
-  explicit ScratchDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~ScratchDir() { fs::remove_all(path); }
-};
+using ocean_test::ScratchDir;
 
 long count_lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 

@@ -44,6 +44,19 @@ inline CliRun run_cli_after(const std::string& shell_prefix, const std::string& 
 
 inline CliRun run_cli(const std::string& args) { return run_cli_after("", args); }
 
+/// A fresh, empty scratch directory "<temp>/<name><pid>", removed at the end of the test.
+struct ScratchDir {
+  std::filesystem::path path;
+  explicit ScratchDir(const std::string& name)
+      : path(std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() { std::filesystem::remove_all(path); }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+};
+
 /// The bad-input contract: exit 2, nothing on stdout, one line on stderr that mentions `says`.
 inline void expect_usage_error(const std::string& args, const std::string& says) {
   const CliRun r = run_cli(args);

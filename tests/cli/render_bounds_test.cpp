@@ -4,7 +4,6 @@
 // with one).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -19,12 +18,7 @@ namespace fs = std::filesystem;
 using ocean_test::CliRun;
 using ocean_test::run_cli;
 using ocean_test::run_cli_after;
-
-struct ScratchDir {
-  fs::path path = fs::temp_directory_path() / ("ocean_render_bounds_" + std::to_string(getpid()));
-  ScratchDir() { fs::create_directories(path); }
-  ~ScratchDir() { fs::remove_all(path); }
-};
+using ocean_test::ScratchDir;
 
 void expect_one_line(const CliRun& r, int exit_code, const std::string& says) {
   EXPECT_EQ(r.exit_code, exit_code) << r.err;
@@ -37,7 +31,7 @@ void expect_one_line(const CliRun& r, int exit_code, const std::string& says) {
 // more than a 3 GB address space; found before the Vulkan device is even opened.
 TEST(RenderBounds, APictureLargerThanMemoryIsRefusedFirst) {
   if (ocean_test::kAddressSanitizer) GTEST_SKIP() << "ulimit -v cannot be used under ASan";
-  const ScratchDir dir;
+  const ScratchDir dir("ocean_render_bounds_");
   const fs::path out = dir.path / "huge.png";
   const CliRun r = run_cli_after("ulimit -v 3000000; ",
                                  "render --out " + out.string() + " --width 16384 --height 16384");
@@ -63,7 +57,7 @@ TEST(RenderBounds, TheRenderersTargetsAreCheckedBeforeTheyAreAllocated) {
   const auto devices = ocean::vk::list_devices();
   if (!devices.ok() || devices.value().size() != 1 || devices.value()[0].type != "cpu")
     GTEST_SKIP() << "the test needs one device, a CPU one, whose memory is host memory";
-  const ScratchDir dir;
+  const ScratchDir dir("ocean_render_bounds_");
   const CliRun r = run_cli_after("ulimit -v 5500000; ",
                                  "render --out " + (dir.path / "big.png").string() +
                                      " --width 16384 --height 16384 --resolution 16 --warmup 0");
@@ -77,7 +71,7 @@ TEST(RenderBounds, TheRenderersTargetsAreCheckedBeforeTheyAreAllocated) {
 }
 
 TEST(RenderBounds, AnOutputThatIsNotARegularFileIsRefusedBeforeRendering) {
-  const ScratchDir dir;
+  const ScratchDir dir("ocean_render_bounds_");
   const fs::path fifo = dir.path / "frame.png";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   const CliRun r = run_cli("render --out " + fifo.string() + " --width 8 --height 8");
