@@ -240,6 +240,8 @@ int run_contact_sheet(const RenderOptions& o) {
   Result<Inputs> first = parse_inputs(tile);
   if (!first.ok()) return report(first.status());
   const int w = first.value().scene.width, h = first.value().scene.height;
+  if (Status s = check_picture_memory(w, h, kSheetBytesPerTilePixel, "a contact sheet"); !s.ok())
+    return report(s);
   const int cols = 3, rows = 3;
   ContactSheet sheet{.title = "ocean render: calm, moderate, storm", .columns = cols};
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(first.value().scene);
@@ -289,6 +291,16 @@ int run_render(const RenderOptions& o) {
   // Fail before any work when the output cannot be written.
   const std::filesystem::path first = frame_path(o.out, 0, in.frames);
   if (Status s = io::check_parent_writable(first); !s.ok()) return report(s);
+  // ... or when the picture cannot fit in memory.
+  // Indexed by OutputKind: png, exr, mp4.
+  constexpr std::uint64_t kBytesPerPixel[] = {kPngBytesPerPixel, kExrBytesPerPixel,
+                                              kVideoBytesPerPixel};
+  constexpr const char* kWhat[] = {"a PNG", "an EXR", "an MP4"};
+  const auto kind = static_cast<std::size_t>(in.kind);
+  if (Status s =
+          check_picture_memory(in.scene.width, in.scene.height, kBytesPerPixel[kind], kWhat[kind]);
+      !s.ok())
+    return report(s);
   if (in.kind == OutputKind::mp4 && !on_path("ffmpeg"))
     return report(unsupported("--out " + o.out +
                               ": MP4 needs the ffmpeg program (apt-get install ffmpeg); "
