@@ -41,7 +41,8 @@ std::string with_flag_names(std::string message) {
     std::size_t pos = 0;
     while ((pos = message.find(field, pos)) != std::string::npos) {
       const std::size_t end = pos + field.size();
-      const bool starts = pos == 0 || !is_word_char(message[pos - 1]);
+      // Not already a flag: "--gamma" stays as it is.
+      const bool starts = pos == 0 || !(is_word_char(message[pos - 1]) || message[pos - 1] == '-');
       const bool ends = end == message.size() || !is_word_char(message[end]);
       if (starts && ends) {
         message.replace(pos, field.size(), flag);
