@@ -30,7 +30,7 @@ template <class E, std::size_t N>
 Result<E> parse_name(std::string_view flag, const std::array<EnumName<E>, N>& table,
                      const std::string& text) {
   if (std::optional<E> value = value_of(table, text)) return *value;
-  return invalid_argument(std::string(flag) + " = '" + text + "' is unknown: must be " +
+  return invalid_argument(std::string(flag) + " = '" + excerpt(text) + "' is unknown: must be " +
                           name_list(table, ", ", " or "));
 }
 
@@ -136,6 +136,9 @@ Result<FrequencySpectrumParams> to_params(const SpectrumFlags& f) {
   return p;
 }
 
-void print_json(const nlohmann::ordered_json& value) { std::cout << value.dump(2) << "\n"; }
+void print_json(const nlohmann::ordered_json& value) {
+  // A file name need not be UTF-8: such bytes print as U+FFFD rather than throw.
+  std::cout << value.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+}
 
 }  // namespace ocean::cli
