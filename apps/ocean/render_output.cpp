@@ -30,8 +30,9 @@ Status write_srgb_png(const std::filesystem::path& path, int width, int height,
 Status validation_status(const vk::Context& context) {
   const std::uint32_t messages = context.validation_messages.load();
   if (!context.validation || messages == 0) return {};
-  return {ErrorCode::internal, "Vulkan validation reported " + std::to_string(messages) +
-                                   " messages; last: " + context.last_validation_message};
+  return {ErrorCode::internal,
+          "Vulkan validation reported " + std::to_string(messages) +
+              " messages; last: " + excerpt(context.last_validation_message, 300)};
 }
 
 }  // namespace ocean::cli
