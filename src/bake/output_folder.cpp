@@ -36,7 +36,7 @@ bool dead_bake_temporary(std::string_view name) {
   if (!ours) return false;
   const std::string_view tail = name.substr(tmp + 5);  // "<pid>-<counter>"
   const std::size_t dash = tail.find('-');
-  if (dash == 0 || dash == std::string_view::npos || dash > 9 || dash + 1 == tail.size())
+  if (dash == 0 || dash == std::string_view::npos || dash > 10 || dash + 1 == tail.size())
     return false;
   long long pid = 0;
   for (std::size_t i = 0; i < tail.size(); ++i) {
