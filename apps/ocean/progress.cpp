@@ -44,4 +44,8 @@ void Progress::finish() {
                total_, seconds, seconds > 0 ? static_cast<double>(done_) / seconds : 0.0);
 }
 
+void Progress::end_line() {
+  if (terminal_ && done_ > 0) std::fputc('\n', stderr);
+}
+
 }  // namespace ocean::cli

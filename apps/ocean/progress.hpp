@@ -14,6 +14,9 @@ class Progress {
   void update(long long done);
   /// Final line: the total and the rate.
   void finish();
+  /// Ends a bar left unfinished (a newline on a terminal), so that a message printed next
+  /// starts on its own line.
+  void end_line();
 
  private:
   std::string label_;

@@ -3,6 +3,11 @@
 // atomically, with a manifest.json describing what was written. What `ocean bake` runs; an engine,
 // a binding or a render farm calls it without the command-line tool.
 //
+// A bake into a folder is a transaction: one bake at a time per folder (a lock), every output
+// checked before the first frame, the old manifest removed before the first new file, and the
+// manifest written last saying whether the bake completed. A folder whose manifest.json says
+// "complete": true holds a whole bake; one with "complete": false, or with no manifest, does not.
+//
 // Files of frame f (five digits) and cascade k, in the output directory:
 //   npy: displacement_c<k>_f<f>.npy [N][N][3] (Dx, h, Dz) m, normal_… [N][N][3], jacobian_… [N][N],
 //        foam_… [N][N], nfs_c<k>_f<f>_mip<l>.npy [N>>l][N>>l][4] (packed map / 255)
@@ -13,11 +18,13 @@
 // Rows are row-major [row][col]; texel (col,row) starts at world (col,row)·L/N.
 #pragma once
 
+#include <atomic>
 #include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "ocean/core.hpp"
 #include "ocean/sim.hpp"
@@ -26,6 +33,10 @@ namespace ocean::bake {
 
 /// The most frames one bake writes.
 inline constexpr long long kMaxFrames = 1000000;
+
+/// The lock file a bake holds in its output folder while it runs (flock(2), the holder's pid as
+/// text); removed when the bake ends. A lock file left by a killed process blocks nothing.
+inline constexpr const char* kLockFileName = ".ocean-bake.lock";
 
 /// Which file formats a bake writes; any combination, at least one.
 struct Formats {
@@ -42,6 +53,14 @@ struct BakeParams {
   double fps = 30.0;                     ///< frames per second, finite and > 0
   double start_time_s = 0.0;             ///< simulation time of frame 0, finite
   std::string generator = "ocean bake";  ///< the manifest's "generator" entry
+  /// Other files the caller writes during the bake (e.g. from the callback): checked with the
+  /// output folder before the first frame (their folder exists and is writable; each is absent,
+  /// a regular file or a symbolic link), so that a bad path fails at once. Not written by bake().
+  std::vector<std::filesystem::path> other_outputs;
+  /// Cancellation: when set and true, the bake stops before its next file (see bake()). May be
+  /// set from another thread or from a signal handler (a lock-free atomic store is
+  /// async-signal-safe). Not owned; must outlive the call.
+  const std::atomic<bool>* cancel = nullptr;
 };
 
 /// One frame written, reported to the caller's callback.
@@ -53,7 +72,7 @@ struct FrameDone {
 };
 
 /// Called after each frame's files are written, on the calling thread. A non-ok Status stops the
-/// bake: bake() returns it unchanged, and no manifest is written.
+/// bake: bake() returns it unchanged, after writing a manifest saying "complete": false.
 using FrameCallback = std::function<Status(const FrameDone&)>;
 
 /// The frames of one whole loop period of `config` at `fps`: round(loop_period_s · fps). Zero or
@@ -68,17 +87,31 @@ double height_png_range_m(const SimulationConfig& config);
 
 /// Bakes `params.frame_count` frames of a simulation of `config` on the backend named `backend`
 /// (see make_backend), writing the files listed at the top of this header and, last,
-/// <output_dir>/manifest.json (generator, backend, config as the preset document, fps, formats,
-/// height_png_range_m, layout, cascades, and per frame its index, time and files).
+/// <output_dir>/manifest.json: generator, "complete" (true when every frame was written),
+/// frame_count (asked for), frames_written, "stopped" (why, when not complete), backend, config
+/// as the preset document, fps, formats, height_png_range_m, layout, cascades, and per frame
+/// written its index, time and files.
 ///
 /// Contract:
-///  - Creates output_dir first, before any simulation work (io_error "cannot create directory
-///    '<dir>': <reason>"), then makes the simulator (its errors unchanged, e.g. "unsupported:
-///    built without ...").
-///  - Every file is replaced atomically (see ocean/io.hpp); the first failing write stops the bake
-///    with its io_error "cannot write '<path>': <reason>". Files of frames already written stay.
 ///  - invalid_argument for an empty output_dir, no format, frame_count outside 1..kMaxFrames, or
-///    a non-finite or non-positive fps or a non-finite start time (nothing written).
+///    a non-finite or non-positive fps or a non-finite start time (nothing touched).
+///  - The start, before any simulation work: creates output_dir and its missing parents (io_error
+///    "cannot create directory '<dir>': <reason>"); takes the folder's lock (kLockFileName) —
+///    io_error "'<dir>' is being baked by process <pid> (it holds '<lock>')" at once if another
+///    bake holds it, or "cannot write '<lock>': <reason>" for an unwritable folder; checks
+///    other_outputs. Then makes the simulator (its errors unchanged, e.g. "unsupported: built
+///    without ..."). Then removes temporaries left in the folder by dead bakes and removes the old
+///    manifest.json (io_error if it cannot: a directory in its place). A start that fails, or is
+///    cancelled, leaves everything as it was: no folder it created, the old bake untouched.
+///  - Every file is replaced atomically (see ocean/io.hpp). The first failing write stops the bake
+///    with its io_error "cannot write '<path>': <reason>" (e.g. "No space left on device", "File
+///    too large"), as does a failing callback with its Status. When `params.cancel` becomes true,
+///    the bake stops before its next file with ErrorCode::cancelled, "bake cancelled after <n> of
+///    <frame_count> frames; '<manifest>' says \"complete\": false".
+///  - A stopped bake removes the files of its unfinished frame, writes the manifest with
+///    "complete": false listing the frames written whole (if that write fails too, the folder has
+///    no manifest), releases the lock, and leaves no temporary file. Files of earlier bakes that
+///    this one did not replace stay; only the files the manifest lists belong to the bake.
 ///  - Calls `on_frame` (if set) after every frame. Blocking; allocates per frame; never throws.
 Status bake(const SimulationConfig& config, std::string_view backend, const BakeParams& params,
             const FrameCallback& on_frame = {});

@@ -21,6 +21,7 @@ enum class ErrorCode {
   io_error,          ///< a file could not be read or written
   unsupported,       ///< a feature that was not compiled in or that this machine lacks
   internal,          ///< should not happen; a bug
+  cancelled,         ///< stopped at the caller's request (a cancellation flag it set)
 };
 
 /// Outcome of an operation: ok, or an error code with a one-line message.

@@ -1,5 +1,6 @@
-// src/bake/bake.cpp — the bake loop: parameter checks, frame times, file naming per frame and
-// cascade, the callback after every frame, and the manifest written last.
+// src/bake/bake.cpp — the bake loop: parameter checks, the folder held as a transaction
+// (output_folder.hpp), frame times, file naming per frame and cascade, the callback after every
+// frame, cancellation between files, and the manifest written last saying whether it is complete.
 #include "ocean/bake.hpp"
 
 #include <algorithm>
@@ -15,6 +16,8 @@
 #include "ocean/io.hpp"
 #include "ocean/preset.hpp"
 #include "ocean/spectrum.hpp"
+#include "output_folder.hpp"
+#include "quoted.hpp"
 
 namespace ocean::bake {
 namespace {
@@ -44,12 +47,21 @@ Json format_names(const Formats& f) {
   return names;
 }
 
-Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
-           const FrameCallback& on_frame) {
+bool cancelled(const BakeParams& p) {
+  return p.cancel != nullptr && p.cancel->load(std::memory_order_relaxed);
+}
+
+// The manifest's opening entries, in the order a reader wants them; "complete", "frames_written"
+// and "stopped" are filled in when the bake ends.
+Json manifest_head(const Simulator& sim, std::string_view backend, const BakeParams& p,
+                   double range_m) {
   const SimulationConfig& c = sim.config();
-  const double range_m = height_png_range_m(c);
   Json manifest{
       {"generator", p.generator},
+      {"complete", false},
+      {"frame_count", p.frame_count},
+      {"frames_written", 0},
+      {"stopped", nullptr},
       {"backend", std::string(backend)},
       {"config", Json::parse(preset::to_json(c))},
       {"fps", p.fps},
@@ -62,8 +74,17 @@ Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
       {"frames", Json::array()}};
   for (double size : c.cascade_patch_sizes_m)
     manifest["cascades"].push_back({{"patch_size_m", size}, {"resolution", c.resolution}});
+  return manifest;
+}
+
+// Writes every frame's files, calling `on_frame` after each; returns the Status that stopped the
+// bake (ok when all frames were written), with the frames written whole in `manifest`. The files
+// of a frame left unfinished are removed.
+Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on_frame,
+                    double range_m, const detail::OutputFolder& folder, Json& manifest) {
   std::vector<std::string> names;
   for (long long f = 0; f < p.frame_count; ++f) {
+    if (cancelled(p)) return {ErrorCode::cancelled, "cancelled"};
     const double t = p.start_time_s + static_cast<double>(f) / p.fps;
     sim.step(t);
     names.clear();
@@ -73,21 +94,52 @@ Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
     for (std::size_t k = 0; k < frame.cascades.size(); ++k) {
       char stem[48];
       std::snprintf(stem, sizeof stem, "c%zu_f%s", k, index);
-      if (Status s = detail::write_cascade_files(frame.cascades[k], stem, p.output_dir, p.formats,
-                                                 range_m, names);
+      if (Status s = detail::write_cascade_files(frame.cascades[k], stem, folder.dir(), p.formats,
+                                                 range_m, p.cancel, names);
           !s.ok()) {
+        folder.remove(names);
         return s;
       }
     }
     manifest["frames"].push_back({{"index", f}, {"time_s", t}, {"files", names}});
+    manifest["frames_written"] = f + 1;
     if (on_frame) {
       const FrameDone done{.index = f, .frame_count = p.frame_count, .time_s = t, .frame = &frame};
       if (Status s = on_frame(done); !s.ok()) return s;
     }
   }
+  return {};
+}
+
+// The transaction from the start of writing to the manifest (see bake() in ocean/bake.hpp).
+Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
+           const FrameCallback& on_frame, detail::OutputFolder& folder) {
+  if (cancelled(p)) {
+    return {ErrorCode::cancelled, "bake cancelled before its first frame; nothing written"};
+  }
+  if (Status s = folder.begin(); !s.ok()) return s;
+  const double range_m = height_png_range_m(sim.config());
+  Json manifest = manifest_head(sim, backend, p, range_m);
+  const Status stop = write_frames(sim, p, on_frame, range_m, folder, manifest);
+  manifest["complete"] = stop.ok();
+  if (stop.ok()) {
+    manifest.erase("stopped");
+  } else {
+    manifest["stopped"] = stop.code() == ErrorCode::cancelled ? "cancelled" : stop.message();
+  }
   const std::string text = manifest.dump(2) + "\n";
-  return io::write_bytes_atomically(p.output_dir / "manifest.json",
-                                    {std::as_bytes(std::span(text.data(), text.size()))});
+  const std::filesystem::path path = folder.dir() / "manifest.json";
+  const Status written =
+      io::write_bytes_atomically(path, {std::as_bytes(std::span(text.data(), text.size()))});
+  if (stop.code() != ErrorCode::cancelled) return stop.ok() ? written : stop;
+  std::string message = "bake cancelled after " + manifest["frames_written"].dump() + " of " +
+                        std::to_string(p.frame_count) + " frames; ";
+  if (written.ok()) {
+    message.append(detail::quoted(path)).append(" says \"complete\": false");
+  } else {
+    message += "no manifest: " + written.message();
+  }
+  return {ErrorCode::cancelled, std::move(message)};
 }
 
 // Runs `body`, turning an escaping exception (out of memory) into an io_error.
@@ -117,19 +169,21 @@ Status bake(const SimulationConfig& config, std::string_view backend, const Bake
             const FrameCallback& on_frame) {
   return guarded([&]() -> Status {
     if (Status s = check(params); !s.ok()) return s;
-    // Fail on an unusable output directory before any simulation work.
-    if (Status s = io::ensure_directory(params.output_dir); !s.ok()) return s;
+    // Fail on an unusable output folder before any simulation work.
+    detail::OutputFolder folder;
+    if (Status s = folder.open(params.output_dir, params.other_outputs); !s.ok()) return s;
     Result<std::unique_ptr<Simulator>> sim = make_simulator(config, backend);
     if (!sim.ok()) return sim.status();
-    return run(*sim.value(), backend, params, on_frame);
+    return run(*sim.value(), backend, params, on_frame, folder);
   });
 }
 
 Status bake(Simulator& simulator, const BakeParams& params, const FrameCallback& on_frame) {
   return guarded([&]() -> Status {
     if (Status s = check(params); !s.ok()) return s;
-    if (Status s = io::ensure_directory(params.output_dir); !s.ok()) return s;
-    return run(simulator, simulator.backend().name(), params, on_frame);
+    detail::OutputFolder folder;
+    if (Status s = folder.open(params.output_dir, params.other_outputs); !s.ok()) return s;
+    return run(simulator, simulator.backend().name(), params, on_frame, folder);
   });
 }
 

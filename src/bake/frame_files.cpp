@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <span>
 
 #include "ocean/io.hpp"
 
@@ -13,27 +14,37 @@ namespace ocean::bake::detail {
 
 Status write_cascade_files(const CascadeFrame& c, const std::string& stem,
                            const std::filesystem::path& dir, const Formats& formats,
-                           double height_range_m, std::vector<std::string>& names) {
+                           double height_range_m, const std::atomic<bool>* cancel,
+                           std::vector<std::string>& names) {
   const int n = c.resolution;
   const auto un = static_cast<std::size_t>(n);
   const auto texels = un * un;
-  const auto record = [&](const std::string& name) {
-    names.push_back(name);
-    return dir / name;
+  // One file, through `write(path)`, unless the bake was cancelled; named once written, so that
+  // `names` holds exactly the files on disk.
+  const auto put = [&](const std::string& name, const auto& write) -> Status {
+    if (cancel != nullptr && cancel->load(std::memory_order_relaxed))
+      return {ErrorCode::cancelled, "cancelled"};
+    Status s = write(dir / name);
+    if (s.ok()) names.push_back(name);
+    return s;
+  };
+  const auto npy = [&](const std::string& name, const float* data,
+                       std::span<const std::size_t> shape) {
+    return put(name, [&](const std::filesystem::path& p) { return io::write_npy(p, data, shape); });
+  };
+  const auto exr = [&](const std::string& name, int size, std::span<const io::ExrChannel> channels,
+                       io::ExrPixelType type) {
+    return put(name, [&](const std::filesystem::path& p) {
+      return io::write_exr(p, size, size, channels, type);
+    });
   };
   if (formats.npy) {
     const std::size_t vec3[] = {un, un, 3}, scalar[] = {un, un};
-    if (Status s =
-            io::write_npy(record("displacement_" + stem + ".npy"), c.displacement.data(), vec3);
-        !s.ok())
+    if (Status s = npy("displacement_" + stem + ".npy", c.displacement.data(), vec3); !s.ok())
       return s;
-    if (Status s = io::write_npy(record("normal_" + stem + ".npy"), c.normal.data(), vec3); !s.ok())
-      return s;
-    if (Status s = io::write_npy(record("jacobian_" + stem + ".npy"), c.jacobian.data(), scalar);
-        !s.ok())
-      return s;
-    if (Status s = io::write_npy(record("foam_" + stem + ".npy"), c.foam.data(), scalar); !s.ok())
-      return s;
+    if (Status s = npy("normal_" + stem + ".npy", c.normal.data(), vec3); !s.ok()) return s;
+    if (Status s = npy("jacobian_" + stem + ".npy", c.jacobian.data(), scalar); !s.ok()) return s;
+    if (Status s = npy("foam_" + stem + ".npy", c.foam.data(), scalar); !s.ok()) return s;
   }
   if (formats.exr) {
     std::vector<float> planes(6 * texels);
@@ -45,8 +56,7 @@ Status write_cascade_files(const CascadeFrame& c, const std::string& stem,
     }
     const io::ExrChannel displacement[] = {
         {"R", planes.data()}, {"G", planes.data() + texels}, {"B", planes.data() + 2 * texels}};
-    if (Status s = io::write_exr(record("displacement_" + stem + ".exr"), n, n, displacement,
-                                 io::ExrPixelType::float32);
+    if (Status s = exr("displacement_" + stem + ".exr", n, displacement, io::ExrPixelType::float32);
         !s.ok()) {
       return s;
     }
@@ -55,11 +65,7 @@ Status write_cascade_files(const CascadeFrame& c, const std::string& stem,
                                    {"normal.Z", planes.data() + 5 * texels},
                                    {"jacobian", c.jacobian.data()},
                                    {"foam", c.foam.data()}};
-    if (Status s =
-            io::write_exr(record("maps_" + stem + ".exr"), n, n, maps, io::ExrPixelType::half);
-        !s.ok()) {
-      return s;
-    }
+    if (Status s = exr("maps_" + stem + ".exr", n, maps, io::ExrPixelType::half); !s.ok()) return s;
   }
   // The packed normal/foam/smoothness chain, one image per mip level.
   const int levels = std::countr_zero(static_cast<unsigned>(n));
@@ -74,7 +80,11 @@ Status write_cascade_files(const CascadeFrame& c, const std::string& stem,
         rgba[4 * i + k] = static_cast<std::uint8_t>(packed[i] >> (8 * k));
     }
     if (formats.png) {
-      if (Status s = io::write_png8(record(name + ".png"), size, size, 4, rgba.data()); !s.ok())
+      if (Status s = put(name + ".png",
+                         [&](const std::filesystem::path& p) {
+                           return io::write_png8(p, size, size, 4, rgba.data());
+                         });
+          !s.ok())
         return s;
     }
     if (formats.exr || formats.npy) {
@@ -83,8 +93,7 @@ Status write_cascade_files(const CascadeFrame& c, const std::string& stem,
       if (formats.npy) {
         const std::size_t shape[] = {static_cast<std::size_t>(size), static_cast<std::size_t>(size),
                                      4};
-        if (Status s = io::write_npy(record(name + ".npy"), values.data(), shape); !s.ok())
-          return s;
+        if (Status s = npy(name + ".npy", values.data(), shape); !s.ok()) return s;
       }
       if (formats.exr) {
         std::vector<float> planar(4 * count);
@@ -95,9 +104,7 @@ Status write_cascade_files(const CascadeFrame& c, const std::string& stem,
                                      {"G", planar.data() + count},
                                      {"B", planar.data() + 2 * count},
                                      {"A", planar.data() + 3 * count}};
-        if (Status s = io::write_exr(record(name + ".exr"), size, size, ch, io::ExrPixelType::half);
-            !s.ok())
-          return s;
+        if (Status s = exr(name + ".exr", size, ch, io::ExrPixelType::half); !s.ok()) return s;
       }
     }
   }
@@ -107,7 +114,10 @@ Status write_cascade_files(const CascadeFrame& c, const std::string& stem,
       const double t = 0.5 + 0.5 * c.displacement[3 * i + 1] / height_range_m;
       height[i] = static_cast<std::uint16_t>(std::lround(std::clamp(t, 0.0, 1.0) * 65535.0));
     }
-    if (Status s = io::write_png16_gray(record("height_" + stem + ".png"), n, n, height.data());
+    if (Status s = put("height_" + stem + ".png",
+                       [&](const std::filesystem::path& p) {
+                         return io::write_png16_gray(p, n, n, height.data());
+                       });
         !s.ok())
       return s;
   }

@@ -1,15 +1,21 @@
 // ocean::bake without the command-line tool: the files agree with the simulator bit for bit, the
-// manifest lists them, the callback sees every frame and can stop the bake, and bad parameters
+// manifest lists them and says whether the bake completed, the callback sees every frame and can
+// stop the bake, a cancellation stops it between files, a failed write leaves no half frame, a
+// failed or cancelled start leaves everything as it was, the folder lock, and bad parameters
 // write nothing.
 #include "ocean/bake.hpp"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/file.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -29,6 +35,23 @@ struct TempDir {
   }
   ~TempDir() { fs::remove_all(path); }
 };
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+nlohmann::json read_manifest(const fs::path& dir) {
+  std::ifstream in(dir / "manifest.json");
+  return nlohmann::json::parse(in, nullptr, false);
+}
+
+std::size_t entries_with(const fs::path& dir, const std::string& part) {
+  std::size_t n = 0;
+  for (const auto& e : fs::directory_iterator(dir))
+    n += e.path().filename().string().find(part) != std::string::npos;
+  return n;
+}
 
 ocean::SimulationConfig small_config() {
   ocean::SimulationConfig c;
@@ -74,9 +97,13 @@ TEST(BakeLibrary, FilesMatchTheSimulatorAndTheManifestListsThem) {
   ASSERT_TRUE(png.ok()) << png.status().message();
   EXPECT_EQ(png.value().bit_depth, 16);
 
-  std::ifstream in(dir.path / "manifest.json");
-  const nlohmann::json manifest = nlohmann::json::parse(in);
+  const nlohmann::json manifest = read_manifest(dir.path);
   EXPECT_EQ(manifest["generator"], "ocean bake");
+  EXPECT_EQ(manifest["complete"], true);
+  EXPECT_EQ(manifest["frame_count"], 2);
+  EXPECT_EQ(manifest["frames_written"], 2);
+  EXPECT_FALSE(manifest.contains("stopped"));
+  EXPECT_EQ(entries_with(dir.path, ".ocean-bake.lock"), 0u);
   EXPECT_EQ(manifest["backend"], "cpu");
   EXPECT_EQ(manifest["formats"], nlohmann::json({"npy", "png"}));
   ASSERT_EQ(manifest["frames"].size(), 2u);
@@ -96,7 +123,7 @@ TEST(BakeLibrary, SimulatorOverloadRecordsItsBackend) {
   EXPECT_EQ(nlohmann::json::parse(in)["backend"], std::string(sim->backend().name()));
 }
 
-TEST(BakeLibrary, CallbackErrorStopsTheBakeWithoutAManifest) {
+TEST(BakeLibrary, CallbackErrorStopsTheBakeWithAnIncompleteManifest) {
   TempDir dir("bake_lib_stop_");
   const ocean::Status s = ocean::bake::bake(
       small_config(), "cpu", {.output_dir = dir.path, .frame_count = 3},
@@ -106,7 +133,103 @@ TEST(BakeLibrary, CallbackErrorStopsTheBakeWithoutAManifest) {
   EXPECT_EQ(s.message(), "stop here");
   EXPECT_TRUE(fs::exists(dir.path / "foam_c0_f00001.npy"));
   EXPECT_FALSE(fs::exists(dir.path / "foam_c0_f00002.npy"));
-  EXPECT_FALSE(fs::exists(dir.path / "manifest.json"));
+  const nlohmann::json m = read_manifest(dir.path);
+  EXPECT_EQ(m["complete"], false);
+  EXPECT_EQ(m["frames_written"], 2);
+  EXPECT_EQ(m["frames"].size(), 2u);
+  EXPECT_EQ(m["stopped"], "stop here");
+  EXPECT_EQ(entries_with(dir.path, ".tmp-"), 0u);
+  EXPECT_FALSE(fs::exists(dir.path / ocean::bake::kLockFileName));
+}
+
+TEST(BakeLibrary, CancellationStopsBeforeTheNextFile) {
+  TempDir dir("bake_lib_cancel_");
+  std::atomic<bool> cancel{false};
+  const ocean::Status s = ocean::bake::bake(
+      small_config(), "cpu", {.output_dir = dir.path, .frame_count = 5, .cancel = &cancel},
+      [&](const ocean::bake::FrameDone& done) {
+        if (done.index == 1) cancel = true;
+        return ocean::Status::ok_status();
+      });
+  EXPECT_EQ(s.code(), ocean::ErrorCode::cancelled);
+  EXPECT_NE(s.message().find("cancelled after 2 of 5 frames"), std::string::npos) << s.message();
+  EXPECT_NE(s.message().find("\"complete\": false"), std::string::npos) << s.message();
+  EXPECT_TRUE(fs::exists(dir.path / "foam_c1_f00001.npy"));
+  EXPECT_FALSE(fs::exists(dir.path / "displacement_c0_f00002.npy"));
+  const nlohmann::json m = read_manifest(dir.path);
+  EXPECT_EQ(m["complete"], false);
+  EXPECT_EQ(m["frame_count"], 5);
+  EXPECT_EQ(m["frames_written"], 2);
+  EXPECT_EQ(m["stopped"], "cancelled");
+  EXPECT_EQ(entries_with(dir.path, ".tmp-"), 0u);
+  EXPECT_FALSE(fs::exists(dir.path / ocean::bake::kLockFileName));
+}
+
+TEST(BakeLibrary, AFailedWriteRemovesTheUnfinishedFrame) {
+  TempDir dir("bake_lib_fail_");
+  // A folder where frame 1's third file goes: its rename fails after two files of frame 1.
+  fs::create_directories(dir.path / "jacobian_c0_f00001.npy" / "x");
+  const ocean::Status s =
+      ocean::bake::bake(small_config(), "cpu", {.output_dir = dir.path, .frame_count = 3});
+  EXPECT_EQ(s.code(), ocean::ErrorCode::io_error);
+  EXPECT_NE(s.message().find("jacobian_c0_f00001.npy"), std::string::npos) << s.message();
+  EXPECT_FALSE(fs::exists(dir.path / "displacement_c0_f00001.npy"));
+  EXPECT_FALSE(fs::exists(dir.path / "normal_c0_f00001.npy"));
+  EXPECT_TRUE(fs::exists(dir.path / "nfs_c1_f00000_mip5.npy"));
+  const nlohmann::json m = read_manifest(dir.path);
+  EXPECT_EQ(m["complete"], false);
+  EXPECT_EQ(m["frames_written"], 1);
+  EXPECT_EQ(m["stopped"], s.message());
+  EXPECT_EQ(entries_with(dir.path, ".tmp-"), 0u);
+}
+
+TEST(BakeLibrary, AStartThatFailsOrIsCancelledLeavesEverythingAsItWas) {
+  TempDir dir("bake_lib_start_");
+  const ocean::SimulationConfig c = small_config();
+  const fs::path old = dir.path / "old";
+  ASSERT_TRUE(ocean::bake::bake(c, "cpu", {.output_dir = old}).ok());
+  const std::string old_manifest = read_text(old / "manifest.json");
+  std::atomic<bool> cancel{true};
+  const fs::path fresh = dir.path / "a" / "b";
+  EXPECT_EQ(ocean::bake::bake(c, "cpu", {.output_dir = fresh, .cancel = &cancel}).code(),
+            ocean::ErrorCode::cancelled);
+  EXPECT_EQ(ocean::bake::bake(c, "cpu", {.output_dir = old, .cancel = &cancel}).code(),
+            ocean::ErrorCode::cancelled);
+  EXPECT_EQ(ocean::bake::bake(c, "no-such-backend", {.output_dir = fresh}).code(),
+            ocean::ErrorCode::invalid_argument);
+  const ocean::Status sheet =
+      ocean::bake::bake(c, "cpu", {.output_dir = fresh, .other_outputs = {dir.path}});
+  EXPECT_NE(sheet.message().find("is a directory"), std::string::npos) << sheet.message();
+  EXPECT_FALSE(fs::exists(dir.path / "a"));
+  EXPECT_EQ(read_text(old / "manifest.json"), old_manifest);
+  EXPECT_FALSE(fs::exists(old / ocean::bake::kLockFileName));
+  // A folder named manifest.json cannot be removed: the start fails before any frame file.
+  fs::create_directories(dir.path / "m" / "manifest.json" / "x");
+  const ocean::Status m = ocean::bake::bake(c, "cpu", {.output_dir = dir.path / "m"});
+  EXPECT_NE(m.message().find("cannot remove the old manifest"), std::string::npos) << m.message();
+  EXPECT_FALSE(fs::exists(dir.path / "m" / "displacement_c0_f00000.npy"));
+}
+
+TEST(BakeLibrary, ALockedFolderFailsAtOnceNamingTheHolderAndAStaleLockDoesNot) {
+  TempDir dir("bake_lib_lock_");
+  fs::create_directories(dir.path);
+  const fs::path lock = dir.path / ocean::bake::kLockFileName;
+  const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  const std::string pid = std::to_string(::getpid());
+  ASSERT_EQ(::write(fd, pid.data(), pid.size()), static_cast<ssize_t>(pid.size()));
+  const ocean::Status busy = ocean::bake::bake(small_config(), "cpu", {.output_dir = dir.path});
+  EXPECT_EQ(busy.code(), ocean::ErrorCode::io_error);
+  EXPECT_NE(busy.message().find("is being baked by process " + pid), std::string::npos)
+      << busy.message();
+  EXPECT_FALSE(fs::exists(dir.path / "displacement_c0_f00000.npy"));
+  // Unlocked, as the kernel leaves it when its holder dies: it blocks nothing and is removed.
+  ASSERT_EQ(::close(fd), 0);
+  const ocean::Status s = ocean::bake::bake(small_config(), "cpu", {.output_dir = dir.path});
+  EXPECT_TRUE(s.ok()) << s.message();
+  EXPECT_FALSE(fs::exists(lock));
+  EXPECT_EQ(read_manifest(dir.path)["complete"], true);
 }
 
 TEST(BakeLibrary, BadParametersWriteNothing) {

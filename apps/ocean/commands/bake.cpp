@@ -1,6 +1,7 @@
 // `ocean bake`: the flags of a bake (frames or one whole loop, formats, times) turned into the
 // library's BakeParams (ocean/bake.hpp, which writes the files and the manifest), a progress bar,
-// and the first frame's contact sheet.
+// the first frame's contact sheet (its path checked with the folder, before the first frame), and
+// SIGINT/SIGTERM turned into the bake's cancellation (exit 128 + the signal).
 #include "ocean/bake.hpp"
 
 #include <cmath>
@@ -15,6 +16,7 @@
 #include "output_name.hpp"
 #include "progress.hpp"
 #include "simulation_flags.hpp"
+#include "stop_signals.hpp"
 
 namespace ocean::cli {
 
@@ -83,6 +85,7 @@ int run_bake(const BakeOptions& o) {
   params.frame_count = frames;
   params.fps = fps.value();
   params.start_time_s = start.value();
+  if (!o.contact_sheet.empty()) params.other_outputs.emplace_back(o.contact_sheet);
   Progress progress("bake", frames);
   const auto on_frame = [&](const bake::FrameDone& done) -> Status {
     if (done.index == 0 && !o.contact_sheet.empty()) {
@@ -99,7 +102,19 @@ int run_bake(const BakeOptions& o) {
     if (done.index + 1 == done.frame_count) progress.finish();
     return {};
   };
-  if (Status s = bake::bake(c, o.backend, params, on_frame); !s.ok()) return report(s);
+  // From here on SIGINT/SIGTERM stop the bake between two files: no temporary is left and the
+  // manifest says what was written.
+  const StopSignals stop;
+  params.cancel = stop.flag();
+  if (Status s = bake::bake(c, o.backend, params, on_frame); !s.ok()) {
+    progress.end_line();
+    if (s.code() == ErrorCode::cancelled && stop.received() != 0) {
+      std::cerr << "ocean: error: bake interrupted: " << signal_name(stop.received()) << "; "
+                << s.message() << "\n";
+      return 128 + stop.received();  // the shell's convention for a job ended by a signal
+    }
+    return report(s);
+  }
   std::cerr << "ocean: wrote " << frames << " frame(s) to " << o.out << "\n";
   return kExitOk;
 }
