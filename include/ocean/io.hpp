@@ -62,6 +62,10 @@ ocean::Status write_bytes_atomically(const std::filesystem::path& path,
 /// and is not a directory" or "Permission denied". Never throws.
 ocean::Status ensure_directory(const std::filesystem::path& dir);
 
+/// `path` in single quotes as messages echo it: at most 240 bytes, control bytes and invalid
+/// UTF-8 escaped (ocean::excerpt), so a one-line message stays one line whatever the name holds.
+std::string quoted(const std::filesystem::path& path);
+
 /// Checks, before long work, that a file could be created at `path`: its directory (the
 /// current one when `path` has none) exists and is writable, and nothing but a regular file is
 /// in the way (as write_atomically). io_error "cannot write '<path>': No such file or

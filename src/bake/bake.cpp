@@ -17,7 +17,6 @@
 #include "ocean/preset.hpp"
 #include "ocean/spectrum.hpp"
 #include "output_folder.hpp"
-#include "quoted.hpp"
 
 namespace ocean::bake {
 namespace {
@@ -135,7 +134,7 @@ Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
   std::string message = "bake cancelled after " + manifest["frames_written"].dump() + " of " +
                         std::to_string(p.frame_count) + " frames; ";
   if (written.ok()) {
-    message.append(detail::quoted(path)).append(" says \"complete\": false");
+    message.append(io::quoted(path)).append(" says \"complete\": false");
   } else {
     message += "no manifest: " + written.message();
   }

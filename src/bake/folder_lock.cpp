@@ -23,7 +23,6 @@
 
 #include "ocean/bake.hpp"
 #include "ocean/io.hpp"
-#include "quoted.hpp"
 
 namespace ocean::bake::detail {
 namespace {

@@ -16,7 +16,6 @@
 
 #include "frame_files.hpp"
 #include "ocean/io.hpp"
-#include "quoted.hpp"
 
 namespace ocean::bake::detail {
 namespace {

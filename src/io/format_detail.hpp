@@ -15,6 +15,7 @@
 #include <string>
 
 #include "ocean/core.hpp"
+#include "ocean/io.hpp"
 
 namespace ocean::io::detail {
 
@@ -22,7 +23,7 @@ namespace ocean::io::detail {
 inline std::string with_path(const char* verb, const std::filesystem::path& path,
                              const std::string& why) {
   std::string message = "cannot ";
-  message.append(verb).append(" '").append(path.string()).append("': ").append(why);
+  message.append(verb).append(" ").append(quoted(path)).append(": ").append(why);
   return message;
 }
 

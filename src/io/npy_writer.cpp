@@ -69,7 +69,7 @@ Status write_npy(const std::filesystem::path& path, const float* data,
     return write_bytes_atomically(path, {std::as_bytes(std::span<const char>(prelude)), payload});
   } catch (const std::exception& e) {
     return io_error(
-        std::string("cannot write '").append(path.string()).append("': ").append(e.what()));
+        std::string("cannot write ").append(quoted(path)).append(": ").append(e.what()));
   }
 }
 

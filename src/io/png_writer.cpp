@@ -122,7 +122,7 @@ Status write_png(const std::filesystem::path& path, int width, int height, int c
     });
   } catch (const std::exception& e) {
     return io_error(
-        std::string("cannot write '").append(path.string()).append("': ").append(e.what()));
+        std::string("cannot write ").append(quoted(path)).append(": ").append(e.what()));
   }
 }
 

@@ -86,6 +86,25 @@ TEST(AtomicFile, MissingDirectoryNamesThePathAndLeavesNothing) {
   EXPECT_TRUE(dir.entries().empty());
 }
 
+TEST(AtomicFile, AControlCharacterInThePathKeepsTheMessageOnOneLine) {
+  TempDir dir;
+  const fs::path target = dir.path() / "new\nline" / "x\r.npy";
+  for (const Status& s : {check_parent_writable(target),
+                          write_bytes_atomically(target, {bytes_of("data")})}) {
+    ASSERT_EQ(s.code(), ErrorCode::io_error);
+    EXPECT_EQ(s.message().find_first_of("\n\r"), std::string::npos) << s.message();
+    EXPECT_NE(s.message().find("new\\nline"), std::string::npos) << s.message();
+  }
+  EXPECT_TRUE(dir.entries().empty());
+}
+
+TEST(AtomicFile, AVeryLongPathIsShortenedInTheMessage) {
+  const fs::path target = fs::path("/nonexistent") / std::string(3000, 'a') / "x.npy";
+  const Status s = check_parent_writable(target);
+  ASSERT_EQ(s.code(), ErrorCode::io_error);
+  EXPECT_LT(s.message().size(), 400u) << s.message().size();
+}
+
 TEST(AtomicFile, DirectoryInTheWayIsIoErrorAndLeavesNoTemporary) {
   TempDir dir;
   fs::create_directory(dir.path() / "d");

@@ -216,7 +216,7 @@ Status Canvas::write_png(const std::filesystem::path& path) const {
     const Image image = pixels();
     return io::write_png8(path, image.width, image.height, 3, image.rgb.data());
   } catch (const std::exception& e) {  // std::bad_alloc
-    return io_error("cannot write '" + path.string() + "': " + e.what());
+    return io_error("cannot write " + ocean::io::quoted(path) + ": " + e.what());
   }
 }
 
