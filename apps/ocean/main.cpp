@@ -9,6 +9,7 @@
 #include <exception>
 #include <iostream>
 #include <new>
+#include <string>
 #include <vector>
 
 #include "cli_common.hpp"
@@ -40,6 +41,18 @@ int run(int argc, char** argv, Doing& doing) {
       ocean::cli::add_view_command(app),
 #endif
   };
+  // CLI11 would only say "A subcommand is required": name the word it did not know.
+  std::string names;
+  bool known = argc < 2 || argv[1][0] == '-';
+  for (const ocean::cli::Command& command : commands) {
+    names.append(names.empty() ? "" : ", ").append(command.app->get_name());
+    known = known || command.app->check_name(argv[1]);
+  }
+  if (!known) {
+    std::cerr << "ocean: error: unknown command '" << ocean::excerpt(argv[1])
+              << "' (commands: " << names << "; see ocean --help)\n";
+    return ocean::cli::kExitUsage;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

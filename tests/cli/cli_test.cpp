@@ -108,6 +108,8 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndNoStdout) {
       {"spreading --model donelan-banner", "--theta"},
       {"spreading --model nope --theta 0", "nope"},
       {"", "subcommand"},
+      {"paint", "unknown command 'paint' (commands: spectrum, dispersion"},
+      {"'pa\nint' --hs 2", "unknown command 'pa\\nint'"},
   };
   for (const Case& c : cases) ocean_test::expect_usage_error(c.args, c.mentions);
 }
