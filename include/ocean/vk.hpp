@@ -60,6 +60,9 @@ struct Context {
   std::uint32_t queue_family = 0;
   VkPhysicalDeviceProperties properties{};
   VkPhysicalDeviceMemoryProperties memory{};
+  /// The largest single allocation the device promises (maxMemoryAllocationSize, Vulkan 1.1):
+  /// a larger one is refused before vkAllocateMemory. 0 when the device does not say.
+  VkDeviceSize max_allocation_bytes = 0;
   DeviceInfo info;
   bool validation = false;      ///< the validation layer is active
   bool timestamps = false;      ///< the compute queue supports timestamp queries

@@ -85,6 +85,14 @@ void read_device(Context& ctx, bool family_timestamps) {
   ctx.info = describe(ctx.physical);
   vkGetPhysicalDeviceProperties(ctx.physical, &ctx.properties);
   vkGetPhysicalDeviceMemoryProperties(ctx.physical, &ctx.memory);
+  if (ctx.properties.apiVersion >= VK_API_VERSION_1_1) {
+    VkPhysicalDeviceMaintenance3Properties maintenance3{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    VkPhysicalDeviceProperties2 properties2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
+                                            .pNext = &maintenance3};
+    vkGetPhysicalDeviceProperties2(ctx.physical, &properties2);
+    ctx.max_allocation_bytes = maintenance3.maxMemoryAllocationSize;
+  }
   ctx.timestamps = family_timestamps && ctx.properties.limits.timestampComputeAndGraphics;
   ctx.timestamp_period_ns = static_cast<double>(ctx.properties.limits.timestampPeriod);
 }

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <string>
 
+#include "ocean/memory_budget.hpp"
 #include "ocean/vk.hpp"
 
 namespace ocean::vk {
@@ -24,6 +25,10 @@ int find_memory_type(const Context& ctx, std::uint32_t bits, VkMemoryPropertyFla
 
 Result<VkDeviceMemory> allocate(const Context& ctx, const VkMemoryRequirements& req,
                                 VkMemoryPropertyFlags required, VkMemoryPropertyFlags preferred) {
+  if (ctx.max_allocation_bytes != 0 && req.size > ctx.max_allocation_bytes)
+    return invalid_argument("one allocation of " + format_bytes(req.size) + " is more than " +
+                            ctx.info.name + " allows (maxMemoryAllocationSize " +
+                            format_bytes(ctx.max_allocation_bytes) + ")");
   const int type = find_memory_type(ctx, req.memoryTypeBits, required, preferred);
   if (type < 0)
     return unsupported("Vulkan device '" + ctx.info.name + "' has no suitable memory type");

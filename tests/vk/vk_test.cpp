@@ -43,6 +43,31 @@ TEST(Vk, BadDeviceIndexIsAClearError) {
   EXPECT_NE(ctx.status().message().find("ocean info"), std::string::npos);
 }
 
+// An allocation above the device's maxMemoryAllocationSize is refused with one line before
+// vkAllocateMemory (drivers may crash or fail late on one). The limit is lowered to 1 MiB here
+// so that the refusal can be seen without allocating gigabytes.
+TEST(Vk, AllocationAboveTheDeviceLimitIsRefusedBeforeAllocating) {
+  if (!have_device()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  auto created = ocean::vk::create_context({.validation = true});
+  ASSERT_TRUE(created.ok()) << created.status().message();
+  ocean::vk::Context& ctx = *created.value();
+  EXPECT_GE(ctx.max_allocation_bytes, VkDeviceSize{1} << 30);  // Vulkan's required minimum
+  ctx.max_allocation_bytes = VkDeviceSize{1} << 20;
+  auto fits = ocean::vk::create_buffer(ctx, VkDeviceSize{1} << 19,
+                                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                       ocean::vk::MemoryUse::upload);
+  ASSERT_TRUE(fits.ok()) << fits.status().message();
+  ocean::vk::destroy_buffer(ctx, fits.value());
+  auto too_big = ocean::vk::create_buffer(ctx, VkDeviceSize{2} << 20,
+                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                                          ocean::vk::MemoryUse::upload);
+  ASSERT_FALSE(too_big.ok());
+  EXPECT_EQ(too_big.status().code(), ocean::ErrorCode::invalid_argument);
+  EXPECT_NE(too_big.status().message().find("maxMemoryAllocationSize 1.0 MiB"), std::string::npos)
+      << too_big.status().message();
+  EXPECT_EQ(ctx.validation_messages.load(), 0u) << ctx.last_validation_message;
+}
+
 TEST(Vk, BufferCopyRoundTripsWithZeroValidationMessages) {
   if (!have_device()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   auto created = ocean::vk::create_context({.validation = true});
