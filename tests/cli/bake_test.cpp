@@ -20,6 +20,8 @@
 
 namespace {
 
+using ocean_test::line_count;
+
 namespace fs = std::filesystem;
 
 int run(const std::string& args, std::string* err = nullptr) {
@@ -129,7 +131,7 @@ TEST(Bake, ContactSheetShowsEachCascadesMapsUnderLabels) {
                 &err),
             1);
   EXPECT_NE(err.find("cannot write"), std::string::npos) << err;
-  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+  EXPECT_EQ(line_count(err), 1) << err;
   EXPECT_FALSE(fs::exists(missing.parent_path()));
   EXPECT_FALSE(fs::exists(dir.path / "maps2"));  // checked before the first frame
 }

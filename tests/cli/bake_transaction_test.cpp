@@ -28,6 +28,8 @@
 
 namespace {
 
+using ocean_test::line_count;
+
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
@@ -136,10 +138,6 @@ std::vector<std::string> long_bake(const fs::path& out) {
   return {"--resolution", "16", "--cascades", "50", "--frames", "1000000", "--out", out.string()};
 }
 
-std::size_t line_count(const std::string& text) {
-  return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
-}
-
 std::vector<std::string> entries(const fs::path& dir) {
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
@@ -189,7 +187,7 @@ TEST(BakeTransaction, SigintOrSigtermMidBakeLeavesNoTemporaryAndAnIncompleteMani
     const std::string err = bake.err();
     const std::string name = signal == SIGINT ? "SIGINT" : "SIGTERM";
     EXPECT_EQ(err.rfind("ocean: error: bake interrupted: " + name, 0), 0u) << err;
-    EXPECT_EQ(line_count(err), 1u) << err;
+    EXPECT_EQ(line_count(err), 1) << err;
     const Json m = expect_incomplete_and_consistent(out);
     EXPECT_GE(m["frames"].size(), 1u);
     EXPECT_EQ(m["frame_count"], 1000000);
@@ -236,7 +234,7 @@ TEST(BakeTransaction, ASecondBakeIntoABusyFolderFailsAtOnceNamingTheFirst) {
   EXPECT_EQ(second.exit_code, 1);
   EXPECT_NE(second.err.find("process " + std::to_string(first.pid())), std::string::npos)
       << second.err;
-  EXPECT_EQ(line_count(second.err), 1u) << second.err;
+  EXPECT_EQ(line_count(second.err), 1) << second.err;
   ASSERT_EQ(::kill(first.pid(), SIGINT), 0);
   const int status = first.wait();
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 130) << first.err();
@@ -318,7 +316,7 @@ TEST(BakeTransaction, BadOutputPathsFailBeforeTheFirstFrame) {
                             c.out.string() + " --contact-sheet " + c.sheet.string());
     EXPECT_EQ(r.exit_code, 1) << c.sheet;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << r.err;
-    EXPECT_EQ(line_count(r.err), 1u) << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
     EXPECT_FALSE(fs::exists(dir.path / "new")) << c.sheet << ": a folder left by a failed start";
     EXPECT_TRUE(fs::is_fifo(fifo));
     // An old bake in the folder is untouched by a start that failed.
@@ -332,7 +330,7 @@ TEST(BakeTransaction, AFailedStartLeavesNoFolder) {
   const ocean_test::CliRun r = ocean_test::run_cli("bake --backend no-such-backend --out " +
                                                    (dir.path / "a" / "b").string());
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_EQ(line_count(r.err), 1u) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
   EXPECT_FALSE(fs::exists(dir.path / "a"));
 }
 
@@ -351,7 +349,7 @@ TEST(BakeTransaction, AFileSizeLimitFailsWithOneLineAndNoTemporary) {
   const std::string err = bake.err();
   EXPECT_EQ(err.rfind("ocean: error: cannot write '" + sheet.string() + "'", 0), 0u) << err;
   EXPECT_NE(err.find("File too large"), std::string::npos) << err;
-  EXPECT_EQ(line_count(err), 1u) << err;
+  EXPECT_EQ(line_count(err), 1) << err;
   EXPECT_EQ(entries(dir.path), (std::vector<std::string>{"err", "out"}));
   const Json m = expect_incomplete_and_consistent(out);
   EXPECT_EQ(m["frames"].size(), 1u);
@@ -389,7 +387,7 @@ TEST(BakeTransaction, AFullDiskFailsWithOneLineAndAConsistentFolder) {
   EXPECT_EQ(said, "exit 1\n");
   const std::string err = read_text(dir.path / "err");
   EXPECT_NE(err.find("No space left on device"), std::string::npos) << err;
-  EXPECT_EQ(line_count(err), 1u) << err;
+  EXPECT_EQ(line_count(err), 1) << err;
   const Json m = expect_incomplete_and_consistent(copy);
   EXPECT_GE(m["frames"].size(), 1u);
   EXPECT_LT(m["frames"].size(), 100u);

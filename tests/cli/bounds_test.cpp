@@ -18,8 +18,7 @@ using ocean_test::CliRun;
 using ocean_test::run_cli;
 using ocean_test::run_cli_after;
 using ocean_test::ScratchDir;
-
-long count_lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
+using ocean_test::line_count;
 
 // Every command that prints on standard output, with small settings.
 TEST(CliBounds, AFullStandardOutputFailsEveryCommandThatPrints) {
@@ -98,7 +97,7 @@ TEST(CliBounds, APlotOntoAFifoIsRefusedAndTheFifoStays) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_EQ(r.err, "ocean: error: cannot write '" + fifo.string() +
                        "': it is a FIFO, not a regular file\n");
-  EXPECT_EQ(count_lines(r.err), 1);
+  EXPECT_EQ(line_count(r.err), 1);
   EXPECT_TRUE(fs::is_fifo(fifo));
   EXPECT_EQ(std::distance(fs::directory_iterator(dir.path), fs::directory_iterator()), 1);
 }

@@ -136,13 +136,18 @@ inline CliRun run_cli_argv(const std::vector<std::string>& args,
   return run_program(OCEAN_CLI_PATH, args, cwd, env);
 }
 
+/// The number of lines (newline characters) in `text`: an error message is exactly one.
+inline long line_count(const std::string& text) {
+  return static_cast<long>(std::count(text.begin(), text.end(), '\n'));
+}
+
 /// The bad-input contract: exit 2, nothing on stdout, one line on stderr that mentions `says`.
 inline void expect_usage_error(const std::string& args, const std::string& says) {
   const CliRun r = run_cli(args);
   EXPECT_EQ(r.exit_code, 2) << args;
   EXPECT_TRUE(r.out.empty()) << args << " printed: " << r.out;
   EXPECT_NE(r.err.find(says), std::string::npos) << args << " said: " << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << " said: " << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << args << " said: " << r.err;
 }
 
 /// Address-space limits (`ulimit -v`) cannot be used under AddressSanitizer, which reserves

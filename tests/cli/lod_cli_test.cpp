@@ -18,6 +18,8 @@
 
 namespace {
 
+using ocean_test::line_count;
+
 using ocean_test::expect_usage_error;
 using ocean_test::run_cli;
 
@@ -131,7 +133,7 @@ TEST(CliLod, LayoutPictureShowsTheLevelsAndTheCamera) {
   const auto failed = run_cli("lod --camera 0,10,0 --target 1,0,0 --png " + bad.string());
   EXPECT_EQ(failed.exit_code, 1);
   EXPECT_NE(failed.err.find("cannot write"), std::string::npos) << failed.err;
-  EXPECT_EQ(std::count(failed.err.begin(), failed.err.end(), '\n'), 1) << failed.err;
+  EXPECT_EQ(line_count(failed.err), 1) << failed.err;
   EXPECT_FALSE(std::filesystem::exists(bad.parent_path()));
 }
 

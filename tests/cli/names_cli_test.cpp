@@ -16,6 +16,8 @@
 
 namespace {
 
+using ocean_test::line_count;
+
 namespace fs = std::filesystem;
 
 // printf conversions, shell quoting and substitution, spaces, a newline and bytes that are not
@@ -60,7 +62,7 @@ void expect_short_refusal(const std::vector<std::string>& args) {
   EXPECT_NE(r.exit_code, 0) << shown;
   EXPECT_TRUE(r.out.empty()) << shown;
   EXPECT_LT(r.err.size(), 300u) << shown << ": " << r.err.substr(0, 300);
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << shown;
+  EXPECT_EQ(line_count(r.err), 1) << shown;
   EXPECT_EQ(r.err.rfind("ocean: error: ", 0), 0u) << shown << ": " << r.err.substr(0, 300);
   EXPECT_TRUE(ocean_test::listing(dir.path).empty()) << shown;
 }

@@ -14,6 +14,8 @@
 
 namespace {
 
+using ocean_test::line_count;
+
 namespace fs = std::filesystem;
 using ocean_test::CliRun;
 using ocean_test::run_cli;
@@ -23,7 +25,7 @@ using ocean_test::ScratchDir;
 void expect_one_line(const CliRun& r, int exit_code, const std::string& says) {
   EXPECT_EQ(r.exit_code, exit_code) << r.err;
   EXPECT_NE(r.err.find(says), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
 }
 

@@ -20,6 +20,8 @@
 
 namespace {
 
+using ocean_test::line_count;
+
 namespace fs = std::filesystem;
 
 bool have_vulkan() { return ocean::vk::list_devices().ok(); }
@@ -132,7 +134,7 @@ TEST(RenderCli, NoVulkanDeviceIsOneLine) {
   const int status = pclose(pipe);
   EXPECT_EQ(WEXITSTATUS(status), 1) << text;
   EXPECT_NE(text.find("Vulkan"), std::string::npos) << text;
-  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+  EXPECT_EQ(line_count(text), 1) << text;
   EXPECT_FALSE(fs::exists(out));
 }
 

@@ -20,6 +20,8 @@
 
 namespace {
 
+using ocean_test::line_count;
+
 namespace fs = std::filesystem;
 
 bool have_vulkan() { return ocean::vk::list_devices().ok(); }
@@ -73,7 +75,7 @@ TEST(RenderNames, ConversionsAndTwoFieldsAreRefusedWithOneLine) {
       EXPECT_EQ(r.exit_code, 2) << name;
       EXPECT_TRUE(r.out.empty()) << name << " printed: " << r.out;
       EXPECT_EQ(r.err.rfind("ocean: error: --out = '", 0), 0u) << name << " said: " << r.err;
-      EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << name << " said: " << r.err;
+      EXPECT_EQ(line_count(r.err), 1) << name << " said: " << r.err;
       EXPECT_TRUE(ocean_test::listing(dir.path).empty()) << name;
     }
   }
@@ -117,7 +119,7 @@ TEST(RenderNames, Mp4WithoutFfmpegIsOneLineAndWritesNothing) {
                                          {"PATH=" + (dir.path / "empty").string()});
   EXPECT_EQ(r.exit_code, 1) << r.err;
   EXPECT_NE(r.err.find("ffmpeg"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(line_count(r.err), 1) << r.err;
   EXPECT_EQ(ocean_test::listing(dir.path), (std::set<std::string>{"empty"}));
 }
 
@@ -143,7 +145,7 @@ TEST(RenderNames, FailingFfmpegIsOneLineAndLeavesNothing) {
     EXPECT_EQ(r.exit_code, 1) << body << ": " << r.err;
     EXPECT_TRUE(r.out.empty()) << body;
     EXPECT_EQ(r.err.rfind("ocean: error: cannot write 'v.mp4': ffmpeg", 0), 0u) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << body << ": " << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << body << ": " << r.err;
     EXPECT_EQ(ocean_test::listing(dir.path), (std::set<std::string>{"bin"})) << body;
   }
 }
