@@ -182,7 +182,6 @@ class FrequencySpectrum {
   double gamma_ = 1.0;
   double scale_ = 1.0;  // JONSWAP normalisation A_γ (or exact factor)
   double phillips_a_ = 0.0;
-  double phillips_dir_integral_ = 1.0;
   Dispersion dispersion_;  // for TMA's exact factor and Phillips' k(ω)
   FrequencySpectrum() = default;
   double jonswap_shape(double omega) const;
