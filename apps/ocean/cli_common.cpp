@@ -30,7 +30,7 @@ template <class E, std::size_t N>
 Result<E> parse_name(std::string_view flag, const std::array<EnumName<E>, N>& table,
                      const std::string& text) {
   if (std::optional<E> value = value_of(table, text)) return *value;
-  return invalid_argument(std::string(flag) + " = '" + text + "' is unknown: must be " +
+  return invalid_argument(std::string(flag) + " = '" + excerpt(text) + "' is unknown: must be " +
                           name_list(table, ", ", " or "));
 }
 
@@ -41,7 +41,8 @@ std::string with_flag_names(std::string message) {
     std::size_t pos = 0;
     while ((pos = message.find(field, pos)) != std::string::npos) {
       const std::size_t end = pos + field.size();
-      const bool starts = pos == 0 || !is_word_char(message[pos - 1]);
+      // Not already a flag: "--gamma" stays as it is.
+      const bool starts = pos == 0 || !(is_word_char(message[pos - 1]) || message[pos - 1] == '-');
       const bool ends = end == message.size() || !is_word_char(message[end]);
       if (starts && ends) {
         message.replace(pos, field.size(), flag);
@@ -135,6 +136,9 @@ Result<FrequencySpectrumParams> to_params(const SpectrumFlags& f) {
   return p;
 }
 
-void print_json(const nlohmann::ordered_json& value) { std::cout << value.dump(2) << "\n"; }
+void print_json(const nlohmann::ordered_json& value) {
+  // A file name need not be UTF-8: such bytes print as U+FFFD rather than throw.
+  std::cout << value.dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) << "\n";
+}
 
 }  // namespace ocean::cli

@@ -12,10 +12,10 @@ std::string integer_text(double v) { return std::to_string(static_cast<long long
 std::string shown(const NumberOption<double>& o, double value, const std::string& text) {
   switch (o.echo) {
     case Echo::value: return format_number(value);
-    case Echo::text: return text;
-    case Echo::quoted_text: return "'" + text + "'";
+    case Echo::text: return excerpt(text);
+    case Echo::quoted_text: return "'" + excerpt(text) + "'";
   }
-  return text;
+  return excerpt(text);
 }
 
 std::string requirement(const NumberOption<double>& o) {
@@ -37,7 +37,7 @@ Result<double> parse_number(std::string_view flag, const std::string& text) {
   const char* last = text.data() + text.size();
   const auto [ptr, ec] = std::from_chars(first, last, value);
   if (text.empty() || ec != std::errc() || ptr != last) {
-    return invalid_argument(std::string(flag) + " = '" + text + "' is not a number");
+    return invalid_argument(std::string(flag) + " = '" + excerpt(text) + "' is not a number");
   }
   if (std::isnan(value)) return require_finite(flag, value);  // NaN is never a valid value
   return value;
@@ -63,7 +63,8 @@ Result<std::array<double, 3>> parse_triple(std::string_view flag, const std::str
   Result<std::vector<double>> v = parse_number_list(flag, text);
   if (!v.ok()) return v.status();
   if (v.value().size() != 3) {
-    return invalid_argument(std::string(flag) + " = " + text + " must be three numbers X,Y,Z");
+    return invalid_argument(std::string(flag) + " = " + excerpt(text) +
+                            " must be three numbers X,Y,Z");
   }
   for (double c : v.value()) {
     if (Status s = require_finite(flag, c); !s.ok()) return s;
@@ -88,7 +89,8 @@ Status check(const NumberOption<double>& o, double value, const std::string& tex
                             " is out of range: must be " + requirement(o));
   }
   if (o.accept == Accept::whole_in_range && !integer)
-    return invalid_argument(std::string(o.flag) + " = " + text + " must be a whole number");
+    return invalid_argument(std::string(o.flag) + " = " + excerpt(text) +
+                            " must be a whole number");
   return {};
 }
 

@@ -29,7 +29,8 @@ enum class Accept {
 };
 
 /// How a rejected value is shown in the message: the parsed value (shortest round-trip form),
-/// the text as typed, or the text as typed in single quotes.
+/// the text as typed, or the text as typed in single quotes. Typed text is always shown as
+/// ocean::excerpt writes it (at most 80 bytes, escaped), here and in every message below.
 enum class Echo { value, text, quoted_text };
 
 /// A number flag. `T` is the type the value is converted to once accepted (double, or an integer

@@ -4,8 +4,19 @@
 #include <string>
 
 #include "ocean/io.hpp"
+#include "ocean/memory_budget.hpp"
+#include "ocean/render.hpp"
 
 namespace ocean::cli {
+
+Status check_picture_memory(int width, int height, std::uint64_t bytes_per_pixel,
+                            std::string_view what) {
+  const std::uint64_t pixels =
+      static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  std::string asked = "--width " + std::to_string(width) + " --height " + std::to_string(height);
+  asked.append(": rendering ").append(what);
+  return require_memory(asked, pixels * (render::kReadbackBytesPerPixel + bytes_per_pixel));
+}
 
 Status write_srgb_png(const std::filesystem::path& path, int width, int height,
                       const std::vector<std::uint8_t>& rgba) {
@@ -19,8 +30,9 @@ Status write_srgb_png(const std::filesystem::path& path, int width, int height,
 Status validation_status(const vk::Context& context) {
   const std::uint32_t messages = context.validation_messages.load();
   if (!context.validation || messages == 0) return {};
-  return {ErrorCode::internal, "Vulkan validation reported " + std::to_string(messages) +
-                                   " messages; last: " + context.last_validation_message};
+  return {ErrorCode::internal,
+          "Vulkan validation reported " + std::to_string(messages) +
+              " messages; last: " + excerpt(context.last_validation_message, 300)};
 }
 
 }  // namespace ocean::cli

@@ -40,7 +40,8 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
 Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& scene,
                         render::View& v) {
   if (f.backend != "cpu" && f.backend != "vulkan")
-    return invalid_argument("--backend = " + f.backend + " cannot render: must be cpu or vulkan");
+    return invalid_argument("--backend = " + excerpt(f.backend) +
+                            " cannot render: must be cpu or vulkan");
   scene.backend = f.backend;
   scene.validation = f.validation;
   const auto side = [min_size](std::string_view flag) {
@@ -68,13 +69,13 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
               .near_m = 0.2,
               .far_m = 2.0e5};
   if (eye.value()[1] <= 0.0)
-    return invalid_argument("--camera = " + f.camera +
+    return invalid_argument("--camera = " + excerpt(f.camera) +
                             ": the camera must be above the sea (Y > 0)");
   if (Status s = lod::validate(v.camera); !s.ok())
     return invalid_argument("--camera/--target: " + s.message());
   Result<lod::QualityPreset> preset = lod::parse_preset(f.quality);
   if (!preset.ok())
-    return invalid_argument("--quality = " + f.quality + " is not a quality: must be " +
+    return invalid_argument("--quality = " + excerpt(f.quality) + " is not a quality: must be " +
                             name_list(lod::kQualityPresetNames, ", ", " or "));
   v.quality = lod::quality_preset(preset.value());
   Result<double> size = parse(kOceanSize, f.ocean_size);
@@ -82,7 +83,7 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
   v.ocean_size_m = size.value();
   Result<render::DebugView> debug = render::parse_debug_view(f.view);
   if (!debug.ok())
-    return invalid_argument("--view = " + f.view + " is not a view: must be " +
+    return invalid_argument("--view = " + excerpt(f.view) + " is not a view: must be " +
                             name_list(render::kDebugViewNames, ", ", " or "));
   v.debug = debug.value();
   return {};

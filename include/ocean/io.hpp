@@ -34,7 +34,11 @@ using WriteCallback = std::function<ocean::Status(const std::filesystem::path& t
 ///    renames it over `path` and fsyncs the directory (best effort: a failing directory fsync
 ///    does not fail the call, the data are already complete).
 ///  - The directory of `path` must exist; it is not created (see ensure_directory).
-///  - If `path` is a symbolic link, the link itself is replaced, not its target.
+///  - Only a regular file is replaced: `path` must be absent, a regular file, or a symbolic
+///    link that dangles or leads to a regular file (the link itself is then replaced, not its
+///    target). A directory, device, FIFO or socket at `path` (or at the end of its link) is
+///    io_error "cannot write '<path>': it is a character device, not a regular file" (or "it
+///    links to ..."), found before the callback runs and checked again just before the rename.
 ///  - On any failure the temporary is removed, `path` is untouched and the result is io_error
 ///    "cannot write '<path>': <reason>", the reason coming from errno (strerror text, e.g.
 ///    "No such file or directory") or from the message of the Status returned by `write`.
@@ -59,8 +63,10 @@ ocean::Status write_bytes_atomically(const std::filesystem::path& path,
 ocean::Status ensure_directory(const std::filesystem::path& dir);
 
 /// Checks, before long work, that a file could be created at `path`: its directory (the
-/// current one when `path` has none) exists and is writable. io_error "cannot write '<path>':
-/// No such file or directory" or "...: Permission denied" otherwise. Never throws.
+/// current one when `path` has none) exists and is writable, and nothing but a regular file is
+/// in the way (as write_atomically). io_error "cannot write '<path>': No such file or
+/// directory", "...: Permission denied" or "...: it is a FIFO, not a regular file" otherwise.
+/// Never throws.
 ocean::Status check_parent_writable(const std::filesystem::path& path);
 
 /// The strerror text for an errno value, e.g. "No such file or directory". Never throws (returns

@@ -7,10 +7,16 @@
 // defaults); unknown keys and wrong types are errors that name the key's path in the document
 // ("sea.wind_sea.fetch_m: expected a number, got a string"). presets/*.json are examples.
 //
+// Bounds: a preset holds at most kMaxPresetBytes bytes and nests objects and arrays at most
+// kMaxPresetDepth deep; both are checked before a document is built, so neither a huge file
+// (`--preset /dev/zero`) nor a deeply nested one exhausts memory or the stack.
+//
 // Errors are Status/Result values (invalid_argument for content, io_error for files); nothing
 // throws. Every function allocates; all are thread-safe (a Document is used from one thread).
+// A user's text echoed in a message is shortened and escaped by ocean::excerpt.
 #pragma once
 
+#include <cstddef>
 #include <memory>
 #include <string>
 #include <string_view>
@@ -20,12 +26,24 @@
 
 namespace ocean::preset {
 
+/// The largest preset text or file, in bytes (1 MiB; the built-in presets are about 1 KiB).
+inline constexpr std::size_t kMaxPresetBytes = std::size_t{1} << 20;
+/// The deepest nesting of objects and arrays in a preset ({} is 1, {"a": []} is 2). The format
+/// itself needs 5; the bound keeps the recursive walks over a document (merge, copy) shallow.
+inline constexpr int kMaxPresetDepth = 64;
+/// The longest key path of Document::set, in bytes ("sea.wind_sea.spreading.s" is 24).
+inline constexpr std::size_t kMaxKeyBytes = 256;
+/// The longest value of Document::set, in bytes.
+inline constexpr std::size_t kMaxValueBytes = std::size_t{64} << 10;
+
 /// The preset document of `config`: every key, in a fixed order. `indent` < 0 writes one line,
 /// otherwise that many spaces per level. Numbers round-trip exactly through from_json.
 std::string to_json(const SimulationConfig& config, int indent = -1);
 
 /// Reads a preset document and validates the configuration (validate() and SeaState::make).
-/// Text that is not JSON is invalid_argument "the document is not valid JSON".
+/// Errors (invalid_argument): "the document is not valid JSON", "the document is larger than
+/// 1048576 bytes (1 MiB), the most a preset may hold", "the document nests deeper than 64
+/// levels".
 Result<SimulationConfig> from_json(std::string_view text);
 
 /// The built-in presets (presets/*.json compiled in), in order: "calm", "moderate", "storm".
@@ -46,20 +64,29 @@ class Document {
   Document& operator=(Document&&) noexcept;
 
   /// Merges a built-in preset or a preset file. A bare name (no directory, no extension) that
-  /// is not an existing file selects a built-in preset. Errors, `label` being how the caller
-  /// names this input (a flag, a field):
+  /// is not an existing file selects a built-in preset. Any file may be named (a pipe, a
+  /// device): reading stops after kMaxPresetBytes. Errors, `label` being how the caller names
+  /// this input (a flag, a field):
   ///   invalid_argument "<label> = <name> is neither a file nor a preset: must be calm,
   ///                     moderate, storm or a JSON file"
   ///   io_error         "cannot read preset '<path>': <reason>"
+  ///   invalid_argument "preset '<path>' is larger than 1048576 bytes (1 MiB), the most a
+  ///                     preset may hold"
+  ///   invalid_argument "preset '<path>' nests deeper than 64 levels"
   ///   invalid_argument "preset '<path>' is not valid JSON"
   /// On error the document is unchanged.
   Status merge_preset(std::string_view name_or_path, std::string_view label = "preset");
 
   /// Sets one key: `assignment` is "dotted.key=value", the value JSON or else a bare string
-  /// ("normals=analytic"); missing objects on the path are created. Errors (invalid_argument):
+  /// ("normals=analytic"); missing objects on the path are created. The key holds at most
+  /// kMaxKeyBytes bytes, the value kMaxValueBytes, and the parts of the key plus the nesting
+  /// of the value at most kMaxPresetDepth levels. Errors (invalid_argument):
   ///   "<label> '<assignment>': expected key=value", "<label> '<assignment>': empty key part",
-  ///   "<label> <key>: '<part>' is not inside an object". On error the document may hold the
-  ///   objects created on the path so far.
+  ///   "<label> <key>: '<part>' is not inside an object",
+  ///   "<label> '<assignment>': the key is <n> bytes: must be at most 256",
+  ///   "<label> '<assignment>': the value is <n> bytes: must be at most 65536",
+  ///   "<label> '<assignment>': nests deeper than 64 levels".
+  /// On error the document may hold the objects created on the path so far.
   Status set(std::string_view assignment, std::string_view label = "set");
 
   /// The configuration the document describes (as from_json).

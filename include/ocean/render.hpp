@@ -93,9 +93,15 @@ struct RenderStats {
   double gpu_ms = 0.0;         ///< GPU time of the whole draw (0 without timestamps)
 };
 
+/// Memory the renderer's targets take per pixel of the image: the device-local HDR (RGBA16F,
+/// 8 bytes), depth (D32, 4) and sRGB (RGBA8, 4) images, and a host-visible read-back buffer as
+/// large as the HDR image.
+inline constexpr std::uint64_t kTargetBytesPerPixel = 16;
+inline constexpr std::uint64_t kReadbackBytesPerPixel = 8;
+
 struct RendererParams {
-  int width = 1280;  ///< [1, 16384]
-  int height = 720;  ///< [1, 16384]
+  int width = 1280;  ///< [1, 16384] and what the device and memory hold (Renderer::resize)
+  int height = 720;  ///< [1, 16384] and what the device and memory hold (Renderer::resize)
 };
 
 class Renderer {
@@ -108,7 +114,13 @@ class Renderer {
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
 
-  /// New target size (allocates).
+  /// New target size (allocates). Refused (invalid_argument, naming the size and the limit)
+  /// before anything is allocated or the old targets are released, when a side is outside
+  /// [1, 16384] or above the device's maxImageDimension2D, when the device-local targets
+  /// (kTargetBytesPerPixel, and the read-back buffer where that heap is host-visible too)
+  /// exceed the device's largest device-local heap, or when the host memory they take exceeds
+  /// memory_budget() (ocean/memory_budget.hpp): the read-back buffer, and on a CPU device
+  /// (lavapipe) the targets too.
   Status resize(int width, int height);
   /// Sizes the cascade images for `config` (the CPU upload path) and reads the cascade sizes,
   /// bands and Hs the shaders need. Call again after the simulation is reconfigured.

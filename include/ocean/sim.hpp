@@ -103,8 +103,11 @@ struct SimulationConfig {
   /// Patch side of each cascade, m, largest first. Non-integer ratios keep the patterns of the
   /// cascades from lining up (visible tiling). Each cascade synthesises one band of |k| (M.7.1).
   std::vector<double> cascade_patch_sizes_m = {1000.0, 233.0, 57.0};
-  double choppiness = 1.0;       ///< λ ≥ 0 (Aebi, VR Ocean, eq. 25); 0 = heights only
-  double loop_period_s = 200.0;  ///< T: the surface repeats after T seconds; 0 = never
+  double choppiness = 1.0;  ///< λ ≥ 0 (Aebi, VR Ocean, eq. 25); 0 = heights only
+  /// T: the surface repeats after T seconds; 0 = never. Every ω is quantised down to a multiple
+  /// of 2π/T (M.2.4), so T must be at least shortest_loop_period_s(): shorter, the longest waves
+  /// quantise to ω' = 0 and stand still. At most 1e6 s.
+  double loop_period_s = 200.0;
   std::uint64_t seed = 1;
   AmplitudeConvention convention = AmplitudeConvention::variance_preserving;
   NormalMethod normals = NormalMethod::central_difference;
@@ -115,8 +118,15 @@ struct SimulationConfig {
   FrameOutputs outputs;  ///< which optional arrays each frame carries
 };
 
-/// Validates a configuration; the message names the field, the value and the valid range.
+/// Validates a configuration (and, when it loops, its sea state); the message names the field,
+/// the value and the valid range.
 Status validate(const SimulationConfig& config);
+
+/// The shortest loop period T, s, at which every resolved wave still moves: T at which the lowest
+/// wavenumber of every cascade's band keeps ⌊ω(k)·T/2π⌋ ≥ 1 (M.2.4) — in practice cascade 0's
+/// longest wave, 2π/L0. Exact: quantize_omega gives that wave ω' > 0 at this T, 0 just below.
+/// Errors are those of SeaState::make.
+Result<double> shortest_loop_period_s(const SimulationConfig& config);
 
 /// The wavenumber band [k_min, k_max) of each cascade: cascade c starts where cascade c−1 stops,
 /// at half of cascade c−1's Nyquist wavenumber π·N/L (M.7.1). Rad/m.

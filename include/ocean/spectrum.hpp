@@ -35,39 +35,63 @@ inline constexpr double kUnset = std::numeric_limits<double>::quiet_NaN();
 // ---------------------------------------------------------------------------------------------
 
 struct DispersionParams {
-  double gravity_mps2 = kDefaultGravity;  ///< g > 0
-  double depth_m = kInfiniteDepth;        ///< water depth h > 0; infinity = deep water
-  /// Surface tension / density, m³/s² (σ/ρ). 0 = pure gravity waves. Sea water ≈ 7.2e-5
-  /// (σ = 0.0728 N/m, ρ = 1025 kg/m³); see kSeaWaterCapillarity.
+  double gravity_mps2 = kDefaultGravity;  ///< g ∈ [0.1, 100]
+  /// Water depth h ∈ [1e-100, ∞] m; infinity = deep water.
+  double depth_m = kInfiniteDepth;
+  /// Surface tension / density T ∈ [0, 1] m³/s² (σ/ρ; every liquid is below 1e-3); 0 = pure
+  /// gravity waves; sea water 7.1e-5 (σ = 0.0728 N/m, ρ = 1025 kg/m³), kSeaWaterCapillarity.
   double capillarity_m3ps2 = 0.0;
 };
 inline constexpr double kSeaWaterCapillarity = 0.0728 / 1025.0;
 
 /// A validated dispersion relation ω²(k) = (g·k + T·k³)·tanh(k·h)   (M.2.1)
+///
+/// Domain (M.2.5): k = 0 or k ∈ [kMinWavenumber, kMaxWavenumber]; ω = 0 or ω ∈ [min_omega(),
+/// max_omega()]. On it every result is finite (positive for k, ω > 0), every intermediate a
+/// normal double, and k(ω) the converged inverse; wavelengths from 6e-200 m to 6e200 m reach far
+/// beyond any water wave. Outside is a precondition violation (asserted): check_wavenumber and
+/// check_omega refuse a user's value there with the usual out-of-range message.
 class Dispersion {
  public:
+  static constexpr double kMinWavenumber = 1e-200;  ///< rad/m
+  static constexpr double kMaxWavenumber = 1e200;   ///< rad/m
+
   /// Deep water, g = kDefaultGravity, no capillarity.
   Dispersion() = default;
   static Result<Dispersion> make(const DispersionParams& params);
 
-  /// ω(k) for k ≥ 0, rad/s.
+  /// ω(k), rad/s; 0 at k = 0.
   [[nodiscard]] double omega(double k) const;
-  /// Group velocity dω/dk for k > 0, m/s (M.2.3). Deep-water limit at k→0 is not used.
+  /// Phase velocity c = ω/k, m/s, for k in the domain; at k = 0 its limit √(g·h) in finite
+  /// depth (deep water has no finite limit: k = 0 is outside the domain there).
+  [[nodiscard]] double phase_velocity(double k) const;
+  /// Group velocity dω/dk, m/s (M.2.3), defined where phase_velocity is.
   [[nodiscard]] double group_velocity(double k) const;
-  /// Inverse k(ω) for ω ≥ 0: safeguarded Newton on the monotone ω²(k), relative accuracy ~1e-14.
+  /// Inverse k(ω), rad/m: safeguarded Newton on ln ω(ln k) inside a bracket that provably holds
+  /// the root (M.2.2); relative accuracy 1e-15. 0 at ω = 0.
   [[nodiscard]] double wavenumber(double omega) const;
   [[nodiscard]] const DispersionParams& params() const { return params_; }
+
+  /// ω(kMinWavenumber) and ω(kMaxWavenumber), rad/s: the frequency domain.
+  [[nodiscard]] double min_omega() const { return omega(kMinWavenumber); }
+  [[nodiscard]] double max_omega() const { return omega(kMaxWavenumber); }
+  /// ok when k ∈ [kMinWavenumber, kMaxWavenumber], else "<name> = <k> is out of range: ...".
+  [[nodiscard]] static Status check_wavenumber(std::string_view name, double k);
+  /// ok when ω ∈ [min_omega(), max_omega()], else "<name> = <ω> is out of range: ...".
+  [[nodiscard]] Status check_omega(std::string_view name, double omega) const;
 
  private:
   DispersionParams params_;
 };
 
-/// Loop-period quantisation ω' = ⌊ω/ω0⌋·ω0, ω0 = 2π/T  (Aebi, VR Ocean, eq. 16, M.2.4). T > 0.
+/// Loop-period quantisation ω' = ⌊ω/ω0⌋·ω0, ω0 = 2π/T  (Aebi, VR Ocean, eq. 16, M.2.4). T > 0;
+/// ω' = 0 (a wave that does not move) for ω < 2π/T.
 double quantize_omega(double omega, double loop_period_s);
 
 /// The evolution phase ω'·t of every wave vector at one time, exact for arbitrarily large t
 /// (M.7.3): with a loop period T, ω' = j·2π/T and the phase is 2π·frac(j·frac(t/T)) in double
-/// precision; without one, ω·t mod 2π.
+/// precision; without one, ω·t mod 2π, as exact as the double ω·t (t finite, |ω·t| < 1e300).
+/// Exact while the harmonic j = ω'·T/2π stays below 2^53.
 class EvolutionPhase {
  public:
   EvolutionPhase(double time_s, double loop_period_s);
@@ -153,8 +177,8 @@ struct FrequencySpectrumParams {
   DepthFactor depth_factor = DepthFactor::exact;
   double gravity_mps2 = kDefaultGravity;
   // Phillips only (Tessendorf 2001; Aebi, VR Ocean, §3.2).
-  /// Dimensionless amplitude A of F(k) = A·e^(−1/(kL)²)/k⁴·D. Unset = calibrated so that Hs
-  /// equals Pierson–Moskowitz's for the same wind without the cutoff (M.3.13).
+  /// Dimensionless amplitude A ∈ (0, 1e6] of F(k) = A·e^(−1/(kL)²)/k⁴·D. Unset = calibrated so that
+  /// Hs equals Pierson–Moskowitz's for the same wind without the cutoff (M.3.13).
   double phillips_amplitude = kUnset;
   double small_wave_cutoff_m = 0.0;  ///< l of the factor e^(−k²l²) (Aebi, VR Ocean, eq. 10), m ≥ 0
 };
@@ -164,13 +188,15 @@ class FrequencySpectrum {
  public:
   static Result<FrequencySpectrum> make(const FrequencySpectrumParams& params);
 
-  /// S(ω), m²·s/rad, for ω ≥ 0 (0 at ω = 0).
+  /// S(ω), m²·s/rad, for every ω ≥ 0 (0 at ω = 0): always finite, and exactly 0 where the
+  /// value is below the smallest double (far below and far above the peak).
   [[nodiscard]] double operator()(double omega) const;
   [[nodiscard]] const FrequencySpectrumParams& params() const { return params_; }
   [[nodiscard]] double peak_omega() const { return omega_p_; }  ///< ωp, rad/s
   [[nodiscard]] double gamma() const { return gamma_; }         ///< γ in use (1 for PM/Phillips)
   [[nodiscard]] double alpha() const { return alpha_; }  ///< Phillips constant α (PM/JONSWAP wind)
-  /// Spectral moment m_n = ∫ωⁿ S(ω) dω by adaptive quadrature on a log grid (rel. err < 1e-8).
+  /// Spectral moment m_n = ∫ωⁿ S(ω) dω, −1 ≤ n ≤ 2, by Simpson's rule on a log grid (M.1.1;
+  /// rel. err < 1e-7). An ω⁻⁵ tail makes m_n diverge for n ≥ 4 and converge slowly at n = 3.
   [[nodiscard]] double moment(int n) const;
   /// Significant wave height of the spectrum, 4·√m0.
   [[nodiscard]] double hs_m() const { return 4.0 * std::sqrt(moment(0)); }
@@ -182,12 +208,14 @@ class FrequencySpectrum {
   double gamma_ = 1.0;
   double scale_ = 1.0;  // JONSWAP normalisation A_γ (or exact factor)
   double phillips_a_ = 0.0;
-  Dispersion dispersion_;  // for TMA's exact factor and Phillips' k(ω)
   FrequencySpectrum() = default;
   double jonswap_shape(double omega) const;
 };
 
-// Closed forms, exposed for tests and tools (all one-sided, m²·s/rad).
+// Closed forms, exposed for tests and tools (all one-sided, m²·s/rad). Their parameters are those
+// FrequencySpectrum::make accepts (g ∈ [0.1, 100] m/s², U ∈ [1e-3, 100] m/s, Hs ∈ [1e-6, 50] m,
+// Tp ∈ [1e-3, 100] s, F ∈ [1, 1e8] m, h ∈ [1e-100, ∞] m); every ω ≥ 0 is valid and gives a
+// finite value, exactly 0 where the value is below the smallest double.
 /// Pierson–Moskowitz, wind form: α·g²/ω⁵·exp(−β(g/(U·ω))⁴), α = 0.0081, β = 0.74  (M.3.1)
 double pierson_moskowitz_wind(double omega, double wind_speed_mps, double gravity_mps2);
 /// Bretschneider / PM Hs–Tp form: 5/16·Hs²·ωp⁴/ω⁵·exp(−5/4·(ωp/ω)⁴), ωp = 2π/Tp  (M.3.3)
@@ -258,9 +286,11 @@ class Spreading {
   double norm_ = 1.0;        // power-cosine / cos2s constant normaliser
 };
 
-/// cos-2s normaliser G(s) = Γ(s+1)/(2√π·Γ(s+½)) so that ∫G·cos^(2s)(θ/2) dθ = 1  (M.4.3)
+/// cos-2s normaliser G(s) = Γ(s+1)/(2√π·Γ(s+½)) so that ∫G·cos^(2s)(θ/2) dθ = 1, for every
+/// finite s ≥ 0 (relative error < 1e-13)  (M.4.3)
 double cos2s_normalization(double s);
-/// ∫ over (−π, π] of |cos θ|^s with weight σ on |θ| > π/2: (1+σ)·√π·Γ((s+1)/2)/Γ(s/2+1) (M.4.2)
+/// ∫ over (−π, π] of |cos θ|^s with weight σ on |θ| > π/2: (1+σ)·√π·Γ((s+1)/2)/Γ(s/2+1), for
+/// every finite s ≥ 0  (M.4.2)
 double power_cosine_integral(double s, double sigma_back);
 /// Donelan–Banner β_s(ω/ωp) (Donelan, Hamilton & Hui 1985; Banner 1990)  (M.4.6)
 double donelan_banner_beta(double omega_ratio);
@@ -386,7 +416,7 @@ struct VrOceanPhillipsParams {
 };
 double vr_ocean_phillips_power(double kx, double kz, const VrOceanPhillipsParams& p,
                                const SpectrumGrid& grid);
-/// l_cutoff(β) = 0.001·(0.25·L/0.001)^β, m  (Aebi, VR Ocean, eq. 11)
+/// l_cutoff(β) = 0.001·(0.25·L/0.001)^β, m, for β ∈ [0, 1]  (Aebi, VR Ocean, eq. 11)
 double vr_ocean_cutoff_length(double beta, double patch_size_m);
 
 }  // namespace ocean

@@ -50,6 +50,35 @@ int create_temporary(const std::filesystem::path& dir, const std::string& leaf,
   return EEXIST;
 }
 
+// The kind of file `mode` describes, for a message: "a directory", "a FIFO"...
+const char* kind_of(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// The target may be replaced: nothing is there, or a regular file, or a symbolic link that
+// dangles or leads to a regular file. A device, FIFO, socket or directory is refused: renaming
+// over it would put a file where a device node was (`--plot /dev/full` run as root).
+Status check_target(const std::filesystem::path& path) {
+  struct stat st {};
+  if (::lstat(path.c_str(), &st) != 0) {
+    // Absent is a new file; any other failure (a missing directory) is reported by the
+    // creation of the temporary, with its own errno.
+    return Status::ok_status();
+  }
+  if (S_ISREG(st.st_mode)) return Status::ok_status();
+  if (S_ISLNK(st.st_mode)) {
+    if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return Status::ok_status();
+    return write_error(path,
+                       std::string("it links to ") + kind_of(st.st_mode) + ", not a regular file");
+  }
+  return write_error(path, std::string("it is ") + kind_of(st.st_mode) + ", not a regular file");
+}
+
 // fsync of the finished temporary; returns 0 or errno.
 int sync_file(const std::filesystem::path& file) {
   int fd = -1;
@@ -104,6 +133,7 @@ Status write_atomically(const std::filesystem::path& path, const WriteCallback& 
     }
     if (!write) return invalid_argument("write_atomically: empty write callback");
     const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : ".";
+    if (Status target = check_target(path); !target.ok()) return target;
 
     if (const int err = create_temporary(dir, leaf, temporary); err != 0) {
       return write_error(path, errno_message(err));
@@ -120,6 +150,11 @@ Status write_atomically(const std::filesystem::path& path, const WriteCallback& 
     }
     if (const int err = sync_file(temporary); err != 0) {
       return fail("cannot sync the temporary file: " + errno_message(err));
+    }
+    // Again, now that the write may have taken a while: a device may have appeared meanwhile.
+    if (Status target = check_target(path); !target.ok()) {
+      (void)::unlink(temporary.c_str());
+      return target;
     }
     if (::rename(temporary.c_str(), path.c_str()) != 0) return fail(errno_message(errno));
     created = false;
@@ -207,7 +242,8 @@ Status check_parent_writable(const std::filesystem::path& path) {
   const std::filesystem::path dir =
       path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
   std::error_code ec;
-  if (std::filesystem::is_directory(dir, ec) && ::access(dir.c_str(), W_OK) == 0) return {};
+  if (std::filesystem::is_directory(dir, ec) && ::access(dir.c_str(), W_OK) == 0)
+    return check_target(path);
   return io_error(
       "cannot write '" + path.string() + "': " +
       (std::filesystem::exists(dir, ec) ? "Permission denied" : "No such file or directory"));

@@ -1,9 +1,11 @@
 // Presets assembled in layers and the built-in presets by name (see ocean/preset.hpp).
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 
 #include "json_format.hpp"
@@ -27,6 +29,41 @@ std::string builtin_list() {
   return list;
 }
 
+// "the most a preset may hold", in the words of every size message.
+std::string size_limit() {
+  return std::to_string(kMaxPresetBytes) + " bytes (1 MiB), the most a preset may hold";
+}
+
+// The text of the file at `path`, read up to one byte past the bound: whatever the file is (a
+// pipe, /dev/zero), no more than kMaxPresetBytes + 1 bytes are ever held.
+Result<std::string> read_bounded(const std::filesystem::path& path) {
+  const std::string name = excerpt(path.string());
+  int fd = -1;
+  do {
+    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  } while (fd < 0 && errno == EINTR);
+  if (fd < 0) {
+    const int err = errno;
+    return io_error("cannot read preset '" + name + "': " + std::strerror(err));
+  }
+  std::string text(kMaxPresetBytes + 1, '\0');
+  std::size_t size = 0;
+  int err = 0;
+  while (size < text.size()) {
+    const ssize_t n = ::read(fd, text.data() + size, text.size() - size);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) err = errno;
+    if (n <= 0) break;
+    size += static_cast<std::size_t>(n);
+  }
+  ::close(fd);
+  if (err != 0) return io_error("cannot read preset '" + name + "': " + std::strerror(err));
+  if (size > kMaxPresetBytes)
+    return invalid_argument("preset '" + name + "' is larger than " + size_limit());
+  text.resize(size);
+  return text;
+}
+
 Result<Json> read_preset(std::string_view name_or_path, std::string_view label) {
   const std::filesystem::path path(name_or_path);
   // A bare name that is not a file selects a compiled-in preset.
@@ -34,21 +71,20 @@ Result<Json> read_preset(std::string_view name_or_path, std::string_view label) 
   if (!path.has_parent_path() && !path.has_extension() && !std::filesystem::exists(path, ec)) {
     const std::string_view json = builtin_json(name_or_path);
     if (!json.empty()) return Json::parse(json);
-    return invalid_argument(std::string(label) + " = " + path.string() +
+    return invalid_argument(std::string(label) + " = " + excerpt(name_or_path) +
                             " is neither a file nor a preset: must be " + builtin_list() +
                             " or a JSON file");
   }
-  std::ifstream in(path);
-  if (!in) {
-    return io_error("cannot read preset '" + path.string() + "': " + std::strerror(errno));
-  }
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  Json doc = Json::parse(buffer.str(), nullptr, false);
-  if (doc.is_discarded()) {
-    return invalid_argument("preset '" + path.string() + "' is not valid JSON");
-  }
-  return doc;
+  Result<std::string> text = read_bounded(path);
+  if (!text.ok()) return text.status();
+  detail::Parsed parsed = detail::parse_bounded(text.value(), kMaxPresetDepth);
+  const std::string name = excerpt(path.string());
+  if (parsed.outcome == detail::Parse::too_deep)
+    return invalid_argument("preset '" + name + "' nests deeper than " +
+                            std::to_string(kMaxPresetDepth) + " levels");
+  if (parsed.outcome == detail::Parse::not_json)
+    return invalid_argument("preset '" + name + "' is not valid JSON");
+  return std::move(parsed.value);
 }
 
 }  // namespace
@@ -69,8 +105,7 @@ std::string_view builtin_json(std::string_view name) {
 Result<SimulationConfig> builtin(std::string_view name) {
   const std::string_view json = builtin_json(name);
   if (json.empty()) {
-    return invalid_argument("preset '" + std::string(name) + "' is unknown: must be " +
-                            builtin_list());
+    return invalid_argument("preset '" + excerpt(name) + "' is unknown: must be " + builtin_list());
   }
   return from_json(json);
 }
@@ -91,27 +126,40 @@ Status Document::merge_preset(std::string_view name_or_path, std::string_view la
   return {};
 }
 
-Status Document::set(std::string_view assignment_text, std::string_view label_text) {
-  const std::string assignment(assignment_text), label(label_text);
+Status Document::set(std::string_view assignment, std::string_view label_text) {
+  const std::string label(label_text);
+  const auto fail = [&](const std::string& what) {
+    return invalid_argument(label + " '" + excerpt(assignment) + "': " + what);
+  };
   const std::size_t eq = assignment.find('=');
-  if (eq == std::string::npos || eq == 0) {
-    return invalid_argument(label + " '" + assignment + "': expected key=value");
-  }
-  const std::string key = assignment.substr(0, eq);
-  const std::string text = assignment.substr(eq + 1);
-  Json value = Json::parse(text, nullptr, false);
-  if (value.is_discarded()) value = text;  // a bare string: normals=analytic
+  if (eq == std::string_view::npos || eq == 0) return fail("expected key=value");
+  const std::string_view key = assignment.substr(0, eq);
+  const std::string_view text = assignment.substr(eq + 1);
+  if (key.size() > kMaxKeyBytes)
+    return fail("the key is " + std::to_string(key.size()) + " bytes: must be at most " +
+                std::to_string(kMaxKeyBytes));
+  if (text.size() > kMaxValueBytes)
+    return fail("the value is " + std::to_string(text.size()) + " bytes: must be at most " +
+                std::to_string(kMaxValueBytes));
+  // The document stays within kMaxPresetDepth: one level per part of the key, then the value's.
+  const auto parts = static_cast<int>(std::count(key.begin(), key.end(), '.')) + 1;
+  detail::Parsed parsed = detail::parse_bounded(text, std::max(0, kMaxPresetDepth - parts));
+  if (parts > kMaxPresetDepth || parsed.outcome == detail::Parse::too_deep)
+    return fail("nests deeper than " + std::to_string(kMaxPresetDepth) + " levels");
+  // Not JSON: a bare string, as in normals=analytic.
+  Json value = parsed.outcome == detail::Parse::ok ? std::move(parsed.value) : Json(text);
   Json* node = &impl_->document;
   std::size_t start = 0;
   while (true) {
     const std::size_t dot = key.find('.', start);
-    const std::string part =
-        key.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
-    if (part.empty()) return invalid_argument(label + " '" + assignment + "': empty key part");
+    const std::string part(
+        key.substr(start, dot == std::string_view::npos ? key.npos : dot - start));
+    if (part.empty()) return fail("empty key part");
     if (!node->is_object())
-      return invalid_argument(label + " " + key + ": '" + part + "' is not inside an object");
-    if (dot == std::string::npos) {
-      (*node)[part] = value;
+      return invalid_argument(label + " " + excerpt(key) + ": '" + excerpt(part) +
+                              "' is not inside an object");
+    if (dot == std::string_view::npos) {
+      (*node)[part] = std::move(value);
       return {};
     }
     Json& next = (*node)[part];

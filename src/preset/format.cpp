@@ -42,7 +42,9 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
   FrequencySpectrumParams& s = w.spectrum;
   std::string model(to_string(s.model));
   r.string("model", model);
-  Result<SpectrumModel> m = parse_spectrum_model(model);
+  // The names are short ASCII words, which excerpt() leaves as they are: only the echo of an
+  // unknown name is shortened.
+  Result<SpectrumModel> m = parse_spectrum_model(excerpt(model));
   if (!m.ok()) return invalid_argument(r.path_of("model") + ": " + m.status().message());
   s.model = m.value();
   r.number("wind_speed_mps", s.wind_speed_mps, true);
@@ -80,7 +82,7 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
     ObjectReader sr(*spreading, r.path_of("spreading"));
     std::string sm(to_string(w.spreading.model));
     sr.string("model", sm);
-    Result<SpreadingModel> parsed = parse_spreading_model(sm);
+    Result<SpreadingModel> parsed = parse_spreading_model(excerpt(sm));
     if (!parsed.ok())
       return invalid_argument(sr.path_of("model") + ": " + parsed.status().message());
     w.spreading.model = parsed.value();
@@ -179,17 +181,36 @@ Result<SimulationConfig> from_value(const Json& document) {
     r.adopt(fr.finish());
   }
   if (Status s = r.finish(); !s.ok()) return s;
-  Result<NormalMethod> method = parse_normal_method(normals);
+  Result<NormalMethod> method = parse_normal_method(excerpt(normals));
   if (!method.ok()) return method.status();
   c.normals = method.value();
   if (std::optional<BlueChannel> b = value_of(kBlueChannelNames, blue))
     c.blue_channel = *b;
   else
-    return invalid_argument("blue_channel = '" + blue + "' is unknown: must be " +
+    return invalid_argument("blue_channel = '" + excerpt(blue) + "' is unknown: must be " +
                             name_list(kBlueChannelNames, ", ", " or "));
   if (Status s = validate(c); !s.ok()) return s;
   if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
   return c;
+}
+
+Parsed parse_bounded(std::string_view text, int max_depth) {
+  // The callback sees each object and array as it starts, at its depth (0 for the outermost);
+  // refusing one discards it unbuilt, with everything inside it.
+  bool too_deep = false;
+  const auto guard = [&](int depth, Json::parse_event_t event, Json& /*value*/) {
+    if (event != Json::parse_event_t::object_start && event != Json::parse_event_t::array_start)
+      return true;
+    if (depth < max_depth) return true;
+    too_deep = true;
+    return false;
+  };
+  Parsed parsed{.value = Json::parse(text, guard, false)};
+  if (too_deep)
+    parsed.outcome = Parse::too_deep;
+  else if (parsed.value.is_discarded())
+    parsed.outcome = Parse::not_json;
+  return parsed;
 }
 
 }  // namespace detail
@@ -199,9 +220,16 @@ std::string to_json(const SimulationConfig& config, int indent) {
 }
 
 Result<SimulationConfig> from_json(std::string_view text) {
-  const detail::Json document = detail::Json::parse(text, nullptr, false);
-  if (document.is_discarded()) return invalid_argument("the document is not valid JSON");
-  return detail::from_value(document);
+  if (text.size() > kMaxPresetBytes)
+    return invalid_argument("the document is larger than " + std::to_string(kMaxPresetBytes) +
+                            " bytes (1 MiB), the most a preset may hold");
+  const detail::Parsed parsed = detail::parse_bounded(text, kMaxPresetDepth);
+  if (parsed.outcome == detail::Parse::too_deep)
+    return invalid_argument("the document nests deeper than " + std::to_string(kMaxPresetDepth) +
+                            " levels");
+  if (parsed.outcome == detail::Parse::not_json)
+    return invalid_argument("the document is not valid JSON");
+  return detail::from_value(parsed.value);
 }
 
 }  // namespace ocean::preset

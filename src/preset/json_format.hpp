@@ -14,6 +14,17 @@ using Json = nlohmann::ordered_json;
 
 /// The document of a configuration (every key; unset numbers null).
 Json to_value(const SimulationConfig& config);
+/// How parse_bounded ended.
+enum class Parse { ok, not_json, too_deep };
+struct Parsed {
+  Json value;  ///< discarded unless outcome is ok
+  Parse outcome = Parse::ok;
+};
+/// Parses `text` as JSON, refusing objects and arrays nested deeper than `max_depth` levels
+/// before they are built (a scalar is 0 levels, {} is 1). nlohmann's parser is iterative, but
+/// copying and merging a document recurse once per level: the bound keeps the stack shallow.
+Parsed parse_bounded(std::string_view text, int max_depth);
+
 /// Reads a document: unknown keys and wrong types are invalid_argument naming the key path.
 Result<SimulationConfig> from_value(const Json& document);
 

@@ -63,7 +63,8 @@ class ObjectReader {
   Status finish() {
     if (!error_.ok() || !object_.is_object()) return error_;
     for (const auto& [key, value] : object_.items()) {
-      if (!seen_.contains(key)) return invalid_argument(join(key.c_str()) + ": unknown key");
+      if (!seen_.contains(key))
+        return invalid_argument(join(excerpt(key).c_str()) + ": unknown key");
     }
     return error_;
   }

@@ -67,6 +67,7 @@ Status Renderer::resize(int width, int height) {
     return invalid_argument("image size " + std::to_string(width) + "x" + std::to_string(height) +
                             " must be between 1x1 and " + std::to_string(kMaxTargetSize) + "x" +
                             std::to_string(kMaxTargetSize));
+  if (Status s = check_target_size(*state_->ctx, width, height); !s.ok()) return s;
   vkDeviceWaitIdle(state_->ctx->device);
   state_->destroy_targets();
   return create_targets(*state_, width, height);

@@ -80,8 +80,11 @@ struct Renderer::State {
   void destroy_sim_images();
 };
 
-// targets.cpp: the HDR, depth and sRGB targets and the read-back buffer; points the tone map's
-// descriptor at the new HDR image.
+// targets.cpp: whether targets of this size fit the device and memory (Renderer::resize's
+// refusals, after its [1, kMaxTargetSize] check); allocates nothing.
+Status check_target_size(const vk::Context& ctx, int width, int height);
+// The HDR, depth and sRGB targets and the read-back buffer; points the tone map's descriptor at
+// the new HDR image.
 Status create_targets(Renderer::State& st, int width, int height);
 
 // descriptors.cpp: samplers, both set layouts, the pool and the two sets.

@@ -3,8 +3,10 @@
 // Sources: Vincevičius 2024, §2.5 (cascades against tiling); Aebi, VR Ocean, eq. 55 (mip
 // offsets).
 // Equations: docs/math.md §7.
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "ocean/sim.hpp"
@@ -51,7 +53,64 @@ Status validate(const SimulationConfig& c) {
                             " is out of range: must be finite and below foam.jacobian_start = " +
                             format_number(c.foam.jacobian_start));
   }
-  return require_in_range("foam.decay_per_s", c.foam.decay_per_s, 0.0, 1e6);
+  if (Status s = require_in_range("foam.decay_per_s", c.foam.decay_per_s, 0.0, 1e6); !s.ok()) {
+    return s;
+  }
+  if (c.loop_period_s == 0.0) return {};
+  Result<double> shortest = shortest_loop_period_s(c);
+  if (!shortest.ok()) return shortest.status();
+  if (c.loop_period_s >= shortest.value()) return {};
+  // Shorter, the longest waves quantise to ω' = ⌊ω·T/2π⌋·2π/T = 0 (M.2.4): a frozen swell.
+  const std::string rule = shortest.value() <= 1e6
+                               ? "in [" + format_number(shortest.value()) + ", 1e+06]"
+                               : "0 (this sea's longest waves need more than 1e+06 s)";
+  return invalid_argument("loop_period_s = " + format_number(c.loop_period_s) +
+                          " is too short: the longest waves (" +
+                          format_number(c.cascade_patch_sizes_m.front()) +
+                          " m) would stand still; must be 0 (no loop) or " + rule);
+}
+
+namespace {
+// The smallest |k| of a cascade's grid inside its band [k_lo, k_hi), computed as
+// make_initial_spectrum computes it (k = hypot(Δk·m, Δk·n), Nyquist row and column left out);
+// 0 when the band holds no grid wave vector.
+double lowest_wavenumber(int resolution, double patch_size_m, std::array<double, 2> band) {
+  const double dk = 2.0 * kPi / patch_size_m;
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int m = 0; m < resolution / 2; ++m) {
+    // The first n with hypot(m, n) ≥ k_lo/Δk, give or take the rounding of the square root.
+    const double reach = band[0] / dk;
+    int n = static_cast<int>(std::sqrt(std::max(0.0, reach * reach - double(m) * m)));
+    for (n = std::max(n - 1, 0); n < resolution / 2; ++n) {
+      const double k = std::hypot(dk * m, dk * n);
+      if ((m != 0 || n != 0) && k >= band[0]) {
+        if (k < band[1]) lowest = std::min(lowest, k);
+        break;
+      }
+    }
+  }
+  return std::isinf(lowest) ? 0.0 : lowest;
+}
+}  // namespace
+
+Result<double> shortest_loop_period_s(const SimulationConfig& c) {
+  Result<SeaState> sea = SeaState::make(c.sea);
+  if (!sea.ok()) return sea.status();
+  const Dispersion& dispersion = sea.value().dispersion();
+  const std::vector<std::array<double, 2>> bands = cascade_bands(c);
+  double shortest = 0.0;
+  for (std::size_t i = 0; i < bands.size(); ++i) {
+    const double k = lowest_wavenumber(c.resolution, c.cascade_patch_sizes_m[i], bands[i]);
+    if (k == 0.0) continue;
+    const double omega = dispersion.omega(k);
+    // ω' > 0 needs ⌊ω·T/2π⌋ ≥ 1 (M.2.4): T ≥ 2π/ω, moved to the exact double at which
+    // quantize_omega (as the spectrum evaluates it) first gives a moving wave.
+    double t = 2.0 * kPi / omega;
+    while (quantize_omega(omega, t) == 0.0) t = std::nextafter(t, kInfiniteDepth);
+    while (quantize_omega(omega, std::nextafter(t, 0.0)) > 0.0) t = std::nextafter(t, 0.0);
+    shortest = std::max(shortest, t);
+  }
+  return shortest;
 }
 
 std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& c) {

@@ -2,6 +2,7 @@
 //
 // Sources for each model are cited in pierson_moskowitz.cpp, jonswap.cpp, tma.cpp and
 // phillips.cpp. Equations: docs/math.md §3.
+#include <cassert>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -71,10 +72,7 @@ Status validate_params(const FrequencySpectrumParams& p) {
   }
   if (Status s = require_in_range("sigma_a", p.sigma_a, 1e-3, 1.0); !s.ok()) return s;
   if (Status s = require_in_range("sigma_b", p.sigma_b, 1e-3, 1.0); !s.ok()) return s;
-  if (!(p.depth_m > 0.0)) {
-    return invalid_argument("depth_m = " + format_number(p.depth_m) +
-                            " is out of range: must be > 0 (inf for deep water)");
-  }
+  if (Status s = require_depth(p.depth_m); !s.ok()) return s;
   if (std::isfinite(p.depth_m) && p.model != SpectrumModel::tma) {
     return invalid_argument("depth_m applies only to tma (" + model + " is a deep-water model)");
   }
@@ -85,8 +83,11 @@ Status validate_params(const FrequencySpectrumParams& p) {
       return invalid_argument("small_wave_cutoff_m applies only to phillips");
   } else {
     if (is_set(p.phillips_amplitude)) {
-      if (Status s = require_positive("phillips_amplitude", p.phillips_amplitude); !s.ok())
-        return s;
+      // (0, 1e6]: the default is 5.5e-3; the bound keeps S finite for every valid wind.
+      if (!(p.phillips_amplitude > 0.0 && p.phillips_amplitude <= 1e6)) {
+        return invalid_argument("phillips_amplitude = " + format_number(p.phillips_amplitude) +
+                                " is out of range: must be in (0, 1e+06]");
+      }
     }
     if (Status s = require_non_negative("small_wave_cutoff_m", p.small_wave_cutoff_m); !s.ok()) {
       return s;
@@ -103,7 +104,6 @@ Result<FrequencySpectrum> FrequencySpectrum::make(const FrequencySpectrumParams&
   spec.params_ = params;
   const double g = params.gravity_mps2;
   const bool hs_form = is_set(params.significant_wave_height_m);
-  spec.dispersion_ = Dispersion::make({.gravity_mps2 = g, .depth_m = params.depth_m}).value();
   switch (params.model) {
     case SpectrumModel::pierson_moskowitz:
       spec.omega_p_ = hs_form ? 2.0 * kPi / params.peak_period_s
@@ -146,11 +146,12 @@ Result<FrequencySpectrum> FrequencySpectrum::make(const FrequencySpectrumParams&
 
 double FrequencySpectrum::jonswap_shape(double omega) const {
   const FrequencySpectrumParams& p = params_;
+  // Wind form: α·g²/ω⁵·exp(−5/4·(ωp/ω)⁴) = α·g²/ωp⁵ · r⁵·exp(−5/4·r⁴), r = ωp/ω   (M.3.7)
   const double base =
       is_set(p.significant_wave_height_m)
           ? scale_ * pierson_moskowitz_hs_tp(omega, p.significant_wave_height_m, p.peak_period_s)
-          : alpha_ * p.gravity_mps2 * p.gravity_mps2 / std::pow(omega, 5.0) *
-                std::exp(-1.25 * std::pow(omega_p_ / omega, 4.0));
+          : pm_spectrum(alpha_ * p.gravity_mps2 * p.gravity_mps2 / std::pow(omega_p_, 5.0),
+                        omega_p_ / omega, 1.25);
   return base * jonswap_peak_enhancement(omega, omega_p_, gamma_, p.sigma_a, p.sigma_b);  // (M.3.5)
 }
 
@@ -166,18 +167,15 @@ double FrequencySpectrum::operator()(double omega) const {
     case SpectrumModel::tma:
       return jonswap_shape(omega) *
              tma_depth_factor(omega, p.depth_m, p.gravity_mps2, p.depth_factor);  // (M.3.9)
-    case SpectrumModel::phillips: {
-      // S(ω) = ∫F(k, θ)·k dθ·dk/dω with a normalised spreading: F_omni·k/c_g   (M.3.11)
-      const double k = dispersion_.wavenumber(omega);
-      return phillips_k_density(k, phillips_a_, p.wind_speed_mps, p.gravity_mps2,
-                                p.small_wave_cutoff_m) *
-             k / dispersion_.group_velocity(k);
-    }
+    case SpectrumModel::phillips:
+      return phillips_omega_density(omega, phillips_a_, p.wind_speed_mps, p.gravity_mps2,
+                                    p.small_wave_cutoff_m);  // (M.3.11)
   }
   return 0.0;
 }
 
 double FrequencySpectrum::moment(int n) const {
+  assert(n >= -1 && n <= 2);  // the moments that converge to the stated accuracy
   // ∫ωⁿS(ω)dω = ∫ω^(n+1)S(ω)du with ω = ωp·e^u: composite Simpson on u ∈ [ln 0.02, ln 5000].
   // Below 0.02·ωp every model is < e^(−10⁶)·peak; above 5000·ωp the ω⁻⁵ tail leaves < 1e-14
   // of m0 and < 1e-7 of m2.

@@ -17,12 +17,30 @@ namespace ocean {
 
 double phillips_k_density(double k, double amplitude, double wind_speed_mps, double gravity_mps2,
                           double small_wave_cutoff_m) {
-  if (!(k > 0.0)) return 0.0;
+  if (!(k > 0.0) || std::isinf(k)) return 0.0;  // the limits k → 0 and k → ∞
   const double big_l = wind_speed_mps * wind_speed_mps / gravity_mps2;  // largest wave, L = V²/g
-  const double kl = k * big_l;
-  const double k2 = k * k;
-  const double cutoff = std::exp(-k2 * small_wave_cutoff_m * small_wave_cutoff_m);  // (M.3.12)
-  return amplitude * std::exp(-1.0 / (kl * kl)) / (k2 * k2) * cutoff;               // (M.3.11)
+  const double inv_kl = 1.0 / (k * big_l);                              // inf when k·L underflows
+  const double kl_cut = k * small_wave_cutoff_m;
+  // Both terms are ≤ 0, so their sum is never inf − inf.
+  const double exponent = -(inv_kl * inv_kl) - kl_cut * kl_cut;  // (M.3.11), (M.3.12)
+  if (k >= 1e-75 && k <= 1e75) {
+    const double k2 = k * k;
+    return amplitude * std::exp(exponent) / (k2 * k2);
+  }
+  // k⁴ would overflow or underflow: join it to the exponent (0 through the denormals).
+  return amplitude * std::exp(exponent - 4.0 * std::log(k));
+}
+
+double phillips_omega_density(double omega, double amplitude, double wind_speed_mps,
+                              double gravity_mps2, double small_wave_cutoff_m) {
+  if (!(omega > 0.0)) return 0.0;
+  const double g = gravity_mps2;
+  const double omega0 = g / wind_speed_mps;
+  // e^(−k²l²) with k = ω²/g = q², q = ω/√g; without a cutoff the factor is 1 (q² may be ∞).
+  const double q = omega / std::sqrt(g);
+  const double kl = q * q * small_wave_cutoff_m;
+  const double cutoff = small_wave_cutoff_m > 0.0 ? std::exp(-kl * kl) : 1.0;
+  return pm_spectrum(2.0 * amplitude * g * g / std::pow(omega0, 5.0), omega0 / omega, 1.0) * cutoff;
 }
 
 double phillips_default_amplitude() {
@@ -37,9 +55,8 @@ double vr_ocean_cutoff_length(double beta, double patch_size_m) {
 
 double vr_ocean_phillips_power(double kx, double kz, const VrOceanPhillipsParams& p,
                                const SpectrumGrid& grid) {
-  const double k2 = kx * kx + kz * kz;
-  if (!(k2 > 0.0)) return 0.0;  // DC guard, Aebi, VR Ocean, eq. 14
-  const double k = std::sqrt(k2);
+  const double k = std::hypot(kx, kz);          // kx² + kz² would overflow beyond 1e154
+  if (!(k > 0.0) || std::isinf(k)) return 0.0;  // DC guard (Aebi, VR Ocean, eq. 14); k → ∞
   const double n = static_cast<double>(grid.resolution);
   const double a_fft = std::pow(n, -0.25);                         // eq. 5
   const double a_spatial = std::exp(1.0) / grid.patch_size_m;      // eq. 5

@@ -10,7 +10,7 @@
 // Equations: docs/math.md (M.3.1)–(M.3.3).
 #include <cmath>
 
-#include "ocean/spectrum.hpp"
+#include "internal.hpp"
 
 namespace ocean {
 
@@ -19,19 +19,32 @@ constexpr double kPmAlpha = 8.1e-3;  // Phillips constant of Pierson & Moskowitz
 constexpr double kPmBeta = 0.74;     // their low-frequency shape constant
 }  // namespace
 
+double pm_spectrum(double scale, double r, double beta) {
+  if (!(r > 0.0)) return 0.0;  // ω = ∞
+  const double r4 = (r * r) * (r * r);
+  // Beyond β·r⁴ = 2000 the value is below 1e-800 for every scale < 1e20 (and β > 1e-100): 0 in
+  // double precision. This also covers r⁴ = ∞ (ω → 0), where r⁵·e^(−β·r⁴) would be ∞·0.
+  if (beta * r4 > 2000.0) return 0.0;
+  // Near the peak, the plain product (r⁵ ≥ 1e-300 and e^(−β·r⁴) ≥ 1e-304 are normal numbers).
+  if (r >= 1e-60 && beta * r4 <= 700.0) return scale * (r4 * r) * std::exp(-beta * r4);
+  // Far out on either side one factor would underflow before the product does: join them in
+  // one exponent so that S reaches 0 through the denormals.
+  return std::exp(std::log(scale) + 5.0 * std::log(r) - beta * r4);
+}
+
 double pierson_moskowitz_wind(double omega, double wind_speed_mps, double gravity_mps2) {
   if (!(omega > 0.0)) return 0.0;
+  // α·g²/ω⁵·exp(−β(ω0/ω)⁴) = α·g²/ω0⁵ · r⁵·exp(−β·r⁴), r = ω0/ω   (M.3.1)
   const double omega0 = gravity_mps2 / wind_speed_mps;
-  const double ratio4 = std::pow(omega0 / omega, 4.0);
-  return kPmAlpha * gravity_mps2 * gravity_mps2 / std::pow(omega, 5.0) *
-         std::exp(-kPmBeta * ratio4);  // (M.3.1)
+  const double g2 = gravity_mps2 * gravity_mps2;
+  return pm_spectrum(kPmAlpha * g2 / std::pow(omega0, 5.0), omega0 / omega, kPmBeta);
 }
 
 double pierson_moskowitz_hs_tp(double omega, double hs_m, double tp_s) {
   if (!(omega > 0.0)) return 0.0;
+  // 5/16·Hs²·ωp⁴/ω⁵·exp(−5/4·(ωp/ω)⁴) = 5/16·Hs²/ωp · r⁵·exp(−5/4·r⁴), r = ωp/ω   (M.3.3)
   const double omega_p = 2.0 * kPi / tp_s;
-  const double ratio4 = std::pow(omega_p / omega, 4.0);
-  return 5.0 / 16.0 * hs_m * hs_m * ratio4 / omega * std::exp(-1.25 * ratio4);  // (M.3.3)
+  return pm_spectrum(5.0 / 16.0 * hs_m * hs_m / omega_p, omega_p / omega, 1.25);
 }
 
 /// Peak of the wind form: dS/dω = 0 at ω⁴ = 4β/5·ω0⁴   (M.3.2)

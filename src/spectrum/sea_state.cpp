@@ -62,7 +62,10 @@ Result<SeaState> SeaState::make(const SeaStateParams& params) {
 
 double SeaState::wave_vector_spectrum(double kx, double kz) const {
   const double k = std::hypot(kx, kz);
-  if (!(k > 0.0)) return 0.0;
+  // Outside the dispersion domain (M.2.5) F is 0 in double precision: below kMinWavenumber,
+  // ω(k) < 1e-99 rad/s, and every valid spectrum's exp(−β·(ω_ref/ω)⁴) with ω_ref > 1e-3 rad/s
+  // is e^(−10³⁸⁰); above kMaxWavenumber, ω > 3e99 rad/s and S(ω) < 1e20·ω⁻⁵ < 1e-470.
+  if (!(k >= Dispersion::kMinWavenumber && k <= Dispersion::kMaxWavenumber)) return 0.0;
   const double omega = dispersion_.omega(k);
   const double jacobian = dispersion_.group_velocity(k) / k;  // (dω/dk)/k
   const double heading = std::atan2(kz, kx);

@@ -28,14 +28,17 @@ double tma_depth_factor(double omega, double depth_m, double gravity_mps2, Depth
     const double t = 2.0 - omega_h;
     return 1.0 - 0.5 * t * t;
   }
-  // Φ = [k_h⁻³·dk_h/dω] / [k_∞⁻³·dk_∞/dω] with dk/dω = 1/c_g   (M.3.9)
-  const Dispersion shallow = Dispersion::make({.gravity_mps2 = g, .depth_m = depth_m}).value();
-  const double k_h = shallow.wavenumber(omega);
-  const double k_deep = omega * omega / g;
-  const double cg_deep = 0.5 * g / omega;
-  const double numerator = 1.0 / (k_h * k_h * k_h * shallow.group_velocity(k_h));
-  const double denominator = 1.0 / (k_deep * k_deep * k_deep * cg_deep);
-  return numerator / denominator;
+  // Φ = [k_h⁻³·dk_h/dω] / [k_∞⁻³·dk_∞/dω] with dk/dω = 1/c_g   (M.3.9). With k_∞ = ω²/g =
+  // k_h·tanh(k_h·h) this is Φ = tanh²(x)/(1 + 2x/sinh 2x), x = k_h·h the root of x·tanh x = ωh²
+  // (M.3.9'): a function of ωh alone, free of the overflowing k³ and ω³.
+  const double omega_h = omega * std::sqrt(depth_m / g);
+  if (omega_h >= 10.0) return 1.0;  // x ≥ 100: tanh² x = 1 and 2x/sinh 2x < 1e-80
+  // Below the dispersion domain Φ = ωh²/2·(1 − ωh²/3 + ...) is ωh²/2 in double precision.
+  const Dispersion unit = Dispersion::make({.gravity_mps2 = 1.0, .depth_m = 1.0}).value();
+  if (omega_h < unit.min_omega()) return 0.5 * omega_h * omega_h;
+  const double x = unit.wavenumber(omega_h);
+  const double t = std::tanh(x);
+  return t * t / (1.0 + 2.0 * x / std::sinh(2.0 * x));
 }
 
 }  // namespace ocean

@@ -1,17 +1,23 @@
-// Runs the built `ocean` binary with arguments and captures its exit code, stdout and stderr.
+// Runs the built `ocean` binary with arguments and captures its exit code, stdout and stderr:
+// run_cli through the shell (arguments as one command line), run_cli_argv with an argument
+// vector and no shell (any bytes in an argument, a working directory, extra environment).
 #pragma once
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <array>
+#include <cerrno>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <string>
+#include <vector>
 
 namespace ocean_test {
 
@@ -20,10 +26,13 @@ struct CliRun {
   std::string out, err;
 };
 
-inline CliRun run_cli(const std::string& args) {
+/// Runs `ocean <args>` through the shell (so `args` may redirect standard output), after
+/// `shell_prefix` (e.g. "ulimit -v 2000000; ").
+inline CliRun run_cli_after(const std::string& shell_prefix, const std::string& args) {
   const std::filesystem::path err_file =
       std::filesystem::temp_directory_path() / ("ocean_cli_stderr_" + std::to_string(::getpid()));
-  const std::string command = std::string(OCEAN_CLI_PATH) + " " + args + " 2>" + err_file.string();
+  const std::string command =
+      shell_prefix + std::string(OCEAN_CLI_PATH) + " " + args + " 2>" + err_file.string();
   CliRun r;
   FILE* pipe = ::popen(command.c_str(), "r");
   if (pipe == nullptr) return r;
@@ -39,6 +48,94 @@ inline CliRun run_cli(const std::string& args) {
   return r;
 }
 
+inline CliRun run_cli(const std::string& args) { return run_cli_after("", args); }
+
+/// A fresh, empty directory in the temporary directory, named `name` and this process's id;
+/// removed with all it holds when the object goes.
+struct ScratchDir {
+  std::filesystem::path path;
+  explicit ScratchDir(const std::string& name)
+      : path(std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()))) {
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() {
+    std::error_code ec;
+    std::filesystem::remove_all(path, ec);
+  }
+  ScratchDir(const ScratchDir&) = delete;
+  ScratchDir& operator=(const ScratchDir&) = delete;
+};
+
+/// The names of the entries of `dir` (not recursive).
+inline std::set<std::string> listing(const std::filesystem::path& dir) {
+  std::set<std::string> names;
+  for (const std::filesystem::directory_entry& e : std::filesystem::directory_iterator(dir))
+    names.insert(e.path().filename().string());
+  return names;
+}
+
+inline std::string read_whole_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// Runs `program args...` with no shell: each argument reaches it byte for byte. A program
+/// without a slash is looked up in PATH. `cwd`, when not empty, is its working directory; `env`
+/// entries ("NAME=value") are added to (or replace those of) this process's environment.
+inline CliRun run_program(const std::string& program, const std::vector<std::string>& args,
+                          const std::filesystem::path& cwd = {},
+                          const std::vector<std::string>& env = {}) {
+  const std::filesystem::path base =
+      std::filesystem::temp_directory_path() / ("ocean_cli_argv_" + std::to_string(::getpid()));
+  const std::string out_file = base.string() + ".out", err_file = base.string() + ".err";
+  // Everything the child needs is built before fork: after it only async-signal-safe calls.
+  std::vector<std::string> argv_text{program};
+  argv_text.insert(argv_text.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : argv_text) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  std::vector<std::string> env_text = env;
+  for (char** e = environ; *e != nullptr; ++e) {
+    const std::string entry(*e);
+    const std::string name = entry.substr(0, entry.find('=') + 1);
+    const bool replaced = std::any_of(env.begin(), env.end(), [&](const std::string& mine) {
+      return mine.compare(0, name.size(), name) == 0;
+    });
+    if (!replaced) env_text.push_back(entry);
+  }
+  std::vector<char*> envp;
+  for (std::string& e : env_text) envp.push_back(e.data());
+  envp.push_back(nullptr);
+  CliRun r;
+  const pid_t pid = ::fork();
+  if (pid < 0) return r;
+  if (pid == 0) {
+    const int out = ::open(out_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    const int err = ::open(err_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    if (out < 0 || err < 0 || ::dup2(out, 1) < 0 || ::dup2(err, 2) < 0) ::_exit(126);
+    if (!cwd.empty() && ::chdir(cwd.c_str()) != 0) ::_exit(126);
+    ::execvpe(argv[0], argv.data(), envp.data());
+    ::_exit(127);
+  }
+  int status = 0;
+  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = read_whole_file(out_file);
+  r.err = read_whole_file(err_file);
+  std::filesystem::remove(out_file);
+  std::filesystem::remove(err_file);
+  return r;
+}
+
+/// Runs the built `ocean` with an argument vector and no shell (see run_program).
+inline CliRun run_cli_argv(const std::vector<std::string>& args,
+                           const std::filesystem::path& cwd = {},
+                           const std::vector<std::string>& env = {}) {
+  return run_program(OCEAN_CLI_PATH, args, cwd, env);
+}
+
 /// The bad-input contract: exit 2, nothing on stdout, one line on stderr that mentions `says`.
 inline void expect_usage_error(const std::string& args, const std::string& says) {
   const CliRun r = run_cli(args);
@@ -47,5 +144,19 @@ inline void expect_usage_error(const std::string& args, const std::string& says)
   EXPECT_NE(r.err.find(says), std::string::npos) << args << " said: " << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << " said: " << r.err;
 }
+
+/// Address-space limits (`ulimit -v`) cannot be used under AddressSanitizer, which reserves
+/// terabytes of shadow memory: tests that need one skip there.
+#if defined(__SANITIZE_ADDRESS__)
+inline constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+inline constexpr bool kAddressSanitizer = true;
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
+#else
+inline constexpr bool kAddressSanitizer = false;
+#endif
 
 }  // namespace ocean_test

@@ -7,12 +7,14 @@
 #include <algorithm>
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/cli_run.hpp"
+#include "ocean/conformance.hpp"
 
 namespace {
 
@@ -111,9 +113,10 @@ TEST(Cli, BadInputExitsTwoWithOneLineAndNoStdout) {
 }
 
 TEST(Cli, PlotWritesPngAtomically) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "ocean_cli_plot_test";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  // A directory of its own (mkdtemp), so that runs side by side do not share it.
+  std::string name = (std::filesystem::temp_directory_path() / "ocean_cli_plot_XXXXXX").string();
+  ASSERT_NE(::mkdtemp(name.data()), nullptr);
+  const std::filesystem::path dir = name;
   const std::filesystem::path png = dir / "sea.png";
   const CliRun r = run("spectrum --plot " + png.string());
   ASSERT_EQ(r.exit_code, 0) << r.err;
@@ -129,6 +132,26 @@ TEST(Cli, PlotWritesPngAtomically) {
   EXPECT_NE(bad.err.find("missing"), std::string::npos);
   EXPECT_FALSE(std::filesystem::exists(dir / "missing"));
   std::filesystem::remove_all(dir);
+}
+
+// `ocean validate --backend cpu` compares the CPU backend's fused SIMD pipeline with its scalar
+// reference pipeline (not the backend with itself) and holds it to the CPU bounds.
+TEST(Cli, ValidateCpuComparesTheTwoCpuPipelines) {
+  const CliRun r = run("validate --backend cpu --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err << r.out;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["pass"].get<bool>());
+  const ocean::conformance::Bounds& bounds = ocean::conformance::kCpuBounds;
+  EXPECT_EQ(j["bounds"]["height_rel_hs"].get<double>(), bounds.height_rel_hs);
+  EXPECT_EQ(j["bounds"]["displacement_rel_hs"].get<double>(), bounds.displacement_rel_hs);
+  EXPECT_EQ(j["bounds"]["foam"].get<double>(), bounds.foam);
+  EXPECT_EQ(j["cases"].size(), ocean::conformance::cases().size());
+  // Two computations that round differently: errors above zero, within the bounds.
+  const double max_error = j["max_error_rel_hs"].get<double>();
+  EXPECT_GT(max_error, 0.0);
+  EXPECT_LE(max_error, bounds.displacement_rel_hs);
+  EXPECT_GT(j["errors"]["normal"].get<double>(), 0.0);
+  EXPECT_LE(j["errors"]["normal"].get<double>(), bounds.normal);
 }
 
 TEST(Cli, HelpExitsZero) {

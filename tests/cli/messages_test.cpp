@@ -28,6 +28,8 @@ TEST(CliMessages, SpectrumDispersionSpreading) {
       {"spectrum --omega 1,", "--omega = '' is not a number"},
       {"spectrum --omega 1,-1", "--omega = -1 is out of range: must be >= 0 and finite"},
       {"spectrum --hs nan --tp 8 --omega 1", "--hs = nan is out of range: must be a finite number"},
+      {"spectrum --gamma x --omega 1", "--gamma = 'x' is not a number"},  // not "----gamma"
+      {"spectrum --gamma 0.5 --omega 1", "--gamma = 0.5 is out of range: must be in [1, 20]"},
       {"spectrum --depth-factor x --omega 1",
        "--depth-factor = 'x' is unknown: must be exact or thompson-vincent"},
       {"spectrum --fetch-law x --omega 1",
@@ -48,6 +50,7 @@ TEST(CliMessages, SpectrumDispersionSpreading) {
       {"spreading --wind-speed 10 --fetch 0.5 --theta 0",
        "--fetch = 0.5 is out of range: must be in [1, 1e+08]"},
       {"spreading --theta 0,inf", "--theta = inf is out of range: must be a finite number"},
+      {"spreading --alpha x --theta 0", "--alpha = 'x' is not a number"},
       {"spreading --model nope --theta 0",
        "--model: spreading model = 'nope' is unknown: must be one of power-cosine, cos2s, "
        "mitsuyasu, hasselmann, donelan-banner"},

@@ -1,7 +1,8 @@
 // `ocean render` from the command line: PNG and EXR output of the right size and content, image
 // sequences, the statistics as JSON, and bad input (unknown preset, zero-size image, unwritable
 // output, unknown extension, MP4 without ffmpeg, no Vulkan device): one line, non-zero exit,
-// nothing written. Skips the rendering cases where no Vulkan device exists.
+// nothing written. Skips the rendering cases where no Vulkan device exists (fails them with
+// OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -15,6 +16,7 @@
 #include "ocean/vk.hpp"
 #include "support/exr_reader.hpp"
 #include "support/png_reader.hpp"
+#include "support/require_devices.hpp"
 
 namespace {
 
@@ -32,7 +34,7 @@ const std::string kSmall =
     " --width 80 --height 45 --quality low --resolution 64 --warmup 0 --validation";
 
 TEST(RenderCli, WritesAPngOfTheRequestedSize) {
-  if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const fs::path out = scratch("a.png");
   const ocean_test::CliRun r =
       ocean_test::run_cli("render --out " + out.string() + kSmall + " --json");
@@ -54,7 +56,7 @@ TEST(RenderCli, WritesAPngOfTheRequestedSize) {
 }
 
 TEST(RenderCli, WritesLinearHdrExrAndSequences) {
-  if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const fs::path exr = scratch("b.exr");
   ocean_test::CliRun r = ocean_test::run_cli("render --out " + exr.string() + kSmall);
   ASSERT_EQ(r.exit_code, 0) << r.err;

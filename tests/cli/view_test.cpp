@@ -1,7 +1,8 @@
 // `ocean view` end to end: under an Xvfb server this test starts itself, a few frames with the
 // validation layer write a screenshot of the right size that shows sky above water; without a
 // display the command fails with one line and exit 1; bad flags are usage errors before any
-// window opens. The window tests skip where Xvfb or a Vulkan device is missing.
+// window opens. The window tests skip where Xvfb or a Vulkan device is missing (fail with
+// OCEAN_REQUIRE_DEVICES=1).
 #include <fcntl.h>
 #include <gtest/gtest.h>
 #include <poll.h>
@@ -18,6 +19,7 @@
 #include "cli/cli_run.hpp"
 #include "ocean/backends.hpp"
 #include "support/png_reader.hpp"
+#include "support/require_devices.hpp"
 
 namespace {
 
@@ -109,7 +111,7 @@ class ViewCli : public ::testing::Test {
   static void TearDownTestSuite() { server_.reset(); }
 
   void SetUp() override {
-    if (!skip_.empty()) GTEST_SKIP() << skip_;
+    if (!skip_.empty()) OCEAN_SKIP_OR_FAIL(skip_);
     ASSERT_FALSE(server_->display().empty()) << "Xvfb did not start";
     dir_ = fs::temp_directory_path() / ("ocean_view_" + std::to_string(::getpid()));
     fs::create_directories(dir_);

@@ -6,7 +6,8 @@
 #     as tests/statistics/surface_stats_test.cpp);
 #   - the PPM image: the printed size, the file size that implies, and not one uniform colour.
 # Exit status 77 of the example (no Vulkan device able to render) marks the test skipped after
-# the checks of the simulation's figures have passed.
+# the checks of the simulation's figures have passed, or failed with OCEAN_REQUIRE_DEVICES=1
+# (tests/support/require_devices.hpp).
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 execute_process(COMMAND ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix}
@@ -73,6 +74,10 @@ if(spectrum LESS_EQUAL 0 OR sigma LESS_EQUAL 0 OR difference GREATER bound)
 endif()
 
 if(rc EQUAL 77)
+  if(NOT "$ENV{OCEAN_REQUIRE_DEVICES}" STREQUAL "" AND NOT "$ENV{OCEAN_REQUIRE_DEVICES}" STREQUAL "0")
+    message(FATAL_ERROR "OCEAN_REQUIRE_DEVICES is set, and the example found no Vulkan device "
+                        "able to render")
+  endif()
   message(STATUS "example: render skipped, no Vulkan device")
   return()
 endif()

@@ -135,13 +135,32 @@ TEST(EnsureDirectory, CreatesNestedAndReportsObstacles) {
                cat("'", (dir.path() / "file").string(), "' exists and is not a directory"));
   expect_error(ensure_directory(dir.path() / "file" / "sub"), ErrorCode::io_error,
                cat("cannot create directory '", (dir.path() / "file" / "sub").string(), "'"));
-  if (::geteuid() != 0) {  // root ignores permissions
-    fs::create_directory(dir.path() / "locked");
-    fs::permissions(dir.path() / "locked", fs::perms::owner_read | fs::perms::owner_exec);
-    expect_error(ensure_directory(dir.path() / "locked" / "x"), ErrorCode::io_error,
-                 "Permission denied");
-    fs::permissions(dir.path() / "locked", fs::perms::owner_all);
-  }
+}
+
+// A directory nobody may write into: creating one inside it is an io_error that says why. Root
+// ignores permissions, so the attempt runs in a child process as the unprivileged user
+// "nobody" (65534); the directory is readable and searchable by all, writable by none.
+TEST(EnsureDirectory, ReportsAPermissionDenied) {
+  TempDir dir;
+  fs::permissions(dir.path(), fs::perms::others_exec | fs::perms::group_exec,
+                  fs::perm_options::add);
+  const fs::path locked = dir.path() / "locked";
+  fs::create_directory(locked);
+  fs::permissions(locked, fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+                              fs::perms::group_exec | fs::perms::others_read |
+                              fs::perms::others_exec);
+  const int outcome = test::exit_status_as_unprivileged([&] {
+    const Status s = ensure_directory(locked / "x");
+    return s.code() == ErrorCode::io_error &&
+                   s.message().find("Permission denied") != std::string::npos &&
+                   s.message().find((locked / "x").string()) != std::string::npos
+               ? 0
+               : 1;
+  });
+  EXPECT_EQ(outcome, 0) << "1: ensure_directory did not report the denial; 2: could not drop to "
+                           "an unprivileged user (the test needs root's setuid or a non-root "
+                           "user); else the child died";
+  EXPECT_FALSE(fs::exists(locked / "x"));
 }
 
 // ---- npy --------------------------------------------------------------------------------------

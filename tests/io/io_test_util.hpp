@@ -1,12 +1,15 @@
 // Helpers shared by the io module tests: a scratch directory and whole-file byte access.
 #pragma once
 
+#include <grp.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <string>
 #include <system_error>
@@ -63,6 +66,27 @@ inline std::string read_file(const fs::path& path) {
 inline void write_file(const fs::path& path, const std::string& bytes) {
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
   out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+/// Runs `body` in a child process as an unprivileged user and returns its result as the child's
+/// exit status: as root, the child first drops every group and becomes user and group 65534
+/// ("nobody"), so that file permissions apply to it; as any other user it runs unchanged. 2 when
+/// the child could not drop its privileges, -1 when it did not exit normally. The child ends
+/// with _exit: no destructors, no test framework state, nothing shared is touched.
+inline int exit_status_as_unprivileged(const std::function<int()>& body) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    if (::geteuid() == 0) {
+      constexpr uid_t kNobody = 65534;
+      if (::setgroups(0, nullptr) != 0 || ::setresgid(kNobody, kNobody, kNobody) != 0 ||
+          ::setresuid(kNobody, kNobody, kNobody) != 0 || ::geteuid() == 0)
+        ::_exit(2);
+    }
+    ::_exit(body());
+  }
+  int status = 0;
+  if (pid < 0 || ::waitpid(pid, &status, 0) != pid || !WIFEXITED(status)) return -1;
+  return WEXITSTATUS(status);
 }
 
 }  // namespace ocean::io::test

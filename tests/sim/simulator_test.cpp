@@ -283,6 +283,42 @@ TEST(Simulator, ValidatesConfiguration) {
   EXPECT_NE(ocean::make_simulator(c).status().message().find("fetch_m = 0"), std::string::npos);
 }
 
+// With a loop period T every ω is quantised down to a multiple of 2π/T (M.2.4): below
+// T_min = 2π/ω(2π/L0) the longest waves get ω' = 0 and stand still. small_config's cascade 0 is
+// 300 m in deep water, where ω² = g·k (Lamb 1932, §228): T_min = 2π/√(g·2π/300) = 13.86 s.
+TEST(Simulator, LoopPeriodThatFreezesTheLongestWavesIsRejected) {
+  ocean::SimulationConfig c = small_config();
+  const double shortest = ocean::shortest_loop_period_s(c).value();
+  const double expected = 2.0 * ocean::kPi / std::sqrt(9.81 * 2.0 * ocean::kPi / 300.0);
+  EXPECT_NEAR(shortest, expected, 1e-14 * expected);
+  // The wave vector (m, n) = (1, 0) of cascade 0, at grid index row N/2, column N/2 + 1.
+  const std::size_t longest = 32 * 64 + 33;
+  const ocean::SeaState sea = ocean::SeaState::make(c.sea).value();
+  const auto omega_of_longest = [&](double period) {
+    c.loop_period_s = period;
+    return ocean::make_initial_spectrum(sea, ocean::cascade_spectrum_params(c, 0))
+        .value()
+        .omega[longest];
+  };
+  // At T_min the longest wave moves (one turn per loop) and the configuration is valid ...
+  EXPECT_NEAR(omega_of_longest(shortest), 2.0 * ocean::kPi / shortest, 1e-6);
+  EXPECT_TRUE(ocean::validate(c).ok());
+  // ... one ulp below it stands still, and the configuration is refused, naming T_min.
+  const double below = std::nextafter(shortest, 0.0);
+  EXPECT_EQ(omega_of_longest(below), 0.0f);
+  for (double period : {below, 10.0, 1e-3}) {
+    c.loop_period_s = period;
+    const ocean::Status s = ocean::validate(c);
+    EXPECT_EQ(s.message(), "loop_period_s = " + ocean::format_number(period) +
+                               " is too short: the longest waves (300 m) would stand still; must "
+                               "be 0 (no loop) or in [" +
+                               ocean::format_number(shortest) + ", 1e+06]");
+    EXPECT_EQ(ocean::make_simulator(c).status().message(), s.message());
+  }
+  c.loop_period_s = 0.0;  // no loop: nothing is quantised
+  EXPECT_TRUE(ocean::validate(c).ok());
+}
+
 TEST(Backends, UnavailableBackendsSaySo) {
   const auto cuda = ocean::make_backend("cuda");  // vulkan depends on the build and the machine
   ASSERT_FALSE(cuda.ok());

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "ocean/spectrum.hpp"
 
@@ -114,7 +116,159 @@ TEST(Dispersion, LoopQuantisationRepeatsAfterPeriod) {
   }
 }
 
+// Every combination of the parameter ranges' ends and a few values between, and wavenumbers at
+// three per decade over the whole domain (M.2.5).
+struct Case {
+  double gravity, depth, capillarity;
+};
+std::vector<Case> domain_cases() {
+  std::vector<Case> cases;
+  for (double g : {0.1, 9.81, 100.0}) {
+    for (double h : {1e-100, 1e-3, 10.0, 1e100, 1e300, ocean::kInfiniteDepth}) {
+      for (double t : {0.0, 1e-300, ocean::kSeaWaterCapillarity, 1.0}) cases.push_back({g, h, t});
+    }
+  }
+  return cases;
+}
+std::vector<double> decades(double lo, double hi) {
+  std::vector<double> v;
+  for (double x = lo; x <= hi; x *= 2.154434690031884) v.push_back(x);  // 10^(1/3)
+  v.push_back(hi);
+  return v;
+}
+std::string describe(const Case& c) {
+  return "g = " + ocean::format_number(c.gravity) + ", h = " + ocean::format_number(c.depth) +
+         ", T = " + ocean::format_number(c.capillarity);
+}
+Dispersion make(const Case& c) {
+  return Dispersion::make(
+             {.gravity_mps2 = c.gravity, .depth_m = c.depth, .capillarity_m3ps2 = c.capillarity})
+      .value();
+}
+
+TEST(Dispersion, EveryWavenumberOfTheDomainGivesFiniteValuesThatRoundTrip) {
+  for (const Case& c : domain_cases()) {
+    const Dispersion d = make(c);
+    for (double k : decades(Dispersion::kMinWavenumber, Dispersion::kMaxWavenumber)) {
+      const double omega = d.omega(k);
+      const double phase = d.phase_velocity(k);
+      const double group = d.group_velocity(k);
+      ASSERT_TRUE(std::isfinite(omega) && omega > 0.0) << describe(c) << ", k = " << k;
+      ASSERT_TRUE(std::isfinite(phase) && phase > 0.0) << describe(c) << ", k = " << k;
+      ASSERT_TRUE(std::isfinite(group) && group > 0.0) << describe(c) << ", k = " << k;
+      // k(ω(k)) = k: F' = c_g/c ≥ ½ bounds the error by twice ω's rounding (M.2.2).
+      EXPECT_NEAR(d.wavenumber(omega), k, 1e-14 * k) << describe(c);
+      // c_g/c = n ∈ [½, 2] (M.2.3).
+      EXPECT_GE(group / phase, 0.5 * (1.0 - 1e-15)) << describe(c) << ", k = " << k;
+      EXPECT_LE(group / phase, 2.0) << describe(c) << ", k = " << k;
+    }
+  }
+}
+
+TEST(Dispersion, EveryFrequencyOfTheDomainGivesAConvergedWavenumber) {
+  for (const Case& c : domain_cases()) {
+    const Dispersion d = make(c);
+    ASSERT_LT(d.min_omega(), d.max_omega());
+    for (double omega : decades(d.min_omega(), d.max_omega())) {
+      const double k = d.wavenumber(omega);
+      ASSERT_TRUE(k >= Dispersion::kMinWavenumber && k <= Dispersion::kMaxWavenumber)
+          << describe(c) << ", w = " << omega << " gave k = " << k;
+      EXPECT_NEAR(d.omega(k), omega, 1e-14 * omega) << describe(c) << ", k = " << k;
+    }
+  }
+}
+
+TEST(Dispersion, GroupVelocityIsTheDerivativeOverTheWholeDomain) {
+  // Central difference in ln k: truncation ~h² = 1e-10, rounding ~1e-16/h = 1e-11.
+  const double h = 1e-5;
+  for (const Case& c : domain_cases()) {
+    const Dispersion d = make(c);
+    for (double k : decades(1e-199, 1e199)) {
+      const double up = k * std::exp(h);
+      const double down = k * std::exp(-h);
+      const double numeric = (d.omega(up) - d.omega(down)) / (up - down);
+      EXPECT_NEAR(d.group_velocity(k), numeric, 1e-8 * numeric) << describe(c) << ", k = " << k;
+    }
+  }
+}
+
+// Deep water without surface tension: ω² = g·k exactly (Lamb 1932, §228), over the domain.
+TEST(Dispersion, DeepWaterGravityLimitOverTheDomain) {
+  const Dispersion d = make(ocean::kInfiniteDepth);
+  for (double k : decades(Dispersion::kMinWavenumber, Dispersion::kMaxWavenumber)) {
+    EXPECT_NEAR(d.omega(k), std::sqrt(9.81 * k), 1e-15 * std::sqrt(9.81 * k));
+    EXPECT_NEAR(d.group_velocity(k), 0.5 * d.phase_velocity(k), 2e-16 * d.group_velocity(k));
+  }
+  for (double omega : decades(d.min_omega(), d.max_omega())) {
+    const double k = omega / std::sqrt(9.81) * (omega / std::sqrt(9.81));
+    EXPECT_NEAR(d.wavenumber(omega), k, 1e-15 * k);
+  }
+}
+
+// Short capillary waves: ω² = T·k³ once T·k² ≫ g (Lamb 1932, §267). At ω = 1e20 rad/s in sea
+// water g/(T·k²) ~ 1e-25, so the capillary root is the answer to double precision.
+TEST(Dispersion, CapillaryInverseConvergesFarIntoTheCapillaryRange) {
+  const double tension = ocean::kSeaWaterCapillarity;
+  const Dispersion d = make(ocean::kInfiniteDepth, tension);
+  for (double omega : {1e20, 1e50, 1e100}) {
+    const double k = std::cbrt(omega * omega / tension);
+    EXPECT_NEAR(d.wavenumber(omega), k, 1e-14 * k) << "w = " << omega;
+  }
+  // Closer in, gravity still counts: g·k + T·k³ = ω² (M.2.1).
+  for (double omega : {1e3, 1e6, 1e10}) {
+    const double k = d.wavenumber(omega);
+    EXPECT_NEAR(9.81 * k + tension * k * k * k, omega * omega, 1e-14 * omega * omega);
+  }
+}
+
+// The slowest gravity–capillary wave: c² = g/k + T·k is least at k_m = √(g/T), where
+// c_min = (4gT)^¼ (Lamb 1932, §267): for water, c_min ≈ 0.23 m/s at λ_m = 2π/k_m ≈ 1.7 cm.
+TEST(Dispersion, CapillaryGravityMinimumPhaseSpeed) {
+  const double tension = ocean::kSeaWaterCapillarity;
+  const Dispersion d = make(ocean::kInfiniteDepth, tension);
+  // Golden-section search for the minimum of c(k) in ln k.
+  double a = std::log(10.0);
+  double b = std::log(1e4);
+  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+  for (int i = 0; i < 200; ++i) {
+    const double x1 = b - r * (b - a);
+    const double x2 = a + r * (b - a);
+    if (d.phase_velocity(std::exp(x1)) < d.phase_velocity(std::exp(x2))) {
+      b = x2;
+    } else {
+      a = x1;
+    }
+  }
+  const double k_min = std::exp(0.5 * (a + b));
+  const double c_min = d.phase_velocity(k_min);
+  EXPECT_NEAR(c_min, std::pow(4.0 * 9.81 * tension, 0.25), 1e-12);
+  EXPECT_NEAR(k_min, std::sqrt(9.81 / tension), 1e-6 * k_min);  // a flat minimum: c'' small
+  EXPECT_NEAR(c_min, 0.23, 0.005);
+  EXPECT_NEAR(2.0 * ocean::kPi / k_min, 0.017, 0.0005);
+  // At the minimum the group velocity equals the phase velocity.
+  EXPECT_NEAR(d.group_velocity(k_min), c_min, 1e-6 * c_min);
+}
+
+TEST(Dispersion, ValuesOutsideTheDomainAreRejectedWithTheRange) {
+  const Dispersion d = make(ocean::kInfiniteDepth, ocean::kSeaWaterCapillarity);
+  EXPECT_TRUE(Dispersion::check_wavenumber("k", 1e200).ok());
+  EXPECT_TRUE(d.check_omega("omega", 1e20).ok());
+  const ocean::Status big = Dispersion::check_wavenumber("k", 1e308);
+  EXPECT_EQ(big.message(), "k = 1e+308 is out of range: must be in [1e-200, 1e+200]");
+  EXPECT_FALSE(Dispersion::check_wavenumber("k", 5e-324).ok());
+  EXPECT_FALSE(Dispersion::check_wavenumber("k", 0.0).ok());
+  const ocean::Status tiny = d.check_omega("omega", 1e-300);
+  EXPECT_NE(tiny.message().find("omega = 1e-300 is out of range: must be in ["), std::string::npos)
+      << tiny.message();
+  EXPECT_FALSE(d.check_omega("omega", 1e300).ok());
+  EXPECT_FALSE(d.check_omega("omega", std::nan("")).ok());
+}
+
 TEST(Dispersion, RejectsBadParameters) {
+  EXPECT_FALSE(Dispersion::make({.depth_m = 1e-300}).ok());
+  EXPECT_FALSE(Dispersion::make({.gravity_mps2 = 1e3}).ok());
+  EXPECT_FALSE(Dispersion::make({.capillarity_m3ps2 = 2.0}).ok());
+  EXPECT_FALSE(Dispersion::make({.capillarity_m3ps2 = ocean::kInfiniteDepth}).ok());
   EXPECT_FALSE(Dispersion::make({.depth_m = 0.0}).ok());
   EXPECT_FALSE(Dispersion::make({.depth_m = -5.0}).ok());
   EXPECT_FALSE(Dispersion::make({.depth_m = std::nan("")}).ok());

@@ -1,5 +1,6 @@
 // The shared Vulkan layer: device enumeration, context creation with validation, device
-// selection errors, buffer round trip through a copy, timestamps. Skips where no device exists.
+// selection errors, buffer round trip through a copy, timestamps. Skips where no device exists
+// (fails with OCEAN_REQUIRE_DEVICES=1).
 #include "ocean/vk.hpp"
 
 #include <gtest/gtest.h>
@@ -7,6 +8,8 @@
 #include <cstring>
 #include <numeric>
 #include <vector>
+
+#include "support/require_devices.hpp"
 
 namespace {
 
@@ -33,7 +36,7 @@ TEST(Vk, ListDevicesNamesEveryDeviceOrSaysWhatToInstall) {
 }
 
 TEST(Vk, BadDeviceIndexIsAClearError) {
-  if (!have_device()) GTEST_SKIP() << "no Vulkan device";
+  if (!have_device()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   auto ctx = ocean::vk::create_context({.device_index = 99});
   ASSERT_FALSE(ctx.ok());
   EXPECT_EQ(ctx.status().code(), ocean::ErrorCode::invalid_argument);
@@ -41,7 +44,7 @@ TEST(Vk, BadDeviceIndexIsAClearError) {
 }
 
 TEST(Vk, BufferCopyRoundTripsWithZeroValidationMessages) {
-  if (!have_device()) GTEST_SKIP() << "no Vulkan device";
+  if (!have_device()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   auto created = ocean::vk::create_context({.validation = true});
   ASSERT_TRUE(created.ok()) << created.status().message();
   ocean::vk::Context& ctx = *created.value();

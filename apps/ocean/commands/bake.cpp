@@ -12,6 +12,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
+#include "output_name.hpp"
 #include "progress.hpp"
 #include "simulation_flags.hpp"
 
@@ -39,6 +40,10 @@ struct BakeOptions {
 
 int run_bake(const BakeOptions& o) {
   if (o.out.empty()) return report(invalid_argument("bake needs --out DIR"));
+  if (Status s = check_output_name("--out", o.out); !s.ok()) return report(s);
+  if (!o.contact_sheet.empty()) {
+    if (Status s = check_output_name("--contact-sheet", o.contact_sheet); !s.ok()) return report(s);
+  }
   bake::BakeParams params{.output_dir = o.out};
   const std::set<std::string> formats(o.formats.begin(), o.formats.end());
   if (!formats.empty()) params.formats = {.npy = false, .png = false, .exr = false};
@@ -50,7 +55,8 @@ int run_bake(const BakeOptions& o) {
     } else if (f == "exr") {
       params.formats.exr = true;
     } else {
-      return report(invalid_argument("--format = '" + f + "' is unknown: must be exr, png or npy"));
+      return report(
+          invalid_argument("--format = '" + excerpt(f) + "' is unknown: must be exr, png or npy"));
     }
   }
   Result<SimulationConfig> config = resolve_config(o.sim);
@@ -67,7 +73,7 @@ int run_bake(const BakeOptions& o) {
       return report(invalid_argument("--loop needs a loop period > 0 (--loop-period)"));
     frames = bake::loop_frame_count(c, fps.value());
     if (frames < 1 || frames > bake::kMaxFrames)
-      return report(invalid_argument("--loop at --fps " + o.fps + " gives " +
+      return report(invalid_argument("--loop at --fps " + excerpt(o.fps) + " gives " +
                                      std::to_string(frames) + " frames: must be 1 to 1000000"));
   } else if (!o.frames.empty()) {
     Result<long long> v = parse(kFrames, o.frames);

@@ -71,8 +71,8 @@ struct BenchOptions {
 
 int run_bench(const BenchOptions& o) {
   if (o.backend != "cpu" && o.backend != "vulkan") {
-    return report(
-        invalid_argument("--backend = '" + o.backend + "' is unknown: must be one of cpu, vulkan"));
+    return report(invalid_argument("--backend = '" + excerpt(o.backend) +
+                                   "' is unknown: must be one of cpu, vulkan"));
   }
   Result<std::vector<int>> resolutions = parse_ints(kResolution, o.resolutions, false);
   if (!resolutions.ok()) return report(resolutions.status());
@@ -90,7 +90,7 @@ int run_bench(const BenchOptions& o) {
   if (o.outputs == "textures") {
     outputs = FrameOutputs::textures();
   } else if (o.outputs != "all") {
-    return report(invalid_argument("--outputs = '" + o.outputs +
+    return report(invalid_argument("--outputs = '" + excerpt(o.outputs) +
                                    "' is unknown: must be one of all, textures"));
   }
   Result<double> interval_ms = parse(kFrameInterval, o.frame_interval);
@@ -98,7 +98,7 @@ int run_bench(const BenchOptions& o) {
   const double interval = interval_ms.value() * 1e-3;
   if (o.backend == "vulkan") {
     if (interval > 0.0) {
-      return report(invalid_argument("--frame-interval = " + o.frame_interval +
+      return report(invalid_argument("--frame-interval = " + excerpt(o.frame_interval) +
                                      ": only the CPU backend's frames can be paced"));
     }
     return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.outputs, o.json);

@@ -44,21 +44,26 @@ int run_dispersion(const DispersionOptions& o) {
   const bool from_k = !o.k.empty();
   Result<std::vector<double>> input = from_k ? parse_list(kK, o.k) : parse_list(kOmega, o.omega);
   if (!input.ok()) return report(input.status());
+  // Only values inside the dispersion's domain (docs/math.md M.2.5), where k, ω, both
+  // velocities and the wavelength are all finite and positive.
+  for (double v : input.value()) {
+    const Status s =
+        from_k ? Dispersion::check_wavenumber(kK.flag, v) : d.check_omega(kOmega.flag, v);
+    if (!s.ok()) return report(s);
+  }
   std::vector<double> k, omega, cg;
   for (double v : input.value()) {
-    const double kk = from_k ? v : d.wavenumber(v);
-    k.push_back(kk);
+    k.push_back(from_k ? v : d.wavenumber(v));
     omega.push_back(from_k ? d.omega(v) : v);
-    cg.push_back(kk > 0.0 ? d.group_velocity(kk) : d.group_velocity(0.0));
+    cg.push_back(d.group_velocity(k.back()));
   }
   if (o.json) {
     nlohmann::ordered_json out{{"k", k}, {"omega", omega}, {"group_velocity", cg}};
     std::vector<double> wavelength, phase_velocity;
-    for (std::size_t i = 0; i < k.size(); ++i) {
-      wavelength.push_back(k[i] > 0.0 ? 2.0 * kPi / k[i] : kInfiniteDepth);
-      phase_velocity.push_back(k[i] > 0.0 ? omega[i] / k[i] : cg[i]);
+    for (double kk : k) {
+      wavelength.push_back(2.0 * kPi / kk);
+      phase_velocity.push_back(d.phase_velocity(kk));
     }
-    // JSON has no infinity: the wavelength of k = 0 prints as null.
     out["wavelength_m"] = wavelength;
     out["phase_velocity"] = phase_velocity;
     print_json(out);
@@ -78,11 +83,13 @@ int run_dispersion(const DispersionOptions& o) {
 Command add_dispersion_command(CLI::App& app) {
   auto o = std::make_shared<DispersionOptions>();
   CLI::App* command = app.add_subcommand(
-      "dispersion", "Finite-depth dispersion omega^2 = g k tanh(k h): k <-> omega, group velocity");
+      "dispersion",
+      "Finite-depth dispersion omega^2 = (g k + T k^3) tanh(k h): k <-> omega, group velocity");
   add_option(*command, kDepth, o->depth, "water depth, m (default: deep water)");
   add_option(*command, kGravity, o->gravity, "gravitational acceleration, m/s^2 (default 9.81)");
-  add_option(*command, kK, o->k, "wavenumbers K1,K2,..., rad/m");
-  add_option(*command, kOmega, o->omega, "angular frequencies W1,W2,..., rad/s");
+  add_option(*command, kK, o->k, "wavenumbers K1,K2,..., rad/m, each in [1e-200, 1e200]");
+  add_option(*command, kOmega, o->omega,
+             "angular frequencies W1,W2,..., rad/s, each in [omega(1e-200), omega(1e200)]");
   command->add_flag("--capillary", o->capillary, "include sea-water surface tension");
   command->add_flag("--json", o->json, "print JSON {\"k\",\"omega\",\"group_velocity\"}");
   return {command, [o] { return run_dispersion(*o); }};

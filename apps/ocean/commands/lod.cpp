@@ -19,6 +19,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "ocean/io.hpp"
+#include "output_name.hpp"
 #include "plot/plot.hpp"
 
 namespace ocean::cli {
@@ -62,7 +63,7 @@ Result<Inputs> parse_inputs(const LodOptions& o) {
   if (!target.ok()) return target.status();
   Result<lod::QualityPreset> preset = lod::parse_preset(o.preset);
   if (!preset.ok())
-    return invalid_argument("--preset = " + o.preset + " is not a preset: must be " +
+    return invalid_argument("--preset = " + excerpt(o.preset) + " is not a preset: must be " +
                             name_list(lod::kQualityPresetNames, ", ", " or "));
   in.preset = preset.value();
   Result<double> size = parse(kOceanSize, o.ocean_size);
@@ -90,11 +91,16 @@ Result<Inputs> parse_inputs(const LodOptions& o) {
     Result<std::vector<double>> c = parse_list(kCentre, o.centre);
     if (!c.ok()) return c.status();
     if (c.value().size() != 2 || !std::isfinite(c.value()[0]) || !std::isfinite(c.value()[1])) {
-      return invalid_argument("--center = " + o.centre + " must be two finite numbers X,Z");
+      return invalid_argument("--center = " + excerpt(o.centre) +
+                              " must be two finite numbers X,Z");
     }
     in.params.follow_camera = false;
     in.params.fixed_centre_x_m = c.value()[0];
     in.params.fixed_centre_z_m = c.value()[1];
+  }
+  for (const auto& [flag, name] : {std::pair{"--out", &o.out}, std::pair{"--png", &o.png}}) {
+    if (name->empty()) continue;
+    if (Status s = check_output_name(flag, *name); !s.ok()) return s;
   }
   return in;
 }

@@ -1,15 +1,10 @@
 // `ocean render`: a picture (PNG, or linear HDR EXR), an image sequence or an MP4 (through the
 // ffmpeg program) of a sea state from a camera, headless on any Vulkan device (lavapipe
 // included). With no arguments it writes ocean.png: the moderate sea at eye level towards a
-// low sun.
-#include <sys/wait.h>
-#include <unistd.h>
-
+// low sun. The output name is data (output_name.hpp): never a printf format, never a shell word.
 #include <array>
 #include <cmath>
-#include <csignal>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <numbers>
@@ -21,9 +16,11 @@
 #include "contact_sheet.hpp"
 #include "ocean/io.hpp"
 #include "ocean/scene.hpp"
+#include "output_name.hpp"
 #include "progress.hpp"
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
+#include "video_writer.hpp"
 #include "view_flags.hpp"
 
 namespace ocean::cli {
@@ -60,6 +57,7 @@ enum class OutputKind { png, exr, mp4 };
 struct Inputs {
   render::SceneParams scene;
   render::View view;
+  OutputPattern out;  // --out, read by the output-name rule
   OutputKind kind = OutputKind::png;
   double time_s = 0.0, fps = 30.0, warmup_s = 0.0;
   long long frames = 1;
@@ -81,7 +79,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (sky.empty()) sky = o.sim.preset_path == "storm" ? "overcast" : "clear";
   Result<render::ShadingParams> shading = render::sky_preset(sky);
   if (!shading.ok())
-    return invalid_argument("--sky = " + sky + " is not a sky: must be " +
+    return invalid_argument("--sky = " + excerpt(sky) + " is not a sky: must be " +
                             name_list(render::kSkyNames, ", ", " or "));
   v.shading = shading.value();
   if (!o.sun_elevation.empty()) {
@@ -111,7 +109,10 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   Result<double> warmup = parse(kWarmup, o.warmup);
   if (!warmup.ok()) return warmup.status();
   in.warmup_s = warmup.value();
-  const std::string ext = std::filesystem::path(o.out).extension().string();
+  Result<OutputPattern> out = parse_output_pattern(o.out, "--out");
+  if (!out.ok()) return out.status();
+  in.out = std::move(out).value();
+  const std::string ext = std::filesystem::path(in.out.name()).extension().string();
   if (ext == ".png") {
     in.kind = OutputKind::png;
   } else if (ext == ".exr") {
@@ -119,39 +120,19 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   } else if (ext == ".mp4") {
     in.kind = OutputKind::mp4;
   } else {
-    return invalid_argument("--out = " + o.out + ": the name must end in .png, .exr or .mp4");
+    return invalid_argument("--out = '" + excerpt(o.out) +
+                            "': the name must end in .png, .exr or .mp4");
   }
+  if (in.kind == OutputKind::mp4 && in.out.numbered)
+    return invalid_argument("--out = '" + excerpt(o.out) +
+                            "': an MP4 is one file, its name takes no frame-number field (%d "
+                            "numbers the files of a PNG or EXR sequence)");
   return in;
 }
 
-// Frame f of a sequence: "%04d"-style patterns are filled in; otherwise _00000 goes before the
-// extension. A single frame is written under the name given.
-std::filesystem::path frame_path(const std::string& out, long long frame, long long frames) {
-  if (frames == 1) return out;
-  if (out.find('%') != std::string::npos) {
-    char name[4096];
-    std::snprintf(name, sizeof name, out.c_str(), static_cast<int>(frame));
-    return name;
-  }
-  std::filesystem::path p(out);
-  char index[24];
-  std::snprintf(index, sizeof index, "_%05lld", frame);
-  return p.parent_path() / (p.stem().string() + index + p.extension().string());
-}
-
-bool on_path(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (path == nullptr) return false;
-  std::string dirs(path);
-  std::size_t start = 0;
-  while (start <= dirs.size()) {
-    const std::size_t end = std::min(dirs.find(':', start), dirs.size());
-    const std::filesystem::path candidate =
-        std::filesystem::path(dirs.substr(start, end - start)) / program;
-    if (access(candidate.c_str(), X_OK) == 0) return true;
-    start = end + 1;
-  }
-  return false;
+// Frame f's file: a single frame is written under the name, a sequence's frames are numbered.
+std::filesystem::path frame_path(const Inputs& in, long long frame) {
+  return in.frames == 1 ? in.out.name() : in.out.name_for(frame);
 }
 
 Status write_hdr_exr(const std::filesystem::path& path, int w, int h,
@@ -164,60 +145,6 @@ Status write_hdr_exr(const std::filesystem::path& path, int w, int h,
       {"R", planes.data()}, {"G", planes.data() + n}, {"B", planes.data() + 2 * n}};
   return io::write_exr(path, w, h, channels, io::ExrPixelType::half);
 }
-
-// ffmpeg reading raw RGBA frames on its standard input, writing H.264 into a temporary beside
-// the output that is renamed once ffmpeg succeeds.
-class VideoWriter {
- public:
-  Status open(const std::filesystem::path& out, int w, int h, double fps) {
-    out_ = out;
-    temp_ = out.parent_path() /
-            ("." + out.filename().string() + ".tmp-" + std::to_string(getpid()) + ".mp4");
-    char command[8192];
-    std::snprintf(command, sizeof command,
-                  "ffmpeg -loglevel error -y -f rawvideo -pix_fmt rgba -s %dx%d -r %.6g -i - "
-                  "-vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' -c:v libx264 -pix_fmt yuv420p -crf 18 '%s'",
-                  w, h, fps, temp_.c_str());
-    std::signal(SIGPIPE, SIG_IGN);  // a dying ffmpeg must give a write error, not kill us
-    pipe_ = popen(command, "w");
-    if (pipe_ == nullptr)
-      return io_error("cannot start ffmpeg for '" + out.string() +
-                      "': " + io::errno_message(errno));
-    return {};
-  }
-  Status write(const std::vector<std::uint8_t>& rgba) {
-    if (std::fwrite(rgba.data(), 1, rgba.size(), pipe_) != rgba.size())
-      return io_error("cannot write '" + out_.string() + "': ffmpeg stopped reading");
-    return {};
-  }
-  Status close() {
-    const int rc = pclose(pipe_);
-    pipe_ = nullptr;
-    std::error_code ec;
-    if (rc != 0) {
-      std::filesystem::remove(temp_, ec);
-      return io_error("cannot write '" + out_.string() + "': ffmpeg failed (exit " +
-                      std::to_string(WIFEXITED(rc) ? WEXITSTATUS(rc) : rc) + ")");
-    }
-    std::filesystem::rename(temp_, out_, ec);
-    if (ec) {
-      std::filesystem::remove(temp_, ec);
-      return io_error("cannot write '" + out_.string() + "': " + ec.message());
-    }
-    return {};
-  }
-  ~VideoWriter() {
-    if (pipe_ != nullptr) {
-      pclose(pipe_);
-      std::error_code ec;
-      std::filesystem::remove(temp_, ec);
-    }
-  }
-
- private:
-  std::filesystem::path out_, temp_;
-  FILE* pipe_ = nullptr;
-};
 
 // The contact sheet of the documentation: calm, moderate and storm seas from a low grazing, an
 // eye-level and a high view, one labelled tile each.
@@ -232,6 +159,7 @@ constexpr SheetView kSheetViews[] = {{"low grazing (Hs + 1.5 m)", {0, 1.5, 0}, {
 constexpr const char* kSheetSeas[] = {"calm", "moderate", "storm"};
 
 int run_contact_sheet(const RenderOptions& o) {
+  if (Status s = check_output_name("--contact-sheet", o.contact_sheet); !s.ok()) return report(s);
   RenderOptions tile = o;
   if (o.picture.width == ViewFlags{}.width && o.picture.height == ViewFlags{}.height)
     tile.picture.width = "480", tile.picture.height = "270";
@@ -240,6 +168,8 @@ int run_contact_sheet(const RenderOptions& o) {
   Result<Inputs> first = parse_inputs(tile);
   if (!first.ok()) return report(first.status());
   const int w = first.value().scene.width, h = first.value().scene.height;
+  if (Status s = check_picture_memory(w, h, kSheetBytesPerTilePixel, "a contact sheet"); !s.ok())
+    return report(s);
   const int cols = 3, rows = 3;
   ContactSheet sheet{.title = "ocean render: calm, moderate, storm", .columns = cols};
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(first.value().scene);
@@ -286,23 +216,27 @@ int run_render(const RenderOptions& o) {
   Result<Inputs> parsed = parse_inputs(o);
   if (!parsed.ok()) return report(parsed.status());
   const Inputs& in = parsed.value();
-  // Fail before any work when the output cannot be written.
-  const std::filesystem::path first = frame_path(o.out, 0, in.frames);
-  if (Status s = io::check_parent_writable(first); !s.ok()) return report(s);
-  if (in.kind == OutputKind::mp4 && !on_path("ffmpeg"))
-    return report(unsupported("--out " + o.out +
-                              ": MP4 needs the ffmpeg program (apt-get install ffmpeg); "
-                              "or write a PNG sequence"));
+  // Fail before any work when the output cannot be written (or ffmpeg cannot be started).
+  if (Status s = io::check_parent_writable(frame_path(in, 0)); !s.ok()) return report(s);
+  // ... or when the picture cannot fit in memory.
+  // Indexed by OutputKind: png, exr, mp4.
+  constexpr std::uint64_t kBytesPerPixel[] = {kPngBytesPerPixel, kExrBytesPerPixel,
+                                              kVideoBytesPerPixel};
+  constexpr const char* kWhat[] = {"a PNG", "an EXR", "an MP4"};
+  const auto kind = static_cast<std::size_t>(in.kind);
+  if (Status s =
+          check_picture_memory(in.scene.width, in.scene.height, kBytesPerPixel[kind], kWhat[kind]);
+      !s.ok())
+    return report(s);
+  const int w = in.scene.width, h = in.scene.height;
+  VideoWriter video;
+  if (in.kind == OutputKind::mp4) {
+    if (Status s = video.open(in.out.name(), w, h, in.fps); !s.ok()) return report(s);
+  }
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
-  const int w = in.scene.width, h = in.scene.height;
-
-  VideoWriter video;
-  if (in.kind == OutputKind::mp4) {
-    if (Status s = video.open(o.out, w, h, in.fps); !s.ok()) return report(s);
-  }
   std::vector<std::uint8_t> srgb;
   std::vector<float> hdr;
   Progress progress("render", in.frames);
@@ -311,7 +245,7 @@ int run_render(const RenderOptions& o) {
     const Status stepped = f == 0 ? scene.warm_up(t, in.warmup_s) : scene.step(t);
     if (!stepped.ok()) return report(stepped);
     if (Status s = renderer.draw(in.view); !s.ok()) return report(s);
-    const std::filesystem::path path = frame_path(o.out, f, in.frames);
+    const std::filesystem::path path = frame_path(in, f);
     Status written;
     if (in.kind == OutputKind::exr) {
       if (Status s = renderer.read_hdr(hdr); !s.ok()) return report(s);
@@ -323,10 +257,10 @@ int run_render(const RenderOptions& o) {
     if (!written.ok()) return report(written);
     if (in.frames > 1) progress.update(f + 1);
   }
-  if (in.frames > 1) progress.finish();
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.close(); !s.ok()) return report(s);
   }
+  if (in.frames > 1) progress.finish();
   if (Status s = validation_status(*scene.context()); !s.ok()) return report(s);
   const render::RenderStats& st = renderer.stats();
   if (o.json) {
@@ -361,8 +295,10 @@ Command add_render_command(CLI::App& app) {
   add_view_flags(*command, o->picture, "image");
   command->add_option(
       "--out", o->out,
-      "output .png (sRGB), .exr (linear HDR) or .mp4 (needs ffmpeg); sequences "
-      "number PNG/EXR frames (name_00000.png or a %05d pattern); default ocean.png");
+      "output .png (sRGB), .exr (linear HDR) or .mp4 (needs ffmpeg); default ocean.png. A "
+      "sequence's PNG/EXR files are numbered name_00000.png, ..., or where the name holds one "
+      "frame-number field, %d or %0Nd (N 1..18): shot_%05d.png. %% is a percent sign; any "
+      "other % is refused");
   add_option(*command, kTime, o->time, "simulated time of the first frame, s (default 20)");
   add_option(*command, kFrames, o->frames, "number of frames (default 1)");
   add_option(*command, kFps, o->fps, "frames per second of a sequence (default 30)");

@@ -6,6 +6,7 @@
 
 #include "cli_common.hpp"
 #include "commands.hpp"
+#include "output_name.hpp"
 #include "sea_state_figure.hpp"
 
 namespace ocean::cli {
@@ -23,6 +24,9 @@ struct SpectrumOptions {
 int run_spectrum(const SpectrumOptions& o) {
   if (o.omega.empty() && o.plot_path.empty()) {
     return report(invalid_argument("spectrum needs --omega W1,W2,... or --plot FILE.png"));
+  }
+  if (!o.plot_path.empty()) {
+    if (Status s = check_output_name("--plot", o.plot_path); !s.ok()) return report(s);
   }
   Result<FrequencySpectrumParams> params = to_params(o.sea);
   if (!params.ok()) return report(params.status());

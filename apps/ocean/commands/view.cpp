@@ -21,6 +21,7 @@
 #include "commands.hpp"
 #include "ocean/io.hpp"
 #include "ocean/scene.hpp"
+#include "output_name.hpp"
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
 #include "view/frame_times.hpp"
@@ -74,8 +75,12 @@ Result<Inputs> parse_inputs(const ViewOptions& o) {
   Result<long long> frames = parse(kFrames, o.frames);
   if (!frames.ok()) return frames.status();
   in.frames = frames.value();
-  if (!o.screenshot.empty() && std::filesystem::path(o.screenshot).extension() != ".png")
-    return invalid_argument("--screenshot = " + o.screenshot + ": the name must end in .png");
+  if (!o.screenshot.empty()) {
+    if (Status s = check_output_name("--screenshot", o.screenshot); !s.ok()) return s;
+    if (std::filesystem::path(o.screenshot).extension() != ".png")
+      return invalid_argument("--screenshot = '" + excerpt(o.screenshot) +
+                              "': the name must end in .png");
+  }
   return in;
 }
 
