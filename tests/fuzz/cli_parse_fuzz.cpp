@@ -4,8 +4,8 @@
 // Input: the first byte picks the parser (its value modulo the number of parsers, in the order
 // of kParsers), the second byte (where used) picks an option of the tables below, and the rest
 // is the text. The parsers that take several flags get one flag's text per line, in the order of
-// the struct's fields. Every text gives a value or an error, never a crash, UB or a leak, and a
-// value obeys the rule it was parsed under (range, finiteness, count of items).
+// the struct's fields. Every text gives a value or a one-line error, never a crash, UB or a leak,
+// and a value obeys the rule it was parsed under (range, finiteness, count of items).
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -97,6 +97,13 @@ std::vector<std::string> lines(std::string_view text) {
   return out;
 }
 
+// Whether the parser accepted its text; a refusal is one line.
+template <class T>
+bool accepted(const Result<T>& result, const char* parser) {
+  if (!result.ok()) ocean::fuzz::expect_one_line(result.status(), parser);
+  return result.ok();
+}
+
 // The i-th line, or "" past the end.
 std::string line(const std::vector<std::string>& all, std::size_t i) {
   return i < all.size() ? all[i] : std::string();
@@ -104,12 +111,12 @@ std::string line(const std::vector<std::string>& all, std::size_t i) {
 
 void number(unsigned char, const std::string& text) {
   Result<double> v = parse_number("--hs", text);
-  if (v.ok()) expect(!std::isnan(v.value()), "parse_number gave NaN");
+  if (accepted(v, "parse_number")) expect(!std::isnan(v.value()), "parse_number gave NaN");
 }
 
 void number_list(unsigned char, const std::string& text) {
   Result<std::vector<double>> v = parse_number_list("--omega", text);
-  if (!v.ok()) return;
+  if (!accepted(v, "parse_number_list")) return;
   const auto items = static_cast<std::size_t>(std::count(text.begin(), text.end(), ',')) + 1;
   expect(v.value().size() == items, "parse_number_list: not one value per item");
   for (double x : v.value()) expect(!std::isnan(x), "parse_number_list gave NaN");
@@ -117,25 +124,25 @@ void number_list(unsigned char, const std::string& text) {
 
 void triple(unsigned char, const std::string& text) {
   Result<std::array<double, 3>> v = parse_triple("--camera", text);
-  if (!v.ok()) return;
+  if (!accepted(v, "parse_triple")) return;
   for (double x : v.value()) expect(std::isfinite(x), "parse_triple gave a non-finite value");
 }
 
 void scalar(unsigned char which, const std::string& text) {
   const NumberOption<double>& d = pick(kDoubles, which);
-  if (Result<double> v = parse(d, text); v.ok())
+  if (Result<double> v = parse(d, text); accepted(v, "parse<double>"))
     expect(obeys(d, v.value()), "parse<double> broke the rule of " + std::string(d.flag));
   const NumberOption<int>& i = pick(kInts, which);
-  if (Result<int> v = parse(i, text); v.ok())
+  if (Result<int> v = parse(i, text); accepted(v, "parse<int>"))
     expect(obeys(as_double(i), v.value()), "parse<int> broke the rule of " + std::string(i.flag));
-  if (Result<std::uint64_t> v = parse(kSeed, text); v.ok())
+  if (Result<std::uint64_t> v = parse(kSeed, text); accepted(v, "parse<uint64_t>"))
     expect(obeys(as_double(kSeed), static_cast<double>(v.value())), "parse<uint64> broke --seed");
 }
 
 void list(unsigned char which, const std::string& text) {
   const NumberOption<double>& o = pick(kDoubles, which);
   Result<std::vector<double>> v = parse_list(o, text);
-  if (!v.ok()) return;
+  if (!accepted(v, "parse_list")) return;
   for (double x : v.value())
     expect(obeys(o, x), "parse_list broke the rule of " + std::string(o.flag));
 }
@@ -144,7 +151,7 @@ void int_list(unsigned char which, const std::string& text) {
   const NumberOption<int>& o = pick(kInts, which);
   const bool allow_all = (which & 0x80) != 0;
   Result<std::vector<int>> v = bench::parse_ints(o, text, allow_all);
-  if (!v.ok()) return;
+  if (!accepted(v, "parse_ints")) return;
   expect(!v.value().empty(), "parse_ints gave an empty list");
   for (int x : v.value())
     expect((allow_all && x == 0) || obeys(as_double(o), x),
@@ -170,7 +177,7 @@ void spectrum_flags(unsigned char, const std::string& text) {
   for (std::size_t i = 0; i < std::size(fields); ++i) {
     if (i < l.size()) *fields[i] = l[i];
   }
-  (void)to_params(f);
+  (void)accepted(to_params(f), "to_params");
 }
 
 void simulation_flags(unsigned char which, const std::string& text) {
@@ -184,7 +191,7 @@ void simulation_flags(unsigned char which, const std::string& text) {
                            &f.sea.wind_speed, &f.sea.fetch};
   for (std::size_t i = 0; i < std::size(fields); ++i) *fields[i] = line(l, i);
   for (std::size_t i = std::size(fields); i < l.size(); ++i) f.set.push_back(l[i]);
-  (void)resolve_config(f);
+  (void)accepted(resolve_config(f), "resolve_config");
 }
 
 #ifdef OCEAN_HAS_VULKAN
@@ -199,7 +206,9 @@ void view_flags(unsigned char which, const std::string& text) {
   const int min_size = 1 + which % 64;
   ocean::render::SceneParams scene;
   ocean::render::View view;
-  if (!parse_view_flags(f, min_size, scene, view).ok()) return;
+  const ocean::Status parsed = parse_view_flags(f, min_size, scene, view);
+  ocean::fuzz::expect_one_line(parsed, "parse_view_flags");
+  if (!parsed.ok()) return;
   expect(scene.width >= min_size && scene.width <= 16384 && scene.height >= min_size &&
              scene.height <= 16384,
          "parse_view_flags: size out of range");

@@ -6,8 +6,8 @@
 //     --set
 //     sea.wind_sea.model=tma
 // The document goes through from_json and, as a file, through Document::merge_preset; the
-// assignments through Document::set; then Document::config. Each returns a value or an error and
-// never crashes, throws or leaks. A configuration read back is written again: to_json →
+// assignments through Document::set; then Document::config. Each returns a value or a one-line
+// error and never crashes, throws or leaks. A configuration read back is written again: to_json →
 // from_json round-trips it exactly (the header's promise).
 #include <cstddef>
 #include <cstdint>
@@ -48,6 +48,16 @@ Input split(std::string_view text) {
   return in;
 }
 
+// Whether the call succeeded; a refusal is one line.
+bool accepted(const ocean::Status& status, const char* call) {
+  ocean::fuzz::expect_one_line(status, call);
+  return status.ok();
+}
+template <class T>
+bool accepted(const ocean::Result<T>& result, const char* call) {
+  return accepted(result.ok() ? ocean::Status() : result.status(), call);
+}
+
 // A configuration that was read back must be written and read again unchanged.
 void expect_round_trip(const SimulationConfig& config, std::string_view where) {
   const std::string written = ocean::preset::to_json(config);
@@ -64,16 +74,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const Input in = split(std::string_view(reinterpret_cast<const char*>(data), size));
 
   ocean::Result<SimulationConfig> direct = ocean::preset::from_json(in.document);
-  if (direct.ok()) expect_round_trip(direct.value(), "from_json");
+  if (accepted(direct, "from_json")) expect_round_trip(direct.value(), "from_json");
 
   const ocean::fuzz::MemoryFile file(reinterpret_cast<const std::uint8_t*>(in.document.data()),
                                      in.document.size());
   ocean::preset::Document document;
-  if (!document.merge_preset(file.path().string(), "--preset").ok()) return 0;
+  if (!accepted(document.merge_preset(file.path().string(), "--preset"), "merge_preset")) return 0;
   for (std::string_view assignment : in.assignments) {
-    if (!document.set(assignment, "--set").ok()) return 0;
+    if (!accepted(document.set(assignment, "--set"), "Document::set")) return 0;
   }
   ocean::Result<SimulationConfig> layered = document.config();
-  if (layered.ok()) expect_round_trip(layered.value(), "Document::config");
+  if (accepted(layered, "Document::config")) expect_round_trip(layered.value(), "Document::config");
   return 0;
 }
