@@ -208,7 +208,6 @@ class FrequencySpectrum {
   double gamma_ = 1.0;
   double scale_ = 1.0;  // JONSWAP normalisation A_γ (or exact factor)
   double phillips_a_ = 0.0;
-  double phillips_dir_integral_ = 1.0;
   FrequencySpectrum() = default;
   double jonswap_shape(double omega) const;
 };

@@ -52,7 +52,7 @@ Result<std::unique_ptr<Backend>> make_backend(std::string_view name) {
     if (info.name == name)
       return unsupported("unsupported: backend '" + info.name + "' " + info.detail);
   }
-  return invalid_argument("backend = '" + std::string(name) +
+  return invalid_argument("backend = '" + excerpt(name) +
                           "' is unknown: must be one of cpu, vulkan, cuda");
 }
 

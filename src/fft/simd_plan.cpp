@@ -56,7 +56,7 @@ Status force_simd_target(std::string_view name) {
     }
     known += std::string(known.empty() ? "" : ", ") + hwy::TargetName(target);
   }
-  return invalid_argument("SIMD target = '" + std::string(name) +
+  return invalid_argument("SIMD target = '" + excerpt(name) +
                           "' is not available on this CPU: must be one of " + known);
 }
 

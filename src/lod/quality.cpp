@@ -12,7 +12,7 @@ std::string_view preset_name(QualityPreset preset) { return name_of(kQualityPres
 
 Result<QualityPreset> parse_preset(std::string_view name) {
   if (std::optional<QualityPreset> p = value_of(kQualityPresetNames, name)) return *p;
-  return invalid_argument("preset = " + std::string(name) + " is not a preset: must be " +
+  return invalid_argument("preset = " + excerpt(name) + " is not a preset: must be " +
                           name_list(kQualityPresetNames, ", ", " or "));
 }
 

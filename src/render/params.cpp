@@ -35,7 +35,7 @@ std::string_view to_string(DebugView view) { return name_of(kDebugViewNames, vie
 
 Result<DebugView> parse_debug_view(std::string_view name) {
   if (std::optional<DebugView> v = value_of(kDebugViewNames, name)) return *v;
-  return invalid_argument("view = " + std::string(name) + " is not a view: must be " +
+  return invalid_argument("view = " + excerpt(name) + " is not a view: must be " +
                           name_list(kDebugViewNames, ", ", " or "));
 }
 

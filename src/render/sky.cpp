@@ -69,7 +69,7 @@ Result<ShadingParams> sky_preset(std::string_view name) {
     p.exposure = 0.6;
     return p;
   }
-  return invalid_argument("sky = " + std::string(name) + " is not a sky: must be " +
+  return invalid_argument("sky = " + excerpt(name) + " is not a sky: must be " +
                           name_list(kSkyNames, ", ", " or "));
 }
 

@@ -17,7 +17,7 @@ std::string_view to_string(NormalMethod method) { return name_of(kNormalMethodNa
 
 Result<NormalMethod> parse_normal_method(std::string_view name) {
   if (std::optional<NormalMethod> m = value_of(kNormalMethodNames, name)) return *m;
-  return invalid_argument("normals = '" + std::string(name) + "' is unknown: must be one of " +
+  return invalid_argument("normals = '" + excerpt(name) + "' is unknown: must be one of " +
                           name_list(kNormalMethodNames, ", ", ", "));
 }
 

@@ -15,7 +15,7 @@ std::string_view to_string(SpectrumModel model) { return name_of(kSpectrumModelN
 
 Result<SpectrumModel> parse_spectrum_model(std::string_view name) {
   if (std::optional<SpectrumModel> m = value_of(kSpectrumModelNames, name)) return *m;
-  return invalid_argument("model = '" + std::string(name) + "' is unknown: must be one of " +
+  return invalid_argument("model = '" + excerpt(name) + "' is unknown: must be one of " +
                           name_list(kSpectrumModelNames, ", ", ", "));
 }
 

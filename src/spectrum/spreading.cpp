@@ -29,8 +29,7 @@ std::string_view to_string(SpreadingModel model) { return name_of(kSpreadingMode
 
 Result<SpreadingModel> parse_spreading_model(std::string_view name) {
   if (std::optional<SpreadingModel> m = value_of(kSpreadingModelNames, name)) return *m;
-  return invalid_argument("spreading model = '" + std::string(name) +
-                          "' is unknown: must be one of " +
+  return invalid_argument("spreading model = '" + excerpt(name) + "' is unknown: must be one of " +
                           name_list(kSpreadingModelNames, ", ", ", "));
 }
 

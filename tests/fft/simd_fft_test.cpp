@@ -35,6 +35,15 @@ void for_each_target(Body body) {
   ASSERT_TRUE(ocean::fft::force_simd_target("").ok());
 }
 
+// The refused name is echoed as ocean::excerpt writes it: the message stays one line.
+TEST(SimdTargets, UnknownTargetIsEchoedOnOneLine) {
+  const std::string message = ocean::fft::force_simd_target("AVX9\n").message();
+  EXPECT_EQ(
+      message.rfind("SIMD target = 'AVX9\\n' is not available on this CPU: must be one of ", 0), 0u)
+      << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+}
+
 TEST(SimdFft2D, MatchesFftwOnEveryTarget) {
   auto runner = ocean::make_tbb_runner();
   for_each_target([&](bool best) {

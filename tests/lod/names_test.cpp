@@ -19,4 +19,9 @@ TEST(Names, QualityPresetsRoundTrip) {
             "preset = extreme is not a preset: must be low, medium, high or ultra");
 }
 
+TEST(Names, UnknownPresetIsEchoedOnOneLine) {
+  EXPECT_EQ(parse_preset("high\r").status().message(),
+            "preset = high\\r is not a preset: must be low, medium, high or ultra");
+}
+
 }  // namespace

@@ -374,4 +374,11 @@ TEST(Renderer, BadInputIsRefusedWithAMessage) {
   EXPECT_FALSE(ocean::render::parse_debug_view("xray").ok());
 }
 
+TEST(RenderNames, UnknownNamesAreEchoedOnOneLine) {
+  EXPECT_EQ(ocean::render::parse_debug_view("x\nray").status().message(),
+            "view = x\\nray is not a view: must be shaded, lod or wireframe");
+  EXPECT_EQ(ocean::render::sky_preset("fog\ngy").status().message(),
+            "sky = fog\\ngy is not a sky: must be clear, hazy, overcast or sunset");
+}
+
 }  // namespace

@@ -19,6 +19,11 @@ TEST(Names, NormalMethodsRoundTrip) {
             "normals = 'fd' is unknown: must be one of central-difference, analytic, sobel");
 }
 
+TEST(Names, UnknownNormalMethodIsEchoedOnOneLine) {
+  EXPECT_EQ(parse_normal_method("sobel\n").status().message(),
+            "normals = 'sobel\\n' is unknown: must be one of central-difference, analytic, sobel");
+}
+
 TEST(Names, BlueChannelTable) {
   EXPECT_EQ(name_of(kBlueChannelNames, BlueChannel::foam), "foam");
   EXPECT_EQ(value_of(kBlueChannelNames, "jacobian"), BlueChannel::jacobian);

@@ -328,4 +328,9 @@ TEST(Backends, UnavailableBackendsSaySo) {
   EXPECT_TRUE(ocean::make_backend("cpu").ok());
 }
 
+TEST(Backends, UnknownBackendIsEchoedOnOneLine) {
+  EXPECT_EQ(ocean::make_backend("cpu\n").status().message(),
+            "backend = 'cpu\\n' is unknown: must be one of cpu, vulkan, cuda");
+}
+
 }  // namespace

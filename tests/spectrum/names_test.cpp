@@ -39,6 +39,17 @@ TEST(Names, SpreadingModelsRoundTrip) {
             "hasselmann, donelan-banner");
 }
 
+// A name is echoed as ocean::excerpt writes it: a control character in a user's text cannot
+// break the one-line message (found by tests/fuzz/cli_parse_fuzz.cpp through --model).
+TEST(Names, UnknownNamesAreEchoedOnOneLine) {
+  EXPECT_EQ(parse_spectrum_model("jon\rswap").status().message(),
+            "model = 'jon\\rswap' is unknown: must be one of pierson-moskowitz, jonswap, tma, "
+            "phillips");
+  EXPECT_EQ(parse_spreading_model("cos\n2s").status().message(),
+            "spreading model = 'cos\\n2s' is unknown: must be one of power-cosine, cos2s, "
+            "mitsuyasu, hasselmann, donelan-banner");
+}
+
 TEST(Names, SeaStateOptionTables) {
   expect_enum_order(kFetchLawNames);
   expect_enum_order(kDepthFactorNames);

@@ -8,6 +8,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <exception>
@@ -16,6 +17,7 @@
 
 #include "io/format_detail.hpp"
 #include "ocean/io.hpp"
+#include "support/exr_header.hpp"
 
 namespace ocean::io {
 namespace {
@@ -24,23 +26,50 @@ using detail::failure;
 using detail::FdGuard;
 using detail::with_path;
 
-// Checks that the file can be opened and starts with the OpenEXR magic number.
-Status check_magic(const std::filesystem::path& path) {
+// Reads the whole file (the readers' files are small) into `bytes`.
+Status read_all(const std::filesystem::path& path, std::string& bytes) {
   FdGuard guard;
   do {
     guard.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   } while (guard.fd < 0 && errno == EINTR);
   if (guard.fd < 0) return io_error(with_path("read", path, errno_message(errno)));
-  unsigned char magic[4] = {};
-  ssize_t got = 0;
-  do {
-    got = ::read(guard.fd, magic, sizeof magic);
-  } while (got < 0 && errno == EINTR);
-  if (got < 0) return io_error(with_path("read", path, errno_message(errno)));
-  if (got != 4 || magic[0] != 0x76 || magic[1] != 0x2f || magic[2] != 0x31 || magic[3] != 0x01) {
-    return io_error(with_path("read", path, "not an OpenEXR file (wrong magic)"));
+  char buffer[1 << 16];
+  while (true) {
+    const ssize_t got = ::read(guard.fd, buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got < 0) return io_error(with_path("read", path, errno_message(errno)));
+    if (got == 0) return Status::ok_status();
+    bytes.append(buffer, static_cast<std::size_t>(got));
   }
+}
+
+// The most sample bytes (as floats) the reader holds, as the PNG reader.
+constexpr std::uint64_t kMaxSampleBytes = std::uint64_t{1} << 30;
+// Rows read per readPixels call: the planes grow by a block at a time.
+constexpr std::int64_t kRowsPerBlock = 256;
+
+// The data window's size and the sample budget, checked on the header walk's numbers before
+// OpenEXR sizes its buffers from them, and again on OpenEXR's header.
+Status check_size(const std::filesystem::path& path, std::int64_t w, std::int64_t h,
+                  std::size_t channels) {
+  if (w < 1 || w > kExrMaxDimension || h < 1 || h > kExrMaxDimension) {
+    return io_error(with_path("read", path,
+                              "data window " + std::to_string(w) + "x" + std::to_string(h) +
+                                  " is out of range [1, " + std::to_string(kExrMaxDimension) +
+                                  "]"));
+  }
+  if (static_cast<std::uint64_t>(w * h) * channels * sizeof(float) > kMaxSampleBytes)
+    return io_error(
+        with_path("read", path, "image is too large to read (more than 1 GiB of samples)"));
   return Status::ok_status();
+}
+
+Status check_header(const std::filesystem::path& path) {
+  std::string bytes;
+  if (Status s = read_all(path, bytes); !s.ok()) return s;
+  const ExrHeaderInfo info = check_exr_header(bytes);
+  if (!info.problem.empty()) return io_error(with_path("read", path, info.problem));
+  return check_size(path, info.width, info.height, info.channels);
 }
 
 Result<ExrImage> read_checked(const std::filesystem::path& path) {
@@ -49,15 +78,7 @@ Result<ExrImage> read_checked(const std::filesystem::path& path) {
   const Imath::Box2i window = header.dataWindow();
   const std::int64_t w = std::int64_t{window.max.x} - window.min.x + 1;
   const std::int64_t h = std::int64_t{window.max.y} - window.min.y + 1;
-  if (w < 1 || w > kExrMaxDimension || h < 1 || h > kExrMaxDimension) {
-    return io_error(with_path("read", path,
-                              "data window " + std::to_string(w) + "x" + std::to_string(h) +
-                                  " is out of range [1, " + std::to_string(kExrMaxDimension) +
-                                  "]"));
-  }
   ExrImage image;
-  image.width = static_cast<int>(w);
-  image.height = static_cast<int>(h);
   for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
     const Imf::Channel& channel = it.channel();
     const std::string name = it.name();
@@ -77,16 +98,29 @@ Result<ExrImage> read_checked(const std::filesystem::path& path) {
                                                           : ExrPixelType::float32);
   }
   if (image.channel_names.empty()) return io_error(with_path("read", path, "no channels"));
+  if (Status s = check_size(path, w, h, image.channel_names.size()); !s.ok()) return s;
+  image.width = static_cast<int>(w);
+  image.height = static_cast<int>(h);
   image.planes.resize(image.channel_names.size());
-  Imf::FrameBuffer frame_buffer;
-  for (std::size_t i = 0; i < image.planes.size(); ++i) {
-    image.planes[i].assign(static_cast<std::size_t>(w * h), 0.0f);
-    frame_buffer.insert(image.channel_names[i],
-                        Imf::Slice::Make(Imf::FLOAT, image.planes[i].data(), window, sizeof(float),
-                                         sizeof(float) * static_cast<std::size_t>(w)));
+  // Block by block, each plane grown by the block's rows first: memory follows the rows the file
+  // holds, not the size its header declares (a truncated file fails at its first block).
+  const auto row = static_cast<std::size_t>(w);
+  for (std::int64_t first = 0; first < h; first += kRowsPerBlock) {
+    const std::int64_t last = std::min(h, first + kRowsPerBlock) - 1;
+    const Imath::Box2i block({window.min.x, static_cast<int>(window.min.y + first)},
+                             {window.max.x, static_cast<int>(window.min.y + last)});
+    Imf::FrameBuffer frame_buffer;
+    for (std::size_t i = 0; i < image.planes.size(); ++i) {
+      image.planes[i].resize(static_cast<std::size_t>(last + 1) * row, 0.0f);
+      frame_buffer.insert(
+          image.channel_names[i],
+          Imf::Slice::Make(Imf::FLOAT,
+                           image.planes[i].data() + static_cast<std::size_t>(first) * row, block,
+                           sizeof(float), sizeof(float) * row));
+    }
+    file.setFrameBuffer(frame_buffer);
+    file.readPixels(block.min.y, block.max.y);
   }
-  file.setFrameBuffer(frame_buffer);
-  file.readPixels(window.min.y, window.max.y);
   return image;
 }
 
@@ -94,7 +128,7 @@ Result<ExrImage> read_checked(const std::filesystem::path& path) {
 
 Result<ExrImage> read_exr(const std::filesystem::path& path) {
   try {
-    if (Status s = check_magic(path); !s.ok()) return s;
+    if (Status s = check_header(path); !s.ok()) return s;
     return read_checked(path);
   } catch (const std::exception& e) {
     return failure("read", path, e.what());

@@ -25,8 +25,12 @@ struct ExrImage {
 /// Contract: of a multi-part file only the first part is read. io_error "cannot read '<path>':
 /// <reason>" if the file cannot be opened, is not an OpenEXR file, is corrupt or truncated, is a
 /// deep image, has subsampled or UINT channels, a data window larger than kExrMaxDimension in
-/// either direction, or more than kExrMaxChannels channels. Never throws (OpenEXR exceptions
-/// become io_error).
+/// either direction, more than kExrMaxChannels channels, or needs more than 1 GiB of samples as
+/// floats. The header is checked first (see exr_header.hpp: every attribute inside the file and
+/// read by OpenEXR as its declared size), then the data window and the sample budget, before
+/// OpenEXR reads the file and sizes its buffers from them. The pixels are read in blocks of rows,
+/// so memory grows with the rows the file holds rather than with the size it declares. The file
+/// is read whole once for the header check. Never throws (OpenEXR exceptions become io_error).
 ocean::Result<ExrImage> read_exr(const std::filesystem::path& path);
 
 }  // namespace ocean::io
