@@ -28,7 +28,7 @@ namespace ocean::bake::detail {
 namespace {
 
 Status cannot_write(const std::filesystem::path& file, int err) {
-  return io_error("cannot write " + quoted(file) + ": " + io::errno_message(err));
+  return io_error("cannot write " + io::quoted(file) + ": " + io::errno_message(err));
 }
 
 // The pid a holder wrote into the lock file, or "" when there is none yet.
@@ -73,7 +73,7 @@ Result<FolderLock> FolderLock::take(const std::filesystem::path& dir) {
     struct stat st {};
     if (::fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
       ::close(fd);
-      return io_error("cannot write " + quoted(file) + ": it is not a regular file");
+      return io_error("cannot write " + io::quoted(file) + ": it is not a regular file");
     }
     int locked = -1;
     do {
@@ -84,9 +84,9 @@ Result<FolderLock> FolderLock::take(const std::filesystem::path& dir) {
       const std::string pid = err == EWOULDBLOCK ? holder_pid(fd) : std::string();
       ::close(fd);
       if (err != EWOULDBLOCK) return cannot_write(file, err);
-      return io_error(quoted(dir) + " is being baked by " +
+      return io_error(io::quoted(dir) + " is being baked by " +
                       (pid.empty() ? std::string("another process") : "process " + pid) +
-                      " (it holds " + quoted(file) + ")");
+                      " (it holds " + io::quoted(file) + ")");
     }
     if (!same_file(fd, file)) {  // its holder removed it meanwhile: lock the new one
       ::close(fd);
@@ -105,7 +105,7 @@ Result<FolderLock> FolderLock::take(const std::filesystem::path& dir) {
     }
     return lock;
   }
-  return io_error("cannot lock " + quoted(file) + ": it keeps being replaced");
+  return io_error("cannot lock " + io::quoted(file) + ": it keeps being replaced");
 }
 
 void FolderLock::release() noexcept {

@@ -65,7 +65,7 @@ Status check_output_file(const fs::path& path) {
     return {};
   }
   return io_error(
-      "cannot write " + quoted(path) + ": " +
+      "cannot write " + io::quoted(path) + ": " +
       (type == fs::file_type::directory ? "it is a directory" : "it is not a regular file"));
 }
 
@@ -116,7 +116,7 @@ Status OutputFolder::begin() {
   const fs::path manifest = dir_ / kManifest;
   if (::unlink(manifest.c_str()) != 0 && errno != ENOENT) {
     const int err = errno;
-    return io_error("cannot remove the old manifest " + quoted(manifest) + ": " +
+    return io_error("cannot remove the old manifest " + io::quoted(manifest) + ": " +
                     io::errno_message(err));
   }
   sync_folder(dir_);
