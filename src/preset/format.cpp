@@ -42,9 +42,8 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
   FrequencySpectrumParams& s = w.spectrum;
   std::string model(to_string(s.model));
   r.string("model", model);
-  // The names are short ASCII words, which excerpt() leaves as they are: only the echo of an
-  // unknown name is shortened.
-  Result<SpectrumModel> m = parse_spectrum_model(excerpt(model));
+  // The name parsers echo an unknown name through excerpt(): short and one line.
+  Result<SpectrumModel> m = parse_spectrum_model(model);
   if (!m.ok()) return invalid_argument(r.path_of("model") + ": " + m.status().message());
   s.model = m.value();
   r.number("wind_speed_mps", s.wind_speed_mps, true);
@@ -82,7 +81,7 @@ Status read_wave_system(const Json& doc, const std::string& path, WaveSystemPara
     ObjectReader sr(*spreading, r.path_of("spreading"));
     std::string sm(to_string(w.spreading.model));
     sr.string("model", sm);
-    Result<SpreadingModel> parsed = parse_spreading_model(excerpt(sm));
+    Result<SpreadingModel> parsed = parse_spreading_model(sm);
     if (!parsed.ok())
       return invalid_argument(sr.path_of("model") + ": " + parsed.status().message());
     w.spreading.model = parsed.value();
@@ -181,7 +180,7 @@ Result<SimulationConfig> from_value(const Json& document) {
     r.adopt(fr.finish());
   }
   if (Status s = r.finish(); !s.ok()) return s;
-  Result<NormalMethod> method = parse_normal_method(excerpt(normals));
+  Result<NormalMethod> method = parse_normal_method(normals);
   if (!method.ok()) return method.status();
   c.normals = method.value();
   if (std::optional<BlueChannel> b = value_of(kBlueChannelNames, blue))
