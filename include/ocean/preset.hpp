@@ -35,6 +35,9 @@ inline constexpr int kMaxPresetDepth = 64;
 inline constexpr std::size_t kMaxKeyBytes = 256;
 /// The longest value of Document::set, in bytes.
 inline constexpr std::size_t kMaxValueBytes = std::size_t{64} << 10;
+/// How long a preset that is a FIFO may stay without a writer before reading it fails, in
+/// milliseconds (a named pipe nothing writes to would otherwise block forever).
+inline constexpr int kFifoWaitMs = 5000;
 
 /// The preset document of `config`: every key, in a fixed order. `indent` < 0 writes one line,
 /// otherwise that many spaces per level. Numbers round-trip exactly through from_json.
@@ -65,8 +68,9 @@ class Document {
 
   /// Merges a built-in preset or a preset file. A bare name (no directory, no extension) that
   /// is not an existing file selects a built-in preset. Any file may be named (a pipe, a
-  /// device): reading stops after kMaxPresetBytes. Errors, `label` being how the caller names
-  /// this input (a flag, a field):
+  /// device): reading stops after kMaxPresetBytes, and a FIFO that no writer opens within
+  /// kFifoWaitMs is an io_error ("...: no process wrote to the FIFO within 5 s"). Errors, `label`
+  /// being how the caller names this input (a flag, a field):
   ///   invalid_argument "<label> = <name> is neither a file nor a preset: must be calm,
   ///                     moderate, storm or a JSON file"
   ///   io_error         "cannot read preset '<path>': <reason>"

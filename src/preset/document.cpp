@@ -1,5 +1,7 @@
 // Presets assembled in layers and the built-in presets by name (see ocean/preset.hpp).
 #include <fcntl.h>
+#include <poll.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -34,17 +36,43 @@ std::string size_limit() {
   return std::to_string(kMaxPresetBytes) + " bytes (1 MiB), the most a preset may hold";
 }
 
+// For a FIFO: waits up to kFifoWaitMs for a writer (or its data); then, whatever `fd` is,
+// makes its reads blocking. The message of an error is the reason alone.
+Status wait_for_writer(int fd) {
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISFIFO(st.st_mode)) {
+    pollfd p{.fd = fd, .events = POLLIN, .revents = 0};
+    int ready = 0;
+    do {
+      ready = ::poll(&p, 1, kFifoWaitMs);
+    } while (ready < 0 && errno == EINTR);
+    if (ready == 0)
+      return io_error("no process wrote to the FIFO within " + std::to_string(kFifoWaitMs / 1000) +
+                      " s");
+  }
+  const int flags = ::fcntl(fd, F_GETFL);
+  if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) < 0)
+    return io_error(std::strerror(errno));
+  return {};
+}
+
 // The text of the file at `path`, read up to one byte past the bound: whatever the file is (a
 // pipe, /dev/zero), no more than kMaxPresetBytes + 1 bytes are ever held.
 Result<std::string> read_bounded(const std::filesystem::path& path) {
   const std::string name = excerpt(path.string());
   int fd = -1;
+  // Opened without blocking (a FIFO's open() would wait for a writer forever), then read
+  // blocking once a FIFO has a writer.
   do {
-    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
   } while (fd < 0 && errno == EINTR);
   if (fd < 0) {
     const int err = errno;
     return io_error("cannot read preset '" + name + "': " + std::strerror(err));
+  }
+  if (Status waited = wait_for_writer(fd); !waited.ok()) {
+    ::close(fd);
+    return io_error("cannot read preset '" + name + "': " + waited.message());
   }
   std::string text(kMaxPresetBytes + 1, '\0');
   std::size_t size = 0;

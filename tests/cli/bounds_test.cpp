@@ -15,10 +15,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using ocean_test::CliRun;
+using ocean_test::line_count;
 using ocean_test::run_cli;
 using ocean_test::run_cli_after;
 using ocean_test::ScratchDir;
-using ocean_test::line_count;
 
 // Every command that prints on standard output, with small settings.
 TEST(CliBounds, AFullStandardOutputFailsEveryCommandThatPrints) {

@@ -89,8 +89,8 @@ TEST(AtomicFile, MissingDirectoryNamesThePathAndLeavesNothing) {
 TEST(AtomicFile, AControlCharacterInThePathKeepsTheMessageOnOneLine) {
   TempDir dir;
   const fs::path target = dir.path() / "new\nline" / "x\r.npy";
-  for (const Status& s : {check_parent_writable(target),
-                          write_bytes_atomically(target, {bytes_of("data")})}) {
+  for (const Status& s :
+       {check_parent_writable(target), write_bytes_atomically(target, {bytes_of("data")})}) {
     ASSERT_EQ(s.code(), ErrorCode::io_error);
     EXPECT_EQ(s.message().find_first_of("\n\r"), std::string::npos) << s.message();
     EXPECT_NE(s.message().find("new\\nline"), std::string::npos) << s.message();

@@ -101,6 +101,20 @@ TEST(PresetBounds, SizeIsBoundedForTextFilesPipesAndDevices) {
   ASSERT_EQ(std::system(writer.c_str()), 0);
   EXPECT_EQ(doc.merge_preset(fifo.string()).message(),
             "preset '" + fifo.string() + "'" + limit_message);
+  // A FIFO nothing writes to: an error after kFifoWaitMs, not a process blocked for ever.
+  const fs::path silent = dir.path / "silent.json";
+  ASSERT_EQ(::mkfifo(silent.c_str(), 0600), 0);
+  const ocean::Status waited = doc.merge_preset(silent.string());
+  EXPECT_EQ(waited.code(), ErrorCode::io_error);
+  EXPECT_EQ(waited.message(), "cannot read preset '" + silent.string() +
+                                  "': no process wrote to the FIFO within 5 s");
+  // A FIFO whose writer comes late and writes a preset: read as any file.
+  const fs::path late = dir.path / "late.json";
+  ASSERT_EQ(::mkfifo(late.c_str(), 0600), 0);
+  const std::string late_writer =
+      "(sleep 1; printf '{\"seed\": 7}' > '" + late.string() + "') 2>/dev/null &";
+  ASSERT_EQ(std::system(late_writer.c_str()), 0);
+  EXPECT_TRUE(doc.merge_preset(late.string()).ok());
   // A directory is a read error, not a size one.
   EXPECT_EQ(doc.merge_preset(dir.path.string()).code(), ErrorCode::io_error);
 }

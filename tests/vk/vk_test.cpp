@@ -53,14 +53,12 @@ TEST(Vk, AllocationAboveTheDeviceLimitIsRefusedBeforeAllocating) {
   ocean::vk::Context& ctx = *created.value();
   EXPECT_GE(ctx.max_allocation_bytes, VkDeviceSize{1} << 30);  // Vulkan's required minimum
   ctx.max_allocation_bytes = VkDeviceSize{1} << 20;
-  auto fits = ocean::vk::create_buffer(ctx, VkDeviceSize{1} << 19,
-                                       VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+  auto fits = ocean::vk::create_buffer(ctx, VkDeviceSize{1} << 19, VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                        ocean::vk::MemoryUse::upload);
   ASSERT_TRUE(fits.ok()) << fits.status().message();
   ocean::vk::destroy_buffer(ctx, fits.value());
-  auto too_big = ocean::vk::create_buffer(ctx, VkDeviceSize{2} << 20,
-                                          VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                                          ocean::vk::MemoryUse::upload);
+  auto too_big = ocean::vk::create_buffer(
+      ctx, VkDeviceSize{2} << 20, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, ocean::vk::MemoryUse::upload);
   ASSERT_FALSE(too_big.ok());
   EXPECT_EQ(too_big.status().code(), ocean::ErrorCode::invalid_argument);
   EXPECT_NE(too_big.status().message().find("maxMemoryAllocationSize 1.0 MiB"), std::string::npos)
