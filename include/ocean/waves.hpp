@@ -62,10 +62,10 @@ struct Waypoint {
 /// p ∝ e^{−r/a}, W.4), Kelvin's 19.47° cusps and transverse waves of wavelength 2πU²/g at low
 /// Froude numbers Fr = U/√(gL), narrower at high ones (Rabaud & Moisy 2013).
 struct KelvinWake {
-  double x_m = 0.0;          ///< position at time 0 (no path), m
-  double z_m = 0.0;          ///< position at time 0 (no path), m
-  double heading_deg = 0.0;  ///< direction of travel, finite (no path)
-  double speed_mps = 5.0;    ///< U, finite, in (0, 100] (no path)
+  double x_m = 0.0;             ///< position at time 0 (no path), m
+  double z_m = 0.0;             ///< position at time 0 (no path), m
+  double heading_deg = 0.0;     ///< direction of travel, finite (no path)
+  double speed_mps = 5.0;       ///< U, finite, in (0, 100] (no path)
   double hull_length_m = 10.0;  ///< L, finite, in [0.01, 1000]
   /// The largest |height| of the steady pattern, m (≥ 0, finite); unset: 0.02·L.
   std::optional<double> peak_height_m;
@@ -128,8 +128,8 @@ struct LayerParams {
   LocalArea area;
   std::vector<KelvinWake> wakes;
   std::vector<Waveform> waveforms;
-  double choppiness = 1.0;      ///< λ ≥ 0 for the wakes' horizontal displacement (finite)
-  double gravity_mps2 = 9.81;   ///< g > 0
+  double choppiness = 1.0;     ///< λ ≥ 0 for the wakes' horizontal displacement (finite)
+  double gravity_mps2 = 9.81;  ///< g > 0
 };
 
 /// One evaluation of the layer on its grid.

@@ -72,7 +72,7 @@ Result<HeightMap> read_npy(const std::filesystem::path& path, const std::string&
     return bad(path, "truncated or oversized .npy header");
   const std::string header = bytes.substr(8 + len_bytes, header_len);
   const std::string descr = dict_value(header, "descr");
-  const std::size_t item = descr == "'<f4'" || descr == "\"<f4\"" ? 4
+  const std::size_t item = descr == "'<f4'" || descr == "\"<f4\""   ? 4
                            : descr == "'<f8'" || descr == "\"<f8\"" ? 8
                                                                     : 0;
   if (item == 0) return bad(path, "dtype must be float32 or float64 ('<f4' or '<f8')");
@@ -177,7 +177,8 @@ Result<HeightMap> load_height_map(const std::filesystem::path& path) {
       io::detail::PngIo io;
       io.file = std::fopen(path.c_str(), "rb");
       if (io.file == nullptr) {
-        return io_error("cannot read '" + excerpt(path.string()) + "': " + io::errno_message(errno));
+        return io_error("cannot read '" + excerpt(path.string()) +
+                        "': " + io::errno_message(errno));
       }
       Result<HeightMap> map = read_png(path, io);
       std::fclose(io.file);

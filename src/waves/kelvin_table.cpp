@@ -67,8 +67,9 @@ std::vector<Mode> modes(const KelvinTableSpec& spec, double h, int m_count) {
     const double k = k0 * (1.0 + u2);
     const double ka2 = k * a * k * a;
     const double amplitude = ka2 / std::pow(1.0 + ka2, 1.5);  // (k·a)²·p̂(k)/p̂(0)  (W.4)
-    const double taper = k <= 0.5 * k_cut ? 1.0 : k >= k_cut ? 0.0
-                                            : 0.5 + 0.5 * std::cos(kPi * (2.0 * k / k_cut - 1.0));
+    const double taper = k <= 0.5 * k_cut ? 1.0
+                         : k >= k_cut     ? 0.0
+                                          : 0.5 + 0.5 * std::cos(kPi * (2.0 * k / k_cut - 1.0));
     const double dtheta_dm = 1.0 / (k0 * sec * (1.0 + 2.0 * u2));
     out[static_cast<std::size_t>(j)] = {.weight = amplitude * taper * dtheta_dm * dm,
                                         .k_s = k0 * sec,
@@ -132,7 +133,8 @@ KelvinTable KelvinTable::make(const KelvinTableSpec& spec) {
     // The wave part starts at the object: ramp it in over half a hull length, and fade it out
     // over the last tenth of the table so that it ends without a step (W.7).
     const double window = smoothstep(s / ramp_m) * smoothstep((spec.length_m - s) / fade_m);
-    float* out = t.values_.data() + 3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(t.cols_);
+    float* out =
+        t.values_.data() + 3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(t.cols_);
     for (int col = 0; col < t.cols_; ++col) {
       const auto c = static_cast<std::size_t>(col);
       for (std::size_t k = 0; k < 3; ++k)

@@ -9,11 +9,11 @@ namespace ocean::waves::detail {
 
 /// What a table is computed for. Values are assumed valid (LocalLayer::make checks them).
 struct KelvinTableSpec {
-  double speed_mps = 5.0;      ///< U
-  double hull_length_m = 10.0; ///< L
-  double gravity_mps2 = 9.81;  ///< g
-  double spacing_m = 1.0;      ///< wanted cell size (the layer's); grown if the table gets too big
-  double length_m = 100.0;     ///< distance behind the object the table covers
+  double speed_mps = 5.0;       ///< U
+  double hull_length_m = 10.0;  ///< L
+  double gravity_mps2 = 9.81;   ///< g
+  double spacing_m = 1.0;       ///< wanted cell size (the layer's); grown if the table gets too big
+  double length_m = 100.0;      ///< distance behind the object the table covers
 };
 
 class KelvinTable {

@@ -66,12 +66,12 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params) {
           found = t;
       }
       if (found == impl.tables.size()) {
-        impl.tables.push_back(detail::KelvinTable::make(
-            {.speed_mps = speed,
-             .hull_length_m = w.hull_length_m,
-             .gravity_mps2 = params.gravity_mps2,
-             .spacing_m = params.area.size_m / params.area.resolution,
-             .length_m = 2.0 * params.area.size_m}));
+        impl.tables.push_back(
+            detail::KelvinTable::make({.speed_mps = speed,
+                                       .hull_length_m = w.hull_length_m,
+                                       .gravity_mps2 = params.gravity_mps2,
+                                       .spacing_m = params.area.size_m / params.area.resolution,
+                                       .length_m = 2.0 * params.area.size_m}));
       }
       mine.push_back(found);
     }
@@ -94,7 +94,8 @@ Placed place(const KelvinWake& w, const std::vector<std::size_t>& tables,
            .fade_m = w.fade_length_m};
   p.table = &all[tables.front()];
   for (std::size_t i : tables) {
-    if (std::abs(all[i].speed_mps() - pose.speed_mps) < std::abs(p.table->speed_mps() - pose.speed_mps))
+    if (std::abs(all[i].speed_mps() - pose.speed_mps) <
+        std::abs(p.table->speed_mps() - pose.speed_mps))
       p.table = &all[i];
   }
   return p;
@@ -103,7 +104,7 @@ Placed place(const KelvinWake& w, const std::vector<std::size_t>& tables,
 // Adds one placed wake at world (x, z) to (Dx, h, Dz).
 void add_wake(const Placed& p, double choppiness, double x, double z, std::array<double, 3>& d) {
   const double dx = x - p.x, dz = z - p.z;
-  const double s = -(dx * p.cos_h + dz * p.sin_h);  // metres behind the object
+  const double s = -(dx * p.cos_h + dz * p.sin_h);   // metres behind the object
   const double zeta = -dx * p.sin_h + dz * p.cos_h;  // metres to its left
   const std::array<double, 3> v = p.table->sample(s, zeta);
   if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0) return;

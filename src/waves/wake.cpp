@@ -53,7 +53,8 @@ Status validate(const KelvinWake& w) {
   // Every segment's speed becomes a table of its own: the same limits apply.
   for (std::size_t i = 1; i < w.path.size(); ++i) {
     const double speed = along_segment(w.path[i - 1], w.path[i], w.path[i].time_s).speed_mps;
-    if (Status s = require_in_range("path[" + std::to_string(i) + "] speed_mps", speed, 1e-3, 100.0);
+    if (Status s =
+            require_in_range("path[" + std::to_string(i) + "] speed_mps", speed, 1e-3, 100.0);
         !s.ok()) {
       return s;
     }

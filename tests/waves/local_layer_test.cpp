@@ -103,7 +103,8 @@ TEST(KelvinWake, DisplacementSharpensCrestsLikeTheSea) {
   for (double x = 0.0; x >= -50.0; x -= 0.37) {
     const double d = layer->displacement_at(x, 0.0, 0.0)[0];
     const double slope = (layer->displacement_at(x + dx, 0.0, 0.0)[1] -
-                          layer->displacement_at(x - dx, 0.0, 0.0)[1]) / (2 * dx);
+                          layer->displacement_at(x - dx, 0.0, 0.0)[1]) /
+                         (2 * dx);
     dot += d * slope / k0;
     norm_d += d * d;
     norm_h += slope * slope / (k0 * k0);
@@ -164,7 +165,8 @@ TEST(LocalLayer, WarnsAboutAnObjectOutsideTheArea) {
 
 TEST(KelvinWake, PathGivesPositionHeadingAndSpeed) {
   KelvinWake w;
-  w.path = {{.time_s = 0.0, .x_m = 0.0, .z_m = 0.0}, {.time_s = 10.0, .x_m = 0.0, .z_m = 50.0},
+  w.path = {{.time_s = 0.0, .x_m = 0.0, .z_m = 0.0},
+            {.time_s = 10.0, .x_m = 0.0, .z_m = 50.0},
             {.time_s = 20.0, .x_m = 30.0, .z_m = 50.0}};
   const auto a = ocean::waves::pose_at(w, 4.0);
   EXPECT_DOUBLE_EQ(a.z_m, 20.0);

@@ -35,8 +35,11 @@ std::shared_ptr<const ocean::waves::LocalLayer> layer(LayerParams p) {
 LayerParams wake_params() {
   LayerParams p;
   p.area = {.origin_m = {-60.0, -60.0}, .size_m = 120.0, .resolution = 256};
-  p.wakes.push_back({.x_m = 30.0, .heading_deg = 20.0, .speed_mps = 3.0,
-                     .hull_length_m = 8.0, .peak_height_m = 0.4});
+  p.wakes.push_back({.x_m = 30.0,
+                     .heading_deg = 20.0,
+                     .speed_mps = 3.0,
+                     .hull_length_m = 8.0,
+                     .peak_height_m = 0.4});
   p.wakes[0].x_m = 30.0 - 3.0 * 3.0 * std::cos(20.0 * M_PI / 180);  // at (30, z) when t = 3 s
   p.wakes[0].z_m = -3.0 * 3.0 * std::sin(20.0 * M_PI / 180);
   return p;
@@ -57,7 +60,8 @@ TEST(LocalLayerQueries, InverseDisplacementLandsOnSeaPlusLayer) {
       const auto d = sim->displacement_at(x, z);  // sea + layer at the source point
       targets.push_back({x + d[0], z + d[2]});
       expected.push_back(d[1]);
-      largest_local = std::max(largest_local, std::abs(sim->local_layer()->displacement_at(x, z, 3.0)[1]));
+      largest_local =
+          std::max(largest_local, std::abs(sim->local_layer()->displacement_at(x, z, 3.0)[1]));
     }
   }
   EXPECT_GT(largest_local, 0.1);  // the wake is there to be found

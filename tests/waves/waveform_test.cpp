@@ -42,12 +42,16 @@ TEST(Waveform, SamplesAtCellCentresAreTheMapTimesAmplitude) {
     }
   }
   EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, 98.0, 49.0), 0.5 * 0.5);  // between columns
-  EXPECT_EQ(ocean::waves::waveform_height(w, 95.9, 49.0), 0.0);              // outside
+  EXPECT_EQ(ocean::waves::waveform_height(w, 95.9, 49.0), 0.0);               // outside
   EXPECT_EQ(ocean::waves::waveform_height(w, 100.0, 52.1), 0.0);
 }
 
 TEST(Waveform, RotationTurnsTheMapAboutItsCentre) {
-  const Waveform w{.map = ramp_map(), .x_m = 0.0, .z_m = 0.0, .size_m = 8.0, .amplitude_m = 1.0,
+  const Waveform w{.map = ramp_map(),
+                   .x_m = 0.0,
+                   .z_m = 0.0,
+                   .size_m = 8.0,
+                   .amplitude_m = 1.0,
                    .rotation_deg = 90.0};
   // Column 3, row 0 sits at map offset (+3, −1); turned by +90° it lands at (+1, +3).
   EXPECT_NEAR(ocean::waves::waveform_height(w, 1.0, 3.0), 3.0, 1e-12);
