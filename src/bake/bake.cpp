@@ -89,18 +89,33 @@ Json manifest_head(const Simulator& sim, std::string_view backend, const BakePar
   return manifest;
 }
 
-// Evaluates the local layer at t and writes its heights as local_height_f<index>.npy [N][N].
+// Evaluates the local layer at t and writes its heights as local_height_f<index>.npy [N][N] and,
+// with the png format, local_height_f<index>.png: 16-bit gray mapping [−r, r] to [0, 65535],
+// r = the frame's largest |h| (at least 1 mm), which the manifest's frame entry records.
 Status write_local_frame(const waves::LocalLayer& layer, double t, const char* index,
-                         const std::filesystem::path& dir, waves::LocalFrame& local,
-                         std::vector<std::string>& names) {
+                         const BakeParams& p, waves::LocalFrame& local,
+                         std::vector<std::string>& names, Json& entry) {
   layer.evaluate(t, local);
   const auto n = static_cast<std::size_t>(local.area.resolution);
   std::vector<float> heights(n * n);
-  for (std::size_t i = 0; i < n * n; ++i) heights[i] = local.displacement[3 * i + 1];
-  const std::string name = std::string("local_height_f") + index + ".npy";
+  double range = 1e-3;
+  for (std::size_t i = 0; i < n * n; ++i) {
+    heights[i] = local.displacement[3 * i + 1];
+    range = std::max(range, std::abs(static_cast<double>(heights[i])));
+  }
+  const std::string stem = std::string("local_height_f") + index;
   const std::array<std::size_t, 2> shape{n, n};
-  names.push_back(name);
-  return io::write_npy(dir / name, heights.data(), shape);
+  names.push_back(stem + ".npy");
+  if (Status s = io::write_npy(p.output_dir / names.back(), heights.data(), shape); !s.ok())
+    return s;
+  if (!p.formats.png) return {};
+  std::vector<std::uint16_t> gray(n * n);
+  for (std::size_t i = 0; i < n * n; ++i)
+    gray[i] = static_cast<std::uint16_t>(std::lround((heights[i] / range * 0.5 + 0.5) * 65535.0));
+  entry["local_height_png_range_m"] = range;
+  names.push_back(stem + ".png");
+  return io::write_png16_gray(p.output_dir / names.back(), static_cast<int>(n),
+                              static_cast<int>(n), gray.data());
 }
 
 // Writes every frame's files, calling `on_frame` after each; returns the Status that stopped the
@@ -128,14 +143,16 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
         return s;
       }
     }
+    Json entry{{"index", f}, {"time_s", t}};
     if (p.local_layer != nullptr) {
-      if (Status s = write_local_frame(*p.local_layer, t, index, folder.dir(), local, names);
+      if (Status s = write_local_frame(*p.local_layer, t, index, p, local, names, entry);
           !s.ok()) {
         folder.remove(names);
         return s;
       }
     }
-    manifest["frames"].push_back({{"index", f}, {"time_s", t}, {"files", names}});
+    entry["files"] = names;
+    manifest["frames"].push_back(entry);
     manifest["frames_written"] = f + 1;
     if (on_frame) {
       const FrameDone done{.index = f,
