@@ -114,8 +114,8 @@ Status write_local_frame(const waves::LocalLayer& layer, double t, const char* i
     gray[i] = static_cast<std::uint16_t>(std::lround((heights[i] / range * 0.5 + 0.5) * 65535.0));
   entry["local_height_png_range_m"] = range;
   names.push_back(stem + ".png");
-  return io::write_png16_gray(p.output_dir / names.back(), static_cast<int>(n),
-                              static_cast<int>(n), gray.data());
+  return io::write_png16_gray(p.output_dir / names.back(), static_cast<int>(n), static_cast<int>(n),
+                              gray.data());
 }
 
 // Writes every frame's files, calling `on_frame` after each; returns the Status that stopped the
@@ -145,8 +145,7 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
     }
     Json entry{{"index", f}, {"time_s", t}};
     if (p.local_layer != nullptr) {
-      if (Status s = write_local_frame(*p.local_layer, t, index, p, local, names, entry);
-          !s.ok()) {
+      if (Status s = write_local_frame(*p.local_layer, t, index, p, local, names, entry); !s.ok()) {
         folder.remove(names);
         return s;
       }

@@ -104,14 +104,6 @@ Result<HeightMap> read_npy(const std::filesystem::path& path, const std::string&
   return map;
 }
 
-void on_read(png_structp png, png_bytep data, std::size_t n) {
-  auto* io = static_cast<io::detail::PngIo*>(png_get_io_ptr(png));
-  if (std::fread(data, 1, n, io->file) != n) {
-    if (std::ferror(io->file) != 0) io->err = errno != 0 ? errno : EIO;
-    png_error(png, io->err != 0 ? "read failed" : "truncated file");
-  }
-}
-
 bool read_header(png_structp png, png_infop info) {
   if (setjmp(png_jmpbuf(png)) != 0) return false;
   png_read_info(png, info);
@@ -137,7 +129,7 @@ Result<HeightMap> read_png(const std::filesystem::path& path, io::detail::PngIo&
     ~Destroy() { png_destroy_read_struct(png, info, nullptr); }
   } destroy{&png, &info};
   if (info == nullptr) return bad(path, "out of memory");
-  png_set_read_fn(png, &io, on_read);
+  png_set_read_fn(png, &io, io::detail::png_on_read);
   png_set_user_limits(png, kMaxHeightMapSide, kMaxHeightMapSide);
   if (!read_header(png, info)) return bad(path, io::detail::png_reason(io));
   if (png_get_color_type(png, info) != PNG_COLOR_TYPE_GRAY)
