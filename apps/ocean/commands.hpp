@@ -21,6 +21,7 @@ Command add_info_command(CLI::App& app);
 Command add_validate_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_lod_command(CLI::App& app);
+Command add_query_command(CLI::App& app);
 Command add_render_command(CLI::App& app);  // Vulkan builds only
 Command add_view_command(CLI::App& app);    // builds with GLFW and Dear ImGui only
 

@@ -33,7 +33,7 @@ int run(int argc, char** argv, Doing& doing) {
       ocean::cli::add_spreading_command(app), ocean::cli::add_stats_command(app),
       ocean::cli::add_bake_command(app),      ocean::cli::add_bench_command(app),
       ocean::cli::add_info_command(app),      ocean::cli::add_validate_command(app),
-      ocean::cli::add_lod_command(app),
+      ocean::cli::add_lod_command(app),       ocean::cli::add_query_command(app),
 #ifdef OCEAN_HAS_VULKAN
       ocean::cli::add_render_command(app),
 #endif

@@ -15,6 +15,8 @@
 //        [−height_png_range_m, +height_png_range_m] to [0, 65535]
 //   exr: displacement_c<k>_f<f>.exr R,G,B float32; maps_c<k>_f<f>.exr normal.X/Y/Z, jacobian, foam
 //        half; nfs_c<k>_f<f>_mip<l>.exr R,G,B,A half
+//   with a local layer (any format): local_height_f<f>.npy [N][N] float32 heights of the layer,
+//        row i at z = z0 + (i + ½)·size/N, column j at x = x0 + (j + ½)·size/N
 // Rows are row-major [row][col]; texel (col,row) starts at world (col,row)·L/N.
 #pragma once
 
@@ -28,6 +30,7 @@
 
 #include "ocean/core.hpp"
 #include "ocean/sim.hpp"
+#include "ocean/waves.hpp"
 
 namespace ocean::bake {
 
@@ -61,14 +64,23 @@ struct BakeParams {
   /// set from another thread or from a signal handler (a lock-free atomic store is
   /// async-signal-safe). Not owned; must outlive the call.
   const std::atomic<bool>* cancel = nullptr;
+  /// When set, every frame also writes the layer's heights at the frame's time
+  /// (local_height_f<f>.npy) and the manifest gains "local_area": {"origin_m": [x0, z0],
+  /// "size_m", "resolution"}.
+  std::shared_ptr<const waves::LocalLayer> local_layer;
+  /// A calm sea: no wind sea, so no cascade files (the simulator is not stepped; the manifest
+  /// says "calm": true). Needs local_layer.
+  bool calm = false;
 };
 
 /// One frame written, reported to the caller's callback.
 struct FrameDone {
-  long long index = 0;           ///< the frame just written, 0..frame_count−1
-  long long frame_count = 0;     ///< frames of the whole bake
-  double time_s = 0.0;           ///< its simulation time
-  const Frame* frame = nullptr;  ///< the simulated fields; valid only during the callback
+  long long index = 0;        ///< the frame just written, 0..frame_count−1
+  long long frame_count = 0;  ///< frames of the whole bake
+  double time_s = 0.0;        ///< its simulation time
+  const Frame* frame =
+      nullptr;  ///< the simulated fields (null when calm); valid only during the callback
+  const waves::LocalFrame* local = nullptr;  ///< the local layer's frame, or null
 };
 
 /// Called after each frame's files are written, on the calling thread. A non-ok Status stops the

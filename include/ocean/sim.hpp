@@ -27,6 +27,10 @@
 
 namespace ocean {
 
+namespace waves {
+class LocalLayer;  // ocean/waves.hpp
+}
+
 /// How surface normals and the Jacobian are obtained from the synthesised fields.
 enum class NormalMethod {
   /// Central differences of the displacement, toroidal wrap (Aebi, VR Ocean, eqs. 45–46).
@@ -213,12 +217,20 @@ class Simulator {
   [[nodiscard]] const SimulationConfig& config() const { return config_; }
   [[nodiscard]] const Backend& backend() const { return *backend_; }
 
+  /// Adds a local layer (ocean/waves.hpp: wakes, waveforms) to the surface the queries see, so
+  /// that displacement_at and heights_at return sea + layer, the layer taken at the published
+  /// frame's time. nullptr removes it. Call it while no query runs.
+  void set_local_layer(std::shared_ptr<const waves::LocalLayer> layer);
+  [[nodiscard]] const waves::LocalLayer* local_layer() const { return local_layer_.get(); }
+
   /// Displacement (Dx, h, Dz) summed over cascades at the undisplaced point (x, z), bilinear
-  /// between texels exactly as a GPU samples the maps with wrap addressing (M.7.6).
+  /// between texels exactly as a GPU samples the maps with wrap addressing (M.7.6), plus the
+  /// local layer's (Dx, h, Dz) there when one is set.
   [[nodiscard]] std::array<double, 3> displacement_at(double x, double z) const;
   /// Height of the rendered surface above world (x, z): finds the undisplaced point p with
   /// p + D_xz(p) = (x, z) by fixed-point iteration and Newton refinement (M.7.7), then
-  /// returns h(p). Batched: out.size() must equal xz.size().
+  /// returns h(p); D includes the local layer when one is set. Batched: out.size() must equal
+  /// xz.size().
   void heights_at(std::span<const std::array<double, 2>> xz, std::span<HeightSample> out) const;
 
  private:
@@ -230,6 +242,12 @@ class Simulator {
   Frame frames_[2];
   int front_ = 0;
   std::unique_ptr<Async> async_;
+  std::shared_ptr<const waves::LocalLayer> local_layer_;
 };
+
+/// The height queries of Simulator::heights_at on a local layer alone, at time t: the surface of
+/// a calm sea carrying only the layer's wakes and waveforms.
+void heights_at(const waves::LocalLayer& layer, double time_s,
+                std::span<const std::array<double, 2>> xz, std::span<HeightSample> out);
 
 }  // namespace ocean

@@ -4,6 +4,7 @@
 #include "ocean/bake.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -34,6 +35,8 @@ Status check(const BakeParams& p) {
   }
   if (!std::isfinite(p.fps) || !(p.fps > 0)) return invalid_argument("bake fps must be > 0");
   if (!std::isfinite(p.start_time_s)) return invalid_argument("bake start time must be finite");
+  if (p.calm && p.local_layer == nullptr)
+    return invalid_argument("a calm bake needs a local layer (nothing else to write)");
   return {};
 }
 
@@ -71,9 +74,47 @@ Json manifest_head(const Simulator& sim, std::string_view backend, const BakePar
        "displacement = (Dx, h, Dz) m; nfs = RGBA8 (normal x, normal z, foam, smoothness)"},
       {"cascades", Json::array()},
       {"frames", Json::array()}};
-  for (double size : c.cascade_patch_sizes_m)
-    manifest["cascades"].push_back({{"patch_size_m", size}, {"resolution", c.resolution}});
+  if (!p.calm) {
+    for (double size : c.cascade_patch_sizes_m)
+      manifest["cascades"].push_back({{"patch_size_m", size}, {"resolution", c.resolution}});
+  }
+  manifest["calm"] = p.calm;
+  if (p.local_layer != nullptr) {
+    const waves::LocalArea& a = p.local_layer->params().area;
+    manifest["local_area"] = {{"origin_m", {a.origin_m[0], a.origin_m[1]}},
+                              {"size_m", a.size_m},
+                              {"resolution", a.resolution}};
+  }
   return manifest;
+}
+
+// Evaluates the local layer at t and writes its heights as local_height_f<index>.npy [N][N] and,
+// with the png format, local_height_f<index>.png: 16-bit gray mapping [−r, r] to [0, 65535],
+// r = the frame's largest |h| (at least 1 mm), which the manifest's frame entry records.
+Status write_local_frame(const waves::LocalLayer& layer, double t, const char* index,
+                         const BakeParams& p, waves::LocalFrame& local,
+                         std::vector<std::string>& names, Json& entry) {
+  layer.evaluate(t, local);
+  const auto n = static_cast<std::size_t>(local.area.resolution);
+  std::vector<float> heights(n * n);
+  double range = 1e-3;
+  for (std::size_t i = 0; i < n * n; ++i) {
+    heights[i] = local.displacement[3 * i + 1];
+    range = std::max(range, std::abs(static_cast<double>(heights[i])));
+  }
+  const std::string stem = std::string("local_height_f") + index;
+  const std::array<std::size_t, 2> shape{n, n};
+  names.push_back(stem + ".npy");
+  if (Status s = io::write_npy(p.output_dir / names.back(), heights.data(), shape); !s.ok())
+    return s;
+  if (!p.formats.png) return {};
+  std::vector<std::uint16_t> gray(n * n);
+  for (std::size_t i = 0; i < n * n; ++i)
+    gray[i] = static_cast<std::uint16_t>(std::lround((heights[i] / range * 0.5 + 0.5) * 65535.0));
+  entry["local_height_png_range_m"] = range;
+  names.push_back(stem + ".png");
+  return io::write_png16_gray(p.output_dir / names.back(), static_cast<int>(n), static_cast<int>(n),
+                              gray.data());
 }
 
 // Writes every frame's files, calling `on_frame` after each; returns the Status that stopped the
@@ -82,15 +123,16 @@ Json manifest_head(const Simulator& sim, std::string_view backend, const BakePar
 Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on_frame,
                     double range_m, const detail::OutputFolder& folder, Json& manifest) {
   std::vector<std::string> names;
+  waves::LocalFrame local;
   for (long long f = 0; f < p.frame_count; ++f) {
     if (cancelled(p)) return {ErrorCode::cancelled, "cancelled"};
     const double t = p.start_time_s + static_cast<double>(f) / p.fps;
-    sim.step(t);
+    if (!p.calm) sim.step(t);
     names.clear();
     char index[24];
     std::snprintf(index, sizeof index, "%05lld", f);
     const Frame& frame = sim.frame();
-    for (std::size_t k = 0; k < frame.cascades.size(); ++k) {
+    for (std::size_t k = 0; !p.calm && k < frame.cascades.size(); ++k) {
       char stem[48];
       std::snprintf(stem, sizeof stem, "c%zu_f%s", k, index);
       if (Status s = detail::write_cascade_files(frame.cascades[k], stem, folder.dir(), p.formats,
@@ -100,10 +142,22 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
         return s;
       }
     }
-    manifest["frames"].push_back({{"index", f}, {"time_s", t}, {"files", names}});
+    Json entry{{"index", f}, {"time_s", t}};
+    if (p.local_layer != nullptr) {
+      if (Status s = write_local_frame(*p.local_layer, t, index, p, local, names, entry); !s.ok()) {
+        folder.remove(names);
+        return s;
+      }
+    }
+    entry["files"] = names;
+    manifest["frames"].push_back(entry);
     manifest["frames_written"] = f + 1;
     if (on_frame) {
-      const FrameDone done{.index = f, .frame_count = p.frame_count, .time_s = t, .frame = &frame};
+      const FrameDone done{.index = f,
+                           .frame_count = p.frame_count,
+                           .time_s = t,
+                           .frame = p.calm ? nullptr : &frame,
+                           .local = p.local_layer != nullptr ? &local : nullptr};
       if (Status s = on_frame(done); !s.ok()) return s;
     }
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ocean/sim.hpp"
+#include "ocean/waves.hpp"
 
 namespace ocean {
 
@@ -33,23 +34,16 @@ void add_bilinear(const CascadeFrame& c, double x, double z, std::array<double, 
   }
 }
 
-}  // namespace
-
-std::array<double, 3> Simulator::displacement_at(double x, double z) const {
-  std::array<double, 3> sum{0.0, 0.0, 0.0};
-  for (const CascadeFrame& c : frame().cascades) add_bilinear(c, x, z, sum);
-  return sum;
-}
-
-void Simulator::heights_at(std::span<const std::array<double, 2>> xz,
-                           std::span<HeightSample> out) const {
+// Solves p + D_xz(p) = t for every query (M.7.7): Newton on the bilinear field, with a
+// fixed-point step p ← t − D_xz(p) wherever the map is near a fold (det ≤ 0.1).
+template <typename Displacement>
+void invert(const Displacement& displacement_at, std::span<const std::array<double, 2>> xz,
+            std::span<HeightSample> out) {
   constexpr int kMaxIterations = 40;
   constexpr double kTolerance_m = 1e-6;
   const std::size_t count = std::min(xz.size(), out.size());
   for (std::size_t q = 0; q < count; ++q) {
     const double tx = xz[q][0], tz = xz[q][1];
-    // Solve p + D_xz(p) = t (M.7.7): Newton on the bilinear field, with a fixed-point step
-    // p ← t − D_xz(p) wherever the map is near a fold (det ≤ 0.1).
     double px = tx, pz = tz;
     std::array<double, 3> d = displacement_at(px, pz);
     int iteration = 0;
@@ -73,6 +67,32 @@ void Simulator::heights_at(std::span<const std::array<double, 2>> xz,
     }
     out[q] = {.height_m = d[1], .displacement = d, .source_xz = {px, pz}, .iterations = iteration};
   }
+}
+
+}  // namespace
+
+void Simulator::set_local_layer(std::shared_ptr<const waves::LocalLayer> layer) {
+  local_layer_ = std::move(layer);
+}
+
+std::array<double, 3> Simulator::displacement_at(double x, double z) const {
+  std::array<double, 3> sum{0.0, 0.0, 0.0};
+  for (const CascadeFrame& c : frame().cascades) add_bilinear(c, x, z, sum);
+  if (local_layer_ != nullptr) {
+    const std::array<double, 3> local = local_layer_->displacement_at(x, z, frame().time_s);
+    for (std::size_t k = 0; k < 3; ++k) sum[k] += local[k];
+  }
+  return sum;
+}
+
+void Simulator::heights_at(std::span<const std::array<double, 2>> xz,
+                           std::span<HeightSample> out) const {
+  invert([this](double x, double z) { return displacement_at(x, z); }, xz, out);
+}
+
+void heights_at(const waves::LocalLayer& layer, double time_s,
+                std::span<const std::array<double, 2>> xz, std::span<HeightSample> out) {
+  invert([&](double x, double z) { return layer.displacement_at(x, z, time_s); }, xz, out);
 }
 
 }  // namespace ocean

@@ -28,14 +28,6 @@ using detail::PngIo;
 
 constexpr std::uint64_t kMaxSampleBytes = std::uint64_t{1} << 30;
 
-void on_read(png_structp png, png_bytep data, std::size_t n) {
-  auto* io = static_cast<PngIo*>(png_get_io_ptr(png));
-  if (std::fread(data, 1, n, io->file) != n) {
-    if (std::ferror(io->file) != 0) io->err = errno != 0 ? errno : EIO;
-    png_error(png, io->err != 0 ? "read failed" : "truncated file");
-  }
-}
-
 bool read_header(png_structp png, png_infop info) {
   if (setjmp(png_jmpbuf(png)) != 0) return false;
   png_read_info(png, info);
@@ -68,7 +60,7 @@ Result<PngImage> read_opened(PngIo& io, const std::filesystem::path& path) {
     png_infop* info;
     ~Destroy() { png_destroy_read_struct(png, info, nullptr); }
   } destroy{&png, &info};
-  png_set_read_fn(png, &io, on_read);
+  png_set_read_fn(png, &io, detail::png_on_read);
   png_set_user_limits(png, kPngMaxDimension, kPngMaxDimension);
   if (!read_header(png, info)) return fail(png_reason(io));
 

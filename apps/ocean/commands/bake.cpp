@@ -17,6 +17,7 @@
 #include "progress.hpp"
 #include "simulation_flags.hpp"
 #include "stop_signals.hpp"
+#include "wave_flags.hpp"
 
 namespace ocean::cli {
 
@@ -33,6 +34,7 @@ constexpr NumberOption<long long> kFrames{.flag = "--frames",
 
 struct BakeOptions {
   SimulationFlags sim;
+  WaveFlags waves;
   std::string out;
   std::vector<std::string> formats;
   std::string frames, fps = "30", time = "0", backend = "cpu";
@@ -85,6 +87,15 @@ int run_bake(const BakeOptions& o) {
   params.frame_count = frames;
   params.fps = fps.value();
   params.start_time_s = start.value();
+  Result<std::shared_ptr<const waves::LocalLayer>> layer = make_layer(o.waves, c.choppiness);
+  if (!layer.ok()) return report(layer.status());
+  params.local_layer = layer.value();
+  params.calm = o.waves.calm;
+  if (params.calm && params.local_layer == nullptr)
+    return report(invalid_argument("--calm needs --local-area X0,Z0,SIZE_M (the layer to write)"));
+  if (params.calm && !o.contact_sheet.empty())
+    return report(invalid_argument("--contact-sheet draws the sea's maps: not with --calm"));
+  if (params.local_layer != nullptr) print_warnings(*params.local_layer, params.start_time_s);
   if (!o.contact_sheet.empty()) params.other_outputs.emplace_back(o.contact_sheet);
   Progress progress("bake", frames);
   const auto on_frame = [&](const bake::FrameDone& done) -> Status {
@@ -126,6 +137,7 @@ Command add_bake_command(CLI::App& app) {
   CLI::App* command = app.add_subcommand(
       "bake", "Simulate frames and write displacement/normal/foam maps with mips (npy, png, exr)");
   add_simulation_flags(*command, o->sim);
+  add_wave_flags(*command, o->waves);
   command->add_option("--out", o->out, "output directory (created if missing)");
   command->add_option("--format", o->formats, "exr | png | npy (repeatable; default npy)");
   add_option(*command, kFrames, o->frames, "number of frames (default 1)");

@@ -1,0 +1,32 @@
+// The flags of the local layer (ocean/waves.hpp) shared by `ocean bake` and `ocean query`:
+// --calm, --kelvin-wake, --waveform, --local-area, --local-resolution, turned into a layer.
+#pragma once
+
+#include <CLI/CLI.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "ocean/waves.hpp"
+
+namespace ocean::cli {
+
+struct WaveFlags {
+  bool calm = false;
+  std::vector<std::string> wakes;      ///< X,Z,HEADING_DEG,SPEED_MPS,LENGTH_M
+  std::vector<std::string> waveforms;  ///< FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]
+  std::string local_area;              ///< X0,Z0,SIZE_M
+  std::string local_resolution = "512";
+};
+void add_wave_flags(CLI::App& command, WaveFlags& flags);
+
+/// The layer the flags describe, or null when they give no wake, waveform or area. A wake or
+/// waveform without --local-area, a malformed value or an unreadable file is an error naming
+/// the flag and echoing the value (ocean::excerpt).
+Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& flags,
+                                                            double choppiness);
+
+/// Prints the layer's warnings at time t on stderr, "ocean: warning: ..." each.
+void print_warnings(const waves::LocalLayer& layer, double time_s);
+
+}  // namespace ocean::cli

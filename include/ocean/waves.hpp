@@ -1,0 +1,171 @@
+// ocean/waves.hpp — what is added to the spectral sea in a local, world-space area: procedural
+// Kelvin wakes of moving objects and pre-authored height maps, composited into one non-periodic
+// layer of height and horizontal displacement (Mitchell 2005, §3.4). The CPU reference; backends
+// and the renderer mirror it.
+//
+// Conventions (docs/conventions.md, docs/waves.md): SI units, Y up, the sea is the x–z plane.
+// Headings and rotations are degrees from +x towards +z (0 = +x, 90 = +z). The layer's cell
+// (col, row) is the point that starts at world (x0 + (col + ½)·size/N, z0 + (row + ½)·size/N) and
+// is displaced by (Dx, h, Dz), like a cascade texel; the layer adds to the sea's displacement
+// there. Displacement follows the sea's sign, D = λ·Σ i·k̂·h̃·e^{ik·x} (crests sharpen).
+// Equation numbers (W.n) refer to docs/waves.md.
+//
+// Threading: a LocalLayer is immutable once made; every const method may be called from any
+// number of threads at once.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ocean/core.hpp"
+
+namespace ocean::waves {
+
+/// Sane limits of the layer's grid side N.
+inline constexpr int kMinLocalResolution = 16;
+inline constexpr int kMaxLocalResolution = 4096;
+/// Default peak height of a wake as a fraction of its hull length (0.02·L: 0.2 m for a 10 m
+/// boat, 2 m for a 100 m ship — of the order of observed ship-wave heights near the hull).
+inline constexpr double kDefaultPeakHeightPerLength = 0.02;
+
+/// The square world area the layer covers and its grid.
+struct LocalArea {
+  std::array<double, 2> origin_m{-128.0, -128.0};  ///< (x0, z0): the corner of smallest x and z
+  double size_m = 256.0;                           ///< side, m, finite and > 0
+  int resolution = 512;  ///< N cells per side, in [kMinLocalResolution, kMaxLocalResolution]
+  /// Width of the soft edge as a fraction of size_m, in [0, 0.5]: the layer's weight rises from
+  /// 0 at the border to 1 at this distance inside (smoothstep), so it fades into the sea.
+  double edge_fraction = 0.1;
+};
+/// invalid_argument naming the field, the value and the valid range.
+Status validate(const LocalArea& area);
+/// World (x, z) of the centre of cell (col, row).
+std::array<double, 2> cell_centre(const LocalArea& area, int col, int row);
+/// The soft-edge weight at world (x, z): 0 outside the area and on its border, 1 inside the
+/// edge band, smoothstep between (W.9).
+double edge_weight(const LocalArea& area, double x, double z);
+
+/// A timed point of an object's path.
+struct Waypoint {
+  double time_s = 0.0;
+  double x_m = 0.0;
+  double z_m = 0.0;
+};
+
+/// The steady ship-wave pattern of an object moving over deep, calm water (W.1–W.7): the linear
+/// wake of a pressure disturbance of size hull_length_m (an axisymmetric cone-tipped pressure
+/// p ∝ e^{−r/a}, W.4), Kelvin's 19.47° cusps and transverse waves of wavelength 2πU²/g at low
+/// Froude numbers Fr = U/√(gL), narrower at high ones (Rabaud & Moisy 2013).
+struct KelvinWake {
+  double x_m = 0.0;             ///< position at time 0 (no path), m
+  double z_m = 0.0;             ///< position at time 0 (no path), m
+  double heading_deg = 0.0;     ///< direction of travel, finite (no path)
+  double speed_mps = 5.0;       ///< U, finite, in (0, 100] (no path)
+  double hull_length_m = 10.0;  ///< L, finite, in [0.01, 1000]
+  /// The largest |height| of the steady pattern, m (≥ 0, finite); unset: 0.02·L.
+  std::optional<double> peak_height_m;
+  /// Optional fade of the amplitude behind the object, e^{−s/fade_length_m}, m; 0 = none (the
+  /// pattern then decays only as the linear solution does, W.8).
+  double fade_length_m = 0.0;
+  /// Empty: the object moves in a straight line, at (x_m, z_m) at time 0, along heading_deg at
+  /// speed_mps. Two or more waypoints (times strictly increasing): the position is interpolated
+  /// linearly between them and extrapolated along the first/last segment; heading and speed are
+  /// those of the current segment (the pattern is the steady wake of that motion, swung rigidly
+  /// on a turn). One waypoint: the object stays there, with heading_deg and speed_mps (a moored
+  /// object in a current).
+  std::vector<Waypoint> path;
+};
+/// invalid_argument for NaN, negative or out-of-range values, naming the field.
+Status validate(const KelvinWake& wake);
+
+/// Where the object is, which way it heads and how fast, at time t.
+struct WakePose {
+  double x_m = 0.0, z_m = 0.0;
+  double heading_rad = 0.0;
+  double speed_mps = 0.0;
+};
+WakePose pose_at(const KelvinWake& wake, double time_s);
+
+/// A 2-D height map: rows × cols samples, row-major, row r along +z and column c along +x before
+/// rotation.
+struct HeightMap {
+  int rows = 0;
+  int cols = 0;
+  std::vector<float> values;
+};
+/// Largest side of a height map file.
+inline constexpr int kMaxHeightMapSide = 16384;
+/// Reads a height map: NumPy .npy (2-D, '<f4' or '<f8', C order; values used as they are) or
+/// PNG (8- or 16-bit grayscale, mapped linearly from [0, max] to [−1, 1]).
+/// io_error "cannot read '<path>': <reason>" for a missing or unreadable file;
+/// invalid_argument "cannot read '<path>': <problem>" for a malformed, unsupported (EXR, colour
+/// PNG, 3-D array, ...) or oversized file, or non-finite values. The path is echoed through
+/// ocean::excerpt. Never throws; safe on arbitrary bytes.
+Result<HeightMap> load_height_map(const std::filesystem::path& path);
+
+/// A pre-authored waveform placed in the world.
+struct Waveform {
+  std::shared_ptr<const HeightMap> map;
+  double x_m = 0.0;           ///< centre, m
+  double z_m = 0.0;           ///< centre, m
+  double size_m = 10.0;       ///< extent along the map's columns, m (> 0); rows scale alike
+  double amplitude_m = 1.0;   ///< height = amplitude·value, m (finite)
+  double rotation_deg = 0.0;  ///< from +x towards +z
+};
+/// invalid_argument for a missing map or a bad size, amplitude or rotation.
+Status validate(const Waveform& waveform);
+/// Height of the waveform at world (x, z): amplitude times the bilinear sample of its map (clamped
+/// at the map's edge cells), 0 outside its rectangle (W.10).
+double waveform_height(const Waveform& waveform, double x, double z);
+
+/// Everything composited into a layer.
+struct LayerParams {
+  LocalArea area;
+  std::vector<KelvinWake> wakes;
+  std::vector<Waveform> waveforms;
+  double choppiness = 1.0;     ///< λ ≥ 0 for the wakes' horizontal displacement (finite)
+  double gravity_mps2 = 9.81;  ///< g > 0
+};
+
+/// One evaluation of the layer on its grid.
+struct LocalFrame {
+  double time_s = 0.0;
+  LocalArea area;
+  std::vector<float> displacement;  ///< float3 (Dx, h, Dz) per cell, index row·N + col, m
+};
+
+class LocalLayer {
+ public:
+  /// Validates the parameters and computes each distinct (U, L) wake pattern once, on a table in
+  /// the object's frame (W.5–W.7; about 0.1–1 s for N = 512–1024). invalid_argument names the
+  /// offending wake or waveform ("wakes[1].speed_mps = -3 ...").
+  static Result<std::unique_ptr<LocalLayer>> make(LayerParams params);
+  ~LocalLayer();
+  LocalLayer(const LocalLayer&) = delete;
+  LocalLayer& operator=(const LocalLayer&) = delete;
+
+  [[nodiscard]] const LayerParams& params() const { return params_; }
+  /// (Dx, h, Dz) of the layer at the undisplaced world point (x, z) at time t, m: the sum of the
+  /// wakes (their tables moved and turned to each object's pose, bilinear) and the waveforms,
+  /// times the soft-edge weight. Never allocates.
+  [[nodiscard]] std::array<double, 3> displacement_at(double x, double z, double time_s) const;
+  /// Evaluates every cell at time t (displacement_at at the cell centres), sizing `out`.
+  void evaluate(double time_s, LocalFrame& out) const;
+  /// Warnings, one line each, for what will not show at time t: an object outside the area, a
+  /// wake whose waves are too short for the grid.
+  [[nodiscard]] std::vector<std::string> warnings(double time_s) const;
+
+  struct Impl;
+
+ private:
+  LocalLayer() = default;
+  LayerParams params_;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace ocean::waves

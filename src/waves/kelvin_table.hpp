@@ -1,0 +1,46 @@
+// src/waves/kelvin_table.hpp — the steady Kelvin wake of one (U, L) on a table in the object's
+// frame, computed once (W.5–W.7) and sampled bilinearly per frame.
+#pragma once
+
+#include <array>
+#include <vector>
+
+namespace ocean::waves::detail {
+
+/// What a table is computed for. Values are assumed valid (LocalLayer::make checks them).
+struct KelvinTableSpec {
+  double speed_mps = 5.0;       ///< U
+  double hull_length_m = 10.0;  ///< L
+  double gravity_mps2 = 9.81;   ///< g
+  double spacing_m = 1.0;       ///< wanted cell size (the layer's); grown if the table gets too big
+  double length_m = 100.0;      ///< distance behind the object the table covers
+};
+
+class KelvinTable {
+ public:
+  /// Computes the pattern (W.5–W.7), normalised so that its largest |height| is 1.
+  static KelvinTable make(const KelvinTableSpec& spec);
+
+  /// (h, D_s, D_ζ) at s metres behind the object and ζ metres to its left (ζ along the heading
+  /// turned +90°), with D_s along s (backwards): bilinear in the table, 0 outside it (ahead of
+  /// the object, beyond its length or width). Never allocates.
+  [[nodiscard]] std::array<double, 3> sample(double s, double zeta) const;
+
+  [[nodiscard]] double speed_mps() const { return spec_.speed_mps; }
+  [[nodiscard]] double hull_length_m() const { return spec_.hull_length_m; }
+  [[nodiscard]] double spacing_m() const { return spacing_m_; }
+  /// 2πU²/g, the wavelength of the transverse waves.
+  [[nodiscard]] double transverse_wavelength_m() const;
+  /// True when the transverse waves are shorter than the table resolves (the table is then 0).
+  [[nodiscard]] bool unresolved() const { return unresolved_; }
+
+ private:
+  KelvinTableSpec spec_;
+  double spacing_m_ = 1.0;
+  int rows_ = 0;  ///< s = row·spacing, row ∈ [0, rows)
+  int cols_ = 0;  ///< ζ = col·spacing, col ∈ [0, cols) (the pattern is mirror-symmetric)
+  bool unresolved_ = false;
+  std::vector<float> values_;  ///< (h, D_s, D_ζ) per cell, index row·cols + col
+};
+
+}  // namespace ocean::waves::detail

@@ -1,0 +1,196 @@
+// src/waves/local_layer.cpp — the local layer: validation, one Kelvin table per distinct (U, L)
+// made up front, and the per-frame composition of wakes (tables moved and turned to each
+// object's pose) and waveforms under the soft edge (W.7–W.10).
+#include <cmath>
+#include <string>
+
+#include "kelvin_table.hpp"
+#include "ocean/waves.hpp"
+
+namespace ocean::waves {
+
+struct LocalLayer::Impl {
+  std::vector<detail::KelvinTable> tables;
+  /// Per wake: the tables of its speeds (one, or one per path segment speed).
+  std::vector<std::vector<std::size_t>> wake_tables;
+};
+
+namespace {
+
+Status named(const std::string& prefix, const Status& s) {
+  return s.ok() ? s : Status{s.code(), prefix + s.message()};
+}
+
+// The speeds a wake moves at: its own, or each path segment's.
+std::vector<double> speeds_of(const KelvinWake& w) {
+  if (w.path.size() < 2) return {w.speed_mps};
+  std::vector<double> speeds;
+  for (std::size_t i = 1; i < w.path.size(); ++i)
+    speeds.push_back(pose_at(w, 0.5 * (w.path[i - 1].time_s + w.path[i].time_s)).speed_mps);
+  return speeds;
+}
+
+// A wake's pose at one time with what the per-cell sum needs.
+struct Placed {
+  const detail::KelvinTable* table = nullptr;
+  double x = 0.0, z = 0.0, cos_h = 1.0, sin_h = 0.0, amplitude_m = 0.0, fade_m = 0.0;
+};
+
+}  // namespace
+
+LocalLayer::~LocalLayer() = default;
+
+Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params) {
+  if (Status s = validate(params.area); !s.ok()) return s;
+  if (Status s = require_finite("choppiness", params.choppiness); !s.ok()) return s;
+  if (Status s = require_non_negative("choppiness", params.choppiness); !s.ok()) return s;
+  if (Status s = require_positive("gravity_mps2", params.gravity_mps2); !s.ok()) return s;
+  for (std::size_t i = 0; i < params.wakes.size(); ++i) {
+    if (Status s = validate(params.wakes[i]); !s.ok())
+      return named("wakes[" + std::to_string(i) + "].", s);
+  }
+  for (std::size_t i = 0; i < params.waveforms.size(); ++i) {
+    if (Status s = validate(params.waveforms[i]); !s.ok())
+      return named("waveforms[" + std::to_string(i) + "].", s);
+  }
+  std::unique_ptr<LocalLayer> layer(new LocalLayer());
+  layer->impl_ = std::make_unique<Impl>();
+  Impl& impl = *layer->impl_;
+  for (const KelvinWake& w : params.wakes) {
+    std::vector<std::size_t> mine;
+    for (double speed : speeds_of(w)) {
+      std::size_t found = impl.tables.size();
+      for (std::size_t t = 0; t < impl.tables.size(); ++t) {
+        if (impl.tables[t].speed_mps() == speed &&
+            impl.tables[t].hull_length_m() == w.hull_length_m)
+          found = t;
+      }
+      if (found == impl.tables.size()) {
+        impl.tables.push_back(
+            detail::KelvinTable::make({.speed_mps = speed,
+                                       .hull_length_m = w.hull_length_m,
+                                       .gravity_mps2 = params.gravity_mps2,
+                                       .spacing_m = params.area.size_m / params.area.resolution,
+                                       .length_m = 2.0 * params.area.size_m}));
+      }
+      mine.push_back(found);
+    }
+    impl.wake_tables.push_back(std::move(mine));
+  }
+  layer->params_ = std::move(params);
+  return layer;
+}
+
+namespace {
+
+Placed place(const KelvinWake& w, const std::vector<std::size_t>& tables,
+             const std::vector<detail::KelvinTable>& all, double t) {
+  const WakePose pose = pose_at(w, t);
+  Placed p{.x = pose.x_m,
+           .z = pose.z_m,
+           .cos_h = std::cos(pose.heading_rad),
+           .sin_h = std::sin(pose.heading_rad),
+           .amplitude_m = w.peak_height_m.value_or(kDefaultPeakHeightPerLength * w.hull_length_m),
+           .fade_m = w.fade_length_m};
+  p.table = &all[tables.front()];
+  for (std::size_t i : tables) {
+    if (std::abs(all[i].speed_mps() - pose.speed_mps) <
+        std::abs(p.table->speed_mps() - pose.speed_mps))
+      p.table = &all[i];
+  }
+  return p;
+}
+
+// Adds one placed wake at world (x, z) to (Dx, h, Dz).
+void add_wake(const Placed& p, double choppiness, double x, double z, std::array<double, 3>& d) {
+  const double dx = x - p.x, dz = z - p.z;
+  const double s = -(dx * p.cos_h + dz * p.sin_h);   // metres behind the object
+  const double zeta = -dx * p.sin_h + dz * p.cos_h;  // metres to its left
+  const std::array<double, 3> v = p.table->sample(s, zeta);
+  if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0) return;
+  const double a = p.amplitude_m * (p.fade_m > 0.0 ? std::exp(-s / p.fade_m) : 1.0);  // (W.8)
+  d[1] += a * v[0];
+  // D_s points backwards (−heading), D_ζ to the left (heading turned +90°).
+  const double c = choppiness * a;
+  d[0] += c * (-v[1] * p.cos_h - v[2] * p.sin_h);
+  d[2] += c * (-v[1] * p.sin_h + v[2] * p.cos_h);
+}
+
+}  // namespace
+
+std::array<double, 3> LocalLayer::displacement_at(double x, double z, double time_s) const {
+  std::array<double, 3> d{0.0, 0.0, 0.0};
+  const double weight = edge_weight(params_.area, x, z);
+  if (weight == 0.0) return d;
+  for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
+    add_wake(place(params_.wakes[i], impl_->wake_tables[i], impl_->tables, time_s),
+             params_.choppiness, x, z, d);
+  }
+  for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z);
+  for (double& v : d) v *= weight;
+  return d;
+}
+
+void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
+  const LocalArea& area = params_.area;
+  const auto n = static_cast<std::size_t>(area.resolution);
+  out.time_s = time_s;
+  out.area = area;
+  out.displacement.assign(3 * n * n, 0.0f);
+  std::vector<Placed> placed;
+  for (std::size_t i = 0; i < params_.wakes.size(); ++i)
+    placed.push_back(place(params_.wakes[i], impl_->wake_tables[i], impl_->tables, time_s));
+  for (std::size_t row = 0; row < n; ++row) {
+    for (std::size_t col = 0; col < n; ++col) {
+      const auto [x, z] = cell_centre(area, static_cast<int>(col), static_cast<int>(row));
+      const double weight = edge_weight(area, x, z);
+      if (weight == 0.0) continue;
+      std::array<double, 3> d{0.0, 0.0, 0.0};
+      for (const Placed& p : placed) add_wake(p, params_.choppiness, x, z, d);
+      for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z);
+      float* cell = out.displacement.data() + 3 * (row * n + col);
+      for (std::size_t k = 0; k < 3; ++k) cell[k] = static_cast<float>(weight * d[k]);
+    }
+  }
+}
+
+std::vector<std::string> LocalLayer::warnings(double time_s) const {
+  const LocalArea& a = params_.area;
+  const auto inside = [&](double x, double z) {
+    return x >= a.origin_m[0] && x <= a.origin_m[0] + a.size_m && z >= a.origin_m[1] &&
+           z <= a.origin_m[1] + a.size_m;
+  };
+  std::string box("[");
+  box.append(format_number(a.origin_m[0])).append(", ");
+  box.append(format_number(a.origin_m[0] + a.size_m)).append("] x [");
+  box.append(format_number(a.origin_m[1])).append(", ");
+  box.append(format_number(a.origin_m[1] + a.size_m)).append("]");
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
+    const WakePose p = pose_at(params_.wakes[i], time_s);
+    const std::string name = "wake " + std::to_string(i + 1);
+    if (!inside(p.x_m, p.z_m)) {
+      out.push_back(name + " at (" + format_number(p.x_m) + ", " + format_number(p.z_m) +
+                    ") is outside the local area " + box + " at t = " + format_number(time_s) +
+                    " s; only what trails into the area shows");
+    }
+    for (std::size_t t : impl_->wake_tables[i]) {
+      const detail::KelvinTable& table = impl_->tables[t];
+      if (table.unresolved()) {
+        out.push_back(name + ": its waves (" + format_number(table.transverse_wavelength_m()) +
+                      " m) are shorter than the local grid resolves (3 cells of " +
+                      format_number(table.spacing_m()) + " m); it is left out");
+      }
+    }
+  }
+  for (std::size_t i = 0; i < params_.waveforms.size(); ++i) {
+    const Waveform& w = params_.waveforms[i];
+    if (!inside(w.x_m, w.z_m)) {
+      out.push_back("waveform " + std::to_string(i + 1) + " centred at (" + format_number(w.x_m) +
+                    ", " + format_number(w.z_m) + ") is outside the local area " + box);
+    }
+  }
+  return out;
+}
+
+}  // namespace ocean::waves

@@ -1,0 +1,112 @@
+// Pre-authored waveforms: placement, rotation and amplitude of a sampled map, zero outside, and
+// reading height maps from .npy and PNG files, hostile ones included.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+
+#include "ocean/io.hpp"
+#include "ocean/waves.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ocean::waves::HeightMap;
+using ocean::waves::Waveform;
+
+struct Scratch {
+  fs::path dir = fs::temp_directory_path() / ("ocean_waveform_" + std::to_string(::getpid()));
+  Scratch() { fs::create_directories(dir); }
+  ~Scratch() { fs::remove_all(dir); }
+};
+
+// 2 rows × 4 columns: value = row·10 + col.
+std::shared_ptr<const HeightMap> ramp_map() {
+  auto m = std::make_shared<HeightMap>();
+  m->rows = 2;
+  m->cols = 4;
+  for (int r = 0; r < 2; ++r)
+    for (int c = 0; c < 4; ++c) m->values.push_back(static_cast<float>(10 * r + c));
+  return m;
+}
+
+TEST(Waveform, SamplesAtCellCentresAreTheMapTimesAmplitude) {
+  // 8 m wide (2 m per column), 4 m deep, centred at (100, 50).
+  const Waveform w{.map = ramp_map(), .x_m = 100.0, .z_m = 50.0, .size_m = 8.0, .amplitude_m = 0.5};
+  for (int r = 0; r < 2; ++r) {
+    for (int c = 0; c < 4; ++c) {
+      const double x = 96.0 + 2.0 * c + 1.0, z = 48.0 + 2.0 * r + 1.0;
+      EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, x, z), 0.5 * (10 * r + c));
+    }
+  }
+  EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, 98.0, 49.0), 0.5 * 0.5);  // between columns
+  EXPECT_EQ(ocean::waves::waveform_height(w, 95.9, 49.0), 0.0);               // outside
+  EXPECT_EQ(ocean::waves::waveform_height(w, 100.0, 52.1), 0.0);
+}
+
+TEST(Waveform, RotationTurnsTheMapAboutItsCentre) {
+  const Waveform w{.map = ramp_map(),
+                   .x_m = 0.0,
+                   .z_m = 0.0,
+                   .size_m = 8.0,
+                   .amplitude_m = 1.0,
+                   .rotation_deg = 90.0};
+  // Column 3, row 0 sits at map offset (+3, −1); turned by +90° it lands at (+1, +3).
+  EXPECT_NEAR(ocean::waves::waveform_height(w, 1.0, 3.0), 3.0, 1e-12);
+  EXPECT_NEAR(ocean::waves::waveform_height(w, -1.0, -3.0), 10.0, 1e-12);  // row 1, column 0
+}
+
+TEST(HeightMapFile, NpyAndPngReadBack) {
+  Scratch s;
+  const float values[6] = {-1.0f, 0.0f, 0.25f, 0.5f, 0.75f, 1.0f};
+  const std::size_t shape[2] = {2, 3};
+  ASSERT_TRUE(ocean::io::write_npy(s.dir / "m.npy", values, shape).ok());
+  const auto npy = ocean::waves::load_height_map(s.dir / "m.npy");
+  ASSERT_TRUE(npy.ok()) << npy.status().message();
+  EXPECT_EQ(npy.value().rows, 2);
+  EXPECT_EQ(npy.value().cols, 3);
+  EXPECT_EQ(npy.value().values, std::vector<float>(values, values + 6));
+
+  const std::uint16_t gray[4] = {0, 65535, 32768, 16384};
+  ASSERT_TRUE(ocean::io::write_png16_gray(s.dir / "m.png", 2, 2, gray).ok());
+  const auto png = ocean::waves::load_height_map(s.dir / "m.png");
+  ASSERT_TRUE(png.ok()) << png.status().message();
+  EXPECT_EQ(png.value().values[0], -1.0f);
+  EXPECT_EQ(png.value().values[1], 1.0f);
+  EXPECT_NEAR(png.value().values[2], 2.0 * 32768 / 65535 - 1, 1e-7);
+}
+
+TEST(HeightMapFile, HostileFilesGiveOneLine) {
+  Scratch s;
+  const auto fails = [&](const fs::path& path, const std::string& says) {
+    const auto m = ocean::waves::load_height_map(path);
+    ASSERT_FALSE(m.ok()) << path;
+    EXPECT_NE(m.status().message().find(says), std::string::npos) << m.status().message();
+    EXPECT_EQ(m.status().message().find('\n'), std::string::npos);
+  };
+  fails(s.dir / "missing.npy", "No such file");
+  std::ofstream(s.dir / "text.npy") << "hello";
+  fails(s.dir / "text.npy", "not a NumPy");
+  const float v[8] = {};
+  const std::size_t three_d[3] = {2, 2, 2};
+  ASSERT_TRUE(ocean::io::write_npy(s.dir / "cube.npy", v, three_d).ok());
+  fails(s.dir / "cube.npy", "2-D");
+  std::string bytes;
+  {
+    std::ifstream in(s.dir / "cube.npy", std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  std::ofstream(s.dir / "cut.npy", std::ios::binary) << bytes.substr(0, 70);
+  fails(s.dir / "cut.npy", "cannot read");
+  std::ofstream(s.dir / "fake.png") << "not a png at all";
+  fails(s.dir / "fake.png", "cannot read");
+  const std::uint8_t rgb[12] = {};
+  ASSERT_TRUE(ocean::io::write_png8(s.dir / "rgb.png", 2, 2, 3, rgb).ok());
+  fails(s.dir / "rgb.png", "grayscale");
+  fails(s.dir / "map.exr", "EXR");
+  fails(s.dir, "cannot read");
+}
+
+}  // namespace
