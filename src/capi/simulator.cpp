@@ -74,6 +74,17 @@ Status field_view(const CascadeFrame& c, ocean_field field, int32_t level, ocean
                           " is out of range: must be 0 to 5 (ocean_field)");
 }
 
+// ocean_simulator_step and _kick: the checks, then `frame` (Simulator::step or kick) at time_s.
+ocean_status start_frame(ocean_simulator* simulator, double time_s, std::string_view function,
+                         void (Simulator::*frame)(double)) {
+  return guarded([&]() -> Status {
+    if (Status s = require_simulator(simulator, function); !s.ok()) return s;
+    if (Status s = require_finite("time_s", time_s); !s.ok()) return s;
+    (simulator->simulator.get()->*frame)(time_s);
+    return {};
+  });
+}
+
 }  // namespace
 }  // namespace ocean::capi
 
@@ -99,21 +110,11 @@ OCEAN_API ocean_status ocean_simulator_create(const ocean_config* config, const 
 OCEAN_API void ocean_simulator_destroy(ocean_simulator* simulator) { delete simulator; }
 
 OCEAN_API ocean_status ocean_simulator_step(ocean_simulator* simulator, double time_s) {
-  return guarded([&]() -> ocean::Status {
-    if (ocean::Status s = require_simulator(simulator, "ocean_simulator_step"); !s.ok()) return s;
-    if (ocean::Status s = ocean::require_finite("time_s", time_s); !s.ok()) return s;
-    simulator->simulator->step(time_s);
-    return {};
-  });
+  return start_frame(simulator, time_s, "ocean_simulator_step", &ocean::Simulator::step);
 }
 
 OCEAN_API ocean_status ocean_simulator_kick(ocean_simulator* simulator, double time_s) {
-  return guarded([&]() -> ocean::Status {
-    if (ocean::Status s = require_simulator(simulator, "ocean_simulator_kick"); !s.ok()) return s;
-    if (ocean::Status s = ocean::require_finite("time_s", time_s); !s.ok()) return s;
-    simulator->simulator->kick(time_s);
-    return {};
-  });
+  return start_frame(simulator, time_s, "ocean_simulator_kick", &ocean::Simulator::kick);
 }
 
 OCEAN_API ocean_status ocean_simulator_wait(ocean_simulator* simulator) {
