@@ -61,12 +61,13 @@ OCEAN_API uint32_t ocean_abi_version(void);
 
 typedef enum ocean_status {
   OCEAN_OK = 0,
-  OCEAN_INVALID_ARGUMENT = 1, /**< a bad value, name, key, handle or pointer */
-  OCEAN_IO_ERROR = 2,         /**< a file could not be read or written */
-  OCEAN_UNSUPPORTED = 3,      /**< not compiled in, or not available on this machine */
-  OCEAN_INTERNAL = 4,         /**< a bug in the library */
-  OCEAN_CANCELLED = 5,        /**< stopped at the caller's request */
-  OCEAN_OUT_OF_MEMORY = 6     /**< an allocation failed */
+  OCEAN_INVALID_ARGUMENT = 1,        /**< a bad value, name, key, handle or pointer */
+  OCEAN_IO_ERROR = 2,                /**< a file could not be read or written */
+  OCEAN_UNSUPPORTED = 3,             /**< not compiled in, or not available on this machine */
+  OCEAN_INTERNAL = 4,                /**< a bug in the library */
+  OCEAN_CANCELLED = 5,               /**< stopped at the caller's request */
+  OCEAN_OUT_OF_MEMORY = 6,           /**< an allocation failed */
+  OCEAN_STATUS_MAX_ENUM = 0x7FFFFFFF /**< not a status: keeps the enum 32 bits wide */
 } ocean_status;
 
 /** The calling thread's message of the last failed call ("" after a success); one line, no
@@ -136,13 +137,17 @@ typedef enum ocean_field {
   OCEAN_FIELD_FOAM = 4,              /**< float32 ×1: accumulated foam coverage in [0, 1] */
   /** uint8 ×4 per texel, bytes (normal x, normal z, foam or Jacobian, smoothness) in memory
    *  order, one mip level (level 0 is N × N, level l is (N >> l)²). */
-  OCEAN_FIELD_PACKED = 5
+  OCEAN_FIELD_PACKED = 5,
+  /** Not a field: makes every int a value of the type (C++ limits an enum's values to the bits
+   *  its enumerators need), so that a caller's out-of-range number is an error, not undefined. */
+  OCEAN_FIELD_MAX_ENUM = 0x7FFFFFFF
 } ocean_field;
 
 typedef enum ocean_element_type {
   OCEAN_ELEMENT_FLOAT32 = 0,
   OCEAN_ELEMENT_FLOAT16 = 1, /**< IEEE 754 binary16 stored as uint16_t */
-  OCEAN_ELEMENT_UINT8 = 2
+  OCEAN_ELEMENT_UINT8 = 2,
+  OCEAN_ELEMENT_MAX_ENUM = 0x7FFFFFFF /**< not a type: keeps the enum 32 bits wide */
 } ocean_element_type;
 
 /** Where a field of the published frame lies in memory: texel (col, row), channel c is the

@@ -69,6 +69,7 @@ Status field_view(const CascadeFrame& c, ocean_field field, int32_t level, ocean
       return describe(c.packed_mips, mip_offset(n, level), n >> level, 4, OCEAN_ELEMENT_UINT8,
                       "packed", v);
     }
+    case OCEAN_FIELD_MAX_ENUM: break;
   }
   return invalid_argument("field = " + std::to_string(static_cast<int>(field)) +
                           " is out of range: must be 0 to 5 (ocean_field)");

@@ -91,6 +91,7 @@ OCEAN_API const char* ocean_status_name(ocean_status status) {
     case OCEAN_INTERNAL: return "internal";
     case OCEAN_CANCELLED: return "cancelled";
     case OCEAN_OUT_OF_MEMORY: return "out_of_memory";
+    case OCEAN_STATUS_MAX_ENUM: break;
   }
   return "unknown";
 }
