@@ -24,6 +24,8 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,6 +50,32 @@ struct Formats {
   bool exr = false;  ///< OpenEXR: displacement float32, the other maps and the mips half
 };
 
+/// One machine's share of a bake: shard `index` of `count` holds the contiguous block of frames
+/// shard_frames(frame_count, shard). Blocks rather than every count-th frame because foam
+/// accumulates over the frames before: a shard steps the simulator through every earlier frame
+/// without writing it, so that its files are bit-identical to a one-machine bake's, and a block
+/// keeps that warm-up short (shard i of n simulates up to (i+1)/n of the frames).
+struct Shard {
+  long long index = 0;  ///< 0..count−1
+  long long count = 1;  ///< 1..frame_count
+};
+
+/// The frames [first, end) of a bake.
+struct FrameRange {
+  long long first = 0;
+  long long end = 0;
+};
+
+/// The frames of `shard` in a bake of `frame_count` frames: [⌊index·F/count⌋,
+/// ⌊(index+1)·F/count⌋), F = frame_count. The shards 0..count−1 cover 0..F−1, each frame once,
+/// each shard at least one frame when count ≤ F. Pure; preconditions as BakeParams::shard.
+FrameRange shard_frames(long long frame_count, const Shard& shard);
+
+/// Reads "I/N" (decimal integers, 0 ≤ I < N ≤ kMaxFrames) as a Shard. invalid_argument
+/// "<label> = '<text>' is not I/N: must be a shard index 0 to N-1, a slash and a count 1 to
+/// 1000000" otherwise.
+Result<Shard> parse_shard(std::string_view text, std::string_view label = "shard");
+
 /// What to bake and where. Frame f is simulated at start_time_s + f / fps.
 struct BakeParams {
   std::filesystem::path output_dir;      ///< created (with parents) if missing; must not be empty
@@ -71,6 +99,10 @@ struct BakeParams {
   /// A calm sea: no wind sea, so no cascade files (the simulator is not stepped; the manifest
   /// says "calm": true). Needs local_layer.
   bool calm = false;
+  /// When set, write only this shard's frames (see Shard); the manifest then says which shard it
+  /// holds ("shard": {"index", "count", "first_frame", "last_frame"}) and lists its frames only.
+  /// Its count must be 1..frame_count and its index 0..count−1 (invalid_argument otherwise).
+  std::optional<Shard> shard;
 };
 
 /// One frame written, reported to the caller's callback.
@@ -127,6 +159,35 @@ double height_png_range_m(const SimulationConfig& config);
 ///  - Calls `on_frame` (if set) after every frame. Blocking; allocates per frame; never throws.
 Status bake(const SimulationConfig& config, std::string_view backend, const BakeParams& params,
             const FrameCallback& on_frame = {});
+
+/// Where to join shards and how to stop.
+struct MergeParams {
+  std::filesystem::path output_dir;  ///< created (with parents) if missing; not a shard's folder
+  /// Cancellation between files, as BakeParams::cancel. Not owned; must outlive the call.
+  const std::atomic<bool>* cancel = nullptr;
+};
+
+/// Joins the folders of a sharded bake (each written by bake() with BakeParams::shard) into
+/// `params.output_dir`, so that its files and manifest.json are byte for byte those of the same
+/// bake on one machine.
+///
+/// Contract:
+///  - First, before touching anything, reads every shard's manifest.json and checks: each is a
+///    complete shard ("complete": true, its frames exactly its block), all of one bake (the same
+///    generator, backend, configuration, frame count, fps, formats and layout, and one shard
+///    count), no shard given twice, none missing, every listed file present and a plain name.
+///    Errors (invalid_argument unless a file cannot be read, io_error): "merge needs at least
+///    one shard folder", "'<dir>/manifest.json' is not a shard's manifest: <why>", "shard 1 of 4
+///    in '<dir>' is incomplete ...", "'<b>' is not a shard of the same bake as '<a>': \"config\"
+///    differs", "shard 2 of 4 is given twice: '<a>' and '<b>'", "shard 3 of 4 is missing
+///    (frames 75 to 99)", "shard 0 of 4 in '<dir>' lacks '<file>', which its manifest lists".
+///  - Then the output folder is held as bake() holds it (created, locked, the old manifest
+///    removed before the first file), the files are copied frame by frame (each atomically), and
+///    the manifest is written last. A failed copy or a cancellation stops the merge as it stops a
+///    bake: the unfinished frame's files removed, "complete": false listing the frames copied.
+///  - Blocking; never throws. The shard folders are only read; they must not be baked into
+///    while the merge runs.
+Status merge(std::span<const std::filesystem::path> shard_dirs, const MergeParams& params);
 
 /// Bakes with an existing simulator (its configuration and backend name go to the manifest); the
 /// simulator is stepped to every frame's time. Same contract otherwise, except that no simulator

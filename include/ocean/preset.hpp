@@ -65,6 +65,9 @@ class Document {
   ~Document();
   Document(Document&&) noexcept;
   Document& operator=(Document&&) noexcept;
+  /// A copy to try changes on (the C API keeps a change only when the result is valid).
+  Document(const Document& other);
+  Document& operator=(const Document& other);
 
   /// Merges a built-in preset or a preset file. A bare name (no directory, no extension) that
   /// is not an existing file selects a built-in preset. Any file may be named (a pipe, a

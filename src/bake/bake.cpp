@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "frame_files.hpp"
+#include "manifest.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/io.hpp"
 #include "ocean/preset.hpp"
@@ -22,7 +23,7 @@
 namespace ocean::bake {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using detail::Json;
 
 Status check(const BakeParams& p) {
   if (p.output_dir.empty()) return invalid_argument("bake needs an output directory");
@@ -37,7 +38,19 @@ Status check(const BakeParams& p) {
   if (!std::isfinite(p.start_time_s)) return invalid_argument("bake start time must be finite");
   if (p.calm && p.local_layer == nullptr)
     return invalid_argument("a calm bake needs a local layer (nothing else to write)");
+  if (p.shard && (p.shard->count < 1 || p.shard->count > p.frame_count || p.shard->index < 0 ||
+                  p.shard->index >= p.shard->count)) {
+    return invalid_argument("shard " + std::to_string(p.shard->index) + "/" +
+                            std::to_string(p.shard->count) +
+                            " is out of range: " + std::to_string(p.frame_count) +
+                            " frame(s) make 1 to that many shards, numbered from 0");
+  }
   return {};
+}
+
+// The frames this bake writes: all, or its shard's.
+FrameRange written_frames(const BakeParams& p) {
+  return p.shard ? shard_frames(p.frame_count, *p.shard) : FrameRange{0, p.frame_count};
 }
 
 // The manifest's "formats": the formats written, in alphabetical order.
@@ -58,22 +71,28 @@ bool cancelled(const BakeParams& p) {
 Json manifest_head(const Simulator& sim, std::string_view backend, const BakeParams& p,
                    double range_m) {
   const SimulationConfig& c = sim.config();
-  Json manifest{
-      {"generator", p.generator},
-      {"complete", false},
-      {"frame_count", p.frame_count},
-      {"frames_written", 0},
-      {"stopped", nullptr},
-      {"backend", std::string(backend)},
-      {"config", Json::parse(preset::to_json(c))},
-      {"fps", p.fps},
-      {"formats", format_names(p.formats)},
-      {"height_png_range_m", range_m},
-      {"layout",
-       "row-major [row][col][channel]; texel (col,row) starts at world (col, row)*L/N; "
-       "displacement = (Dx, h, Dz) m; nfs = RGBA8 (normal x, normal z, foam, smoothness)"},
-      {"cascades", Json::array()},
-      {"frames", Json::array()}};
+  Json manifest{{"generator", p.generator}, {"complete", false}};
+  if (p.shard) {  // a shard's manifest says which frames are its own (merge() reads it)
+    const FrameRange r = written_frames(p);
+    manifest["shard"] = {{"index", p.shard->index},
+                         {"count", p.shard->count},
+                         {"first_frame", r.first},
+                         {"last_frame", r.end - 1}};
+  }
+  manifest.update(
+      Json{{"frame_count", p.frame_count},
+           {"frames_written", 0},
+           {"stopped", nullptr},
+           {"backend", std::string(backend)},
+           {"config", Json::parse(preset::to_json(c))},
+           {"fps", p.fps},
+           {"formats", format_names(p.formats)},
+           {"height_png_range_m", range_m},
+           {"layout",
+            "row-major [row][col][channel]; texel (col,row) starts at world (col, row)*L/N; "
+            "displacement = (Dx, h, Dz) m; nfs = RGBA8 (normal x, normal z, foam, smoothness)"},
+           {"cascades", Json::array()},
+           {"frames", Json::array()}});
   if (!p.calm) {
     for (double size : c.cascade_patch_sizes_m)
       manifest["cascades"].push_back({{"patch_size_m", size}, {"resolution", c.resolution}});
@@ -124,10 +143,13 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
                     double range_m, const detail::OutputFolder& folder, Json& manifest) {
   std::vector<std::string> names;
   waves::LocalFrame local;
-  for (long long f = 0; f < p.frame_count; ++f) {
+  const FrameRange range = written_frames(p);
+  for (long long f = 0; f < range.end; ++f) {
     if (cancelled(p)) return {ErrorCode::cancelled, "cancelled"};
     const double t = p.start_time_s + static_cast<double>(f) / p.fps;
     if (!p.calm) sim.step(t);
+    // A shard steps through the frames before its own unwritten: foam accumulates over them.
+    if (f < range.first) continue;
     names.clear();
     char index[24];
     std::snprintf(index, sizeof index, "%05lld", f);
@@ -151,7 +173,7 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
     }
     entry["files"] = names;
     manifest["frames"].push_back(entry);
-    manifest["frames_written"] = f + 1;
+    manifest["frames_written"] = f + 1 - range.first;
     if (on_frame) {
       const FrameDone done{.index = f,
                            .frame_count = p.frame_count,
@@ -174,25 +196,8 @@ Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
   const double range_m = height_png_range_m(sim.config());
   Json manifest = manifest_head(sim, backend, p, range_m);
   const Status stop = write_frames(sim, p, on_frame, range_m, folder, manifest);
-  manifest["complete"] = stop.ok();
-  if (stop.ok()) {
-    manifest.erase("stopped");
-  } else {
-    manifest["stopped"] = stop.code() == ErrorCode::cancelled ? "cancelled" : stop.message();
-  }
-  const std::string text = manifest.dump(2) + "\n";
-  const std::filesystem::path path = folder.dir() / "manifest.json";
-  const Status written =
-      io::write_bytes_atomically(path, {std::as_bytes(std::span(text.data(), text.size()))});
-  if (stop.code() != ErrorCode::cancelled) return stop.ok() ? written : stop;
-  std::string message = "bake cancelled after " + manifest["frames_written"].dump() + " of " +
-                        std::to_string(p.frame_count) + " frames; ";
-  if (written.ok()) {
-    message.append(io::quoted(path)).append(" says \"complete\": false");
-  } else {
-    message += "no manifest: " + written.message();
-  }
-  return {ErrorCode::cancelled, std::move(message)};
+  const FrameRange range = written_frames(p);
+  return detail::finish_manifest(folder.dir(), manifest, stop, range.end - range.first, "bake");
 }
 
 // Runs `body`, turning an escaping exception (out of memory) into an io_error.

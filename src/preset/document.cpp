@@ -146,6 +146,11 @@ Document::Document() : impl_(std::make_unique<Impl>()) {}
 Document::~Document() = default;
 Document::Document(Document&&) noexcept = default;
 Document& Document::operator=(Document&&) noexcept = default;
+Document::Document(const Document& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+Document& Document::operator=(const Document& other) {
+  if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+  return *this;
+}
 
 Status Document::merge_preset(std::string_view name_or_path, std::string_view label) {
   Result<Json> preset = read_preset(name_or_path, label);

@@ -22,19 +22,13 @@
 #include "ocean/backends.hpp"
 #include "support/npy_reader.hpp"
 #include "support/png_reader.hpp"
+#include "support/temp_dir.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using ocean_test::TempDir;
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);

@@ -1,7 +1,8 @@
-// `ocean bake`: the flags of a bake (frames or one whole loop, formats, times) turned into the
-// library's BakeParams (ocean/bake.hpp, which writes the files and the manifest), a progress bar,
-// the first frame's contact sheet (its path checked with the folder, before the first frame), and
-// SIGINT/SIGTERM turned into the bake's cancellation (exit 128 + the signal).
+// `ocean bake`: the flags of a bake (frames or one whole loop, formats, times, a shard) turned into
+// the library's BakeParams (ocean/bake.hpp, which writes the files and the manifest), a progress
+// bar, the first frame's contact sheet (its path checked with the folder, before the first frame),
+// and SIGINT/SIGTERM turned into the bake's cancellation (exit 128 + the signal). `--merge DIR...`
+// joins the folders of a sharded bake instead (ocean::bake::merge).
 #include "ocean/bake.hpp"
 
 #include <cmath>
@@ -40,7 +41,39 @@ struct BakeOptions {
   std::string frames, fps = "30", time = "0", backend = "cpu";
   bool loop = false;
   std::string contact_sheet;
+  std::string shard;               // "I/N"
+  std::vector<std::string> merge;  // shard folders to join into --out
 };
+
+// An interrupted bake or merge: the signal named, exit 128 + the signal (the shell's convention
+// for a job ended by one); otherwise the usual one-line error.
+int report_stop(const Status& s, const StopSignals& stop, std::string_view what) {
+  if (s.code() == ErrorCode::cancelled && stop.received() != 0) {
+    std::cerr << "ocean: error: " << what << " interrupted: " << signal_name(stop.received())
+              << "; " << s.message() << "\n";
+    return 128 + stop.received();
+  }
+  return report(s);
+}
+
+// `ocean bake --merge DIR... --out OUT`: the only other flag it takes is --out.
+int run_merge(const BakeOptions& o, const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    const std::string name = option->get_name();
+    if (option->count() > 0 && name != "--merge" && name != "--out") {
+      return report(invalid_argument("--merge takes only --out: " + name +
+                                     " belongs to a bake, not to a merge"));
+    }
+  }
+  if (o.out.empty()) return report(invalid_argument("--merge needs --out DIR"));
+  if (Status s = check_output_name("--out", o.out); !s.ok()) return report(s);
+  const std::vector<std::filesystem::path> dirs(o.merge.begin(), o.merge.end());
+  const StopSignals stop;
+  if (Status s = bake::merge(dirs, {.output_dir = o.out, .cancel = stop.flag()}); !s.ok())
+    return report_stop(s, stop, "merge");
+  std::cerr << "ocean: merged " << dirs.size() << " shard(s) into " << o.out << "\n";
+  return kExitOk;
+}
 
 int run_bake(const BakeOptions& o) {
   if (o.out.empty()) return report(invalid_argument("bake needs --out DIR"));
@@ -96,10 +129,22 @@ int run_bake(const BakeOptions& o) {
   if (params.calm && !o.contact_sheet.empty())
     return report(invalid_argument("--contact-sheet draws the sea's maps: not with --calm"));
   if (params.local_layer != nullptr) print_warnings(*params.local_layer, params.start_time_s);
+  bake::FrameRange range{0, frames};
+  if (!o.shard.empty()) {
+    Result<bake::Shard> shard = bake::parse_shard(o.shard, "--shard");
+    if (!shard.ok()) return report(shard.status());
+    if (shard.value().count > frames) {
+      return report(invalid_argument("--shard " + o.shard + ": " + std::to_string(frames) +
+                                     " frame(s) make at most " + std::to_string(frames) +
+                                     " shard(s)"));
+    }
+    params.shard = shard.value();
+    range = bake::shard_frames(frames, shard.value());
+  }
   if (!o.contact_sheet.empty()) params.other_outputs.emplace_back(o.contact_sheet);
-  Progress progress("bake", frames);
+  Progress progress("bake", range.end - range.first);
   const auto on_frame = [&](const bake::FrameDone& done) -> Status {
-    if (done.index == 0 && !o.contact_sheet.empty()) {
+    if (done.index == range.first && !o.contact_sheet.empty()) {
       char title[200];
       std::snprintf(
           title, sizeof title, "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 × %zu cascades",
@@ -109,8 +154,8 @@ int run_bake(const BakeOptions& o) {
           write_contact_sheet(frame_maps_sheet(*done.frame, title), o.contact_sheet);
       if (!sheet.ok()) return sheet.status();
     }
-    progress.update(done.index + 1);
-    if (done.index + 1 == done.frame_count) progress.finish();
+    progress.update(done.index + 1 - range.first);
+    if (done.index + 1 == range.end) progress.finish();
     return {};
   };
   // From here on SIGINT/SIGTERM stop the bake between two files: no temporary is left and the
@@ -119,14 +164,9 @@ int run_bake(const BakeOptions& o) {
   params.cancel = stop.flag();
   if (Status s = bake::bake(c, o.backend, params, on_frame); !s.ok()) {
     progress.end_line();
-    if (s.code() == ErrorCode::cancelled && stop.received() != 0) {
-      std::cerr << "ocean: error: bake interrupted: " << signal_name(stop.received()) << "; "
-                << s.message() << "\n";
-      return 128 + stop.received();  // the shell's convention for a job ended by a signal
-    }
-    return report(s);
+    return report_stop(s, stop, "bake");
   }
-  std::cerr << "ocean: wrote " << frames << " frame(s) to " << o.out << "\n";
+  std::cerr << "ocean: wrote " << range.end - range.first << " frame(s) to " << o.out << "\n";
   return kExitOk;
 }
 
@@ -148,7 +188,14 @@ Command add_bake_command(CLI::App& app) {
       ->capture_default_str();
   command->add_option("--contact-sheet", o->contact_sheet,
                       "also draw the first frame's maps to this PNG");
-  return {command, [o] { return run_bake(*o); }};
+  command->add_option("--shard", o->shard,
+                      "I/N: write only block I (0..N-1) of N of the frames, with its own manifest");
+  command
+      ->add_option("--merge", o->merge,
+                   "DIR...: join the folders of shards 0..N-1 into --out (takes only --out)")
+      ->expected(1, -1);
+  return {command,
+          [o, command] { return o->merge.empty() ? run_bake(*o) : run_merge(*o, *command); }};
 }
 
 }  // namespace ocean::cli

@@ -1,0 +1,207 @@
+/* ocean/ocean.h — the stable C ABI of the ocean library (libocean_c.so): presets, a simulator
+ * stepped in time, its fields as pointers with a layout, batched height queries and the
+ * one-sided wave spectrum S(ω). Pure C99; callable from C, C#, Rust, Python ctypes, Godot...
+ * The contract in full, with an example: docs/capi.md.
+ *
+ * Errors: every function that can fail returns an ocean_status. OCEAN_OK is 0; any other value
+ * leaves the outputs untouched and sets this thread's last error message (ocean_last_error): one
+ * line, the text the `ocean` tool prints after "ocean: error: " for the same input. A success
+ * clears it. Null handles, null pointers and non-finite numbers are OCEAN_INVALID_ARGUMENT, never
+ * a crash. No C++ exception leaves the library (out of memory is OCEAN_OUT_OF_MEMORY).
+ *
+ * Lifetimes: each *_create has one *_destroy (which accepts NULL). Strings passed in are copied
+ * or read during the call only. Pointers returned by ocean_simulator_field stay valid until the
+ * next ocean_simulator_step / ocean_simulator_wait / ocean_simulator_destroy on that simulator.
+ *
+ * Threading: a handle is used by one thread at a time (no internal locking); distinct handles may
+ * be used from distinct threads at once. The last error is per thread.
+ *
+ * Versioning: OCEAN_ABI_VERSION is the soname (libocean_c.so.<abi>); it changes only when a
+ * function or struct changes incompatibly. Within one ABI version functions and enum values are
+ * only added, and structs grow only at their end: each struct starts with `struct_size`, set by
+ * the caller to sizeof, so the library knows which fields the caller has.
+ *
+ * Units are SI (metres, seconds, radians); Y is up; a cascade is a periodic square patch of side
+ * L sampled on N × N texels, texel (col, row) starting at world (x, z) = (col·L/N, row·L/N). */
+#ifndef OCEAN_OCEAN_H
+#define OCEAN_OCEAN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#if defined(OCEAN_C_BUILDING)
+#define OCEAN_API __attribute__((visibility("default")))
+#else
+#define OCEAN_API
+#endif
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- version ------------------------------------------------------------------------------ */
+
+#define OCEAN_VERSION_MAJOR 0
+#define OCEAN_VERSION_MINOR 1
+#define OCEAN_VERSION_PATCH 0
+/** major·10000 + minor·100 + patch of this header. */
+#define OCEAN_VERSION \
+  (OCEAN_VERSION_MAJOR * 10000 + OCEAN_VERSION_MINOR * 100 + OCEAN_VERSION_PATCH)
+/** The ABI this header describes; a library with another ABI version is not compatible. */
+#define OCEAN_ABI_VERSION 1
+
+/** OCEAN_VERSION of the library loaded at run time. */
+OCEAN_API uint32_t ocean_version(void);
+/** The library's version as "major.minor.patch" (static storage). */
+OCEAN_API const char* ocean_version_string(void);
+/** OCEAN_ABI_VERSION of the library loaded at run time; compare it with the header's. */
+OCEAN_API uint32_t ocean_abi_version(void);
+
+/* ---- status ------------------------------------------------------------------------------- */
+
+typedef enum ocean_status {
+  OCEAN_OK = 0,
+  OCEAN_INVALID_ARGUMENT = 1,        /**< a bad value, name, key, handle or pointer */
+  OCEAN_IO_ERROR = 2,                /**< a file could not be read or written */
+  OCEAN_UNSUPPORTED = 3,             /**< not compiled in, or not available on this machine */
+  OCEAN_INTERNAL = 4,                /**< a bug in the library */
+  OCEAN_CANCELLED = 5,               /**< stopped at the caller's request */
+  OCEAN_OUT_OF_MEMORY = 6,           /**< an allocation failed */
+  OCEAN_STATUS_MAX_ENUM = 0x7FFFFFFF /**< not a status: keeps the enum 32 bits wide */
+} ocean_status;
+
+/** The calling thread's message of the last failed call ("" after a success); one line, no
+ *  newline. Valid until the thread's next call into the library. Never NULL. */
+OCEAN_API const char* ocean_last_error(void);
+/** The status's name, e.g. "invalid_argument" (static storage; "unknown" for other values). */
+OCEAN_API const char* ocean_status_name(ocean_status status);
+
+/* ---- presets: a configuration assembled in layers ----------------------------------------- */
+
+/** A simulation configuration (defaults ← presets ← key=value overrides), always valid. */
+typedef struct ocean_config ocean_config;
+
+/** A configuration holding the library's defaults. */
+OCEAN_API ocean_status ocean_config_create(ocean_config** out);
+OCEAN_API void ocean_config_destroy(ocean_config* config);
+/** Merges a built-in preset ("calm", "moderate", "storm") or a preset JSON file over the
+ *  configuration, as `ocean --preset`. On error the configuration is unchanged. */
+OCEAN_API ocean_status ocean_config_merge_preset(ocean_config* config, const char* name_or_path);
+/** Sets one key, as `ocean --set`: "dotted.key=value", the value JSON or a bare string
+ *  ("sea.wind_sea.fetch_m=5e4", "normals=analytic"). An unknown key or a value out of range is
+ *  an error and leaves the configuration unchanged. */
+OCEAN_API ocean_status ocean_config_set(ocean_config* config, const char* assignment);
+/** The configuration as a preset document (two-space indent, keys in a fixed order, numbers that
+ *  read back exactly), snprintf-style: writes at most `capacity` bytes including the final NUL
+ *  into `buffer` (which may be NULL when capacity is 0) and sets *length to the full length
+ *  without the NUL. A buffer too small is not an error: compare *length with capacity. */
+OCEAN_API ocean_status ocean_config_to_json(const ocean_config* config, char* buffer,
+                                            size_t capacity, size_t* length);
+/** Writes the preset document to `path`, replacing it atomically (never a partial file). */
+OCEAN_API ocean_status ocean_config_save(const ocean_config* config, const char* path);
+/** The number of built-in presets, and the name of the i-th (static storage; NULL past the end). */
+OCEAN_API size_t ocean_builtin_preset_count(void);
+OCEAN_API const char* ocean_builtin_preset_name(size_t index);
+
+/* ---- the simulator ------------------------------------------------------------------------ */
+
+typedef struct ocean_simulator ocean_simulator;
+
+/** Configures a simulator of `config` (copied) on a backend: "cpu" or "vulkan" (see `ocean
+ *  info`). A backend not built in or with no device is OCEAN_UNSUPPORTED; an unknown name is
+ *  OCEAN_INVALID_ARGUMENT. Allocates every buffer; until the first step the published frame is
+ *  zeros at time 0. */
+OCEAN_API ocean_status ocean_simulator_create(const ocean_config* config, const char* backend,
+                                              ocean_simulator** out);
+OCEAN_API void ocean_simulator_destroy(ocean_simulator* simulator);
+/** Computes and publishes the frame at time_s (finite). Does not allocate. */
+OCEAN_API ocean_status ocean_simulator_step(ocean_simulator* simulator, double time_s);
+/** Starts the frame at time_s in the background; the published frame (and its field pointers)
+ *  stays readable until ocean_simulator_wait publishes the new one. */
+OCEAN_API ocean_status ocean_simulator_kick(ocean_simulator* simulator, double time_s);
+/** Waits for the kicked frame and publishes it; nothing when none was kicked. */
+OCEAN_API ocean_status ocean_simulator_wait(ocean_simulator* simulator);
+/** The published frame's time, s, and its index (frames computed since configuration); either
+ *  output may be NULL. */
+OCEAN_API ocean_status ocean_simulator_frame_time(const ocean_simulator* simulator, double* time_s,
+                                                  uint64_t* index);
+/** The number of cascades (patches, largest first). */
+OCEAN_API ocean_status ocean_simulator_cascade_count(const ocean_simulator* simulator,
+                                                     size_t* count);
+
+typedef enum ocean_field {
+  OCEAN_FIELD_DISPLACEMENT = 0,      /**< float32 ×3: (Dx, h, Dz), m */
+  OCEAN_FIELD_DISPLACEMENT_HALF = 1, /**< float16 ×4: (Dx, h, Dz, 0), texture-ready */
+  OCEAN_FIELD_NORMAL = 2,            /**< float32 ×3: unit normal of the displaced surface */
+  OCEAN_FIELD_JACOBIAN = 3,          /**< float32 ×1: Jacobian J of the horizontal map */
+  OCEAN_FIELD_FOAM = 4,              /**< float32 ×1: accumulated foam coverage in [0, 1] */
+  /** uint8 ×4 per texel, bytes (normal x, normal z, foam or Jacobian, smoothness) in memory
+   *  order, one mip level (level 0 is N × N, level l is (N >> l)²). */
+  OCEAN_FIELD_PACKED = 5,
+  /** Not a field: makes every int a value of the type (C++ limits an enum's values to the bits
+   *  its enumerators need), so that a caller's out-of-range number is an error, not undefined. */
+  OCEAN_FIELD_MAX_ENUM = 0x7FFFFFFF
+} ocean_field;
+
+typedef enum ocean_element_type {
+  OCEAN_ELEMENT_FLOAT32 = 0,
+  OCEAN_ELEMENT_FLOAT16 = 1, /**< IEEE 754 binary16 stored as uint16_t */
+  OCEAN_ELEMENT_UINT8 = 2,
+  OCEAN_ELEMENT_MAX_ENUM = 0x7FFFFFFF /**< not a type: keeps the enum 32 bits wide */
+} ocean_element_type;
+
+/** Where a field of the published frame lies in memory: texel (col, row), channel c is the
+ *  element at (const char*)data + row·row_stride_bytes + (col·channels + c)·element size. */
+typedef struct ocean_field_view {
+  size_t struct_size;         /**< set by the caller: sizeof(ocean_field_view) */
+  const void* data;           /**< read-only; valid until the next step, wait or destroy */
+  int32_t width, height;      /**< texels */
+  size_t row_stride_bytes;    /**< bytes from one row to the next */
+  int32_t channels;           /**< elements per texel */
+  ocean_element_type element; /**< type of one element */
+  double patch_size_m;        /**< side L of the cascade's patch, m (of level 0) */
+} ocean_field_view;
+
+/** Fills *view for one field of cascade `cascade` (0 = largest). `level` is the mip level of
+ *  OCEAN_FIELD_PACKED and must be 0 for the others. A field the configuration does not compute
+ *  (outputs.normal = false...) is OCEAN_UNSUPPORTED. */
+OCEAN_API ocean_status ocean_simulator_field(const ocean_simulator* simulator, size_t cascade,
+                                             ocean_field field, int32_t level,
+                                             ocean_field_view* view);
+
+/** Heights, m, of the rendered surface above the world points (x[i], z[i]), i < count, for the
+ *  published frame: the undisplaced point that the horizontal displacement carries onto (x, z)
+ *  is found first (docs/math.md M.7.7). Every x[i], z[i] must be finite; `heights` receives count
+ *  values. Thread-safe with other queries and with a kicked frame, not with step or wait. */
+OCEAN_API ocean_status ocean_simulator_heights(const ocean_simulator* simulator, const double* x,
+                                               const double* z, size_t count, double* heights);
+
+/* ---- sea-state spectra -------------------------------------------------------------------- */
+
+/** The parameters of a one-sided frequency spectrum, as `ocean spectrum` takes them. Numbers left
+ *  NaN are unset: give (hs_m, tp_s) or wind_speed_mps (with fetch_m for jonswap/tma). */
+typedef struct ocean_spectrum_params {
+  size_t struct_size;    /**< set by ocean_spectrum_params_init: sizeof(ocean_spectrum_params) */
+  const char* model;     /**< "pierson-moskowitz", "jonswap", "tma" or "phillips" */
+  double hs_m;           /**< significant wave height Hs, m (with tp_s) */
+  double tp_s;           /**< peak period Tp, s */
+  double wind_speed_mps; /**< U10 (U19.5 for pierson-moskowitz), m/s */
+  double fetch_m;        /**< fetch F, m */
+  double gamma;          /**< JONSWAP peak enhancement γ ≥ 1; NaN = automatic */
+  double depth_m;        /**< water depth of tma, m; INFINITY = deep water */
+  double gravity_mps2;   /**< g, m/s² */
+} ocean_spectrum_params;
+
+/** Defaults: struct_size set, model "jonswap", every sea-state number NaN, depth infinite,
+ *  g = 9.81 m/s². */
+OCEAN_API void ocean_spectrum_params_init(ocean_spectrum_params* params);
+/** S(ω[i]), m²·s/rad, for i < count into `spectrum`; every ω ≥ 0 and finite. Parameter errors
+ *  are those of `ocean spectrum`, e.g. "significant_wave_height_m = -1 is out of range: ...". */
+OCEAN_API ocean_status ocean_spectrum_evaluate(const ocean_spectrum_params* params,
+                                               const double* omega, size_t count, double* spectrum);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* OCEAN_OCEAN_H */

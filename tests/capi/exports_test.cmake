@@ -1,0 +1,38 @@
+# The dynamic symbols libocean_c.so defines are exactly the functions ocean.h declares: nothing of
+# the C++ library leaks (a second copy of its symbols would clash with a program's own), and no
+# declared function is missing.
+# Usage: cmake -DNM=<nm> -DLIBRARY=<libocean_c.so> -DHEADER=<ocean.h> -P exports_test.cmake
+execute_process(COMMAND ${NM} -D --defined-only ${LIBRARY} OUTPUT_VARIABLE listing
+                RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${NM} failed on ${LIBRARY}")
+endif()
+string(REGEX MATCHALL "[^\n]+" lines "${listing}")
+set(exported "")
+foreach(line ${lines})
+  string(REGEX REPLACE "^[0-9a-fA-F]* *[A-Za-z] " "" symbol "${line}")
+  list(APPEND exported ${symbol})
+endforeach()
+file(READ ${HEADER} header)
+string(REGEX MATCHALL "OCEAN_API[^;(]*[ *](ocean_[a-z0-9_]+)\\(" declarations "${header}")
+set(declared "")
+foreach(d ${declarations})
+  string(REGEX MATCH "ocean_[a-z0-9_]+\\($" name "${d}")
+  string(REPLACE "(" "" name "${name}")
+  list(APPEND declared ${name})
+endforeach()
+list(SORT exported)
+list(SORT declared)
+list(LENGTH declared count)
+if(count LESS 20)
+  message(FATAL_ERROR "found only ${count} declarations in ${HEADER}")
+endif()
+if(NOT exported STREQUAL declared)
+  set(extra ${exported})
+  list(REMOVE_ITEM extra ${declared})
+  set(missing ${declared})
+  list(REMOVE_ITEM missing ${exported})
+  message(FATAL_ERROR "libocean_c.so exports other symbols than ocean.h declares:\n"
+                      "  not declared: ${extra}\n  not exported: ${missing}")
+endif()
+message(STATUS "libocean_c.so exports the ${count} functions of ocean.h and nothing else")
