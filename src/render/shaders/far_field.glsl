@@ -27,6 +27,15 @@ vec2 preserving_weights(float ratio) {
   return w / length(w);
 }
 
+// How much of a cascade is read through the hex tiles (R.14): the far-field ratio where a tile
+// spans at least 4 samples (pixels or vertices, `sample_m` apart), none below 2: smaller tiles
+// would give each sample its own random offset, noise instead of the filtered texture, and the
+// repetition of so short a period is texture, not a lattice the eye picks out.
+float hex_ratio(float ratio, float patch_size_m, float sample_m) {
+  float tile_m = patch_size_m / OCEAN_RENDER_HEX_TILES;
+  return ratio * clamp(0.5 * tile_m / max(sample_m, 1e-3) - 1.0, 0.0, 1.0);
+}
+
 // The three tiles (vertices of a triangle grid of OCEAN_RENDER_HEX_TILES tiles per cascade
 // period) around uv, their random offsets in [0, 1)², and weights normalised for the
 // variance-preserving blend Σ w_i·x_i with Σ w_i² = 1 (R.14).

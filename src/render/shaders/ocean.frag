@@ -56,11 +56,12 @@ void main() {
   for (int c = 0; c < cascades; ++c) {
     float inv_size = 1.0 / u.cascades[c].patch_size_m;
     vec2 uv = world_xz * inv_size + 0.5 / u.cascades[c].resolution;
+    float hex = hex_ratio(ratio, u.cascades[c].patch_size_m, footprint);
+    vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
     Shade plain = Shade(vec2(0.0), 0.0, 0.0), tiled = Shade(vec2(0.0), 0.0, 0.0);
-    if (ratio < 1.0)
-      plain = shade_of(textureGrad(normal_map, vec3(uv, float(c)), dx * inv_size, dy * inv_size),
-                       alpha0_sq);
-    if (ratio > 0.0) {
+    // Sampled in uniform control flow (implicit derivatives), used where the ratio is below 1.
+    plain = shade_of(texture(normal_map, vec3(uv, float(c))), alpha0_sq);
+    if (hex > 0.0) {
       HexTaps taps = hex_taps(uv, c);
       for (int i = 0; i < 3; ++i) {
         vec4 t = textureGrad(normal_map, vec3(uv + taps.offset[i], float(c)), dx * inv_size,
@@ -73,12 +74,12 @@ void main() {
       }
     }
     Shade sh;
-    sh.slope = blend.x * plain.slope + blend.y * tiled.slope;
-    sh.foam = blend.x * blend.x * plain.foam + blend.y * blend.y * tiled.foam;
-    sh.extra = blend.x * blend.x * plain.extra + blend.y * blend.y * tiled.extra;
+    sh.slope = mixing.x * plain.slope + mixing.y * tiled.slope;
+    sh.foam = mixing.x * mixing.x * plain.foam + mixing.y * mixing.y * tiled.foam;
+    sh.extra = mixing.x * mixing.x * plain.extra + mixing.y * mixing.y * tiled.extra;
     if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
       vec3 cell = u.far_field.cell_m.xyz;
-      vec3 w = clamp(2.0 - 4.0 * footprint / cell, 0.0, 1.0);  // octaves finer than 2 pixels fade
+      vec3 w = clamp(2.0 - 8.0 * footprint / cell, 0.0, 1.0);  // octaves finer than 4 pixels fade
       float h, sx, sz;
       far_field_noise(u.far_field, world_xz.x, world_xz.y, w.x, w.y, w.z, h, sx, sz);
       float unresolved = dot(1.0 - w * w, u.far_field.slope_variance.xyz);

@@ -42,15 +42,17 @@ void main() {
       float w = geometry_weight(c, spacing);
       if (w <= 0.0 && c > 0) continue;
       vec2 uv = xz / u.cascades[c].patch_size_m + 0.5 / u.cascades[c].resolution;
+      float hex = hex_ratio(ratio, u.cascades[c].patch_size_m, spacing);
+      vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
       vec3 plain = vec3(0.0), tiled = vec3(0.0);
-      if (ratio < 1.0) plain = textureLod(displacement_map, vec3(uv, float(c)), 0.0).xyz;
-      if (ratio > 0.0) {
+      if (hex < 1.0) plain = textureLod(displacement_map, vec3(uv, float(c)), 0.0).xyz;
+      if (hex > 0.0) {
         HexTaps taps = hex_taps(uv, c);
         for (int i = 0; i < 3; ++i)
           tiled += taps.weight[i] *
                    textureLod(displacement_map, vec3(uv + taps.offset[i], float(c)), 0.0).xyz;
       }
-      vec3 sim = w * (blend.x * plain + blend.y * tiled);
+      vec3 sim = w * (mixing.x * plain + mixing.y * tiled);
       if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
         float h, sx, sz;
         vec3 cell = u.far_field.cell_m.xyz;
