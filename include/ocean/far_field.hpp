@@ -1,6 +1,6 @@
 // ocean/far_field.hpp — the sea beyond the simulation's tiles (docs/rendering.md R.13–R.14): seed
 // 003's far field, three octaves of gradient noise blended with the FFT field by a Hermite ratio
-// of the distance (seed 003, eqs. 6–7), its octaves fitted so that its height variance and
+// of the distance (VR-GIS FFT+Perlin, eqs. 6–7), its octaves fitted so that its height variance and
 // mean-square slope equal those of the band it replaces (cascade 0, the one whose period shows
 // from afar). The renderer (ocean/render.hpp) evaluates it in its shaders; this is the CPU
 // reference they mirror (one source: src/render/shaders/far_noise.h) and what the statistics
@@ -16,9 +16,9 @@
 
 namespace ocean::render {
 
-/// Where the far field takes over: seed 003's D_min and D_max, distances from the camera to the
-/// undisplaced sea point, m. Nearer than near_m the picture is the simulation alone (what height
-/// queries, wakes and floating objects see); beyond far_m it is the far field alone.
+/// Where the far field takes over: VR-GIS FFT+Perlin's D_min and D_max, distances from the camera
+/// to the undisplaced sea point, m. Nearer than near_m the picture is the simulation alone (what
+/// height queries, wakes and floating objects see); beyond far_m it is the far field alone.
 struct FarFieldRange {
   double near_m = 1000.0;  ///< D_min, finite, ≥ 0
   double far_m = 2500.0;   ///< D_max, finite, > near_m
@@ -54,9 +54,9 @@ struct BandStatistics {
 Result<BandStatistics> cascade0_statistics(const SimulationConfig& config);
 
 /// The fitted noise: octave o has lattice spacing cell_m[o] and amplitude amplitude_m[o].
-/// Spacings are in the ratio 1 : 2/5 : 1/4 (seed 003's step lengths 2, 5, 8 as frequencies);
-/// their scale and the amplitudes (a geometric progression) are solved so that the octaves'
-/// summed height variance and mean-square slope equal `target` exactly.
+/// Spacings are in the ratio 1 : 2/5 : 1/4 (VR-GIS FFT+Perlin's step lengths 2, 5, 8 as
+/// frequencies); their scale and the amplitudes (a geometric progression) are solved so that the
+/// octaves' summed height variance and mean-square slope equal `target` exactly.
 struct FarFieldNoise {
   std::array<double, 3> cell_m{};
   std::array<double, 3> amplitude_m{};

@@ -3,7 +3,8 @@
 // noise the shaders evaluate (the noise itself is shaders/far_noise.h, shared with the GLSL).
 //
 // This work is based on:
-//   - seed 003 (FFT + Perlin noise ocean for a VR-GIS platform), §III: Hermite ratio (eq. 6),
+//   - VR-GIS FFT+Perlin ("CUDA concurrent kernels: FFT + Perlin noise ocean for a VR-GIS
+//   platform"), §III: Hermite ratio (eq. 6),
 //     blend of the FFT and noise heights (eq. 7), octaves of one noise at several step lengths.
 //   - Perlin, K. (2002) "Improving noise": gradient noise with the quintic fade.
 //   - Olano, M. & Baker, D. (2010) "LEAN mapping": slope variances add, which is what the fit and
@@ -22,7 +23,8 @@ namespace ocean::render {
 
 namespace {
 
-// Octave spacings relative to octave 0: seed 003's step lengths 2, 5, 8 read as frequencies.
+// Octave spacings relative to octave 0: VR-GIS FFT+Perlin's step lengths 2, 5, 8 read as
+// frequencies.
 constexpr std::array<double, 3> kCellRatio = {1.0, 2.0 / 5.0, 2.0 / 8.0};
 
 double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
@@ -60,7 +62,7 @@ Status validate(const FarFieldRange& range) {
 double far_field_ratio(const FarFieldRange& range, double distance_m) {
   double t = (distance_m - range.near_m) / (range.far_m - range.near_m);
   t = std::clamp(t, 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);  // seed 003, eq. 6
+  return t * t * (3.0 - 2.0 * t);  // VR-GIS FFT+Perlin, eq. 6
 }
 
 UnitNoiseMoments unit_noise_moments() {

@@ -1,4 +1,4 @@
-// The far field's CPU reference (ocean/far_field.hpp, docs/rendering.md R.13): seed 003's
+// The far field's CPU reference (ocean/far_field.hpp, docs/rendering.md R.13): VR-GIS FFT+Perlin's
 // Hermite ratio (eq. 6) and its identities, the unit noise's moments against a direct
 // measurement, the fitted noise's height variance and mean-square slope against both cascade 0's
 // spectrum integral and the simulated cascade 0 itself, and bad ranges. No device needed.

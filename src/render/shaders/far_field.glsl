@@ -1,8 +1,9 @@
-// far_field.glsl — the far field of docs/rendering.md: seed 003's noise octaves blended with
-// cascade 0 (R.13, the noise itself in far_noise.h, shared with the C++ reference) and the
+// far_field.glsl — the far field of docs/rendering.md: VR-GIS FFT+Perlin's noise octaves blended
+// with cascade 0 (R.13, the noise itself in far_noise.h, shared with the C++ reference) and the
 // hex-tiled cascade lookups that keep the periodic cascades from showing their lattice (R.14).
 //
-// Sources: seed 003 (FFT + Perlin noise ocean for a VR-GIS platform), eqs. 6–7; Heitz, E. &
+// Sources: VR-GIS FFT+Perlin ("CUDA concurrent kernels: FFT + Perlin noise ocean for a VR-GIS
+// platform"), eqs. 6–7; Heitz, E. &
 // Neyret, F. (2018) "High-performance by-example noise using a histogram-preserving blending
 // operator" (the triangle grid, random offsets per vertex, the variance-preserving blend);
 // Mikkelsen, M. (2022) "Practical real-time hex-tiling" (sharpened weights, sampling with the
@@ -13,7 +14,8 @@
 #include "far_noise.h"
 #include "render_common.glsl"
 
-// The Hermite ratio of seed 003's eq. 6 at an undisplaced sea point; 0 before a configuration.
+// The Hermite ratio of VR-GIS FFT+Perlin's eq. 6 at an undisplaced sea point; 0 before a
+// configuration.
 float far_ratio_at(vec2 xz) {
   if (u.far_field.enabled <= 0.0) return 0.0;
   return far_ratio(u.far_field, length(vec3(xz.x, 0.0, xz.y) - u.camera_pos_m));
@@ -49,7 +51,8 @@ vec2 tile_offset(ivec2 v, int cascade) {
 }
 HexTaps hex_taps(vec2 uv, int cascade) {
   // 2√3 makes the triangles' side 1/OCEAN_RENDER_HEX_TILES of the period (Heitz & Neyret 2018).
-  vec2 skewed = mat2(1.0, 0.0, -0.57735027, 1.15470054) * (uv * 3.46410162 * OCEAN_RENDER_HEX_TILES);
+  vec2 skewed =
+      mat2(1.0, 0.0, -0.57735027, 1.15470054) * (uv * 3.46410162 * OCEAN_RENDER_HEX_TILES);
   ivec2 base = ivec2(floor(skewed));
   vec3 t = vec3(fract(skewed), 0.0);
   t.z = 1.0 - t.x - t.y;

@@ -5,9 +5,9 @@
 //
 // Sources: Perlin, K. (2002) "Improving noise" (gradient noise, quintic fade 6t⁵ − 15t⁴ + 10t³);
 // Quilez, I. (2017) "Gradient noise derivatives" (the analytic gradient); Jarzynski, M. & Olano,
-// M. (2020) "Hash functions for GPU rendering", JCGT 9(3) (the PCG hash); seed 003 (FFT + Perlin
-// ocean for a VR-GIS platform, §III step 5: octaves of one noise texture read at several step
-// lengths, here the hashed gradient lattice read at frequencies in the ratio 2 : 5 : 8).
+// M. (2020) "Hash functions for GPU rendering", JCGT 9(3) (the PCG hash); VR-GIS FFT+Perlin
+// (§III, step 5: octaves of one noise texture read at several step lengths, here the hashed
+// gradient lattice read at frequencies in the ratio 2 : 5 : 8).
 #ifndef OCEAN_FAR_NOISE_H
 #define OCEAN_FAR_NOISE_H
 

@@ -4,8 +4,9 @@
 // sun's specular from a GGX microfacet lobe whose roughness the mips encode (Aebi, VR Ocean,
 // eqs. 49, 53), light scattered out of the water body and through thin crests, foam, and
 // Mitchell's (2005, §4, eq. 5) composition fog(s·(1 − r) + r·(env + sun)) with Paleologue's
-// (2024) horizon fog. Beyond seed 003's D_min, cascade 0's slopes blend into the far field's
-// noise and every cascade is read through hex tiles (R.13, R.14).
+// (2024) horizon fog. Beyond the far field's D_min (VR-GIS FFT+Perlin, eq. 6), cascade 0's
+// slopes blend into the far field's noise and the cascades are read through hex tiles (R.13,
+// R.14).
 //
 // Sources: Walter et al. (2007) "Microfacet models for refraction through rough surfaces" (GGX
 // distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano

@@ -4,9 +4,10 @@
 // displacement maps (Aebi, VR Ocean, eq. 44; sampling M.7.6). Each cascade's displacement fades
 // out where the mesh is too coarse to carry its dominant wavelength, and all of it fades out
 // towards the border of the ocean square, where the flat skirt begins (docs/rendering.md R.9,
-// R.10). Beyond seed 003's D_min the cascades are read through hex tiles with random offsets
-// and cascade 0 blends into the far field's noise (R.13, R.14). All weights are functions of the world position and the camera alone, so vertices that
-// two patches share get the same displacement and the stitched mesh stays closed.
+// R.10). Beyond the far field's D_min (VR-GIS FFT+Perlin, eq. 6) the cascades are read through
+// hex tiles with random offsets and cascade 0 blends into the far field's noise (R.13, R.14).
+// All weights are functions of the world position and the camera alone, so vertices that two
+// patches share get the same displacement and the stitched mesh stays closed.
 #include "far_field.glsl"
 
 layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)

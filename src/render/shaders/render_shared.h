@@ -53,8 +53,8 @@ struct CascadeUniforms {
   float coarsest_mip;  // log2 N: the level of the 1×1 mip
 };
 
-// The far field (docs/rendering.md R.13–R.14): seed 003's noise octaves fitted to cascade 0's
-// statistics, blended in between D_min and D_max, and the hex-tiled cascade lookups there.
+// The far field (docs/rendering.md R.13–R.14): VR-GIS FFT+Perlin's noise octaves fitted to
+// cascade 0's statistics, blended in between D_min and D_max, and the hex-tiled cascade lookups there.
 struct FarFieldUniforms {
   vec4 cell_m;          // lattice spacing of octaves 0, 1, 2 (w unused)
   vec4 amplitude_m;     // amplitude of octaves 0, 1, 2 (w unused)
