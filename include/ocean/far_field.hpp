@@ -30,7 +30,7 @@ double far_field_ratio(const FarFieldRange& range, double distance_m);
 
 /// Variance and per-axis slope variance of gradient noise of lattice spacing 1 with unit
 /// gradients drawn uniformly in angle (the expectations over the gradients, integrated over the
-/// cell by quadrature: exact up to the quadrature's 1e-6).
+/// cell by quadrature: exact up to the quadrature's ~1e-5).
 struct UnitNoiseMoments {
   double height_variance = 0.0;  ///< E[g²]
   double slope_variance = 0.0;   ///< E[(∂g/∂x)²] = E[(∂g/∂z)²]
