@@ -11,6 +11,8 @@ namespace ocean::cli {
 namespace {
 constexpr NumberOption<double> kFov{
     .flag = "--fov", .accept = Accept::in_range, .lo = 1.0, .hi = 170.0};
+constexpr NumberOption<double> kFarFieldRange{.flag = "--far-field-range",
+                                              .accept = Accept::non_negative};
 constexpr NumberOption<double> kOceanSize{.flag = "--ocean-size",
                                           .accept = Accept::in_range,
                                           .lo = lod::kMinOceanSize_m,
@@ -30,6 +32,10 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
   add_option(
       command, kOceanSize, f.ocean_size,
       "side of the LOD square around the camera, m (256..8192, default " + f.ocean_size + ")");
+  command.add_option("--far-field-range", f.far_field_range,
+                     "DMIN,DMAX: distances, m, over which the simulated sea blends into the "
+                     "far field's noise and hex-tiled cascades (default " +
+                         f.far_field_range + ")");
   command.add_option("--view", f.view, "shaded, lod (colours by level) or wireframe");
   command.add_option("--backend", f.backend,
                      "simulation backend: cpu, or vulkan (its images are rendered with no copy)");
@@ -81,6 +87,15 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
   Result<double> size = parse(kOceanSize, f.ocean_size);
   if (!size.ok()) return size.status();
   v.ocean_size_m = size.value();
+  Result<std::vector<double>> range = parse_list(kFarFieldRange, f.far_field_range);
+  if (!range.ok()) return range.status();
+  if (range.value().size() != 2)
+    return invalid_argument("--far-field-range = " + excerpt(f.far_field_range) +
+                            " must be two distances DMIN,DMAX in metres");
+  v.far_field = {.near_m = range.value()[0], .far_m = range.value()[1]};
+  if (range.value()[0] >= range.value()[1])
+    return invalid_argument("--far-field-range = " + excerpt(f.far_field_range) +
+                            ": DMIN must be below DMAX");
   Result<render::DebugView> debug = render::parse_debug_view(f.view);
   if (!debug.ok())
     return invalid_argument("--view = " + excerpt(f.view) + " is not a view: must be " +

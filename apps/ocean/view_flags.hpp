@@ -15,13 +15,15 @@ struct ViewFlags {
   std::string camera = "0,6,0", target = "300,-2,60", fov = "55";
   std::string quality = "high", ocean_size = "4096", view = "shaded";
   std::string backend = "cpu";
+  std::string far_field_range = "1000,2500";  // D_min,D_max of the far field (R.13), m
   bool validation = false;
 };
 /// Registers the flags; `what` names the image ("image" or "window") in the help.
 void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what);
 
-/// Size, backend and validation into `scene`; camera, quality, ocean size and debug view into
-/// `view` (its shading is left alone). `min_size` is the smallest width/height accepted.
+/// Size, backend and validation into `scene`; camera, quality, ocean size, far-field range and
+/// debug view into `view` (its shading is left alone). `min_size` is the smallest width/height
+/// accepted.
 Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,
                         render::View& view);
 

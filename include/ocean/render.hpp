@@ -21,6 +21,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ocean/far_field.hpp"
 #include "ocean/lod.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
@@ -79,6 +80,8 @@ struct View {
   /// Outer half-extent of the horizon skirt, m; ≤ 0: 10·S.
   double skirt_half_extent_m = -1.0;
   ShadingParams shading;
+  /// Where the far field (R.13) and the hex-tiled lookups (R.14) take over from the simulation.
+  FarFieldRange far_field;
   DebugView debug = DebugView::shaded;
 };
 Status validate(const View& view);

@@ -20,6 +20,9 @@ Status Renderer::configure(const SimulationConfig& config) {
   if (!sea.ok()) return sea.status();
   st.hs_m = 4.0 * std::sqrt(std::max(sea.value().variance_m2(), 0.0));
   st.choppiness = config.choppiness;
+  Result<FarFieldNoise> far = fit_far_field_noise(config);
+  if (!far.ok()) return far.status();
+  st.far_noise = far.value();
   double peak_wavelength = 1e9;
   for (const WaveSystem& w : sea.value().systems()) {
     const double k = sea.value().dispersion().wavenumber(w.spectrum().peak_omega());

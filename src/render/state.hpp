@@ -73,6 +73,7 @@ struct Renderer::State {
   int cascades = 0;
   std::array<shader::CascadeUniforms, kMaxCascades> cascade_params{};
   double hs_m = 1.0;
+  FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
   double choppiness = 1.0;
 
   ~State();

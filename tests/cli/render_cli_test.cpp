@@ -96,6 +96,12 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --view xray", "--view");
   ocean_test::expect_usage_error("render --frames 1.5", "--frames");
   ocean_test::expect_usage_error("render --exposure nan", "--exposure");
+  // The far field's range (docs/rendering.md R.13): two finite distances, DMIN below DMAX.
+  ocean_test::expect_usage_error("render --far-field-range 2000,1000", "DMIN must be below DMAX");
+  ocean_test::expect_usage_error("render --far-field-range 500,500", "DMIN must be below DMAX");
+  ocean_test::expect_usage_error("render --far-field-range -5,100", "--far-field-range");
+  ocean_test::expect_usage_error("render --far-field-range nan,100", "--far-field-range");
+  ocean_test::expect_usage_error("render --far-field-range 100", "two distances DMIN,DMAX");
 }
 
 TEST(RenderCli, UnwritableOutputFailsBeforeRendering) {

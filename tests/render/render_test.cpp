@@ -306,9 +306,11 @@ TEST(Renderer, VulkanBackendImagesGiveTheCpuPicture) {
   ASSERT_EQ(sa.size(), sb.size());
   const ocean::render::testing::PictureDifference d = ocean::render::testing::difference(sa, sb);
   // Same maps within the conformance bounds (ocean/conformance.hpp: RGBA8 within 1 LSB,
-  // displacement within a few 1e-6·Hs): the pictures agree to within rounding.
+  // displacement within a few 1e-6·Hs): the pictures agree to within rounding. Distant water
+  // shows every cascade's filtered normals (R.5), where the sun's GGX lobe at α ≈ 0.1 turns one
+  // LSB of a normal (1/127 of slope) into up to ~10 LSB of a glitter pixel.
   EXPECT_LE(d.mean, 0.05);
-  EXPECT_LE(d.max, 6);
+  EXPECT_LE(d.max, 12);
 }
 
 TEST(Renderer, DebugViewsAndResizing) {

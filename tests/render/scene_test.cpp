@@ -66,8 +66,8 @@ void expect_same_picture(const std::vector<std::uint8_t>& cpu, const std::vector
   ASSERT_EQ(gpu.size(), cpu.size());
   const PictureDifference d = difference(cpu, gpu);
   EXPECT_LE(d.mean, 0.05);
-  if (per_pixel) {
-    EXPECT_LE(d.max, 6);
+  if (per_pixel) {  // up to ~10 LSB in distant glitter: render_test.cpp explains
+    EXPECT_LE(d.max, 12);
   }
 }
 

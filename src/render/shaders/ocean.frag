@@ -4,12 +4,14 @@
 // sun's specular from a GGX microfacet lobe whose roughness the mips encode (Aebi, VR Ocean,
 // eqs. 49, 53), light scattered out of the water body and through thin crests, foam, and
 // Mitchell's (2005, §4, eq. 5) composition fog(s·(1 − r) + r·(env + sun)) with Paleologue's
-// (2024) horizon fog.
+// (2024) horizon fog. Beyond the far field's D_min (VR-GIS FFT+Perlin, eq. 6), cascade 0's
+// slopes blend into the far field's noise and the cascades are read through hex tiles (R.13,
+// R.14).
 //
 // Sources: Walter et al. (2007) "Microfacet models for refraction through rough surfaces" (GGX
 // distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano
 // & Baker (2010) "LEAN mapping" (slope variance adds across layers and filtering, R.5).
-#include "render_common.glsl"
+#include "far_field.glsl"
 
 layout(location = 0) in vec2 world_xz;
 layout(location = 1) in vec3 world_pos;
@@ -27,32 +29,70 @@ float alpha_squared(float smoothness) {
   return r * r;
 }
 
+// One cascade's contribution to a pixel: surface gradient, foam, slope variance above α0².
+struct Shade {
+  vec2 slope;
+  float foam;
+  float extra;
+};
+Shade shade_of(vec4 t, float alpha0_sq) {
+  vec2 n = t.xy * 2.0 - 1.0;
+  float ny = sqrt(max(1.0 - dot(n, n), 0.05));
+  return Shade(n / ny, t.z, max(alpha_squared(t.w) - alpha0_sq, 0.0));
+}
+
 void main() {
   int cascades = int(u.cascade_count);
   float alpha0_sq = u.roughness * u.roughness;
   vec2 slope = vec2(0.0);  // Σ of the cascades' surface gradients, as normal x/y and z/y
   float variance = alpha0_sq;
   float no_foam = 1.0;
-  // Pixel footprint on the sea, m: beyond an eighth of a cascade's dominant wavelength per pixel
-  // its normals would alias; they fade into roughness instead (R.5).
+  // The mips carry each cascade's mean normal over the pixel and, in the smoothness, the slope
+  // variance the averaging removed (Toksvig 2005): every cascade is used at every distance and
+  // the filtering alone decides how much of it is detail and how much roughness (R.5).
   vec2 dx = dFdx(world_xz), dy = dFdy(world_xz);
   float footprint = max(length(dx), length(dy));
+  float ratio = far_ratio_at(world_xz);
+  vec2 blend = preserving_weights(ratio);  // (simulation, far field)
   for (int c = 0; c < cascades; ++c) {
-    vec2 uv = world_xz / u.cascades[c].patch_size_m + 0.5 / u.cascades[c].resolution;
-    vec4 t = texture(normal_map, vec3(uv, float(c)));
-    vec2 n = t.xy * 2.0 - 1.0;
-    float ny = sqrt(max(1.0 - dot(n, n), 0.05));
-    float w = clamp(2.0 - 16.0 * footprint / u.cascades[c].wavelength_m, 0.0, 1.0);
-    slope += w * n / ny;
-    float extra = max(alpha_squared(t.w) - alpha0_sq, 0.0);
-    if (w < 1.0) {  // the cascade's whole slope variance, from its 1×1 mip
-      vec4 coarsest = textureLod(normal_map, vec3(0.5, 0.5, float(c)), u.cascades[c].coarsest_mip);
-      extra = mix(max(alpha_squared(coarsest.w) - alpha0_sq, 0.0), extra, w);
+    float inv_size = 1.0 / u.cascades[c].patch_size_m;
+    vec2 uv = world_xz * inv_size + 0.5 / u.cascades[c].resolution;
+    float hex = hex_ratio(ratio, u.cascades[c].patch_size_m, footprint);
+    vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
+    Shade plain = Shade(vec2(0.0), 0.0, 0.0), tiled = Shade(vec2(0.0), 0.0, 0.0);
+    // Sampled in uniform control flow (implicit derivatives), used where the ratio is below 1.
+    plain = shade_of(texture(normal_map, vec3(uv, float(c))), alpha0_sq);
+    if (hex > 0.0) {
+      HexTaps taps = hex_taps(uv, c);
+      for (int i = 0; i < 3; ++i) {
+        vec4 t = textureGrad(normal_map, vec3(uv + taps.offset[i], float(c)), dx * inv_size,
+                             dy * inv_size);
+        Shade one = shade_of(t, alpha0_sq);
+        float w = taps.weight[i];
+        tiled.slope += w * one.slope;
+        tiled.foam += w * w * one.foam;  // Σ w² = 1: a weighted mean
+        tiled.extra += w * w * one.extra;
+      }
     }
-    variance += extra;
+    Shade sh;
+    sh.slope = mixing.x * plain.slope + mixing.y * tiled.slope;
+    sh.foam = mixing.x * mixing.x * plain.foam + mixing.y * mixing.y * tiled.foam;
+    sh.extra = mixing.x * mixing.x * plain.extra + mixing.y * mixing.y * tiled.extra;
+    if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
+      vec3 cell = u.far_field.cell_m.xyz;
+      vec3 w = clamp(2.0 - 8.0 * footprint / cell, 0.0, 1.0);  // octaves finer than 4 pixels fade
+      float h, sx, sz;
+      far_field_noise(u.far_field, world_xz.x, world_xz.y, w.x, w.y, w.z, h, sx, sz);
+      float unresolved = dot(1.0 - w * w, u.far_field.slope_variance.xyz);
+      sh.slope = blend.x * sh.slope + blend.y * vec2(sx, sz);
+      sh.foam *= blend.x * blend.x;
+      sh.extra = blend.x * blend.x * sh.extra + blend.y * blend.y * unresolved;
+    }
+    slope += sh.slope;
+    variance += sh.extra;
     // Whitecaps are the long waves' breaking crests; the short cascades' foam is weighted down
     // so it reads as streaks and speckle rather than snow (R.11).
-    no_foam *= 1.0 - t.z / (1.0 + 0.6 * float(c));
+    no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
   }
   vec3 N = normalize(vec3(slope.x, 1.0, slope.y));
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);

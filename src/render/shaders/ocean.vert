@@ -4,9 +4,11 @@
 // displacement maps (Aebi, VR Ocean, eq. 44; sampling M.7.6). Each cascade's displacement fades
 // out where the mesh is too coarse to carry its dominant wavelength, and all of it fades out
 // towards the border of the ocean square, where the flat skirt begins (docs/rendering.md R.9,
-// R.10). Both weights are functions of the world position and the camera alone, so vertices that
-// two patches share get the same displacement and the stitched mesh stays closed.
-#include "render_common.glsl"
+// R.10). Beyond the far field's D_min (VR-GIS FFT+Perlin, eq. 6) the cascades are read through
+// hex tiles with random offsets and cascade 0 blends into the far field's noise (R.13, R.14).
+// All weights are functions of the world position and the camera alone, so vertices that two
+// patches share get the same displacement and the stitched mesh stays closed.
+#include "far_field.glsl"
 
 layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)
 layout(location = 1) in vec3 a_instance;  // centre x, centre z, size (skirt: 0, 0, 1)
@@ -35,11 +37,32 @@ void main() {
   vec3 displacement = vec3(0.0);
   int cascades = int(u.cascade_count);
   if (border_weight > 0.0) {
+    float ratio = far_ratio_at(xz);
+    vec2 blend = preserving_weights(ratio);  // (simulation, far field)
     for (int c = 0; c < cascades; ++c) {
       float w = geometry_weight(c, spacing);
-      if (w <= 0.0) continue;
+      if (w <= 0.0 && c > 0) continue;
       vec2 uv = xz / u.cascades[c].patch_size_m + 0.5 / u.cascades[c].resolution;
-      displacement += w * textureLod(displacement_map, vec3(uv, float(c)), 0.0).xyz;
+      float hex = hex_ratio(ratio, u.cascades[c].patch_size_m, spacing);
+      vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
+      vec3 plain = vec3(0.0), tiled = vec3(0.0);
+      if (hex < 1.0) plain = textureLod(displacement_map, vec3(uv, float(c)), 0.0).xyz;
+      if (hex > 0.0) {
+        HexTaps taps = hex_taps(uv, c);
+        for (int i = 0; i < 3; ++i)
+          tiled += taps.weight[i] *
+                   textureLod(displacement_map, vec3(uv + taps.offset[i], float(c)), 0.0).xyz;
+      }
+      vec3 sim = w * (mixing.x * plain + mixing.y * tiled);
+      if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
+        float h, sx, sz;
+        vec3 cell = u.far_field.cell_m.xyz;
+        far_field_noise(u.far_field, xz.x, xz.y, clamp(2.0 - 4.0 * spacing / cell.x, 0.0, 1.0),
+                        clamp(2.0 - 4.0 * spacing / cell.y, 0.0, 1.0),
+                        clamp(2.0 - 4.0 * spacing / cell.z, 0.0, 1.0), h, sx, sz);
+        sim = blend.x * sim + vec3(0.0, blend.y * h, 0.0);
+      }
+      displacement += sim;
     }
     displacement *= border_weight;
   }

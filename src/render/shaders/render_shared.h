@@ -29,6 +29,9 @@ struct mat4 {
 #define OCEAN_RENDER_MAX_CASCADES 8
 // PatchInstance::level of the horizon skirt's single instance (patches use 0 … lod::kMaxLevels).
 #define OCEAN_RENDER_SKIRT_LEVEL 255u
+// Triangles of the hex-tiled cascade lookups per cascade period (R.14): a point and the point
+// one period away always lie in different tiles.
+#define OCEAN_RENDER_HEX_TILES 3.0
 // FrameUniforms::debug_view
 #define OCEAN_RENDER_DEBUG_SHADED 0.0
 #define OCEAN_RENDER_DEBUG_LOD_COLOURS 1.0
@@ -48,6 +51,18 @@ struct CascadeUniforms {
   float resolution;    // N
   float wavelength_m;  // λ, the dominant wavelength the mesh must carry
   float coarsest_mip;  // log2 N: the level of the 1×1 mip
+};
+
+// The far field (docs/rendering.md R.13–R.14): VR-GIS FFT+Perlin's noise octaves fitted to
+// cascade 0's statistics, blended in between D_min and D_max, and the hex-tiled cascade lookups there.
+struct FarFieldUniforms {
+  vec4 cell_m;          // lattice spacing of octaves 0, 1, 2 (w unused)
+  vec4 amplitude_m;     // amplitude of octaves 0, 1, 2 (w unused)
+  vec4 slope_variance;  // σx² + σz² each octave carries (w unused): what a faded octave leaves
+  float near_m;         // D_min: nearer, the simulation alone
+  float far_m;          // D_max: farther, the far field alone
+  float enabled;        // 0: no far field (before configure), 1: on
+  float far_pad;
 };
 
 // Everything per frame, one uniform buffer (std140).
@@ -77,6 +92,7 @@ struct FrameUniforms {
   float hs_m;           // significant wave height Hs of the configured sea
   float hs_pad0, hs_pad1, hs_pad2;
   CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
+  FarFieldUniforms far_field;
 };
 
 // Push constants of the sky pass (std430).
@@ -102,7 +118,9 @@ static_assert(offsetof(FrameUniforms, lod_scale) == 176);
 static_assert(offsetof(FrameUniforms, hs_m) == 192);
 static_assert(offsetof(FrameUniforms, cascades) == 208);
 static_assert(sizeof(CascadeUniforms) == 16);
-static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, far_field) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FarFieldUniforms) == 64);
+static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

@@ -1,0 +1,202 @@
+// The far field as a picture (docs/rendering.md R.5, R.13, R.14) on any Vulkan device (lavapipe
+// on CPU-only machines): from a high camera every distance band of a render keeps its mean
+// luminance and at least half of the detail of the same view rendered 4×4 larger and averaged
+// down in linear light (what a pixel should show), and looking straight down the picture does
+// not repeat at the largest cascade's period more than at unrelated shifts. The figures are
+// printed; `ocean render` draws the same views (docs/rendering.md). Skips where no Vulkan device
+// exists (fails with OCEAN_REQUIRE_DEVICES=1).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "ocean/scene.hpp"
+#include "render/render_helpers.hpp"
+#include "support/require_devices.hpp"
+
+namespace {
+
+using ocean::render::Scene;
+using ocean::render::View;
+
+// The moderate preset (presets/moderate.json): the default sea with four cascades.
+ocean::SimulationConfig moderate() {
+  ocean::SimulationConfig c;
+  c.cascade_patch_sizes_m = {1000.0, 233.0, 57.0, 13.0};
+  return c;
+}
+
+// `ocean render`'s defaults (time 20 s after a 4 s warm-up, high quality, 4096 m square, clear
+// sky) for a camera; linear RGB of the sRGB picture, row-major.
+std::vector<double> render_linear(int width, int height, std::array<double, 3> eye,
+                                  std::array<double, 3> target, double fov_deg) {
+  auto scene = Scene::make({.config = moderate(), .width = width, .height = height});
+  if (!scene.ok()) return {};
+  EXPECT_TRUE(scene.value()->warm_up(20.0, 4.0).ok());
+  View view;
+  view.camera = {.position_m = {eye[0], eye[1], eye[2]},
+                 .target_m = {target[0], target[1], target[2]},
+                 .fov_y_rad = fov_deg * std::numbers::pi / 180.0,
+                 .aspect = static_cast<double>(width) / height,
+                 .near_m = 0.2,
+                 .far_m = 2e5};
+  view.shading = ocean::render::sky_preset("clear").value();
+  const ocean::Status drawn = scene.value()->renderer().draw(view);
+  EXPECT_TRUE(drawn.ok()) << drawn.message();
+  std::vector<std::uint8_t> srgb;
+  EXPECT_TRUE(scene.value()->renderer().read_srgb(srgb).ok());
+  std::vector<double> rgb;
+  rgb.reserve(srgb.size() / 4 * 3);
+  for (std::size_t i = 0; i < srgb.size(); ++i) {
+    if (i % 4 == 3) continue;
+    const double c = srgb[i] / 255.0;  // the sRGB transfer function, inverted
+    rgb.push_back(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+  }
+  return rgb;
+}
+
+// Luminance (Rec. 709) of linear RGB, averaged over factor × factor blocks.
+std::vector<double> luminance(const std::vector<double>& rgb, int width, int height, int factor) {
+  const int w = width / factor, h = height / factor;
+  std::vector<double> y(static_cast<std::size_t>(w) * h, 0.0);
+  for (int row = 0; row < height; ++row)
+    for (int col = 0; col < width; ++col) {
+      const std::size_t i = (static_cast<std::size_t>(row) * width + col) * 3;
+      y[static_cast<std::size_t>(row / factor) * w + col / factor] +=
+          (0.2126 * rgb[i] + 0.7152 * rgb[i + 1] + 0.0722 * rgb[i + 2]) / (factor * factor);
+    }
+  return y;
+}
+
+double encode(double linear) {  // sRGB transfer function, 0..255
+  const double c = linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1 / 2.4) - 0.055;
+  return 255.0 * c;
+}
+
+#define REQUIRE_DEVICE()                                     \
+  if (ocean::render::testing::graphics_context() == nullptr) \
+  OCEAN_SKIP_OR_FAIL(                                        \
+      "no Vulkan "                                           \
+      "device")
+
+// From 400 m up, per band of distance to the sea: mean luminance (linear) and mean |horizontal
+// difference| of the sRGB-encoded luminance (the detail), the render against the 4×4
+// supersampled one averaged down in linear light. Bands end where the horizon fog (R.8) takes
+// over a tenth of the colour.
+TEST(FarFieldRender, EveryDistanceBandKeepsTheSupersampledBrightnessAndDetail) {
+  REQUIRE_DEVICE();
+  constexpr int kW = 192, kH = 108, kSuper = 4;
+  const std::array<double, 3> eye = {0.0, 400.0, 0.0}, target = {800.0, 0.0, 300.0};
+  constexpr double kFovDeg = 55.0;
+  const std::vector<double> plain = render_linear(kW, kH, eye, target, kFovDeg);
+  const std::vector<double> super = render_linear(kW * kSuper, kH * kSuper, eye, target, kFovDeg);
+  ASSERT_FALSE(plain.empty());
+  ASSERT_FALSE(super.empty());
+  const std::vector<double> y_plain = luminance(plain, kW, kH, 1);
+  const std::vector<double> y_super = luminance(super, kW * kSuper, kH * kSuper, kSuper);
+  // Each pixel's distance to the undisplaced sea along its central ray (row 0 at the top).
+  const double fx = target[0] - eye[0], fy = target[1] - eye[1], fz = target[2] - eye[2];
+  const double fl = std::sqrt(fx * fx + fy * fy + fz * fz);
+  const std::array<double, 3> f = {fx / fl, fy / fl, fz / fl};
+  std::array<double, 3> r = {-f[2], 0.0, f[0]};  // f × up
+  const double rl = std::hypot(r[0], r[2]);
+  r = {r[0] / rl, 0.0, r[2] / rl};
+  const std::array<double, 3> up = {r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2],
+                                    r[0] * f[1] - r[1] * f[0]};
+  const double tan_half = std::tan(0.5 * kFovDeg * std::numbers::pi / 180.0);
+  constexpr std::array<double, 6> kBands = {500.0, 800.0, 1300.0, 2000.0, 3200.0, 5000.0};
+  std::array<double, 5> lum_p{}, lum_s{}, det_p{}, det_s{};
+  std::array<int, 5> count{};
+  for (int row = 0; row < kH; ++row)
+    for (int col = 0; col + 1 < kW; ++col) {
+      const double sx = (2.0 * (col + 0.5) / kW - 1.0) * tan_half * kW / kH;
+      const double sy = (1.0 - 2.0 * (row + 0.5) / kH) * tan_half;
+      const std::array<double, 3> d = {f[0] + sx * r[0] + sy * up[0], f[1] + sx * r[1] + sy * up[1],
+                                       f[2] + sx * r[2] + sy * up[2]};
+      if (d[1] >= 0.0) continue;
+      const double dist = eye[1] / -d[1] * std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+      for (std::size_t b = 0; b + 1 < kBands.size(); ++b) {
+        if (dist < kBands[b] || dist >= kBands[b + 1]) continue;
+        const std::size_t i = static_cast<std::size_t>(row) * kW + col;
+        lum_p[b] += y_plain[i];
+        lum_s[b] += y_super[i];
+        det_p[b] += std::abs(encode(y_plain[i + 1]) - encode(y_plain[i]));
+        det_s[b] += std::abs(encode(y_super[i + 1]) - encode(y_super[i]));
+        ++count[b];
+      }
+    }
+  for (std::size_t b = 0; b + 1 < kBands.size(); ++b) {
+    ASSERT_GT(count[b], 50) << "band " << kBands[b];
+    const double luminance_ratio = lum_p[b] / lum_s[b], detail_ratio = det_p[b] / det_s[b];
+    std::printf("band %5.0f-%5.0f m: %4d px, luminance ratio %.3f, detail %.2f vs %.2f (%.2f)\n",
+                kBands[b], kBands[b + 1], count[b], luminance_ratio, det_p[b] / count[b],
+                det_s[b] / count[b], detail_ratio);
+    EXPECT_NEAR(luminance_ratio, 1.0, 0.05) << "band from " << kBands[b] << " m";
+    EXPECT_GE(detail_ratio, 0.5) << "band from " << kBands[b] << " m";
+  }
+}
+
+// Straight down from kHeight m: the luminance detail's correlation with itself shifted by
+// cascade 0's 1000 m period is at most 0.35 and no higher than at shifts unrelated to any
+// cascade's period.
+void expect_no_repetition(double kHeight) {
+  constexpr int kSide = 216;
+  constexpr double kFovDeg = 55.0;
+  const std::vector<double> rgb =
+      render_linear(kSide, kSide, {0.0, kHeight, 0.0}, {1.0, 0.0, 0.0}, kFovDeg);
+  ASSERT_FALSE(rgb.empty());
+  // The detail: luminance less its mean over 15 × 15 pixels (≈ 220 m), so the sun's glitter
+  // gradient across the picture does not correlate everything with everything.
+  const std::vector<double> lum = luminance(rgb, kSide, kSide, 1);
+  std::vector<double> y(lum.size(), 0.0);
+  constexpr int kBox = 7;
+  for (int row = 0; row < kSide; ++row)
+    for (int col = 0; col < kSide; ++col) {
+      double sum = 0.0;
+      int n = 0;
+      for (int a = std::max(row - kBox, 0); a <= std::min(row + kBox, kSide - 1); ++a)
+        for (int b = std::max(col - kBox, 0); b <= std::min(col + kBox, kSide - 1); ++b)
+          sum += lum[static_cast<std::size_t>(a) * kSide + b], ++n;
+      const std::size_t i = static_cast<std::size_t>(row) * kSide + col;
+      y[i] = lum[i] - sum / n;
+    }
+  const double metres_per_pixel =
+      2.0 * kHeight * std::tan(0.5 * kFovDeg * std::numbers::pi / 180.0) / kSide;
+  const auto correlation = [&](int shift) {  // along image rows, Pearson
+    double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
+    int n = 0;
+    for (int row = 0; row < kSide; ++row)
+      for (int col = 0; col + shift < kSide; ++col) {
+        const double a = y[static_cast<std::size_t>(row) * kSide + col];
+        const double b = y[static_cast<std::size_t>(row) * kSide + col + shift];
+        sa += a, sb += b, saa += a * a, sbb += b * b, sab += a * b, ++n;
+      }
+    const double cov = sab / n - sa / n * sb / n;
+    return cov / std::sqrt((saa / n - sa * sa / n / n) * (sbb / n - sb * sb / n / n));
+  };
+  const int period = static_cast<int>(std::lround(1000.0 / metres_per_pixel));
+  const double at_period = correlation(period);
+  double unrelated = 0.0;
+  for (double fraction : {0.37, 0.61, 0.83, 1.29}) {
+    const double c = correlation(static_cast<int>(std::lround(fraction * period)));
+    std::printf("shift %.2f periods: correlation %.3f\n", fraction, c);
+    unrelated = std::max(unrelated, c);
+  }
+  std::printf("from %.0f m, shift 1 period (%d px): correlation %.3f\n", kHeight, period,
+              at_period);
+  EXPECT_LE(at_period, 0.35) << "from " << kHeight << " m";
+  EXPECT_LE(at_period, unrelated) << "from " << kHeight << " m";
+}
+
+// From 3 km a pixel is ≈ 14.5 m and the period 69 pixels; from 10 km, 48 m and 21 pixels.
+TEST(FarFieldRender, StraightDownViewsDoNotRepeatAtTheLargestPeriod) {
+  REQUIRE_DEVICE();
+  expect_no_repetition(3000.0);
+  expect_no_repetition(10000.0);
+}
+
+}  // namespace
