@@ -10,11 +10,15 @@ export const kWebGpuFlags = ['--enable-unsafe-webgpu', '--enable-features=Vulkan
                              '--use-vulkan=swiftshader', '--use-angle=swiftshader'];
 const kSkip = 77;  // ctest SKIP_RETURN_CODE
 
-// Exits with the skip code when Chromium is missing, or fails when OCEAN_REQUIRE_DEVICES=1.
+// Exits with the skip code when Chromium or puppeteer-core is missing, or fails when
+// OCEAN_REQUIRE_DEVICES=1.
 export function requireChromium() {
-  if (existsSync(kChromium)) return;
+  const missing = !existsSync(kChromium) ? `${kChromium} not found (apt-get install chromium)`
+    : !existsSync(new URL('../node_modules/puppeteer-core', import.meta.url))
+      ? 'web/node_modules/puppeteer-core not found (cd web && npm ci)' : null;
+  if (!missing) return;
   const required = process.env.OCEAN_REQUIRE_DEVICES === '1';
-  console.log(`${required ? 'FAIL' : 'SKIP'}: ${kChromium} not found (apt-get install chromium)`);
+  console.log(`${required ? 'FAIL' : 'SKIP'}: ${missing}`);
   process.exit(required ? 1 : kSkip);
 }
 

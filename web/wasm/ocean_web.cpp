@@ -88,8 +88,8 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
   s.phase_rate.resize(texels);
   s.h0.resize(2 * texels);
   for (std::size_t i = 0; i < texels; ++i) {
-    s.phase_rate[i] = static_cast<float>(
-        ocean::EvolutionPhase::rate(s.state.spectrum.omega[i], loop_period_s));
+    s.phase_rate[i] =
+        static_cast<float>(ocean::EvolutionPhase::rate(s.state.spectrum.omega[i], loop_period_s));
     s.h0[2 * i] = s.state.spectrum.h0[i].real();
     s.h0[2 * i + 1] = s.state.spectrum.h0[i].imag();
   }

@@ -3,11 +3,11 @@
 //
 // This work is based on:
 //   - Schlick, C. (1994) An inexpensive BRDF model for physically-based rendering: Fresnel
-//     F(θ) = F0 + (1 − F0)(1 − cos θ)^5 with F0 = 0.02 for water (seed "Ocean Simulation with FFT
-//     and WebGPU": 0.02 + 0.98(1 − cos θ)^5).
+//     F(θ) = F0 + (1 − F0)(1 − cos θ)^5 with F0 = 0.02 for water (Paleologue 2024:
+//     0.02 + 0.98(1 − cos θ)^5, sharp specular, horizon-only fog).
 //   - Mitchell, J. (2005) Real-Time Synthesis and Rendering of Ocean Water: fog(s·(1 − r) +
 //     r·(env + sun)); docs/rendering.md describes the native renderer's version.
-// Horizon fog only (the seed's choice): the sea fades into the sky colour at the horizon.
+// Horizon fog only (Paleologue 2024's choice): the sea fades into the sky colour at the horizon.
 
 struct View {
   view_proj: mat4x4f,
