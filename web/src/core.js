@@ -22,7 +22,12 @@ export async function loadCore() {
     packed: () => f32(m._ocean_web_packed(), 4 * texels),
     phaseRate: () => f32(m._ocean_web_phase_rate(), texels),
     h0: () => new Float64Array(m.HEAPF64.buffer, m._ocean_web_h0(), 2 * texels).slice(),
-    // (Dx, h, Dz) per texel at time t with choppiness λ: the CPU reference.
-    reference: (timeS, choppiness) => f32(m._ocean_web_reference(timeS, choppiness), 3 * texels),
+    // The CPU reference stepped to time t with choppiness λ, foam accumulated over dtS (restarted
+    // when reset): { displacement: (Dx, h, Dz), surface: (nx, ny, nz, J), foam } per texel.
+    reference(timeS, choppiness, dtS = 0, reset = true) {
+      const d = m._ocean_web_reference(timeS, choppiness, dtS, reset ? 1 : 0);
+      return { displacement: f32(d, 3 * texels), surface: f32(m._ocean_web_surface(), 4 * texels),
+               foam: f32(m._ocean_web_foam(), texels) };
+    },
   };
 }

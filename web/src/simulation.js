@@ -4,7 +4,7 @@
 // module); this file only moves them to the GPU and records the kernels (shaders/*.wgsl).
 //
 // Contract: Simulation.create validates nothing the core has not validated; step(t) records one
-// frame into a command encoder and never allocates GPU memory; readDisplacement() is for tests.
+// frame into a command encoder and never allocates GPU memory; readFields() is for tests.
 
 const kFoam = { jacobianStart: 0.8, jacobianFull: 0.5, decayPerS: 0.6 };  // sim.hpp FoamParams
 
@@ -127,20 +127,27 @@ export class Simulation {
     pass.end();
   }
 
-  // Steps to time t and reads back (Dx, h, Dz, 0) per texel: a Float32Array of 4N².
-  async readDisplacement(timeS) {
-    const size = this.n * this.n * 16;
-    const staging = this.device.createBuffer({
-      size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+  // Steps to time t and reads the fields back: { displacement: (Dx, h, Dz, 0), surface:
+  // (nx, ny, nz, J), foam } per texel as Float32Arrays.
+  async readFields(timeS) {
     const encoder = this.device.createCommandEncoder();
     this.step(encoder, timeS);
-    encoder.copyBufferToBuffer(this.displacement, 0, staging, 0, size);
+    const sources = { displacement: this.displacement, surface: this.surface, foam: this.foam };
+    const staging = {};
+    for (const [name, buffer] of Object.entries(sources)) {
+      staging[name] = this.device.createBuffer({
+        size: buffer.size, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+      encoder.copyBufferToBuffer(buffer, 0, staging[name], 0, buffer.size);
+    }
     this.device.queue.submit([encoder.finish()]);
-    await staging.mapAsync(GPUMapMode.READ);
-    const result = new Float32Array(staging.getMappedRange().slice(0));
-    staging.unmap();
-    staging.destroy();
-    return result;
+    const out = {};
+    for (const [name, buffer] of Object.entries(staging)) {
+      await buffer.mapAsync(GPUMapMode.READ);
+      out[name] = new Float32Array(buffer.getMappedRange().slice(0));
+      buffer.unmap();
+      buffer.destroy();
+    }
+    return out;
   }
 
   destroy() {

@@ -58,7 +58,7 @@ await run('render', async (check) => {
       const form = document.getElementById('panel');
       form.elements.wind.value = String(wind);
       await window.ocean.applyPanel();
-      const d = await window.ocean.simulation.readDisplacement(3);
+      const d = (await window.ocean.simulation.readFields(3)).displacement;
       let v = 0;
       for (let i = 0; i < d.length / 4; ++i) v += d[4 * i + 1] ** 2 / (d.length / 4);
       out.push({ wind, measured: 4 * Math.sqrt(v), spectrum: window.ocean.core.hs() });

@@ -28,10 +28,12 @@ struct WebSea {
   ocean::cpu::CascadeState state;  // spectrum, plane factors and the reference planes
   std::optional<ocean::fft::Plan2D> plan;
   std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
-  std::vector<float> phase_rate;    // EvolutionPhase::rate per texel (the GPU's phase input)
-  std::vector<double> h0;           // re, im per texel
-  std::vector<float> displacement;  // (Dx, h, Dz) per texel
-  double choppiness = -1.0;         // λ the plane factors were built for
+  std::vector<float> phase_rate;   // EvolutionPhase::rate per texel (the GPU's phase input)
+  std::vector<double> h0;          // re, im per texel
+  ocean::SimulationConfig config;  // normals, roughness and foam parameters of the finalize
+  ocean::CascadeFrame frame;       // the reference outputs
+  std::vector<float> surface;      // (nx, ny, nz, J) per texel, the GPU's layout
+  double choppiness = -1.0;        // λ the plane factors were built for
   std::string error;
 };
 
@@ -93,7 +95,18 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
     s.h0[2 * i] = s.state.spectrum.h0[i].real();
     s.h0[2 * i + 1] = s.state.spectrum.h0[i].imag();
   }
-  s.displacement.resize(3 * texels);
+  s.state.foam.assign(texels, 0.0f);
+  s.state.mip_work.assign(4 * texels, 0.0f);
+  s.frame = {};
+  s.frame.resolution = resolution;
+  s.frame.patch_size_m = patch_size_m;
+  s.frame.displacement.assign(3 * texels, 0.0f);
+  s.frame.displacement_half.assign(4 * texels, 0);
+  s.frame.normal.assign(3 * texels, 0.0f);
+  s.frame.jacobian.assign(texels, 1.0f);
+  s.frame.foam.assign(texels, 0.0f);
+  s.frame.packed_mips.assign(texels, 0);  // level 0 only: the reference computes no mips
+  s.surface.resize(4 * texels);
   s.choppiness = -1.0;
   s.error.clear();
   return 0;
@@ -128,27 +141,36 @@ EMSCRIPTEN_KEEPALIVE const float* ocean_web_packed() {
 /// EvolutionPhase::rate per texel (float): the loop harmonic j, or ω/2π without a loop (M.7.3).
 EMSCRIPTEN_KEEPALIVE const float* ocean_web_phase_rate() { return sea().phase_rate.data(); }
 
-/// The CPU reference displacement (Dx, h, Dz) per texel at time_s with choppiness λ ≥ 0: the
-/// CPU backend's scalar evolution, the radix-2 Plan2D with the (−1)^(x+y) shift and its reference
-/// assembly (cpu::assemble_displacement_reference). nullptr when nothing is configured.
-EMSCRIPTEN_KEEPALIVE const float* ocean_web_reference(double time_s, double choppiness) {
+/// Steps the CPU reference to time_s with choppiness λ ≥ 0: the CPU backend's scalar evolution,
+/// the radix-2 Plan2D with the (−1)^(x+y) shift, its reference assembly and its finalize
+/// (central-difference normals, Jacobian, foam accumulated over dt_s since the previous step, or
+/// restarted when reset_foam ≠ 0). Returns the displacement (Dx, h, Dz) per texel, or nullptr when
+/// nothing is configured; ocean_web_surface and ocean_web_foam then hold the rest.
+EMSCRIPTEN_KEEPALIVE const float* ocean_web_reference(double time_s, double choppiness, double dt_s,
+                                                      int reset_foam) {
   WebSea& s = sea();
   if (!s.sea) return nullptr;
   if (choppiness != s.choppiness) {
     ocean::cpu::build_plane_factors(s.state, ocean::NormalMethod::central_difference, choppiness);
+    s.config.choppiness = choppiness;
     s.choppiness = choppiness;
   }
   ocean::cpu::evolve(s.state, time_s, s.loop_period_s, *s.runner, nullptr);
   ocean::fft::SplitComplex planes[2] = {ocean::cpu::plane_of(s.state, 0),
                                         ocean::cpu::plane_of(s.state, 1)};
   s.plan->inverse(planes, *s.runner, true);
-  const std::size_t texels = s.phase_rate.size();
-  for (std::size_t i = 0; i < texels; ++i) {
-    s.displacement[3 * i] = s.state.plane_im[0][i];
-    s.displacement[3 * i + 1] = s.state.plane_re[0][i];
-    s.displacement[3 * i + 2] = s.state.plane_re[1][i];
+  ocean::cpu::assemble_displacement_reference(s.state, s.state.plane_re[1].data(), s.frame,
+                                              *s.runner);
+  ocean::cpu::finalize(s.state, s.config, dt_s, reset_foam != 0, s.frame, *s.runner);
+  for (std::size_t i = 0; i < s.frame.jacobian.size(); ++i) {
+    for (std::size_t c = 0; c < 3; ++c) s.surface[4 * i + c] = s.frame.normal[3 * i + c];
+    s.surface[4 * i + 3] = s.frame.jacobian[i];
   }
-  return s.displacement.data();
+  return s.frame.displacement.data();
 }
+/// (nx, ny, nz, J) per texel of the last ocean_web_reference.
+EMSCRIPTEN_KEEPALIVE const float* ocean_web_surface() { return sea().surface.data(); }
+/// Accumulated foam per texel of the last ocean_web_reference.
+EMSCRIPTEN_KEEPALIVE const float* ocean_web_foam() { return sea().frame.foam.data(); }
 
 }  // extern "C"
