@@ -102,7 +102,11 @@ struct WaterOut {
   let w = weights(in.plane_xz);
   let s = lerp4(surface[w.i00], surface[w.i10], surface[w.i01], surface[w.i11], w.f);
   let f = mix(mix(foam[w.i00], foam[w.i10], w.f.x), mix(foam[w.i01], foam[w.i11], w.f.x), w.f.y);
-  let n = normalize(mix(vec3f(0.0, 1.0, 0.0), s.xyz, in.detail));
+  // Normals vary on the texel scale L/N: where a pixel covers several texels they alias into
+  // sparkle, so they fade towards the mean (up) as the pixel footprint grows.
+  let footprint = length(fwidth(in.plane_xz)) * view.resolution / view.patch_size_m;
+  let normal_detail = in.detail * clamp(1.5 - 0.5 * footprint, 0.0, 1.0);
+  let n = normalize(mix(vec3f(0.0, 1.0, 0.0), s.xyz, normal_detail));
   let to_eye = view.eye.xyz - in.world;
   let distance = length(to_eye);
   let v = to_eye / distance;
@@ -115,7 +119,7 @@ struct WaterOut {
   let h = normalize(view.sun.xyz + v);
   let specular = pow(max(dot(n, h), 0.0), 600.0) * 4.0 * fresnel;
   var c = body * (1.0 - fresnel) + reflected * fresnel + vec3f(1.0, 0.9, 0.7) * specular;
-  c = mix(c, vec3f(0.9, 0.93, 0.95), clamp(f * in.detail, 0.0, 1.0) * 0.8);
+  c = mix(c, vec3f(0.9, 0.93, 0.95), clamp(f * normal_detail, 0.0, 1.0) * 0.8);
   // Horizon fog: only the distance matters, towards the sky's horizon colour.
   let fog = 1.0 - exp(-distance / 6000.0);
   c = mix(c, sky(normalize(vec3f(-v.x, 0.0, -v.z))), clamp(fog, 0.0, 1.0));
