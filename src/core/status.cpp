@@ -1,6 +1,8 @@
 // Parameter validation helpers and number formatting shared by every module.
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "ocean/core.hpp"
@@ -11,8 +13,18 @@ std::string format_number(double value) {
   if (std::isnan(value)) return "nan";
   if (std::isinf(value)) return value > 0 ? "inf" : "-inf";
   char buffer[32];
+#if defined(__cpp_lib_to_chars)
   const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
   return std::string(buffer, result.ptr);
+#else
+  // C++ libraries without floating-point to_chars (emscripten 3.1.6's libc++, the WebAssembly
+  // build): the shortest %g form that reads back as the same double.
+  for (int digits = 1; digits <= 17; ++digits) {
+    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+    if (std::strtod(buffer, nullptr) == value) break;
+  }
+  return buffer;
+#endif
 }
 
 namespace {

@@ -1,0 +1,33 @@
+// core.js — the WebAssembly core (web/wasm/ocean_web.cpp, the library's spectrum module and its
+// scalar reference synthesis) behind a small JavaScript object. Arrays are copies, so they stay
+// valid after the next configure.
+import OceanCore from './ocean_core.mjs';
+
+export async function loadCore() {
+  const m = await OceanCore();
+  let texels = 0;
+  const f32 = (ptr, count) => new Float32Array(m.HEAPF32.buffer, ptr, count).slice();
+  return {
+    // sea: { windMps, fetchM, directionRad, resolution, patchSizeM, seed, loopPeriodS }.
+    // Throws an Error with the library's one-line message when the sea is invalid.
+    configure(sea) {
+      const rc = m._ocean_web_configure(sea.windMps, sea.fetchM, sea.directionRad, sea.resolution,
+                                        sea.patchSizeM, sea.seed, sea.loopPeriodS);
+      if (rc !== 0) throw new Error(m.UTF8ToString(m._ocean_web_error()));
+      texels = sea.resolution * sea.resolution;
+    },
+    spectrum: (omega) => m._ocean_web_spectrum(omega),  // S(ω), m²·s/rad
+    peakOmega: () => m._ocean_web_peak_omega(),         // ωp, rad/s
+    hs: () => m._ocean_web_hs(),                        // 4·√m0, m
+    packed: () => f32(m._ocean_web_packed(), 4 * texels),
+    phaseRate: () => f32(m._ocean_web_phase_rate(), texels),
+    h0: () => new Float64Array(m.HEAPF64.buffer, m._ocean_web_h0(), 2 * texels).slice(),
+    // The CPU reference stepped to time t with choppiness λ, foam accumulated over dtS (restarted
+    // when reset): { displacement: (Dx, h, Dz), surface: (nx, ny, nz, J), foam } per texel.
+    reference(timeS, choppiness, dtS = 0, reset = true) {
+      const d = m._ocean_web_reference(timeS, choppiness, dtS, reset ? 1 : 0);
+      return { displacement: f32(d, 3 * texels), surface: f32(m._ocean_web_surface(), 4 * texels),
+               foam: f32(m._ocean_web_foam(), texels) };
+    },
+  };
+}

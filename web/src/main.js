@@ -1,0 +1,95 @@
+// main.js — the page: loads the WebAssembly core, starts WebGPU, wires the panel and animates.
+// URL options (for tests and small screens): n (resolution, default 256), patch (m, default 250),
+// seed (default 1), t (a fixed time in s: no animation), panel=0 (hide the panel).
+// window.ocean publishes { ready, error, core, simulation, renderer, sea, camera, ... } for tests.
+import { loadCore } from './core.js';
+import { Renderer } from './renderer.js';
+import { Simulation } from './simulation.js';
+
+const params = new URLSearchParams(location.search);
+const state = (window.ocean = { ready: false, error: null });
+
+function say(text) {
+  const box = document.getElementById('message');
+  box.textContent = text;
+  box.style.display = 'block';
+}
+
+async function start() {
+  if (!navigator.gpu) {
+    throw new Error('WebGPU is not available in this browser: the ocean needs it (Chromium 113+ ' +
+                    'or a browser with WebGPU enabled).');
+  }
+  const adapter = await navigator.gpu.requestAdapter();
+  if (!adapter) throw new Error('WebGPU is not available: no GPU adapter was found.');
+  const device = await adapter.requestDevice();
+  device.lost.then((info) => say(`WebGPU device lost: ${info.message}`));
+  device.addEventListener('uncapturederror', (e) => {
+    state.error = e.error.message;
+    console.error(`webgpu: ${e.error.message}`);
+  });
+
+  const form = document.getElementById('panel');
+  if (params.get('panel') === '0') form.style.display = 'none';
+  const value = (name) => Number(form.elements[name].value);
+  const core = await loadCore();
+  const sea = {
+    windMps: value('wind'), fetchM: value('fetch') * 1000, directionRad: 0.3,
+    resolution: Number(params.get('n') ?? 256), patchSizeM: Number(params.get('patch') ?? 250),
+    seed: Number(params.get('seed') ?? 1), loopPeriodS: 200,
+  };
+  core.configure(sea);
+  const canvas = document.getElementById('view');
+  canvas.width = Math.max(1, Math.round(canvas.clientWidth * devicePixelRatio));
+  canvas.height = Math.max(1, Math.round(canvas.clientHeight * devicePixelRatio));
+  let simulation = await Simulation.create(device, core, sea);
+  let renderer = await Renderer.create(device, canvas, simulation);
+  const camera = { heightM: 12, yawRad: 0, pitchRad: 0, fovYRad: (55 * Math.PI) / 180 };
+  let timeScale = 1;
+
+  // Re-reads the panel; a new wind or fetch rebuilds the spectrum in the core and on the GPU.
+  async function applyPanel() {
+    for (const label of form.querySelectorAll('label'))
+      label.querySelector('output').textContent = label.querySelector('input').value;
+    camera.heightM = value('height');
+    camera.pitchRad = (value('pitch') * Math.PI) / 180;
+    camera.yawRad = (value('yaw') * Math.PI) / 180;
+    timeScale = value('timeScale');
+    if (value('wind') !== sea.windMps || value('fetch') * 1000 !== sea.fetchM) {
+      sea.windMps = value('wind');
+      sea.fetchM = value('fetch') * 1000;
+      core.configure(sea);
+      const next = await Simulation.create(device, core, sea);
+      const nextRenderer = await Renderer.create(device, canvas, next);
+      simulation.destroy();
+      simulation = next;
+      renderer = nextRenderer;
+      Object.assign(state, { simulation, renderer });
+    }
+    simulation.choppiness = value('choppiness');
+  }
+  form.addEventListener('input', () => applyPanel().catch((e) => say(e.message)));
+  await applyPanel();
+
+  Object.assign(state, { core, simulation, renderer, sea, camera, device, applyPanel });
+  const fixedTime = params.get('t');
+  let simTime = fixedTime === null ? 0 : Number(fixedTime);
+  let last = performance.now();
+  const draw = (now) => {
+    if (fixedTime === null) simTime += ((now - last) / 1000) * timeScale;
+    last = now;
+    const encoder = device.createCommandEncoder();
+    renderer.frame(encoder, simTime, camera);
+    device.queue.submit([encoder.finish()]);
+    if (fixedTime === null) requestAnimationFrame(draw);
+  };
+  requestAnimationFrame(draw);
+  await device.queue.onSubmittedWorkDone();
+  state.ready = true;
+}
+
+start().catch((e) => {
+  say(e.message);
+  state.error = e.message;
+  state.ready = true;
+});

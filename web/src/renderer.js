@@ -1,0 +1,124 @@
+// renderer.js — the WebGPU render side: sky, then the water grid (shaders/ocean.wgsl) reading the
+// simulation's storage buffers. capture() renders one frame into the canvas texture and reads it
+// back for the tests (no NaN or black pixels, sky above, water below).
+import { cameraMatrices } from './camera.js';
+
+const kRings = 160;     // rings of the polar grid
+const kSegments = 256;  // segments per ring
+
+export class Renderer {
+  static async create(device, canvas, simulation) {
+    const r = new Renderer();
+    await r.init(device, canvas, simulation);
+    return r;
+  }
+
+  async init(device, canvas, simulation) {
+    this.device = device;
+    this.canvas = canvas;
+    this.simulation = simulation;
+    this.context = canvas.getContext('webgpu');
+    this.format = navigator.gpu.getPreferredCanvasFormat();
+    this.context.configure({
+      device, format: this.format, alphaMode: 'opaque',
+      usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
+    const response = await fetch(new URL('shaders/ocean.wgsl', import.meta.url));
+    const module = device.createShaderModule({ code: await response.text() });
+    const vf = GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT;
+    const layout = device.createBindGroupLayout({ entries: [
+      { binding: 0, visibility: vf, buffer: { type: 'uniform' } },
+      { binding: 1, visibility: vf, buffer: { type: 'read-only-storage' } },
+      { binding: 2, visibility: vf, buffer: { type: 'read-only-storage' } },
+      { binding: 3, visibility: vf, buffer: { type: 'read-only-storage' } },
+    ] });
+    const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [layout] });
+    const depthStencil = (write) => ({
+      format: 'depth24plus', depthWriteEnabled: write, depthCompare: 'less-equal' });
+    const targets = [{ format: this.format }];
+    [this.skyPipeline, this.waterPipeline] = await Promise.all([
+      device.createRenderPipelineAsync({
+        layout: pipelineLayout, depthStencil: depthStencil(false),
+        vertex: { module, entryPoint: 'sky_vs' },
+        fragment: { module, entryPoint: 'sky_fs', targets } }),
+      device.createRenderPipelineAsync({
+        layout: pipelineLayout, depthStencil: depthStencil(true),
+        primitive: { cullMode: 'none' },
+        vertex: { module, entryPoint: 'water_vs' },
+        fragment: { module, entryPoint: 'water_fs', targets } }),
+    ]);
+    this.view = device.createBuffer({
+      size: 176, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    this.bindGroup = device.createBindGroup({ layout, entries: [
+      { binding: 0, resource: { buffer: this.view } },
+      { binding: 1, resource: { buffer: simulation.displacement } },
+      { binding: 2, resource: { buffer: simulation.surface } },
+      { binding: 3, resource: { buffer: simulation.foam } },
+    ] });
+    this.depth = null;
+  }
+
+  // Records the simulation step at time t and the drawing of camera's view; returns the canvas
+  // texture drawn into.
+  frame(encoder, timeS, camera) {
+    this.simulation.step(encoder, timeS);
+    const { width, height } = this.canvas;
+    if (!this.depth || this.depth.width !== width || this.depth.height !== height) {
+      if (this.depth) this.depth.destroy();
+      this.depth = this.device.createTexture({
+        size: [width, height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT });
+    }
+    const m = cameraMatrices(camera, width / height);
+    const sun = [0.55, 0.3, -0.78];
+    const l = Math.hypot(...sun);
+    const data = new Float32Array(44);
+    data.set(m.viewProj, 0);
+    data.set(m.invViewProj, 16);
+    data.set([...m.eye, 1], 32);
+    data.set([sun[0] / l, sun[1] / l, sun[2] / l, 0], 36);
+    data.set([this.simulation.sea.patchSizeM, this.simulation.n, kRings, kSegments], 40);
+    this.device.queue.writeBuffer(this.view, 0, data);
+    const texture = this.context.getCurrentTexture();
+    const pass = encoder.beginRenderPass({
+      colorAttachments: [{ view: texture.createView(), loadOp: 'clear', storeOp: 'store',
+                           clearValue: { r: 0, g: 0, b: 0, a: 1 } }],
+      depthStencilAttachment: { view: this.depth.createView(), depthLoadOp: 'clear',
+                                depthClearValue: 1, depthStoreOp: 'store' },
+    });
+    pass.setBindGroup(0, this.bindGroup);
+    pass.setPipeline(this.skyPipeline);
+    pass.draw(3);
+    pass.setPipeline(this.waterPipeline);
+    pass.draw(kRings * kSegments * 6);
+    pass.end();
+    return texture;
+  }
+
+  // Renders one frame and reads the canvas back: { width, height, rgba: Uint8Array } (RGBA order).
+  async capture(timeS, camera) {
+    const { width, height } = this.canvas;
+    const bytesPerRow = Math.ceil((width * 4) / 256) * 256;
+    const staging = this.device.createBuffer({
+      size: bytesPerRow * height, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST });
+    const encoder = this.device.createCommandEncoder();
+    const texture = this.frame(encoder, timeS, camera);
+    encoder.copyTextureToBuffer({ texture }, { buffer: staging, bytesPerRow }, [width, height]);
+    this.device.queue.submit([encoder.finish()]);
+    await staging.mapAsync(GPUMapMode.READ);
+    const padded = new Uint8Array(staging.getMappedRange());
+    const rgba = new Uint8Array(width * height * 4);
+    const bgra = this.format === 'bgra8unorm';
+    for (let y = 0; y < height; ++y) {
+      for (let x = 0; x < width; ++x) {
+        const s = y * bytesPerRow + x * 4;
+        const d = (y * width + x) * 4;
+        rgba[d] = padded[s + (bgra ? 2 : 0)];
+        rgba[d + 1] = padded[s + 1];
+        rgba[d + 2] = padded[s + (bgra ? 0 : 2)];
+        rgba[d + 3] = padded[s + 3];
+      }
+    }
+    staging.unmap();
+    staging.destroy();
+    return { width, height, rgba };
+  }
+}

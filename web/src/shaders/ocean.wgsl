@@ -1,0 +1,127 @@
+// ocean.wgsl — drawing: the sky on a full-screen triangle, then the water on a camera-following
+// polar grid displaced by the simulated field.
+//
+// This work is based on:
+//   - Schlick, C. (1994) An inexpensive BRDF model for physically-based rendering: Fresnel
+//     F(θ) = F0 + (1 − F0)(1 − cos θ)^5 with F0 = 0.02 for water (Paleologue 2024:
+//     0.02 + 0.98(1 − cos θ)^5, sharp specular, horizon-only fog).
+//   - Mitchell, J. (2005) Real-Time Synthesis and Rendering of Ocean Water: fog(s·(1 − r) +
+//     r·(env + sun)); docs/rendering.md describes the native renderer's version.
+// Horizon fog only (Paleologue 2024's choice): the sea fades into the sky colour at the horizon.
+
+struct View {
+  view_proj: mat4x4f,
+  inv_view_proj: mat4x4f,
+  eye: vec4f,          // camera position, m (w unused)
+  sun: vec4f,          // direction towards the sun (w unused)
+  patch_size_m: f32,   // L
+  resolution: f32,     // N
+  grid_rings: f32,     // rings of the polar grid
+  grid_segments: f32,  // segments per ring
+}
+
+@group(0) @binding(0) var<uniform> view: View;
+@group(0) @binding(1) var<storage, read> displacement: array<vec4f>;  // (Dx, h, Dz, 0)
+@group(0) @binding(2) var<storage, read> surface: array<vec4f>;       // (n, J)
+@group(0) @binding(3) var<storage, read> foam: array<f32>;
+
+const kFarRadius = 20000.0;  // m: the grid reaches the horizon
+const kNearRadius = 0.5;     // m: innermost ring
+
+// Sky radiance along a direction: a horizon-to-zenith gradient and a sun disc.
+fn sky(dir: vec3f) -> vec3f {
+  let up = clamp(dir.y, -0.05, 1.0);
+  let horizon = vec3f(0.78, 0.85, 0.92);
+  let zenith = vec3f(0.20, 0.42, 0.75);
+  var c = mix(horizon, zenith, pow(max(up, 0.0), 0.45));
+  let s = max(dot(dir, view.sun.xyz), 0.0);
+  c += vec3f(1.0, 0.9, 0.7) * (pow(s, 800.0) * 6.0 + pow(s, 12.0) * 0.15);
+  return c;
+}
+
+// Bilinear fetch of a periodic per-texel field at world (x, z).
+fn texel(x: i32, z: i32) -> u32 {
+  let n = i32(view.resolution);
+  return u32(((z % n) + n) % n) * u32(n) + u32(((x % n) + n) % n);
+}
+struct Weights { i00: u32, i10: u32, i01: u32, i11: u32, f: vec2f, }
+fn weights(xz: vec2f) -> Weights {
+  let g = xz / view.patch_size_m * view.resolution;
+  let b = floor(g);
+  let x = i32(b.x);
+  let z = i32(b.y);
+  return Weights(texel(x, z), texel(x + 1, z), texel(x, z + 1), texel(x + 1, z + 1), g - b);
+}
+fn lerp4(a: vec4f, b: vec4f, c: vec4f, d: vec4f, f: vec2f) -> vec4f {
+  return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+}
+
+struct SkyOut { @builtin(position) pos: vec4f, @location(0) ndc: vec2f, }
+
+@vertex fn sky_vs(@builtin(vertex_index) v: u32) -> SkyOut {
+  let p = vec2f(f32((v << 1u) & 2u), f32(v & 2u)) * 2.0 - 1.0;
+  return SkyOut(vec4f(p, 1.0, 1.0), p);
+}
+@fragment fn sky_fs(in: SkyOut) -> @location(0) vec4f {
+  let far = view.inv_view_proj * vec4f(in.ndc, 1.0, 1.0);
+  return vec4f(sky(normalize(far.xyz / far.w - view.eye.xyz)), 1.0);
+}
+
+struct WaterOut {
+  @builtin(position) pos: vec4f,
+  @location(0) world: vec3f,
+  @location(1) plane_xz: vec2f,
+  @location(2) detail: f32,  // 1 near, 0 far: fades waves that the grid can no longer resolve
+}
+
+@vertex fn water_vs(@builtin(vertex_index) v: u32) -> WaterOut {
+  // Two triangles per quad of the polar grid; radii grow geometrically to the horizon.
+  let segments = u32(view.grid_segments);
+  let quad = v / 6u;
+  let corner = array<vec2u, 6>(vec2u(0u, 0u), vec2u(1u, 0u), vec2u(0u, 1u), vec2u(0u, 1u),
+                               vec2u(1u, 0u), vec2u(1u, 1u))[v % 6u];
+  let ring = quad / segments + corner.y;
+  let segment = quad % segments + corner.x;
+  let radius = kNearRadius * pow(kFarRadius / kNearRadius, f32(ring) / view.grid_rings);
+  let angle = f32(segment) / f32(segments) * 6.283185307;
+  let xz = view.eye.xz + radius * vec2f(cos(angle), sin(angle));
+  let w = weights(xz);
+  let d = lerp4(displacement[w.i00], displacement[w.i10], displacement[w.i01],
+                displacement[w.i11], w.f).xyz;
+  let detail = clamp(1.0 - radius / (0.5 * kFarRadius), 0.0, 1.0);
+  let world = vec3f(xz.x + d.x * detail, d.y * detail, xz.y + d.z * detail);
+  var out: WaterOut;
+  out.pos = view.view_proj * vec4f(world, 1.0);
+  out.world = world;
+  out.plane_xz = xz;
+  out.detail = detail;
+  return out;
+}
+
+@fragment fn water_fs(in: WaterOut) -> @location(0) vec4f {
+  let w = weights(in.plane_xz);
+  let s = lerp4(surface[w.i00], surface[w.i10], surface[w.i01], surface[w.i11], w.f);
+  let f = mix(mix(foam[w.i00], foam[w.i10], w.f.x), mix(foam[w.i01], foam[w.i11], w.f.x), w.f.y);
+  // Normals vary on the texel scale L/N: where a pixel covers several texels they alias into
+  // sparkle, so they fade towards the mean (up) as the pixel footprint grows.
+  let footprint = length(fwidth(in.plane_xz)) * view.resolution / view.patch_size_m;
+  let normal_detail = in.detail * clamp(1.5 - 0.5 * footprint, 0.0, 1.0);
+  let n = normalize(mix(vec3f(0.0, 1.0, 0.0), s.xyz, normal_detail));
+  let to_eye = view.eye.xyz - in.world;
+  let distance = length(to_eye);
+  let v = to_eye / distance;
+  let cos_theta = clamp(dot(n, v), 0.0, 1.0);
+  let fresnel = 0.02 + 0.98 * pow(1.0 - cos_theta, 5.0);  // Schlick, F0 = 0.02
+  var r = reflect(-v, n);
+  r.y = abs(r.y);  // no reflections of the sea itself: fold into the upper hemisphere
+  let reflected = sky(r);
+  let body = vec3f(0.004, 0.045, 0.075) + vec3f(0.0, 0.04, 0.05) * max(view.sun.y, 0.0);
+  let h = normalize(view.sun.xyz + v);
+  let specular = pow(max(dot(n, h), 0.0), 600.0) * 4.0 * fresnel;
+  var c = body * (1.0 - fresnel) + reflected * fresnel + vec3f(1.0, 0.9, 0.7) * specular;
+  c = mix(c, vec3f(0.9, 0.93, 0.95), clamp(f * normal_detail, 0.0, 1.0) * 0.8);
+  // Horizon fog: only the distance matters, towards the sky's horizon colour.
+  let fog = 1.0 - exp(-distance / 6000.0);
+  c = mix(c, sky(normalize(vec3f(-v.x, 0.0, -v.z))), clamp(fog, 0.0, 1.0));
+  return vec4f(c, 1.0);
+}
