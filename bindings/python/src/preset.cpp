@@ -5,6 +5,7 @@
 
 #include <pybind11/stl.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "bindings.hpp"
@@ -14,6 +15,30 @@
 namespace py = pybind11;
 
 namespace ocean::python {
+namespace {
+
+// Sets every leaf of a JSON object (a value that is not an object) at its dotted key path.
+void set_leaves(preset::Document& doc, const nlohmann::json& node, const std::string& prefix) {
+  for (const auto& [key, value] : node.items()) {
+    if (value.is_object() && !value.empty()) {
+      set_leaves(doc, value, prefix + key + ".");
+    } else {
+      check(doc.set(prefix + key + "=" + value.dump(), "--set"));
+    }
+  }
+}
+
+// A preset from a document's text: its leaves set over the defaults, so that the result is the
+// document itself. What unpickling and from_json do.
+preset::Document from_text(const std::string& text) {
+  take(preset::from_json(text));  // the document's own checks and messages first
+  preset::Document doc;
+  set_leaves(doc, nlohmann::json::parse(text), "");
+  take(doc.config());
+  return doc;
+}
+
+}  // namespace
 
 SimulationConfig config_of(const py::object& preset) {
   if (preset.is_none()) return SimulationConfig{};
@@ -37,6 +62,11 @@ void bind_preset(py::module_& m) {
            py::arg("name_or_path"),
            "The defaults with a built-in preset (calm, moderate, storm) or a preset file merged "
            "over them.")
+      .def_static("from_json", &from_text, py::arg("text"),
+                  "The preset of a preset document's text (as Preset.to_json writes it).")
+      .def(py::pickle(
+          [](const preset::Document& doc) { return preset::to_json(take(doc.config())); },
+          [](const std::string& text) { return from_text(text); }))
       .def(
           "merge",
           [](preset::Document& doc, const std::string& name_or_path) -> preset::Document& {
