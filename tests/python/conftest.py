@@ -24,12 +24,23 @@ def cli_message():
     return run
 
 
+def make_preset(name, *assignments):
+    """A built-in preset with key=value overrides."""
+    import ocean
+
+    p = ocean.Preset(name)
+    for a in assignments:
+        p.set(a)
+    return p
+
+
 @pytest.fixture
 def small_preset():
     """A quick simulation: 32^2, two cascades, the moderate sea."""
-    import ocean
+    return make_preset("moderate", "resolution=32", "cascades_m=[200.0, 47.0]")
 
-    p = ocean.Preset("moderate")
-    p.set("resolution=32")
-    p.set("cascades_m=[200.0, 47.0]")
-    return p
+
+@pytest.fixture
+def storm_16():
+    """The storm on 16^2 cascades of 300 and 71 m: the smallest bake worth comparing."""
+    return make_preset("storm", "resolution=16", "cascades_m=[300.0, 71.0]")

@@ -26,11 +26,8 @@ def assert_same_bake(a, b):
 
 
 @pytest.fixture
-def preset():
-    p = ocean.Preset("storm")
-    p.set("resolution=16")
-    p.set("cascades_m=[300.0, 71.0]")
-    return p
+def preset(storm_16):
+    return storm_16
 
 
 @pytest.fixture

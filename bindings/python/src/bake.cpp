@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "bindings.hpp"
@@ -80,33 +81,36 @@ void bake_frames(const py::object& preset, const std::filesystem::path& out, lon
 }
 
 py::dict stats_dict(const SurfaceStats& s) {
+  // The fields by name, as `ocean stats --json` names them; the optional ones None when unset.
+  static constexpr std::pair<const char*, double SurfaceStats::*> kNumbers[] = {
+      {"patch_size_m", &SurfaceStats::patch_size_m},
+      {"time_s", &SurfaceStats::time_s},
+      {"hs_measured_m", &SurfaceStats::hs_measured_m},
+      {"hs_spectrum_m", &SurfaceStats::hs_spectrum_m},
+      {"hs_closed_form_m", &SurfaceStats::hs_closed_form_m},
+      {"resolved_variance_fraction", &SurfaceStats::resolved_variance_fraction},
+      {"independent_wave_vectors", &SurfaceStats::independent_wave_vectors},
+      {"hs_sampling_rel_std", &SurfaceStats::hs_sampling_rel_std},
+      {"mean_height_m", &SurfaceStats::mean_height_m},
+      {"mean_square_slope", &SurfaceStats::mean_square_slope},
+      {"folded_fraction", &SurfaceStats::folded_fraction},
+      {"min_jacobian", &SurfaceStats::min_jacobian},
+      {"foam_coverage", &SurfaceStats::foam_coverage},
+      {"mean_foam", &SurfaceStats::mean_foam}};
+  static constexpr std::pair<const char*, std::optional<double> SurfaceStats::*> kOptionals[] = {
+      {"height_skewness", &SurfaceStats::height_skewness},
+      {"height_kurtosis", &SurfaceStats::height_kurtosis},
+      {"cox_munk_mss", &SurfaceStats::cox_munk_mss},
+      {"max_imaginary_rel_hs", &SurfaceStats::max_imaginary_rel_hs},
+      {"loop_error_rel_hs", &SurfaceStats::loop_error_rel_hs}};
   py::dict d;
-  const auto opt = [](const std::optional<double>& v) -> py::object {
-    return v ? py::object(py::float_(*v)) : py::none();
-  };
   d["resolution"] = s.resolution;
-  d["patch_size_m"] = s.patch_size_m;
   d["cascades"] = s.cascades;
   d["seeds"] = s.seeds;
-  d["time_s"] = s.time_s;
   d["model"] = s.model;
-  d["hs_measured_m"] = s.hs_measured_m;
-  d["hs_spectrum_m"] = s.hs_spectrum_m;
-  d["hs_closed_form_m"] = s.hs_closed_form_m;
-  d["resolved_variance_fraction"] = s.resolved_variance_fraction;
-  d["independent_wave_vectors"] = s.independent_wave_vectors;
-  d["hs_sampling_rel_std"] = s.hs_sampling_rel_std;
-  d["mean_height_m"] = s.mean_height_m;
-  d["height_skewness"] = opt(s.height_skewness);
-  d["height_kurtosis"] = opt(s.height_kurtosis);
-  d["mean_square_slope"] = s.mean_square_slope;
-  d["folded_fraction"] = s.folded_fraction;
-  d["cox_munk_mss"] = opt(s.cox_munk_mss);
-  d["min_jacobian"] = s.min_jacobian;
-  d["foam_coverage"] = s.foam_coverage;
-  d["mean_foam"] = s.mean_foam;
-  d["max_imaginary_rel_hs"] = opt(s.max_imaginary_rel_hs);
-  d["loop_error_rel_hs"] = opt(s.loop_error_rel_hs);
+  for (const auto& [name, field] : kNumbers) d[name] = s.*field;
+  for (const auto& [name, field] : kOptionals)
+    d[name] = (s.*field).has_value() ? py::object(py::float_(*(s.*field))) : py::none();
   return d;
 }
 
