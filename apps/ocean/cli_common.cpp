@@ -56,8 +56,10 @@ std::string with_flag_names(std::string message) {
 }
 }  // namespace
 
+std::string flag_message(const Status& status) { return with_flag_names(status.message()); }
+
 int report(const Status& status) {
-  std::cerr << "ocean: error: " << with_flag_names(status.message()) << "\n";
+  std::cerr << "ocean: error: " << flag_message(status) << "\n";
   return status.code() == ErrorCode::invalid_argument ? kExitUsage : kExitFailure;
 }
 

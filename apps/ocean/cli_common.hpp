@@ -20,6 +20,9 @@ inline constexpr int kExitUsage = 2;
 /// Prints "ocean: error: <message>" on stderr (with library field names rewritten to the flags
 /// that set them) and returns the exit code for the status (2 for invalid arguments, else 1).
 int report(const Status& status);
+/// The message report() prints after "ocean: error: ": the status's message with library field
+/// names rewritten to the flags that set them ("--hs = -1 is out of range: ...").
+std::string flag_message(const Status& status);
 
 /// The sea-state flags of `ocean spectrum`, reused by later subcommands.
 struct SpectrumFlags {

@@ -1,0 +1,169 @@
+// ocean.bake, ocean.merge, ocean.shard_frames and ocean.surface_stats: ocean/bake.hpp and
+// ocean/statistics.hpp with the GIL released while they run, their arguments checked as
+// `ocean bake` and `ocean stats` check their flags.
+#include "ocean/bake.hpp"
+
+#include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "bindings.hpp"
+#include "errors.hpp"
+#include "ocean/statistics.hpp"
+#include "ocean/task_runner.hpp"
+#include "options.hpp"
+
+namespace py = pybind11;
+
+namespace ocean::python {
+namespace {
+
+// Runs `work` without the GIL and raises its status with the GIL again.
+template <class F>
+void without_gil(F&& work) {
+  Status s;
+  {
+    const py::gil_scoped_release release;
+    s = work();
+  }
+  check(s);
+}
+
+bake::Formats parse_formats(const std::vector<std::string>& names) {
+  if (names.empty()) raise(invalid_argument("formats must name at least one of exr, png or npy"));
+  bake::Formats f{.npy = false, .png = false, .exr = false};
+  for (const std::string& name : names) {
+    if (name == "npy") {
+      f.npy = true;
+    } else if (name == "png") {
+      f.png = true;
+    } else if (name == "exr") {
+      f.exr = true;
+    } else {
+      raise(invalid_argument("--format = '" + excerpt(name) +
+                             "' is unknown: must be exr, png or npy"));
+    }
+  }
+  return f;
+}
+
+void bake_frames(const py::object& preset, const std::filesystem::path& out, long long frames,
+                 double fps, double time_s, const std::vector<std::string>& formats,
+                 const std::string& backend, const std::optional<std::string>& shard) {
+  constexpr cli::NumberOption<double> kFps{
+      .flag = "--fps", .accept = cli::Accept::in_range, .lo = 1e-3, .hi = 1e4};
+  constexpr cli::NumberOption<double> kTime{.flag = "--time", .accept = cli::Accept::finite};
+  constexpr cli::NumberOption<double> kFrames{
+      .flag = "--frames", .accept = cli::Accept::integer_in_range, .lo = 1.0, .hi = 1e6};
+  if (out.empty()) raise(invalid_argument("bake needs --out DIR"));
+  bake::BakeParams params{.output_dir = out, .formats = parse_formats(formats)};
+  const SimulationConfig config = config_of(preset);
+  check(cli::check(kFps, fps, format_number(fps)));
+  check(cli::check(kTime, time_s, format_number(time_s)));
+  check(cli::check(kFrames, static_cast<double>(frames), std::to_string(frames)));
+  params.frame_count = frames;
+  params.fps = fps;
+  params.start_time_s = time_s;
+  if (shard) {
+    const bake::Shard s = take(bake::parse_shard(*shard, "--shard"));
+    if (s.count > frames) {
+      raise(invalid_argument("--shard " + excerpt(*shard) + ": " + std::to_string(frames) +
+                             " frame(s) make at most " + std::to_string(frames) + " shard(s)"));
+    }
+    params.shard = s;
+  }
+  without_gil([&] { return bake::bake(config, backend, params); });
+}
+
+py::dict stats_dict(const SurfaceStats& s) {
+  // The fields by name, as `ocean stats --json` names them; the optional ones None when unset.
+  static constexpr std::pair<const char*, double SurfaceStats::*> kNumbers[] = {
+      {"patch_size_m", &SurfaceStats::patch_size_m},
+      {"time_s", &SurfaceStats::time_s},
+      {"hs_measured_m", &SurfaceStats::hs_measured_m},
+      {"hs_spectrum_m", &SurfaceStats::hs_spectrum_m},
+      {"hs_closed_form_m", &SurfaceStats::hs_closed_form_m},
+      {"resolved_variance_fraction", &SurfaceStats::resolved_variance_fraction},
+      {"independent_wave_vectors", &SurfaceStats::independent_wave_vectors},
+      {"hs_sampling_rel_std", &SurfaceStats::hs_sampling_rel_std},
+      {"mean_height_m", &SurfaceStats::mean_height_m},
+      {"mean_square_slope", &SurfaceStats::mean_square_slope},
+      {"folded_fraction", &SurfaceStats::folded_fraction},
+      {"min_jacobian", &SurfaceStats::min_jacobian},
+      {"foam_coverage", &SurfaceStats::foam_coverage},
+      {"mean_foam", &SurfaceStats::mean_foam}};
+  static constexpr std::pair<const char*, std::optional<double> SurfaceStats::*> kOptionals[] = {
+      {"height_skewness", &SurfaceStats::height_skewness},
+      {"height_kurtosis", &SurfaceStats::height_kurtosis},
+      {"cox_munk_mss", &SurfaceStats::cox_munk_mss},
+      {"max_imaginary_rel_hs", &SurfaceStats::max_imaginary_rel_hs},
+      {"loop_error_rel_hs", &SurfaceStats::loop_error_rel_hs}};
+  py::dict d;
+  d["resolution"] = s.resolution;
+  d["cascades"] = s.cascades;
+  d["seeds"] = s.seeds;
+  d["model"] = s.model;
+  for (const auto& [name, field] : kNumbers) d[name] = s.*field;
+  for (const auto& [name, field] : kOptionals)
+    d[name] = (s.*field).has_value() ? py::object(py::float_(*(s.*field))) : py::none();
+  return d;
+}
+
+}  // namespace
+
+void bind_bake(py::module_& m) {
+  m.def("bake", &bake_frames, py::arg("preset"), py::arg("out"), py::kw_only(),
+        py::arg("frames") = 1, py::arg("fps") = 30.0, py::arg("time") = 0.0,
+        py::arg("formats") = std::vector<std::string>{"npy"}, py::arg("backend") = "cpu",
+        py::arg("shard") = py::none(),
+        "Bakes frames of the preset's simulation into the folder `out` as `ocean bake` does "
+        "(files and manifest.json: src/bake/README.md). shard='I/N' writes shard I of N only, "
+        "for ocean.merge. The GIL is released while it runs.");
+  m.def(
+      "merge",
+      [](const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
+        if (out.empty()) raise(invalid_argument("--merge needs --out DIR"));
+        without_gil([&] { return bake::merge(shards, {.output_dir = out}); });
+      },
+      py::arg("shards"), py::arg("out"),
+      "Joins the folders of a sharded bake into `out`, byte for byte the one-machine bake; "
+      "ValueError names a missing, repeated or mismatched shard.");
+  m.def(
+      "shard_frames",
+      [](long long frames, long long index, long long count) {
+        if (!(count >= 1 && count <= frames && index >= 0 && index < count)) {
+          raise(invalid_argument("shard " + std::to_string(index) + "/" + std::to_string(count) +
+                                 " of " + std::to_string(frames) +
+                                 " frames: must have 1 <= count <= frames and 0 <= index < count"));
+        }
+        const bake::FrameRange r = bake::shard_frames(frames, {index, count});
+        return std::pair(r.first, r.end);
+      },
+      py::arg("frames"), py::arg("index"), py::arg("count"),
+      "The frames [first, end) that shard index of count writes in a bake of `frames` frames.");
+  m.def(
+      "surface_stats",
+      [](const py::object& preset, int seeds, double time_s, int threads) {
+        const SimulationConfig config = config_of(preset);
+        std::optional<SurfaceStats> stats;
+        without_gil([&]() -> Status {
+          const std::unique_ptr<TaskRunner> runner = make_tbb_runner(threads);
+          Result<SurfaceStats> r = compute_surface_stats(config, seeds, time_s, *runner);
+          if (!r.ok()) return r.status();
+          stats = std::move(r).value();
+          return {};
+        });
+        return stats_dict(*stats);
+      },
+      py::arg("preset") = py::none(), py::kw_only(), py::arg("seeds") = 4, py::arg("time") = 0.0,
+      py::arg("threads") = 0,
+      "Statistics of the simulated surface over `seeds` realisations (what `ocean stats` "
+      "prints): measured and spectral Hs, height moments, slopes, Jacobian and foam.");
+}
+
+}  // namespace ocean::python

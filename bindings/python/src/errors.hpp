@@ -1,0 +1,34 @@
+// Status → Python exception: the one place the binding turns the library's errors into raised
+// exceptions. The message is the one the ocean tool prints after "ocean: error: " (library field
+// names rewritten to the tool's flags, apps/ocean/cli_common.hpp).
+//
+//   invalid_argument → ValueError         io_error → OSError
+//   unsupported      → NotImplementedError cancelled → KeyboardInterrupt
+//   internal         → RuntimeError
+#pragma once
+
+#include <pybind11/pybind11.h>
+
+#include <utility>
+
+#include "ocean/core.hpp"
+
+namespace ocean::python {
+
+/// Raises the Python exception for a failed status (sets the error and throws
+/// pybind11::error_already_set). Precondition: !status.ok().
+[[noreturn]] void raise(const Status& status);
+
+/// Raises when `status` is not ok.
+inline void check(const Status& status) {
+  if (!status.ok()) raise(status);
+}
+
+/// The value of `result`, or raises its status.
+template <class T>
+T take(Result<T> result) {
+  if (!result.ok()) raise(result.status());
+  return std::move(result).value();
+}
+
+}  // namespace ocean::python

@@ -1,0 +1,13 @@
+// ocean._ocean: the extension module under the `ocean` Python package (bindings/python/ocean).
+#include <pybind11/pybind11.h>
+
+#include "bindings.hpp"
+
+PYBIND11_MODULE(_ocean, m) {
+  m.doc() = "Spectral ocean surface simulation (the C++ library ocean, wrapped with pybind11).";
+  ocean::python::bind_spectrum(m);
+  ocean::python::bind_preset(m);
+  ocean::python::bind_sea_state(m);
+  ocean::python::bind_simulator(m);
+  ocean::python::bind_bake(m);
+}

@@ -1,0 +1,123 @@
+// ocean.Preset: a preset assembled in layers (ocean/preset.hpp Document): defaults, built-in
+// presets or preset files merged over them, then "key=value" overrides, as `ocean`'s --preset and
+// --set flags build it (and with their labels in messages).
+#include "ocean/preset.hpp"
+
+#include <pybind11/stl.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "bindings.hpp"
+#include "errors.hpp"
+#include "ocean/io.hpp"
+
+namespace py = pybind11;
+
+namespace ocean::python {
+namespace {
+
+// Sets every leaf of a JSON object (a value that is not an object) at its dotted key path.
+void set_leaves(preset::Document& doc, const nlohmann::json& node, const std::string& prefix) {
+  for (const auto& [key, value] : node.items()) {
+    if (value.is_object() && !value.empty()) {
+      set_leaves(doc, value, prefix + key + ".");
+    } else {
+      check(doc.set(prefix + key + "=" + value.dump(), "--set"));
+    }
+  }
+}
+
+// A preset from a document's text: its leaves set over the defaults, so that the result is the
+// document itself. What unpickling and from_json do.
+preset::Document from_text(const std::string& text) {
+  take(preset::from_json(text));  // the document's own checks and messages first
+  preset::Document doc;
+  set_leaves(doc, nlohmann::json::parse(text), "");
+  take(doc.config());
+  return doc;
+}
+
+}  // namespace
+
+SimulationConfig config_of(const py::object& preset) {
+  if (preset.is_none()) return SimulationConfig{};
+  if (py::isinstance<preset::Document>(preset))
+    return take(preset.cast<const preset::Document&>().config());
+  preset::Document doc;
+  check(doc.merge_preset(py::str(preset).cast<std::string>(), "--preset"));
+  return take(doc.config());
+}
+
+void bind_preset(py::module_& m) {
+  py::class_<preset::Document>(m, "Preset",
+                               "A simulation configuration assembled in layers: defaults, then "
+                               "presets merged over them, then key=value overrides.")
+      .def(py::init<>(), "The defaults (SimulationConfig{}).")
+      .def(py::init([](const std::string& name_or_path) {
+             preset::Document doc;
+             check(doc.merge_preset(name_or_path, "--preset"));
+             return doc;
+           }),
+           py::arg("name_or_path"),
+           "The defaults with a built-in preset (calm, moderate, storm) or a preset file merged "
+           "over them.")
+      .def_static("from_json", &from_text, py::arg("text"),
+                  "The preset of a preset document's text (as Preset.to_json writes it).")
+      .def(py::pickle(
+          [](const preset::Document& doc) { return preset::to_json(take(doc.config())); },
+          [](const std::string& text) { return from_text(text); }))
+      .def(
+          "merge",
+          [](preset::Document& doc, const std::string& name_or_path) -> preset::Document& {
+            check(doc.merge_preset(name_or_path, "--preset"));
+            return doc;
+          },
+          py::arg("name_or_path"), py::return_value_policy::reference_internal,
+          "Merges a built-in preset or a preset file (RFC 7386 merge patch); returns self.")
+      .def(
+          "set",
+          [](preset::Document& doc, const std::string& assignment) -> preset::Document& {
+            // Tried on a copy: a failed assignment leaves the preset as it was.
+            preset::Document trial = doc;
+            check(trial.set(assignment, "--set"));
+            take(trial.config());
+            doc = std::move(trial);
+            return doc;
+          },
+          py::arg("assignment"), py::return_value_policy::reference_internal,
+          "Sets one key, 'dotted.key=value' (the value JSON, or a bare word); the result must be "
+          "a valid configuration, else ValueError and the preset unchanged. Returns self.")
+      .def(
+          "validate", [](const preset::Document& doc) { take(doc.config()); },
+          "Raises ValueError when the layers do not make a valid configuration.")
+      .def(
+          "to_json",
+          [](const preset::Document& doc, int indent) {
+            return preset::to_json(take(doc.config()), indent);
+          },
+          py::arg("indent") = 2, "The preset document: every key, in a fixed order.")
+      .def(
+          "save",
+          [](const preset::Document& doc, const std::string& path) {
+            const std::string text = preset::to_json(take(doc.config()), 2) + "\n";
+            check(io::write_bytes_atomically(path, {std::as_bytes(std::span(text))}));
+          },
+          py::arg("path"),
+          "Writes the preset document to a file, atomically (OSError when it cannot).")
+      .def_static(
+          "builtin_names",
+          [] {
+            std::vector<std::string> names;
+            for (std::string_view n : preset::builtin_names()) names.emplace_back(n);
+            return names;
+          },
+          "The built-in presets: calm, moderate, storm.")
+      .def("__repr__", [](const preset::Document& doc) {
+        Result<SimulationConfig> c = doc.config();
+        return c.ok() ? "ocean.Preset(" + preset::to_json(c.value()) + ")"
+                      : "ocean.Preset(<invalid: " + c.status().message() + ">)";
+      });
+}
+
+}  // namespace ocean::python

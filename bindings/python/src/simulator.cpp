@@ -1,0 +1,266 @@
+// ocean.Simulator: configure, step, kick/wait, each frame's fields as numpy views, and batched
+// height queries with the GIL released.
+//
+// Views and their lifetime. A field array is a read-only numpy view of the simulator's frame
+// buffer (no copy), except `height`, a strided view of the displacement's h column (no copy
+// either). Every array of one fields() call shares one FrameView base object that keeps the
+// simulator alive, so an array never outlives the memory it points into. The Simulator double-
+// buffers: the frame published by step k is overwritten by step k + 2. A step (or kick) that
+// would overwrite a buffer some array still views raises RuntimeError instead: the data an array
+// shows never changes under it and never dangles. Copy what you keep (numpy.array(view)).
+#include <pybind11/numpy.h>
+#include <pybind11/stl.h>
+
+#include <mutex>
+#include <shared_mutex>
+#include <string>
+#include <vector>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "errors.hpp"
+#include "ocean/backends.hpp"
+#include "ocean/task_runner.hpp"
+
+namespace py = pybind11;
+
+namespace ocean::python {
+namespace {
+
+// The simulator and the count of live views of each frame buffer, shared with the views.
+struct SimulatorState {
+  std::unique_ptr<Simulator> sim;
+  std::shared_mutex mutex;  // exclusive: step, kick, wait, reconfigure; shared: reads and queries
+  std::mutex views_mutex;
+  std::vector<std::pair<const Frame*, int>> views;  // buffer → live FrameView objects
+
+  void add_view(const Frame* f, int delta) {
+    const std::lock_guard lock(views_mutex);
+    for (auto& [frame, n] : views) {
+      if (frame == f) {
+        n += delta;
+        return;
+      }
+    }
+    views.emplace_back(f, delta);
+  }
+  // Live views of every buffer but `keep` (null: of every buffer).
+  int views_except(const Frame* keep) {
+    const std::lock_guard lock(views_mutex);
+    int total = 0;
+    for (const auto& [frame, n] : views)
+      if (frame != keep) total += n;
+    return total;
+  }
+};
+
+// The base object of every field array: holds the simulator and counts as a view of its frame.
+class FrameView {
+ public:
+  FrameView(std::shared_ptr<SimulatorState> state, const Frame* frame)
+      : state_(std::move(state)), frame_(frame) {
+    state_->add_view(frame_, +1);
+  }
+  ~FrameView() { state_->add_view(frame_, -1); }
+  FrameView(const FrameView&) = delete;
+  FrameView& operator=(const FrameView&) = delete;
+
+ private:
+  std::shared_ptr<SimulatorState> state_;
+  const Frame* frame_;
+};
+
+class PySimulator {
+ public:
+  PySimulator(const SimulationConfig& config, const std::string& backend, int threads)
+      : state_(std::make_shared<SimulatorState>()) {
+    std::shared_ptr<TaskRunner> runner = make_tbb_runner(threads);
+    state_->sim = take(make_simulator(config, backend, std::move(runner)));
+  }
+
+  void step(double time_s) { advance(time_s, false); }
+  void kick(double time_s) { advance(time_s, true); }
+  void wait() {
+    const py::gil_scoped_release release;
+    const std::unique_lock lock(state_->mutex);
+    state_->sim->wait();
+  }
+  void reconfigure(const SimulationConfig& config) {
+    Status s;
+    {
+      const py::gil_scoped_release release;
+      const std::unique_lock lock(state_->mutex);
+      s = refuse_if_viewed(nullptr);
+      if (s.ok()) s = state_->sim->reconfigure(config);
+    }
+    check(s);
+  }
+
+  // The arrays of one cascade of the published frame, views sharing one FrameView base.
+  py::dict fields(int cascade) {
+    const std::shared_lock lock(state_->mutex);
+    const Frame& f = state_->sim->frame();
+    if (cascade < 0 || static_cast<std::size_t>(cascade) >= f.cascades.size()) {
+      raise(invalid_argument("cascade = " + std::to_string(cascade) +
+                             " is out of range: must be 0 to " +
+                             std::to_string(f.cascades.size() - 1)));
+    }
+    const CascadeFrame& c = f.cascades[static_cast<std::size_t>(cascade)];
+    const py::object base =
+        py::cast(new FrameView(state_, &f), py::return_value_policy::take_ownership);
+    const auto n = static_cast<py::ssize_t>(c.resolution);
+    py::dict out;
+    const auto view = [&](auto* data, std::vector<py::ssize_t> shape,
+                          std::vector<py::ssize_t> strides, const py::dtype& dtype) {
+      py::array a(dtype, std::move(shape), std::move(strides), data, base);
+      py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+      return a;
+    };
+    const py::ssize_t f4 = sizeof(float);
+    out["displacement"] =
+        view(c.displacement.data(), {n, n, 3}, {n * 3 * f4, 3 * f4, f4}, py::dtype::of<float>());
+    out["height"] =
+        view(c.displacement.data() + 1, {n, n}, {n * 3 * f4, 3 * f4}, py::dtype::of<float>());
+    out["displacement_half"] =
+        view(c.displacement_half.data(), {n, n, 4}, {n * 8, 8, 2}, py::dtype("float16"));
+    if (!c.normal.empty())
+      out["normal"] =
+          view(c.normal.data(), {n, n, 3}, {n * 3 * f4, 3 * f4, f4}, py::dtype::of<float>());
+    if (!c.jacobian.empty())
+      out["jacobian"] = view(c.jacobian.data(), {n, n}, {n * f4, f4}, py::dtype::of<float>());
+    if (!c.foam.empty())
+      out["foam"] = view(c.foam.data(), {n, n}, {n * f4, f4}, py::dtype::of<float>());
+    out["packed"] =
+        view(c.packed_mips.data(), {n, n, 4}, {n * 4, 4, 1}, py::dtype::of<std::uint8_t>());
+    return out;
+  }
+
+  // Heights of the rendered surface above world (x, z) points, (n, 2) in, GIL released.
+  py::object heights(const DoubleArray& xz, bool full) const {
+    if (xz.ndim() != 2 || xz.shape(1) != 2) {
+      std::string shape;
+      for (py::ssize_t i = 0; i < xz.ndim(); ++i)
+        shape += (i ? ", " : "") + std::to_string(xz.shape(i));
+      raise(invalid_argument("xz must be an (n, 2) array of world (x, z) points, m; got shape (" +
+                             shape + ")"));
+    }
+    const auto n = static_cast<std::size_t>(xz.shape(0));
+    std::vector<std::array<double, 2>> points(n);
+    for (std::size_t i = 0; i < n; ++i) points[i] = {xz.data()[2 * i], xz.data()[2 * i + 1]};
+    for (const auto& p : points) {
+      check(require_finite("x", p[0]));
+      check(require_finite("z", p[1]));
+    }
+    std::vector<HeightSample> samples(n);
+    {
+      const py::gil_scoped_release release;
+      const std::shared_lock lock(state_->mutex);
+      state_->sim->heights_at(points, samples);
+    }
+    const auto count = static_cast<py::ssize_t>(n);
+    py::array_t<double> h(count);
+    for (std::size_t i = 0; i < n; ++i) h.mutable_data()[i] = samples[i].height_m;
+    if (!full) return h;
+    py::array_t<double> d({count, py::ssize_t{3}});
+    py::array_t<double> src({count, py::ssize_t{2}});
+    py::array_t<int> it(count);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < 3; ++j) d.mutable_data()[3 * i + j] = samples[i].displacement[j];
+      for (std::size_t j = 0; j < 2; ++j) src.mutable_data()[2 * i + j] = samples[i].source_xz[j];
+      it.mutable_data()[i] = samples[i].iterations;
+    }
+    py::dict out;
+    out["height"] = h;
+    out["displacement"] = d;
+    out["source_xz"] = src;
+    out["iterations"] = it;
+    return out;
+  }
+
+  [[nodiscard]] double time() const {
+    const std::shared_lock lock(state_->mutex);
+    return state_->sim->frame().time_s;
+  }
+  [[nodiscard]] std::uint64_t frame_index() const {
+    const std::shared_lock lock(state_->mutex);
+    return state_->sim->frame().index;
+  }
+  [[nodiscard]] const SimulationConfig& config() const { return state_->sim->config(); }
+  [[nodiscard]] std::string backend() const { return std::string(state_->sim->backend().name()); }
+
+ private:
+  // Steps (kick = in the background) after publishing any kicked frame, unless the buffer the
+  // step writes is still viewed.
+  void advance(double time_s, bool kick) {
+    check(require_finite("time_s", time_s));
+    Status s;
+    {
+      const py::gil_scoped_release release;
+      const std::unique_lock lock(state_->mutex);
+      state_->sim->wait();
+      s = refuse_if_viewed(&state_->sim->frame());
+      if (s.ok()) kick ? state_->sim->kick(time_s) : state_->sim->step(time_s);
+    }
+    check(s);
+  }
+
+  // With the exclusive lock held: an error when a frame buffer other than `keep` (null: any)
+  // is still viewed.
+  Status refuse_if_viewed(const Frame* keep) {
+    const int live = state_->views_except(keep);
+    if (live == 0) return {};
+    return {ErrorCode::internal,
+            std::string(keep ? "this step would overwrite" : "reconfigure would free") +
+                " a frame that " + std::to_string(live) +
+                " field view(s) from fields() still show: copy what you keep "
+                "(numpy.array(view)) and delete the views first"};
+  }
+
+  std::shared_ptr<SimulatorState> state_;
+};
+
+}  // namespace
+
+void bind_simulator(py::module_& m) {
+  py::class_<FrameView>(m, "FrameView",
+                        "The base object of field arrays: keeps the simulator alive and its "
+                        "frame from being overwritten while any array of it exists.");
+  py::class_<PySimulator>(m, "Simulator",
+                          "A simulation of the preset's sea on a backend ('cpu', 'vulkan').")
+      .def(py::init([](const py::object& preset, const std::string& backend, int threads) {
+             return std::make_unique<PySimulator>(config_of(preset), backend, threads);
+           }),
+           py::arg("preset") = py::none(), py::kw_only(), py::arg("backend") = "cpu",
+           py::arg("threads") = 0,
+           "preset: an ocean.Preset, a built-in name or a preset file; None = the defaults. "
+           "threads: oneTBB threads, 0 = all.")
+      .def("step", &PySimulator::step, py::arg("time_s"),
+           "Computes and publishes the frame at time_s (GIL released).")
+      .def("kick", &PySimulator::kick, py::arg("time_s"),
+           "Starts the frame at time_s in the background; the published frame stays readable.")
+      .def("wait", &PySimulator::wait, "Waits for the kicked frame and publishes it.")
+      .def(
+          "reconfigure",
+          [](PySimulator& s, const py::object& preset) { s.reconfigure(config_of(preset)); },
+          py::arg("preset"), "Regenerates spectra and buffers for a new configuration.")
+      .def("fields", &PySimulator::fields, py::arg("cascade") = 0,
+           "The published frame's arrays of one cascade, read-only numpy views [row][col]: "
+           "displacement (N,N,3) float32 (Dx, h, Dz) m, height (N,N) (a strided view of it), "
+           "displacement_half (N,N,4) float16, normal (N,N,3), jacobian (N,N), foam (N,N) (when "
+           "the configuration's outputs ask for them), packed (N,N,4) uint8 RGBA mip 0.")
+      .def("heights", &PySimulator::heights, py::arg("xz"), py::kw_only(), py::arg("full") = false,
+           "Heights of the surface above world points xz, an (n, 2) array (x, z) in m; the GIL is "
+           "released. full=True returns a dict with displacement (n,3), source_xz (n,2) and "
+           "iterations (n,) too.")
+      .def_property_readonly("time", &PySimulator::time, "Time of the published frame, s.")
+      .def_property_readonly("frame_index", &PySimulator::frame_index)
+      .def_property_readonly("backend", &PySimulator::backend)
+      .def_property_readonly("resolution",
+                             [](const PySimulator& s) { return s.config().resolution; })
+      .def_property_readonly("patch_sizes",
+                             [](const PySimulator& s) { return s.config().cascade_patch_sizes_m; })
+      .def_property_readonly("loop_period_s",
+                             [](const PySimulator& s) { return s.config().loop_period_s; });
+}
+
+}  // namespace ocean::python

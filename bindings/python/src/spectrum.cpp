@@ -1,0 +1,241 @@
+// ocean.spectrum, ocean.spectrum_info, ocean.dispersion, ocean.spreading, ocean.depth_factor:
+// the math of ocean/spectrum.hpp vectorised over numpy arrays, with the parameters and the error
+// messages of `ocean spectrum`, `ocean dispersion` and `ocean spreading`.
+//
+// Keyword values reach the library through the tool's own flag parser (cli::to_params), each
+// number written in its shortest round-trip form, so that a value means exactly what the same
+// flag means and a bad one gives the tool's message.
+#include "ocean/spectrum.hpp"
+
+#include <pybind11/stl.h>
+
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "arrays.hpp"
+#include "bindings.hpp"
+#include "cli_common.hpp"
+#include "errors.hpp"
+#include "options.hpp"
+
+namespace py = pybind11;
+
+namespace ocean::python {
+namespace {
+
+using OptionalNumber = std::optional<double>;
+using NumberOrName = std::optional<std::variant<double, std::string>>;
+
+std::string text_of(const OptionalNumber& v) { return v ? format_number(*v) : std::string(); }
+
+/// The sea-state keywords of ocean.spectrum, as `ocean spectrum`'s flags.
+struct SeaKeywords {
+  std::string model;
+  OptionalNumber hs, tp, wind_speed, fetch;
+  NumberOrName gamma;
+  OptionalNumber depth, gravity;
+  std::string depth_factor, fetch_law, normalization;
+  OptionalNumber phillips_amplitude, cutoff_length;
+
+  [[nodiscard]] FrequencySpectrumParams params() const {
+    cli::SpectrumFlags f;
+    f.model = model;
+    f.hs = text_of(hs);
+    f.tp = text_of(tp);
+    f.wind_speed = text_of(wind_speed);
+    f.fetch = text_of(fetch);
+    if (gamma) {
+      f.gamma = std::holds_alternative<double>(*gamma) ? format_number(std::get<double>(*gamma))
+                                                       : std::get<std::string>(*gamma);
+    }
+    f.depth = text_of(depth);
+    f.gravity = text_of(gravity);
+    f.depth_factor = depth_factor;
+    f.fetch_law = fetch_law;
+    f.normalization = normalization;
+    f.phillips_amplitude = text_of(phillips_amplitude);
+    f.cutoff_length = text_of(cutoff_length);
+    return take(cli::to_params(f));
+  }
+};
+
+FrequencySpectrum make_spectrum(const SeaKeywords& kw) {
+  return take(FrequencySpectrum::make(kw.params()));
+}
+
+// The values every ω must take, as `ocean spectrum --omega` checks them.
+void check_omegas(const DoubleArray& omega) {
+  constexpr cli::NumberOption<double> kOmega{.flag = "--omega",
+                                             .accept = cli::Accept::non_negative};
+  for (py::ssize_t i = 0; i < omega.size(); ++i) {
+    const double w = omega.data()[i];
+    check(cli::check(kOmega, w, format_number(w)));
+  }
+}
+
+DoubleArray spectrum(const SeaKeywords& kw, const DoubleArray& omega) {
+  const FrequencySpectrum s = make_spectrum(kw);
+  check_omegas(omega);
+  return map_values(omega, [&](double w) { return s(w); });
+}
+
+py::dict spectrum_info(const SeaKeywords& kw) {
+  const FrequencySpectrum s = make_spectrum(kw);
+  py::dict d;
+  d["model"] = std::string(to_string(s.params().model));
+  d["peak_omega"] = s.peak_omega();
+  d["peak_period_s"] = 2.0 * kPi / s.peak_omega();
+  d["gamma"] = s.gamma();
+  d["alpha"] = s.alpha();
+  d["hs_m"] = s.hs_m();
+  d["m0"] = s.moment(0);
+  d["m1"] = s.moment(1);
+  d["m2"] = s.moment(2);
+  return d;
+}
+
+// `ocean dispersion`: exactly one of k and ω; the others computed on the relation's domain.
+py::dict dispersion(std::optional<DoubleArray> k, std::optional<DoubleArray> omega,
+                    OptionalNumber depth, OptionalNumber gravity, bool capillary) {
+  if (k.has_value() == omega.has_value())
+    raise(invalid_argument("dispersion needs exactly one of --k K1,... or --omega W1,..."));
+  DispersionParams params;
+  if (depth) params.depth_m = *depth;
+  if (gravity) params.gravity_mps2 = *gravity;
+  if (capillary) params.capillarity_m3ps2 = kSeaWaterCapillarity;
+  const Dispersion d = take(Dispersion::make(params));
+  const DoubleArray& in = k ? *k : *omega;
+  for (py::ssize_t i = 0; i < in.size(); ++i) {
+    const double v = in.data()[i];
+    check(k ? Dispersion::check_wavenumber("--k", v) : d.check_omega("--omega", v));
+  }
+  const DoubleArray kk = k ? *k : map_values(in, [&](double w) { return d.wavenumber(w); });
+  py::dict out;
+  out["k"] = kk;
+  out["omega"] = omega ? *omega : map_values(kk, [&](double x) { return d.omega(x); });
+  out["group_velocity"] = map_values(kk, [&](double x) { return d.group_velocity(x); });
+  out["phase_velocity"] = map_values(kk, [&](double x) { return d.phase_velocity(x); });
+  out["wavelength_m"] = map_values(kk, [](double x) { return 2.0 * kPi / x; });
+  return out;
+}
+
+// `ocean spreading`: D(θ) at ω = omega_ratio·ωp, ωp from wind and fetch when given.
+DoubleArray spreading(const DoubleArray& theta, const std::string& model, OptionalNumber s,
+                      OptionalNumber alpha, bool symmetric, double omega_ratio,
+                      OptionalNumber wind_speed, OptionalNumber fetch) {
+  Result<SpreadingModel> m = parse_spreading_model(model);
+  if (!m.ok()) raise(Status(m.status().code(), "--model: " + m.status().message()));
+  SpreadingParams params{.model = m.value()};
+  params.counter_wave_suppression = !symmetric;
+  if (s) params.s = *s;
+  if (alpha) params.alpha = *alpha;
+  constexpr cli::NumberOption<double> kOmegaRatio{.flag = "--omega-ratio",
+                                                  .accept = cli::Accept::positive};
+  constexpr cli::NumberOption<double> kWindSpeed{
+      .flag = "--wind-speed", .accept = cli::Accept::in_range, .lo = 1e-3, .hi = 100.0};
+  constexpr cli::NumberOption<double> kFetch{
+      .flag = "--fetch", .accept = cli::Accept::in_range, .lo = 1.0, .hi = 1e8};
+  constexpr cli::NumberOption<double> kTheta{.flag = "--theta", .accept = cli::Accept::finite};
+  check(cli::check(kOmegaRatio, omega_ratio, format_number(omega_ratio)));
+  SpreadingContext context{.omega_p = 1.0};
+  if (wind_speed.has_value() != fetch.has_value())
+    raise(invalid_argument("--wind-speed and --fetch must be given together"));
+  if (wind_speed) {
+    check(cli::check(kWindSpeed, *wind_speed, format_number(*wind_speed)));
+    check(cli::check(kFetch, *fetch, format_number(*fetch)));
+    context.wind_speed_mps = *wind_speed;
+    context.omega_p =
+        jonswap_fetch_law(*wind_speed, *fetch, kDefaultGravity, FetchLaw::hasselmann_1973)[1];
+  } else if (params.model == SpreadingModel::mitsuyasu ||
+             params.model == SpreadingModel::hasselmann) {
+    raise(invalid_argument(std::string(to_string(params.model)) +
+                           " spreading needs --wind-speed MPS --fetch M"));
+  }
+  const Spreading d = take(Spreading::make(params, context));
+  for (py::ssize_t i = 0; i < theta.size(); ++i) {
+    const double t = theta.data()[i];
+    check(cli::check(kTheta, t, format_number(t)));
+  }
+  const double omega = omega_ratio * context.omega_p;
+  return map_values(theta, [&](double t) { return d(omega, t); });
+}
+
+// Kitaigorodskii's depth factor Φ(ω, h) of TMA, exact or Thompson–Vincent.
+DoubleArray depth_factor(const DoubleArray& omega, double depth, double gravity,
+                         const std::string& method) {
+  const std::optional<DepthFactor> factor = value_of(kDepthFactorNames, method);
+  if (!factor) {
+    raise(invalid_argument("--depth-factor = '" + excerpt(method) + "' is unknown: must be " +
+                           name_list(kDepthFactorNames, ", ", " or ")));
+  }
+  take(Dispersion::make({.gravity_mps2 = gravity, .depth_m = depth}));
+  check_omegas(omega);
+  return map_values(omega, [&](double w) { return tma_depth_factor(w, depth, gravity, *factor); });
+}
+
+// The sea-state keywords, in the order and with the defaults of `ocean spectrum`'s flags.
+template <class F>
+void def_with_sea(py::module_& m, const char* name, F&& f, const char* doc) {
+  m.def(name, std::forward<F>(f), py::arg("model") = "jonswap", py::kw_only(),
+        py::arg("hs") = py::none(), py::arg("tp") = py::none(), py::arg("wind_speed") = py::none(),
+        py::arg("fetch") = py::none(), py::arg("gamma") = py::none(), py::arg("depth") = py::none(),
+        py::arg("gravity") = py::none(), py::arg("depth_factor") = "exact",
+        py::arg("fetch_law") = "hasselmann", py::arg("normalization") = "dnv",
+        py::arg("phillips_amplitude") = py::none(), py::arg("cutoff_length") = py::none(), doc);
+}
+
+}  // namespace
+
+void bind_spectrum(py::module_& m) {
+  m.def(
+      "spectrum",
+      [](const std::string& model, const DoubleArray& omega, OptionalNumber hs, OptionalNumber tp,
+         OptionalNumber wind_speed, OptionalNumber fetch, NumberOrName gamma, OptionalNumber depth,
+         OptionalNumber gravity, const std::string& depth_factor, const std::string& fetch_law,
+         const std::string& normalization, OptionalNumber phillips_amplitude,
+         OptionalNumber cutoff_length) {
+        return spectrum({model, hs, tp, wind_speed, fetch, gamma, depth, gravity, depth_factor,
+                         fetch_law, normalization, phillips_amplitude, cutoff_length},
+                        omega);
+      },
+      py::arg("model") = "jonswap", py::kw_only(), py::arg("omega"), py::arg("hs") = py::none(),
+      py::arg("tp") = py::none(), py::arg("wind_speed") = py::none(), py::arg("fetch") = py::none(),
+      py::arg("gamma") = py::none(), py::arg("depth") = py::none(), py::arg("gravity") = py::none(),
+      py::arg("depth_factor") = "exact", py::arg("fetch_law") = "hasselmann",
+      py::arg("normalization") = "dnv", py::arg("phillips_amplitude") = py::none(),
+      py::arg("cutoff_length") = py::none(),
+      "One-sided frequency spectrum S(omega), m^2 s/rad, at every omega (rad/s) of an array of "
+      "any shape. Keywords as the flags of `ocean spectrum`; with no sea state given, U10 = 10 "
+      "m/s over a 100 km fetch. gamma is a number >= 1 or 'auto'.");
+  def_with_sea(
+      m, "spectrum_info",
+      [](const std::string& model, OptionalNumber hs, OptionalNumber tp, OptionalNumber wind_speed,
+         OptionalNumber fetch, NumberOrName gamma, OptionalNumber depth, OptionalNumber gravity,
+         const std::string& depth_factor, const std::string& fetch_law,
+         const std::string& normalization, OptionalNumber phillips_amplitude,
+         OptionalNumber cutoff_length) {
+        return spectrum_info({model, hs, tp, wind_speed, fetch, gamma, depth, gravity, depth_factor,
+                              fetch_law, normalization, phillips_amplitude, cutoff_length});
+      },
+      "The spectrum's derived constants: model, peak_omega (rad/s), peak_period_s, gamma, alpha, "
+      "hs_m (4 sqrt(m0)) and the moments m0, m1, m2.");
+  m.def("dispersion", &dispersion, py::kw_only(), py::arg("k") = py::none(),
+        py::arg("omega") = py::none(), py::arg("depth") = py::none(),
+        py::arg("gravity") = py::none(), py::arg("capillary") = false,
+        "Finite-depth dispersion omega^2 = (g k + T k^3) tanh(k h): give exactly one of k (rad/m) "
+        "or omega (rad/s). Returns a dict of arrays: k, omega, group_velocity, phase_velocity, "
+        "wavelength_m. depth None is deep water; capillary adds sea-water surface tension.");
+  m.def("spreading", &spreading, py::arg("theta"), py::kw_only(),
+        py::arg("model") = "donelan-banner", py::arg("s") = py::none(),
+        py::arg("alpha") = py::none(), py::arg("symmetric") = false, py::arg("omega_ratio") = 1.0,
+        py::arg("wind_speed") = py::none(), py::arg("fetch") = py::none(),
+        "Directional spreading D(theta), 1/rad, normalised over (-pi, pi], at angles theta (rad) "
+        "from the mean direction, at omega = omega_ratio * omega_p. Keywords as the flags of "
+        "`ocean spreading`.");
+  m.def("depth_factor", &depth_factor, py::arg("omega"), py::kw_only(), py::arg("depth"),
+        py::arg("gravity") = kDefaultGravity, py::arg("method") = "exact",
+        "Kitaigorodskii's depth factor Phi(omega, h) of TMA: 'exact' or 'thompson-vincent'.");
+}
+
+}  // namespace ocean::python

@@ -1,0 +1,125 @@
+"""ocean.Simulator: field views (no copy, read-only, tied to the simulator and to their frame),
+step / kick / wait, and batched height queries against exact identities."""
+import gc
+import threading
+
+import numpy as np
+import pytest
+
+import ocean
+
+
+def test_fields_are_read_only_views_of_one_frame(small_preset):
+    sim = ocean.Simulator(small_preset)
+    sim.step(1.0)
+    f = sim.fields(0)
+    n = sim.resolution
+    assert f["displacement"].shape == (n, n, 3) and f["displacement"].dtype == np.float32
+    assert f["height"].shape == (n, n)
+    # height is the h column of the displacement itself, not a copy.
+    assert np.shares_memory(f["height"], f["displacement"])
+    np.testing.assert_array_equal(f["height"], f["displacement"][..., 1])
+    assert isinstance(f["height"].base, ocean.FrameView)
+    assert not f["displacement"].flags.writeable
+    with pytest.raises(ValueError):
+        f["height"][0, 0] = 1.0
+    # The half-precision copy the renderer uploads carries the same heights.
+    np.testing.assert_allclose(f["displacement_half"][..., 1].astype(np.float32), f["height"],
+                               rtol=1e-3, atol=1e-4)
+    # Unit normals; Jacobian of a flat surface would be 1: here it varies around it.
+    np.testing.assert_allclose(np.linalg.norm(f["normal"], axis=-1), 1.0, atol=1e-5)
+    assert f["jacobian"].shape == (n, n) and f["foam"].shape == (n, n)
+    assert f["packed"].shape == (n, n, 4) and f["packed"].dtype == np.uint8
+
+
+def test_a_step_never_overwrites_a_viewed_frame(small_preset):
+    sim = ocean.Simulator(small_preset)
+    sim.step(1.0)
+    old = sim.fields(0)["height"]
+    kept = np.array(old)
+    sim.step(2.0)  # writes the other buffer: the view of frame 1 is untouched
+    np.testing.assert_array_equal(old, kept)
+    with pytest.raises(RuntimeError, match="would overwrite a frame that 1 field view"):
+        sim.step(3.0)
+    with pytest.raises(RuntimeError, match="would overwrite"):
+        sim.kick(3.0)
+    np.testing.assert_array_equal(old, kept)
+    del old
+    gc.collect()
+    sim.step(3.0)
+    assert sim.time == 3.0
+
+
+def test_a_view_keeps_the_simulator_alive(small_preset):
+    sim = ocean.Simulator(small_preset)
+    sim.step(4.0)
+    h = sim.fields(1)["height"]
+    kept = np.array(h)
+    del sim
+    gc.collect()
+    for _ in range(3):  # allocations that would reuse freed frame memory
+        ocean.Simulator(small_preset).step(9.0)
+    np.testing.assert_array_equal(h, kept)
+
+
+def test_kick_wait_equals_step(small_preset):
+    a = ocean.Simulator(small_preset)
+    b = ocean.Simulator(small_preset)
+    a.step(2.5)
+    b.kick(2.5)
+    b.wait()
+    assert b.time == 2.5
+    np.testing.assert_array_equal(a.fields(0)["displacement"], b.fields(0)["displacement"])
+
+
+def test_heights_at_displaced_texels_are_their_heights(small_preset):
+    # A texel starting at p lands at p + D_xz(p) with height h(p) (docs/math.md M.7.6-M.7.7):
+    # the query at the landing point returns h(p), summed over cascades. With one cascade the
+    # sum is the texel's own value.
+    p = ocean.Preset("moderate")
+    p.set("resolution=32")
+    p.set("cascades_m=[100.0]")
+    sim = ocean.Simulator(p)
+    sim.step(3.0)
+    d = np.array(sim.fields(0)["displacement"], dtype=np.float64)
+    size = sim.patch_sizes[0]
+    rows, cols = np.mgrid[0:32:5, 0:32:5]
+    start = np.stack([cols.ravel(), rows.ravel()], axis=1) * size / 32
+    disp = d[rows.ravel(), cols.ravel()]
+    xz = start + disp[:, [0, 2]]
+    r = sim.heights(xz, full=True)
+    np.testing.assert_allclose(r["height"], disp[:, 1], atol=1e-4)
+    np.testing.assert_allclose(np.mod(r["source_xz"] - start + size / 2, size) - size / 2, 0,
+                               atol=1e-3)
+    assert r["displacement"].shape == (len(xz), 3) and r["iterations"].min() >= 1
+
+
+def test_heights_from_threads_agree(small_preset):
+    # The GIL is released during a query: several threads query at once and get the same values.
+    sim = ocean.Simulator(small_preset)
+    sim.step(5.0)
+    xz = np.random.default_rng(1).uniform(-500, 500, size=(20000, 2))
+    expected = sim.heights(xz)
+    results = [None] * 4
+
+    def work(i):
+        results[i] = sim.heights(xz)
+
+    threads = [threading.Thread(target=work, args=(i,)) for i in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for r in results:
+        np.testing.assert_array_equal(r, expected)
+
+
+def test_surface_statistics_match_the_spectrum():
+    # The measured Hs of the simulated surface against the spectrum's expectation on the grid,
+    # within 4 standard deviations of sampling (ocean/statistics.hpp hs_sampling_rel_std).
+    p = ocean.Preset("moderate")
+    p.set("resolution=64")
+    p.set("cascades_m=[400.0]")
+    s = ocean.surface_stats(p, seeds=4)
+    assert s["seeds"] == 4 and s["resolution"] == 64
+    assert abs(s["hs_measured_m"] / s["hs_spectrum_m"] - 1) < 4 * s["hs_sampling_rel_std"]
