@@ -138,7 +138,8 @@ Result<HeightMap> read_png(const std::filesystem::path& path, io::detail::PngIo&
   const png_uint_32 height = png_get_image_height(png, info);
   if (Status s = check_size(path, height, width); !s.ok()) return s;
   const int depth = png_get_bit_depth(png, info) == 16 ? 16 : 8;
-  const std::size_t row_bytes = static_cast<std::size_t>(width) * (depth / 8);
+  const std::size_t row_bytes =
+      static_cast<std::size_t>(width) * static_cast<std::size_t>(depth / 8);
   std::vector<png_byte> bytes(row_bytes * height);
   std::vector<png_bytep> rows(height);
   for (std::size_t y = 0; y < height; ++y) rows[y] = bytes.data() + y * row_bytes;

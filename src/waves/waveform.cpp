@@ -10,7 +10,8 @@ namespace ocean::waves {
 
 Status validate(const Waveform& w) {
   if (w.map == nullptr || w.map->rows < 1 || w.map->cols < 1 ||
-      w.map->values.size() != static_cast<std::size_t>(w.map->rows) * w.map->cols) {
+      w.map->values.size() !=
+          static_cast<std::size_t>(w.map->rows) * static_cast<std::size_t>(w.map->cols)) {
     return invalid_argument("waveform has no height map");
   }
   if (Status s = require_finite("x_m", w.x_m); !s.ok()) return s;
