@@ -33,15 +33,8 @@ using ocean_test::line_count;
 namespace fs = std::filesystem;
 using Json = nlohmann::json;
 
-struct TempDir {
-  fs::path path;
-  explicit TempDir(const std::string& name)
-      : path(fs::temp_directory_path() / (name + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-  }
-  ~TempDir() { fs::remove_all(path); }
-};
+using ocean_test::listing;
+using ocean_test::ScratchDir;
 
 std::string read_text(const fs::path& p) {
   std::ifstream in(p);
@@ -138,17 +131,10 @@ std::vector<std::string> long_bake(const fs::path& out) {
   return {"--resolution", "16", "--cascades", "50", "--frames", "1000000", "--out", out.string()};
 }
 
-std::vector<std::string> entries(const fs::path& dir) {
-  std::vector<std::string> names;
-  for (const auto& e : fs::directory_iterator(dir)) names.push_back(e.path().filename().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
 // A stopped bake's folder: no temporary, no lock, and a manifest saying "complete": false that
 // lists exactly the frame files present, every frame whole. Returns the manifest.
 Json expect_incomplete_and_consistent(const fs::path& dir) {
-  for (const std::string& name : entries(dir)) {
+  for (const std::string& name : listing(dir)) {
     EXPECT_EQ(name.find(".tmp-"), std::string::npos) << "temporary left: " << name;
     EXPECT_NE(name, ".ocean-bake.lock") << "lock file left";
   }
@@ -165,7 +151,7 @@ Json expect_incomplete_and_consistent(const fs::path& dir) {
     for (const Json& f : frame["files"]) listed.insert(f.get<std::string>());
   }
   for (const std::string& name : listed) EXPECT_TRUE(fs::exists(dir / name)) << name;
-  for (const std::string& name : entries(dir)) {
+  for (const std::string& name : listing(dir)) {
     if (name != "manifest.json") {
       EXPECT_TRUE(listed.count(name)) << "not in the manifest: " << name;
     }
@@ -175,7 +161,7 @@ Json expect_incomplete_and_consistent(const fs::path& dir) {
 
 TEST(BakeTransaction, SigintOrSigtermMidBakeLeavesNoTemporaryAndAnIncompleteManifest) {
   for (const int signal : {SIGINT, SIGTERM}) {
-    TempDir dir("bake_signal_");
+    ScratchDir dir("bake_signal_");
     const fs::path out = dir.path / "out";
     Child bake(long_bake(out), dir.path / "err");
     // Frame 1 begun: frame 0 is whole.
@@ -210,7 +196,7 @@ bool in_set(unsigned long long set, int signal) { return ((set >> (signal - 1)) 
 // A shell starts background jobs with SIGINT ignored, so that Ctrl-C reaches only the foreground
 // job: the bake keeps it ignored, and still handles SIGTERM.
 TEST(BakeTransaction, ASigintIgnoredByTheParentStaysIgnored) {
-  TempDir dir("bake_sigign_");
+  ScratchDir dir("bake_sigign_");
   const fs::path out = dir.path / "out";
   Child bake(long_bake(out), dir.path / "err", RLIM_INFINITY, true);
   ASSERT_TRUE(wait_for_file(bake, out / "displacement_c0_f00001.npy")) << bake.err();
@@ -225,7 +211,7 @@ TEST(BakeTransaction, ASigintIgnoredByTheParentStaysIgnored) {
 }
 
 TEST(BakeTransaction, ASecondBakeIntoABusyFolderFailsAtOnceNamingTheFirst) {
-  TempDir dir("bake_lock_");
+  ScratchDir dir("bake_lock_");
   const fs::path out = dir.path / "out";
   Child first(long_bake(out), dir.path / "err");
   ASSERT_TRUE(wait_for_file(first, out / "displacement_c0_f00000.npy")) << first.err();
@@ -247,7 +233,7 @@ TEST(BakeTransaction, ASecondBakeIntoABusyFolderFailsAtOnceNamingTheFirst) {
 }
 
 TEST(BakeTransaction, AKilledBakeInvalidatedTheOldManifestAndBlocksNothing) {
-  TempDir dir("bake_killed_");
+  ScratchDir dir("bake_killed_");
   const fs::path out = dir.path / "out";
   const std::string small = "bake --resolution 16 --cascades 50 --out " + out.string();
   ASSERT_EQ(ocean_test::run_cli(small + " --seed 1 --frames 2").exit_code, 0);
@@ -291,7 +277,7 @@ TEST(BakeTransaction, AKilledBakeInvalidatedTheOldManifestAndBlocksNothing) {
 }
 
 TEST(BakeTransaction, BadOutputPathsFailBeforeTheFirstFrame) {
-  TempDir dir("bake_paths_");
+  ScratchDir dir("bake_paths_");
   const fs::path fifo = dir.path / "fifo";
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
   const fs::path old_bake = dir.path / "old";
@@ -326,7 +312,7 @@ TEST(BakeTransaction, BadOutputPathsFailBeforeTheFirstFrame) {
 }
 
 TEST(BakeTransaction, AFailedStartLeavesNoFolder) {
-  TempDir dir("bake_start_");
+  ScratchDir dir("bake_start_");
   const ocean_test::CliRun r = ocean_test::run_cli("bake --backend no-such-backend --out " +
                                                    (dir.path / "a" / "b").string());
   EXPECT_EQ(r.exit_code, 2);
@@ -338,7 +324,7 @@ TEST(BakeTransaction, AFailedStartLeavesNoFolder) {
 // the contact sheet written after frame 0 (about 18 kB) does not, so its write fails with EFBIG
 // and SIGXFSZ (which by default kills the process and leaves the temporary behind).
 TEST(BakeTransaction, AFileSizeLimitFailsWithOneLineAndNoTemporary) {
-  TempDir dir("bake_fsize_");
+  ScratchDir dir("bake_fsize_");
   const fs::path out = dir.path / "out", sheet = dir.path / "sheet.png";
   Child bake({"--resolution", "16", "--cascades", "50", "--frames", "3", "--out", out.string(),
               "--contact-sheet", sheet.string()},
@@ -350,7 +336,7 @@ TEST(BakeTransaction, AFileSizeLimitFailsWithOneLineAndNoTemporary) {
   EXPECT_EQ(err.rfind("ocean: error: cannot write '" + sheet.string() + "'", 0), 0u) << err;
   EXPECT_NE(err.find("File too large"), std::string::npos) << err;
   EXPECT_EQ(line_count(err), 1) << err;
-  EXPECT_EQ(entries(dir.path), (std::vector<std::string>{"err", "out"}));
+  EXPECT_EQ(listing(dir.path), (std::set<std::string>{"err", "out"}));
   const Json m = expect_incomplete_and_consistent(out);
   EXPECT_EQ(m["frames"].size(), 1u);
 }
@@ -362,7 +348,7 @@ TEST(BakeTransaction, AFullDiskFailsWithOneLineAndAConsistentFolder) {
     GTEST_SKIP() << "not root, so no tmpfs can be mounted; AFileSizeLimitFailsWithOneLineAndNo"
                     "Temporary covers a failing write";
   }
-  TempDir dir("bake_full_");
+  ScratchDir dir("bake_full_");
   const fs::path mnt = dir.path / "mnt", copy = dir.path / "copy", script = dir.path / "full.sh";
   fs::create_directories(mnt);
   std::ofstream(script) << "mount -t tmpfs -o size=2m tmpfs \"$1\" || { echo 'mount failed'; exit "
