@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "support/temp_dir.hpp"
+
 namespace ocean_test {
 
 struct CliRun {
@@ -52,19 +54,10 @@ inline CliRun run_cli(const std::string& args) { return run_cli_after("", args);
 
 /// A fresh, empty directory in the temporary directory, named `name` and this process's id;
 /// removed with all it holds when the object goes.
-struct ScratchDir {
-  std::filesystem::path path;
-  explicit ScratchDir(const std::string& name)
-      : path(std::filesystem::temp_directory_path() / (name + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path);
+struct ScratchDir : TempDir {
+  explicit ScratchDir(const std::string& name) : TempDir(name) {
     std::filesystem::create_directories(path);
   }
-  ~ScratchDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-  ScratchDir(const ScratchDir&) = delete;
-  ScratchDir& operator=(const ScratchDir&) = delete;
 };
 
 /// The names of the entries of `dir` (not recursive).
