@@ -53,7 +53,7 @@ double sample(const PlacedMap& placed, double x, double z, double outside) {
   const int r0 = std::min(static_cast<int>(cv), m.rows - 1), r1 = std::min(r0 + 1, m.rows - 1);
   const double fu = cu - c0, fv = cv - r0;
   const auto at = [&](int r, int c) {
-    return static_cast<double>(m.values[static_cast<std::size_t>(r) * m.cols + c]);
+    return static_cast<double>(m.values[static_cast<std::size_t>(r * m.cols + c)]);
   };
   const double top = at(r0, c0) * (1.0 - fu) + at(r0, c1) * fu;
   const double bottom = at(r1, c0) * (1.0 - fu) + at(r1, c1) * fu;
