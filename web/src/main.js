@@ -1,10 +1,12 @@
 // main.js — the page: loads the WebAssembly core, starts WebGPU, wires the panel and animates.
-// URL options (for tests and small screens): n (resolution, default 256), patch (m, default 250),
+// URL options (for tests and small screens): n (resolution, default 256), patch (the cascades'
+// patch sides in m, largest first, comma-separated; default the native 1000,233,57),
 // seed (default 1), t (a fixed time in s: no animation), panel=0 (hide the panel).
-// window.ocean publishes { ready, error, core, simulation, renderer, sea, camera, ... } for tests.
+// window.ocean publishes { ready, error, core, ocean, simulation (cascade 0), renderer, sea,
+// camera, ... } for tests.
 import { loadCore } from './core.js';
 import { Renderer } from './renderer.js';
-import { Simulation } from './simulation.js';
+import { Ocean } from './cascades.js';
 
 const params = new URLSearchParams(location.search);
 const state = (window.ocean = { ready: false, error: null });
@@ -35,15 +37,14 @@ async function start() {
   const core = await loadCore();
   const sea = {
     windMps: value('wind'), fetchM: value('fetch') * 1000, directionRad: 0.3,
-    resolution: Number(params.get('n') ?? 256), patchSizeM: Number(params.get('patch') ?? 250),
+    resolution: Number(params.get('n') ?? 256), patchSizesM: (params.get('patch') ?? '1000,233,57').split(',').map(Number),
     seed: Number(params.get('seed') ?? 1), loopPeriodS: 200,
   };
-  core.configure(sea);
   const canvas = document.getElementById('view');
   canvas.width = Math.max(1, Math.round(canvas.clientWidth * devicePixelRatio));
   canvas.height = Math.max(1, Math.round(canvas.clientHeight * devicePixelRatio));
-  let simulation = await Simulation.create(device, core, sea);
-  let renderer = await Renderer.create(device, canvas, simulation);
+  let ocean = await Ocean.create(device, core, sea);
+  let renderer = await Renderer.create(device, canvas, ocean);
   const camera = { heightM: 12, yawRad: 0, pitchRad: 0, fovYRad: (55 * Math.PI) / 180 };
   let timeScale = 1;
 
@@ -58,20 +59,20 @@ async function start() {
     if (value('wind') !== sea.windMps || value('fetch') * 1000 !== sea.fetchM) {
       sea.windMps = value('wind');
       sea.fetchM = value('fetch') * 1000;
-      core.configure(sea);
-      const next = await Simulation.create(device, core, sea);
+      const next = await Ocean.create(device, core, sea);
       const nextRenderer = await Renderer.create(device, canvas, next);
-      simulation.destroy();
-      simulation = next;
+      ocean.destroy();
+      ocean = next;
       renderer = nextRenderer;
-      Object.assign(state, { simulation, renderer });
+      Object.assign(state, { ocean, simulation: ocean.simulations[0], renderer });
     }
-    simulation.choppiness = value('choppiness');
+    ocean.choppiness = value('choppiness');
   }
   form.addEventListener('input', () => applyPanel().catch((e) => say(e.message)));
   await applyPanel();
 
-  Object.assign(state, { core, simulation, renderer, sea, camera, device, applyPanel });
+  Object.assign(state, { core, ocean, simulation: ocean.simulations[0], renderer, sea, camera,
+                         device, applyPanel });
   const fixedTime = params.get('t');
   let simTime = fixedTime === null ? 0 : Number(fixedTime);
   let last = performance.now();

@@ -8,7 +8,7 @@
 
 const kFoam = { jacobianStart: 0.8, jacobianFull: 0.5, decayPerS: 0.6 };  // sim.hpp FoamParams
 
-async function shaderText(name) {
+export async function shaderText(name) {
   const response = await fetch(new URL(`shaders/${name}`, import.meta.url));
   if (!response.ok) throw new Error(`cannot load shaders/${name}: ${response.status}`);
   return response.text();

@@ -52,27 +52,38 @@ int fail(const ocean::Status& status) {
 
 extern "C" {
 
-/// Configures a fetch-limited JONSWAP wind sea with Donelan–Banner spreading (the library's
-/// default_sea_state with the given wind U10 m/s, fetch m and direction rad) on one N×N patch of
-/// side patch_size_m, Gaussian draws from seed (an integer below 2^53), loop period T s (0 = none).
-/// Returns 0, or 1 with ocean_web_error() saying why.
+/// Configures cascade `cascade` of a sea of `cascade_count` cascades with the patch sides
+/// patch_sizes_m[0 … cascade_count) m, largest first (the native SimulationConfig's
+/// cascade_patch_sizes_m): a fetch-limited JONSWAP wind sea with Donelan–Banner spreading (the
+/// library's default_sea_state with the given wind U10 m/s, fetch m and direction rad) on that
+/// cascade's N×N patch, restricted to its wavenumber band and drawn from its own seed as the native
+/// simulation does (cascade_spectrum_params), from seed (an integer below 2^53), loop period T s
+/// (0 = none). One cascade is one full-band patch. Returns 0, or 1 with ocean_web_error() saying
+/// why (the library's validate message for a bad list).
 EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, double direction_rad,
-                                             int resolution, double patch_size_m, double seed,
+                                             int resolution, const double* patch_sizes_m,
+                                             int cascade_count, int cascade, double seed,
                                              double loop_period_s) {
   WebSea& s = sea();
-  ocean::SeaStateParams params = ocean::default_sea_state();
-  params.wind_sea.spectrum.wind_speed_mps = wind_mps;
-  params.wind_sea.spectrum.fetch_m = fetch_m;
-  params.wind_sea.direction_rad = direction_rad;
-  ocean::Result<ocean::SeaState> made = ocean::SeaState::make(params);
-  if (!made.ok()) return fail(made.status());
   if (!(seed >= 0.0 && seed < 9007199254740992.0 && std::floor(seed) == seed))
     return fail(ocean::invalid_argument("seed must be an integer in [0, 2^53)"));
-  ocean::InitialSpectrumParams ip;
-  ip.grid = {.resolution = resolution, .patch_size_m = patch_size_m};
-  ip.seed = static_cast<std::uint64_t>(seed);
-  ip.loop_period_s = loop_period_s;
-  ocean::Result<ocean::InitialSpectrum> spectrum = ocean::make_initial_spectrum(made.value(), ip);
+  if (cascade_count < 1 || cascade_count > 8 || cascade < 0 || cascade >= cascade_count)
+    return fail(ocean::invalid_argument("cascade " + std::to_string(cascade) + " of " +
+                                        std::to_string(cascade_count) + " is out of range"));
+  ocean::SimulationConfig config;
+  config.sea.wind_sea.spectrum.wind_speed_mps = wind_mps;
+  config.sea.wind_sea.spectrum.fetch_m = fetch_m;
+  config.sea.wind_sea.direction_rad = direction_rad;
+  config.resolution = resolution;
+  config.cascade_patch_sizes_m.assign(patch_sizes_m, patch_sizes_m + cascade_count);
+  config.loop_period_s = loop_period_s;
+  config.seed = static_cast<std::uint64_t>(seed);
+  if (ocean::Status valid = ocean::validate(config); !valid.ok()) return fail(valid);
+  ocean::Result<ocean::SeaState> made = ocean::SeaState::make(config.sea);
+  if (!made.ok()) return fail(made.status());
+  const double patch_size_m = config.cascade_patch_sizes_m[static_cast<std::size_t>(cascade)];
+  ocean::Result<ocean::InitialSpectrum> spectrum = ocean::make_initial_spectrum(
+      made.value(), ocean::cascade_spectrum_params(config, static_cast<std::size_t>(cascade)));
   if (!spectrum.ok()) return fail(spectrum.status());
   ocean::Result<ocean::fft::Plan2D> plan = ocean::fft::Plan2D::make(resolution);
   if (!plan.ok()) return fail(plan.status());
