@@ -64,18 +64,11 @@ async function start() {
 
   Object.assign(state, { core, ocean, simulation: ocean.simulations[0], renderer, sea, camera,
                          device, applyPanel });
-  const fixedTime = params.get('t');
-  let simTime = fixedTime === null ? 0 : Number(fixedTime);
-  let last = performance.now();
-  const draw = (now) => {
-    if (fixedTime === null) simTime += ((now - last) / 1000) * timeScale;
-    last = now;
+  animate((t) => {
     const encoder = device.createCommandEncoder();
-    renderer.frame(encoder, simTime, camera);
+    renderer.frame(encoder, t, camera);
     device.queue.submit([encoder.finish()]);
-    if (fixedTime === null) requestAnimationFrame(draw);
-  };
-  requestAnimationFrame(draw);
+  }, () => timeScale);
   await device.queue.onSubmittedWorkDone();
   state.ready = true;
 }
@@ -134,18 +127,23 @@ async function startCpu(why) {
   });
   applyPanel();
   Object.assign(state, { core, sea, view, applyPanel });
+  animate((t) => view.draw(t), () => timeScale);
+  state.ready = true;
+}
+
+// Calls drawAt(t) on every animation frame, t advancing with the page's clock times timeScale(),
+// or once at the URL's fixed time `t`.
+function animate(drawAt, timeScale) {
   const fixedTime = params.get('t');
   let simTime = fixedTime === null ? 0 : Number(fixedTime);
   let last = performance.now();
   const draw = (now) => {
-    if (fixedTime === null) simTime += ((now - last) / 1000) * timeScale;
+    if (fixedTime === null) simTime += ((now - last) / 1000) * timeScale();
     last = now;
-    view.draw(simTime);
+    drawAt(simTime);
     if (fixedTime === null) requestAnimationFrame(draw);
   };
-  view.draw(simTime);
-  if (fixedTime === null) requestAnimationFrame(draw);
-  state.ready = true;
+  requestAnimationFrame(draw);
 }
 
 start().catch((e) => {
