@@ -26,8 +26,10 @@ export class Ocean {
     this.device = device;
     this.sea = sea;
     this.simulations = [];
+    this.geometryWavelengthsM = [];  // the render fades cascade c's displacement against these
     for (let c = 0; c < sizes.length; ++c) {
       core.configure(sea, c);
+      this.geometryWavelengthsM.push(core.geometryWavelength());
       this.simulations.push(await Simulation.create(device, core, { ...sea, patchSizeM: sizes[c] }));
     }
     const n = sea.resolution;

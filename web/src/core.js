@@ -24,6 +24,8 @@ export async function loadCore() {
     spectrum: (omega) => m._ocean_web_spectrum(omega),  // S(ω), m²·s/rad
     peakOmega: () => m._ocean_web_peak_omega(),         // ωp, rad/s
     hs: () => m._ocean_web_hs(),                        // 4·√m0, m
+    // The configured cascade's geometry fade length, m (the native renderer's, R.9).
+    geometryWavelength: () => m._ocean_web_geometry_wavelength(),
     packed: () => f32(m._ocean_web_packed(), 4 * texels),
     phaseRate: () => f32(m._ocean_web_phase_rate(), texels),
     h0: () => new Float64Array(m.HEAPF64.buffer, m._ocean_web_h0(), 2 * texels).slice(),

@@ -49,7 +49,7 @@ export class Renderer {
         fragment: { module, entryPoint: 'water_fs', targets } }),
     ]);
     this.view = device.createBuffer({
-      size: 192, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+      size: 208, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
     this.bindGroup = device.createBindGroup({ layout, entries: [
       { binding: 0, resource: { buffer: this.view } },
       { binding: 1, resource: { buffer: ocean.displacement } },
@@ -74,7 +74,7 @@ export class Renderer {
     const m = cameraMatrices(camera, width / height);
     const sun = [0.55, 0.3, -0.78];
     const l = Math.hypot(...sun);
-    const data = new Float32Array(48);
+    const data = new Float32Array(52);
     data.set(m.viewProj, 0);
     data.set(m.invViewProj, 16);
     data.set([...m.eye, 1], 32);
@@ -82,6 +82,7 @@ export class Renderer {
     const sizes = this.ocean.sea.patchSizesM;
     data.set([this.ocean.n, kRings, kSegments, sizes.length], 40);
     data.set(sizes, 44);
+    data.set(this.ocean.geometryWavelengthsM, 48);
     this.device.queue.writeBuffer(this.view, 0, data);
     const texture = this.context.getCurrentTexture();
     const pass = encoder.beginRenderPass({

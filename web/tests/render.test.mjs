@@ -19,6 +19,25 @@ function stats({ width, rgba }, y0, y1) {
   return { luminance: luminance / ((y1 - y0) * width), black };
 }
 
+// The lengths the grid fades each cascade's displacement against (R.9), from their definition:
+// the longest wave of the band — the patch side for cascade 0, 2π/k_min = 4·L(c−1)/N past it, the
+// bands handing over at half the previous cascade's Nyquist (M.7.1) — capped at the peak
+// wavelength 2πg/ωp² (deep water, ω² = gk; the default sea has one wave system) but not below
+// four texels, 4·L/N.
+async function checkGeometryWavelengths(page, check) {
+  const r = await page.evaluate(() => ({
+    sizes: window.ocean.sea.patchSizesM, n: window.ocean.sea.resolution,
+    omegaP: window.ocean.core.peakOmega(), got: window.ocean.ocean.geometryWavelengthsM }));
+  const peak = (2 * Math.PI * 9.81) / r.omegaP ** 2;  // g: the library's kDefaultGravity
+  r.sizes.forEach((size, c) => {
+    const longest = c === 0 ? size : (4 * r.sizes[c - 1]) / r.n;
+    const want = Math.min(longest, Math.max(peak, (4 * size) / r.n));
+    check(Math.abs(r.got[c] - want) <= 1e-9 * want,
+          `cascade ${size} m fades against ${r.got[c]?.toFixed(3)} m (${want.toFixed(3)} m; ` +
+          `peak wavelength ${peak.toFixed(2)} m)`);
+  });
+}
+
 await run('render', async (check) => {
   const { browser, page, server, logs } = await openPage({ query: 'n=64&t=0&panel=0' });
   const result = await page.evaluate(async () => {
@@ -51,6 +70,7 @@ await run('render', async (check) => {
     check(changed > 0.05 * a.width * h, `the sea moves: ${changed} pixels differ between t = 1 s ` +
           'and t = 2.5 s');
     await checkMips(page, check);
+    await checkGeometryWavelengths(page, check);
   }
 
   // Panel: wind 6 → 14 m/s. Hs of the heights read back from the GPU follows the spectrum's

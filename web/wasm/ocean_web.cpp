@@ -8,9 +8,11 @@
 // library's Status messages, one line, from ocean_web_error(). Single-threaded.
 #include <emscripten/emscripten.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -28,12 +30,13 @@ struct WebSea {
   ocean::cpu::CascadeState state;  // spectrum, plane factors and the reference planes
   std::optional<ocean::fft::Plan2D> plan;
   std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
-  std::vector<float> phase_rate;   // EvolutionPhase::rate per texel (the GPU's phase input)
-  std::vector<double> h0;          // re, im per texel
-  ocean::SimulationConfig config;  // normals, roughness and foam parameters of the finalize
-  ocean::CascadeFrame frame;       // the reference outputs
-  std::vector<float> surface;      // (nx, ny, nz, J) per texel, the GPU's layout
-  double choppiness = -1.0;        // λ the plane factors were built for
+  std::vector<float> phase_rate;       // EvolutionPhase::rate per texel (the GPU's phase input)
+  std::vector<double> h0;              // re, im per texel
+  ocean::SimulationConfig config;      // normals, roughness and foam parameters of the finalize
+  ocean::CascadeFrame frame;           // the reference outputs
+  std::vector<float> surface;          // (nx, ny, nz, J) per texel, the GPU's layout
+  double choppiness = -1.0;            // λ the plane factors were built for
+  double geometry_wavelength_m = 0.0;  // the render's fade length of this cascade (R.9)
   std::string error;
 };
 
@@ -46,6 +49,24 @@ int fail(const ocean::Status& status) {
   sea().error = status.message();
   sea().sea.reset();
   return 1;
+}
+
+// The length the native renderer fades cascade `cascade`'s displacement against (R.9: full while
+// the vertex spacing is below a quarter of it, none at half), as src/render/inputs.cpp sets it:
+// the longest wave of the cascade's band, 2π/k_min (its patch side when the band starts at 0),
+// but no longer than the sea's shortest peak wavelength, and no shorter than four texels.
+double geometry_wavelength_m(const ocean::SeaState& sea, const ocean::SimulationConfig& config,
+                             int cascade) {
+  const auto c = static_cast<std::size_t>(cascade);
+  double peak_m = 1e9;
+  for (const ocean::WaveSystem& w : sea.systems()) {
+    const double k = sea.dispersion().wavenumber(w.spectrum().peak_omega());
+    if (k > 0.0) peak_m = std::min(peak_m, 2.0 * std::numbers::pi / k);
+  }
+  const double size = config.cascade_patch_sizes_m[c];
+  const double k_min = ocean::cascade_bands(config)[c][0];
+  const double longest_m = k_min > 0.0 ? 2.0 * std::numbers::pi / k_min : size;
+  return std::min(longest_m, std::max(peak_m, 4.0 * size / config.resolution));
 }
 
 }  // namespace
@@ -119,8 +140,16 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
   s.frame.packed_mips.assign(texels, 0);  // level 0 only: the reference computes no mips
   s.surface.resize(4 * texels);
   s.choppiness = -1.0;
+  s.geometry_wavelength_m = geometry_wavelength_m(*s.sea, config, cascade);
   s.error.clear();
   return 0;
+}
+
+/// The configured cascade's geometry fade length, m (see geometry_wavelength_m); NaN when nothing
+/// is configured.
+EMSCRIPTEN_KEEPALIVE double ocean_web_geometry_wavelength() {
+  const WebSea& s = sea();
+  return s.sea ? s.geometry_wavelength_m : std::nan("");
 }
 
 /// The last configuration error, one line ("" after a success).

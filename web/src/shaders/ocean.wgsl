@@ -21,6 +21,7 @@ struct View {
   grid_segments: f32,  // segments per ring
   cascades: f32,       // cascade count, 1 … 4
   patch_size_m: vec4f, // L of each cascade, largest first
+  geometry_wavelength_m: vec4f,  // each cascade's displacement fades against it (R.9)
 }
 
 @group(0) @binding(0) var<uniform> view: View;
@@ -85,12 +86,17 @@ struct WaterOut {
   let radius = kNearRadius * pow(kFarRadius / kNearRadius, f32(ring) / view.grid_rings);
   let angle = f32(segment) / f32(segments) * 6.283185307;
   let xz = view.eye.xz + radius * vec2f(cos(angle), sin(angle));
+  // The native renderer's geometry weight (R.9, src/render/shaders/ocean.vert): each cascade's
+  // displacement is full while the vertex spacing (here the ring step, the larger of the grid's
+  // two) is below a quarter of its wavelength and gone at half, the grid's Nyquist limit; the
+  // mipped normals carry the cascade beyond.
+  let spacing = radius * (pow(kFarRadius / kNearRadius, 1.0 / view.grid_rings) - 1.0);
   var d = vec3f(0.0);
   for (var c = 0u; c < u32(view.cascades); c++) {
-    d += displacement_at(c, xz);
+    let weight = clamp(2.0 - 4.0 * spacing / view.geometry_wavelength_m[c], 0.0, 1.0);
+    d += weight * displacement_at(c, xz);
   }
-  let detail = clamp(1.0 - radius / (0.5 * kFarRadius), 0.0, 1.0);
-  let world = vec3f(xz.x + d.x * detail, d.y * detail, xz.y + d.z * detail);
+  let world = vec3f(xz.x + d.x, d.y, xz.y + d.z);
   var out: WaterOut;
   out.pos = view.view_proj * vec4f(world, 1.0);
   out.world = world;
