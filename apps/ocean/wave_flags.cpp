@@ -2,9 +2,12 @@
 // LocalLayer (which validates the rest and builds the wake tables).
 #include "wave_flags.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <iostream>
+#include <limits>
+#include <optional>
 
 #include "options.hpp"
 
@@ -139,6 +142,41 @@ Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
                    d.status());
   }
   return std::make_shared<const waves::Damping>(std::move(d).value());
+}
+
+DampingSamples sample_damping(const waves::Damping& damping, int resolution, std::size_t bands) {
+  double x0 = std::numeric_limits<double>::infinity(), z0 = x0, x1 = -x0, z1 = -x0;
+  for (const std::optional<waves::PlacedMap>* m :
+       {&damping.params().mask, &damping.params().bathymetry}) {
+    if (!m->has_value()) continue;
+    const waves::PlacedMap& p = m->value();
+    x0 = std::min(x0, p.origin_m[0]), z0 = std::min(z0, p.origin_m[1]);
+    x1 = std::max(x1, p.origin_m[0] + p.size_m);
+    z1 = std::max(z1, p.origin_m[1] + p.size_m * p.map->rows / p.map->cols);
+  }
+  DampingSamples out;
+  out.origin_m = {x0, z0};
+  out.size_m = std::max(x1 - x0, z1 - z0);
+  out.resolution = resolution;
+  const auto n = static_cast<std::size_t>(resolution);
+  out.band_weights.assign(n * n * bands, 1.0f);
+  out.depth_m.assign(n * n, std::numeric_limits<float>::infinity());
+  std::vector<double> w(std::max(bands, damping.band_count()), 1.0);
+  for (std::size_t row = 0; row < n; ++row) {
+    for (std::size_t col = 0; col < n; ++col) {
+      const double x = x0 + (static_cast<double>(col) + 0.5) * out.size_m / resolution;
+      const double z = z0 + (static_cast<double>(row) + 0.5) * out.size_m / resolution;
+      std::fill(w.begin(), w.end(), 1.0);
+      damping.band_weights(x, z, w);
+      const std::size_t cell = row * n + col;
+      for (std::size_t b = 0; b < bands; ++b)
+        out.band_weights[cell * bands + b] = static_cast<float>(w[b]);
+      if (damping.params().bathymetry.has_value())
+        out.depth_m[cell] = static_cast<float>(waves::sample(
+            *damping.params().bathymetry, x, z, std::numeric_limits<double>::infinity()));
+    }
+  }
+  return out;
 }
 
 Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, double choppiness) {

@@ -38,6 +38,18 @@ Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& fla
 Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& flags,
                                                            const SimulationConfig& config);
 
+/// The damping sampled on a square grid over its maps (the union of the mask's and the
+/// bathymetry's rectangles) for a renderer: per cell `bands` weights (Damping::band_weights; 1
+/// beyond the damping's bands) and the depth (+inf where no bathymetry covers the cell).
+struct DampingSamples {
+  std::array<double, 2> origin_m{0.0, 0.0};
+  double size_m = 0.0;
+  int resolution = 0;
+  std::vector<float> band_weights;  ///< bands per cell, row-major, rows along +z
+  std::vector<float> depth_m;
+};
+DampingSamples sample_damping(const waves::Damping& damping, int resolution, std::size_t bands);
+
 /// Prints the layer's warnings at time t on stderr, "ocean: warning: ..." each.
 void print_warnings(const waves::LocalLayer& layer, double time_s);
 

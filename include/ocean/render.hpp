@@ -116,6 +116,20 @@ struct LocalLayerGrid {
   std::span<const float> displacement;  ///< 3·N² floats, or empty for no layer
 };
 
+/// Bands a DampingGrid carries per cell (cascades beyond it are not damped).
+inline constexpr std::size_t kDampingBands = 8;
+/// The damping of the bands on a square world grid (ocean/waves.hpp's Damping sampled at the
+/// cells' centres): per cell kDampingBands amplitude weights in [0, 1] (cascade c's at index c)
+/// and the water depth, m (+inf or anything ≥ 1000 m: deep water). Outside the square nothing is
+/// damped.
+struct DampingGrid {
+  std::array<double, 2> origin_m{0.0, 0.0};
+  double size_m = 0.0;
+  int resolution = 0;                   ///< N cells per side
+  std::span<const float> band_weights;  ///< kDampingBands·N² values, or empty for none
+  std::span<const float> depth_m;       ///< N² values
+};
+
 class Renderer {
  public:
   /// Builds pipelines, targets and the patch meshes. The context must have been created with
@@ -151,6 +165,14 @@ class Renderer {
   /// only when the side changes. invalid_argument for a bad area, a side outside [1, 4096] or an
   /// array of the wrong size.
   Status set_local_layer(const LocalLayerGrid& grid);
+  /// The damping of the cascades by a mask and a bathymetry (docs/waves.md W.12–W.13;
+  /// docs/rendering.md R.20) from the next draw on: each cascade's displacement, slope and foam
+  /// scaled by its weight, and shallow water tinted by the seabed seen through it (pure water's
+  /// absorption). An empty grid removes it. Same errors and copying as set_local_layer().
+  Status set_damping(const DampingGrid& grid);
+  /// A calm sea: the cascades are neither drawn nor shaded, only the local layer (true), or the
+  /// sea again (false, the default).
+  void set_calm(bool calm);
 
   /// Records the frame into `cmd` (outside any render pass): pending uploads, the HDR pass (sky,
   /// patches, skirt), the tone-map pass. Afterwards the sRGB image is in TRANSFER_SRC_OPTIMAL.

@@ -84,6 +84,14 @@ struct Renderer::State {
   bool local_pending = false;
   std::uint32_t local_side = 0;
   shader::LocalLayerUniforms local{};
+  // The damping (R.20): an RGBA16F array of 3 layers (weights 0–3, weights 4–7, depth), 1×1
+  // until set_damping(); its staging buffer and placement.
+  vk::Image damping_image;
+  vk::Buffer damping_staging;
+  VkSampler damping_sampler = VK_NULL_HANDLE;
+  bool damping_pending = false;
+  std::uint32_t damping_side = 0;
+  shader::DampingUniforms damping{};
 
   ~State();
   void destroy_targets();
@@ -120,6 +128,9 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
 // local_layer.cpp: the 1×1 empty layer made at construction, and the copy of a staged layer.
 Status create_local_layer(Renderer::State& st);
 void record_local_upload(Renderer::State& st, VkCommandBuffer cmd);
+// damping.cpp: the same for the damping's weights and depth.
+Status create_damping(Renderer::State& st);
+void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd);
 
 // uniforms.cpp: recomputes the sky-view table and the irradiances when the sky's parameters
 // changed.

@@ -27,8 +27,10 @@ Renderer::State::~State() {
   vk::destroy_buffer(*ctx, lut_staging);
   vk::destroy_image(*ctx, local_image);
   vk::destroy_buffer(*ctx, local_staging);
-  for (VkSampler s :
-       {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler, local_sampler})
+  vk::destroy_image(*ctx, damping_image);
+  vk::destroy_buffer(*ctx, damping_staging);
+  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler, local_sampler,
+                      damping_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
   for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices})
     vk::destroy_buffer(*ctx, *b);

@@ -106,7 +106,10 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --kelvin-wake 0,0,0,6,40", "--local-area");
   ocean_test::expect_usage_error("render --kelvin-wake 0,0,0,nan,40 --local-area -100,-100,200",
                                  "--kelvin-wake");
-  ocean_test::expect_usage_error("render --calm --local-area -100,-100,200", "--preset calm");
+  ocean_test::expect_usage_error("render --calm", "--local-area");
+  ocean_test::expect_usage_error("render --bathymetry depth.npy,0,0", "--bathymetry");
+  ocean_test::expect_usage_error(
+      "render --calm --local-area -100,-100,200 --bathymetry x.npy,0,0,1", "--calm");
 }
 
 // A wake drawn into the picture (docs/rendering.md R.19): the same render with and without it
@@ -130,6 +133,26 @@ TEST(RenderCli, KelvinWakeChangesThePicture) {
   for (std::size_t i = 0; i < a.value().samples.size(); ++i)
     diff += std::abs(int(a.value().samples[i]) - int(b.value().samples[i]));
   EXPECT_GT(diff / static_cast<double>(a.value().samples.size()), 0.1);  // 0.44 measured
+}
+
+// --calm draws the layer alone: with no wake in its area the picture is a flat mirror, the same
+// in every frame, and a wake makes it differ.
+TEST(RenderCli, CalmDrawsOnlyTheLayer) {
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const std::string view =
+      " --width 64 --height 64 --quality low --warmup 0 --calm"
+      " --camera -60,120,1 --target -60,0,0 --validation"
+      " --local-area -150,-75,150 --local-resolution 128";
+  const fs::path a = scratch("calm_a.png"), b = scratch("calm_b.png"), w = scratch("calm_w.png");
+  ASSERT_EQ(ocean_test::run_cli("render --time 1 --out " + a.string() + view).exit_code, 0);
+  ASSERT_EQ(ocean_test::run_cli("render --time 9 --out " + b.string() + view).exit_code, 0);
+  const ocean_test::CliRun r = ocean_test::run_cli("render --time 9 --out " + w.string() + view +
+                                                   " --kelvin-wake -120,0,0,6,30");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  auto pa = ocean::io::read_png(a), pb = ocean::io::read_png(b), pw = ocean::io::read_png(w);
+  ASSERT_TRUE(pa.ok() && pb.ok() && pw.ok());
+  EXPECT_EQ(pa.value().samples, pb.value().samples);  // no sea moves under a calm
+  EXPECT_NE(pb.value().samples, pw.value().samples);
 }
 
 TEST(RenderCli, UnwritableOutputFailsBeforeRendering) {

@@ -56,8 +56,13 @@ constexpr NumberOption<double> kWarmup{
 
 enum class OutputKind { png, exr, mp4 };
 
+// Cells per side of the damping grid the renderer samples (docs/rendering.md R.20).
+constexpr int kDampingResolution = 512;
+
 struct Inputs {
   std::shared_ptr<const waves::LocalLayer> layer;  // wakes and waveforms, or null
+  std::shared_ptr<const waves::Damping> damping;   // mask and bathymetry, or null
+  bool calm = false;                               // only the layer, no sea
   render::SceneParams scene;
   render::View view;
   OutputPattern out;  // --out, read by the output-name rule
@@ -76,12 +81,16 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   // The renderer uploads the displacement and the RGBA8 chain: no float normals, J or foam.
   in.scene.config.outputs = FrameOutputs::textures();
   // The local layer: wakes and waveforms drawn over the sea (docs/rendering.md R.19).
-  if (o.waves.calm)
-    return invalid_argument("--calm: the renderer draws the sea; for a calm one use --preset calm");
-  if (!o.waves.damping_mask.empty() || !o.waves.bathymetry.empty())
-    return invalid_argument(
-        "--damping-mask and --bathymetry act on height queries (ocean query) and are not drawn "
-        "yet");
+  in.calm = o.waves.calm;
+  if (in.calm && o.waves.local_area.empty())
+    return invalid_argument("--calm draws only the local layer: give --local-area X0,Z0,SIZE_M");
+  if (in.calm) {  // the sea is not drawn: simulate the smallest one
+    in.scene.config.resolution = 16;
+    in.scene.config.cascade_patch_sizes_m.resize(1);
+  }
+  Result<std::shared_ptr<const waves::Damping>> damping = make_damping(o.waves, in.scene.config);
+  if (!damping.ok()) return damping.status();
+  in.damping = damping.value();
   Result<std::shared_ptr<const waves::LocalLayer>> layer =
       make_layer(o.waves, in.scene.config.choppiness);
   if (!layer.ok()) return layer.status();
@@ -254,6 +263,16 @@ int run_render(const RenderOptions& o) {
   std::vector<std::uint8_t> srgb;
   std::vector<float> hdr;
   Progress progress("render", in.frames);
+  renderer.set_calm(in.calm);
+  if (in.damping != nullptr) {
+    const DampingSamples d = sample_damping(*in.damping, kDampingResolution, render::kDampingBands);
+    const Status set = renderer.set_damping({.origin_m = d.origin_m,
+                                             .size_m = d.size_m,
+                                             .resolution = d.resolution,
+                                             .band_weights = d.band_weights,
+                                             .depth_m = d.depth_m});
+    if (!set.ok()) return report(set);
+  }
   waves::LocalFrame local;
   if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
   for (long long f = 0; f < in.frames; ++f) {

@@ -13,6 +13,7 @@
 // & Baker (2010) "LEAN mapping" (slope variance adds across layers and filtering, R.5).
 #include "far_field.glsl"
 #include "local_layer.glsl"
+#include "damping.glsl"
 
 layout(location = 0) in vec2 world_xz;
 layout(location = 1) in vec3 world_pos;
@@ -43,7 +44,7 @@ Shade shade_of(vec4 t, float alpha0_sq) {
 }
 
 void main() {
-  int cascades = int(u.cascade_count);
+  int cascades = u.local.calm > 0.5 ? 0 : int(u.cascade_count);  // calm: the layer alone
   float alpha0_sq = u.roughness * u.roughness;
   vec2 slope = vec2(0.0);  // Σ of the cascades' surface gradients, as normal x/y and z/y
   float variance = alpha0_sq;
@@ -55,6 +56,7 @@ void main() {
   float footprint = max(length(dx), length(dy));
   float ratio = far_ratio_at(world_xz);
   vec2 blend = preserving_weights(ratio);  // (simulation, far field)
+  DampingSample damping = damping_at(world_xz);  // mask and bathymetry (R.20)
   for (int c = 0; c < cascades; ++c) {
     float inv_size = 1.0 / u.cascades[c].patch_size_m;
     vec2 uv = world_xz * inv_size + 0.5 / u.cascades[c].resolution;
@@ -96,6 +98,10 @@ void main() {
       sh.slope = blend.x * sh.slope + blend.y * vec2(sx, sz);
       sh.extra = blend.x * blend.x * sh.extra + blend.y * blend.y * unresolved;
     }
+    float damped = band_weight(damping, c);  // amplitude weight: slopes scale, variances by its square
+    sh.slope *= damped;
+    sh.foam *= damped;
+    sh.extra *= damped * damped;
     slope += sh.slope;
     variance += sh.extra;
     // Whitecaps are the long waves' breaking crests; the short cascades' foam is weighted down
@@ -144,7 +150,10 @@ void main() {
   // surface and by the sky, plus forward scattering through crests lit from behind.
   vec3 sky_e = u.sky_ambient;
   float sun_in = max(L.y, 0.0) * (1.0 - fresnel_schlick(max(L.y, 0.0)));
-  vec3 body = u.water_colour * (sun_e * sun_in + sky_e) / PI;
+  // Over shallow water the column scatters less and the seabed shows through it (R.20).
+  vec3 bottom_t = exp(-2.0 * u.damping.absorption_per_m * damping.depth_m);
+  vec3 body = u.water_colour * (sun_e * sun_in + sky_e) / PI * (1.0 - bottom_t) +
+              seabed_radiance(damping.depth_m, sun_e * sun_in + sky_e);
   float crest = clamp(world_pos.y / max(0.5 * u.hs_m, 0.05), 0.0, 2.0);  // height over Hs/2
   float g = 0.6, mu = dot(-L, V), hg_d = 1.0 + g * g - 2.0 * g * mu;
   float forward = (1.0 - g * g) / (4.0 * PI * hg_d * sqrt(hg_d));  // Henyey–Greenstein

@@ -10,6 +10,7 @@
 // patches share get the same displacement and the stitched mesh stays closed.
 #include "far_field.glsl"
 #include "local_layer.glsl"
+#include "damping.glsl"
 
 layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)
 layout(location = 1) in vec3 a_instance;  // centre x, centre z, size (skirt: 0, 0, 1)
@@ -37,7 +38,8 @@ void main() {
   float spacing = max(2.0 * d / (u.lod_scale * u.vertices), 1e-3);
   vec3 displacement = vec3(0.0);
   int cascades = int(u.cascade_count);
-  if (border_weight > 0.0) {
+  if (border_weight > 0.0 && u.local.calm < 0.5) {
+    DampingSample damping = damping_at(xz);  // mask and bathymetry (R.20)
     float ratio = far_ratio_at(xz);
     vec2 blend = preserving_weights(ratio);  // (simulation, far field)
     for (int c = 0; c < cascades; ++c) {
@@ -54,7 +56,7 @@ void main() {
           tiled += taps.weight[i] *
                    textureLod(displacement_map, vec3(uv + taps.offset[i], float(c)), 0.0).xyz;
       }
-      vec3 sim = w * (mixing.x * plain + mixing.y * tiled);
+      vec3 sim = w * band_weight(damping, c) * (mixing.x * plain + mixing.y * tiled);
       if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
         float h, sx, sz;
         vec3 cell = u.far_field.cell_m.xyz;

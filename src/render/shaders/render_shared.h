@@ -42,7 +42,10 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_NORMAL 2        // sampler2DArray RGBA8 (n_x, n_z, foam, smoothness)
 #define OCEAN_RENDER_BINDING_SKY_LUT 3       // sampler2D sky radiance, u azimuth, v √elevation
 #define OCEAN_RENDER_BINDING_LOCAL 4         // sampler2D RGBA16F (Dx, h, Dz, 0): the local layer
-#define OCEAN_RENDER_SCENE_BINDINGS 5
+#define OCEAN_RENDER_BINDING_DAMPING 5       // sampler2DArray RGBA16F: band weights 0-3, 4-7; depth
+#define OCEAN_RENDER_SCENE_BINDINGS 6
+// The deepest water the damping texture holds, m: deeper is deep water for every band.
+#define OCEAN_RENDER_DEEP_M 1000.0
 // Set 0 of the tone-map pipeline.
 #define OCEAN_RENDER_BINDING_HDR 0  // sampler2D, the linear HDR image
 
@@ -74,7 +77,20 @@ struct LocalLayerUniforms {
   float resolution;    // N cells per side; 0: no layer
   float foam_j_start;  // the foam ramp of the cascades (M.7.4): foam begins below this J
   float foam_j_full;   // and is full at this J
-  float local_pad0, local_pad1;
+  float calm;          // 1: the cascades are not drawn, only the layer (a calm sea)
+  float local_pad1;
+};
+
+// The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.20): per-band weights
+// and the depth baked on a square world grid; weight 1 and deep water outside it.
+struct DampingUniforms {
+  vec2 origin_m;     // (x0, z0)
+  float size_m;      // side
+  float resolution;  // N cells per side; 0: no damping
+  vec3 absorption_per_m;  // pure water's absorption, RGB (R.20)
+  float damping_pad;
+  vec3 bottom_albedo;  // the seabed's reflectance seen through shallow water, RGB
+  float damping_pad2;
 };
 
 // Everything per frame, one uniform buffer (std140).
@@ -106,6 +122,7 @@ struct FrameUniforms {
   CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
   FarFieldUniforms far_field;
   LocalLayerUniforms local;
+  DampingUniforms damping;
 };
 
 // Push constants of the sky pass (std430).
@@ -135,7 +152,9 @@ static_assert(offsetof(FrameUniforms, far_field) == 208 + 16 * OCEAN_RENDER_MAX_
 static_assert(sizeof(FarFieldUniforms) == 64);
 static_assert(sizeof(LocalLayerUniforms) == 32);
 static_assert(offsetof(FrameUniforms, local) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64);
-static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64 + 32);
+static_assert(sizeof(DampingUniforms) == 48);
+static_assert(offsetof(FrameUniforms, damping) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 96);
+static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 96 + 48);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
