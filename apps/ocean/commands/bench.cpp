@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bench/bandwidth.hpp"
+#include "bench/cuda_rows.hpp"
 #include "bench/fftw_engine.hpp"
 #include "bench/harness.hpp"
 #include "bench/parse.hpp"
@@ -70,9 +71,9 @@ struct BenchOptions {
 };
 
 int run_bench(const BenchOptions& o) {
-  if (o.backend != "cpu" && o.backend != "vulkan") {
+  if (o.backend != "cpu" && o.backend != "vulkan" && o.backend != "cuda") {
     return report(invalid_argument("--backend = '" + excerpt(o.backend) +
-                                   "' is unknown: must be one of cpu, vulkan"));
+                                   "' is unknown: must be one of cpu, vulkan, cuda"));
   }
   Result<std::vector<int>> resolutions = parse_ints(kResolution, o.resolutions, false);
   if (!resolutions.ok()) return report(resolutions.status());
@@ -96,11 +97,14 @@ int run_bench(const BenchOptions& o) {
   Result<double> interval_ms = parse(kFrameInterval, o.frame_interval);
   if (!interval_ms.ok()) return report(interval_ms.status());
   const double interval = interval_ms.value() * 1e-3;
-  if (o.backend == "vulkan") {
+  if (o.backend != "cpu") {
     if (interval > 0.0) {
       return report(invalid_argument("--frame-interval = " + excerpt(o.frame_interval) +
                                      ": only the CPU backend's frames can be paced"));
     }
+    if (o.backend == "cuda")
+      return bench::run_cuda_bench(resolutions.value(), cascades.value(), outputs, o.outputs,
+                                   o.json);
     return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.outputs, o.json);
   }
   Result<double> min_time = parse(kMinTime, o.min_time);
