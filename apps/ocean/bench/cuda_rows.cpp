@@ -5,6 +5,7 @@
 #include <iostream>
 #include <memory>
 
+#include "bench/harness.hpp"
 #include "bench/report.hpp"
 #include "cli_common.hpp"
 #include "progress.hpp"
@@ -34,17 +35,13 @@ int run_cuda_bench(const std::vector<int>& resolutions, const std::vector<int>& 
   if (!note.empty()) std::cerr << "ocean bench: " << note << "; cuFFT rows omitted\n";
   const std::string device = backends.front()->device_name();
   std::unique_ptr<TaskRunner> runner = make_serial_runner();
-  const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   Progress progress("bench",
                     static_cast<long long>(resolutions.size() * cascades.size() * backends.size()));
   long long done = 0;
   for (int n : resolutions) {
     for (int c : cascades) {
-      SimulationConfig config;
-      config.resolution = n;
-      config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
-      config.outputs = outputs;
+      const SimulationConfig config = bench_config(n, c, outputs);
       for (const std::unique_ptr<cuda::CudaBackend>& b : backends) {
         if (Status s = b->configure(config, *runner); !s.ok()) return report(s);
         Result<cuda::FrameTimings> t = b->time_frames(kFrames);

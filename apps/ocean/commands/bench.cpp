@@ -116,7 +116,6 @@ int run_bench(const BenchOptions& o) {
       measure_copy_bandwidth_gbps(*make_tbb_runner(), std::size_t{256} << 20, 3);
   const double cache_bandwidth =
       measure_copy_bandwidth_gbps(*make_tbb_runner(), std::size_t{16} << 20, 30);
-  const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   std::vector<Row> rows;
   std::string fftw_note;
   Progress progress("bench",
@@ -127,10 +126,7 @@ int run_bench(const BenchOptions& o) {
     for (int c : cascades.value()) {
       for (int t_request : threads.value()) {
         const int t = t_request == 0 ? hardware : t_request;
-        SimulationConfig config;  // the default sea, central differences
-        config.resolution = n;
-        config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
-        config.outputs = outputs;
+        const SimulationConfig config = bench::bench_config(n, c, outputs);
         std::shared_ptr<TaskRunner> runner = make_tbb_runner(t);
         Row row{n,
                 c,
