@@ -5,6 +5,10 @@
 # cascades, writing JSON under $OUT (default ./gpu-check-out). Each step has its own time limit
 # (together 470 s, under 8 minutes); a failing step is recorded and the next one runs.
 #   OUT=/some/folder tools/gpu-check.sh
+#   BUILD=build/gpu-check tools/gpu-check.sh --build-only   # prepare on a machine with nvcc
+# Without nvcc on the GPU machine, carry a build folder prepared with --build-only (ocean and
+# conformance_tests, ≈ 8 MB: the CUDA runtime is linked in, cuFFT loaded where present, else the
+# backend's own FFT kernels run) and point BUILD at it: configure and build are then skipped.
 # Environment: OUT; BUILD (default build/gpu-check; an existing build folder is reused as it is
 # configured, e.g. BUILD=build/release); JOBS (default: all cores); CUDACXX or nvcc on PATH or in
 # /usr/local/cuda/bin (without nvcc the CUDA steps report "built without CUDA").
@@ -55,19 +59,28 @@ environment() {
 }
 environment
 
-# Configure and build the four targets the checks run (the CUDA kernels for the GPU found, when
+# Configure and build the two targets the checks run (the CUDA kernels for the GPU found, when
 # nvidia-smi reports its compute capability; else the build's default list).
 arch=$(nvidia-smi --query-gpu=compute_cap --format=csv,noheader 2>/dev/null | head -1 | tr -d '. ')
 arch_flag=()
 [[ "$arch" =~ ^[0-9]+$ ]] && arch_flag=(-DCMAKE_CUDA_ARCHITECTURES="$arch")
-if [[ -f "$build/CMakeCache.txt" ]]; then
+prebuilt=0
+if [[ -z "${CUDACXX:-}" && -x "$build/apps/ocean/ocean" && -x "$build/tests/conformance_tests" \
+      && "${1:-}" != --build-only ]]; then
+  prebuilt=1
+  echo "gpu-check: no nvcc here: using the binaries in $build" >&2
+elif [[ -f "$build/CMakeCache.txt" ]]; then
   step configure 60 cmake -S . -B "$build" > "$out/build.log" 2>&1
 else
   step configure 60 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
     -DOCEAN_BUILD_BENCH=OFF "$cuda_flag" "${arch_flag[@]}" > "$out/build.log" 2>&1
 fi
-step build 210 cmake --build "$build" -j "$jobs" --target ocean_cli conformance_tests \
-  >> "$out/build.log" 2>&1
+((prebuilt)) || step build 210 cmake --build "$build" -j "$jobs" --target ocean_cli \
+  conformance_tests >> "$out/build.log" 2>&1
+if [[ "${1:-}" == --build-only ]]; then
+  echo "gpu-check: built $build/apps/ocean/ocean and $build/tests/conformance_tests" >&2
+  exit 0
+fi
 ocean="$build/apps/ocean/ocean"
 if [[ -x "$ocean" ]]; then
   "$ocean" info --json > "$out/info.json" 2>&1
