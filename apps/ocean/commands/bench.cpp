@@ -217,7 +217,8 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   add_option(*cmd, kMinTime, options->min_time, "Seconds of timed runs per measurement")
       ->capture_default_str();
-  cmd->add_option("--backend", options->backend, "Backend to measure")->capture_default_str();
+  cmd->add_option("--backend", options->backend, "Backend to measure: cpu, vulkan or cuda")
+      ->capture_default_str();
   cmd->add_option("--outputs", options->outputs,
                   "Frame outputs: all (every array), or textures (displacement float3 + half4 and "
                   "the RGBA8 chain, no float normal, Jacobian or foam arrays)")
