@@ -7,6 +7,9 @@
 #ifdef OCEAN_HAS_VULKAN
 #include "ocean/vk/simulation.hpp"
 #endif
+#ifdef OCEAN_HAS_CUDA
+#include "ocean/cuda/simulation.hpp"
+#endif
 
 namespace ocean {
 namespace {
@@ -28,11 +31,31 @@ BackendInfo vulkan_info(bool probe) {
 #endif
 }
 
+// With probe = false the CUDA runtime is not asked (no driver call, no context).
+BackendInfo cuda_info(bool probe) {
+#ifdef OCEAN_HAS_CUDA
+  if (!probe) return {"cuda", true, "CUDA"};
+  Result<std::vector<cuda::DeviceInfo>> devices = cuda::list_devices();
+  if (!devices.ok()) return {"cuda", false, devices.status().message()};
+  for (const cuda::DeviceInfo& d : devices.value()) {
+    if (d.usable)
+      return {"cuda", true,
+              "CUDA on " + d.name + " (compute " + std::to_string(d.compute_major) + "." +
+                  std::to_string(d.compute_minor) +
+                  "), one stream per cascade, cuFFT where it loads"};
+  }
+  return {"cuda", false, "no CUDA device: none runs this build's kernels"};
+#else
+  (void)probe;
+  return {"cuda", false, "built without CUDA: the CUDA backend is not part of this build"};
+#endif
+}
+
 std::vector<BackendInfo> backend_table(bool probe) {
   return {{"cpu", true,
            "SIMD pipeline (" + fft::active_simd_target() + "), radix-16 Stockham FFT, oneTBB"},
           vulkan_info(probe),
-          {"cuda", false, "built without CUDA: the CUDA backend is not part of this build"}};
+          cuda_info(probe)};
 }
 
 }  // namespace
@@ -44,6 +67,13 @@ Result<std::unique_ptr<Backend>> make_backend(std::string_view name) {
 #ifdef OCEAN_HAS_VULKAN
   if (name == "vulkan") {
     Result<std::unique_ptr<vk::VulkanBackend>> b = vk::make_vulkan_backend();
+    if (!b.ok()) return b.status();
+    return std::unique_ptr<Backend>(std::move(b).value());
+  }
+#endif
+#ifdef OCEAN_HAS_CUDA
+  if (name == "cuda") {
+    Result<std::unique_ptr<cuda::CudaBackend>> b = cuda::make_cuda_backend();
     if (!b.ok()) return b.status();
     return std::unique_ptr<Backend>(std::move(b).value());
   }

@@ -3,7 +3,9 @@
 // for the same configuration: for "cpu" that is its fused SIMD pipeline against the scalar one,
 // for "vulkan" the compute shaders. The Vulkan backend runs with the Khronos validation layer and
 // must produce zero messages. Without a Vulkan device its tests skip, or fail when
-// OCEAN_REQUIRE_DEVICES=1 (tests/support/require_devices.hpp).
+// OCEAN_REQUIRE_DEVICES=1 (tests/support/require_devices.hpp). Without a CUDA device the cuda
+// tests skip whatever OCEAN_REQUIRE_DEVICES says (CI, which sets it, has no GPU); they fail
+// instead only with OCEAN_REQUIRE_CUDA=1, which tools/gpu-check.sh sets on an NVIDIA machine.
 //
 // The bounds, the comparison and the case list are the library's (ocean/conformance.hpp), the
 // same that `ocean validate` runs.
@@ -17,6 +19,7 @@
 #include <cstring>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -27,19 +30,66 @@
 #ifdef OCEAN_HAS_VULKAN
 #include "ocean/vk/simulation.hpp"
 #endif
+#ifdef OCEAN_HAS_CUDA
+#include "ocean/cuda/simulation.hpp"
+#endif
 
 namespace {
 
 // Validation on for every Vulkan context these tests create (read by vk::create_context).
 const int kValidationOn = setenv("OCEAN_VK_VALIDATION", "1", 0);
 
+// Whether OCEAN_REQUIRE_CUDA is set to a value other than "" and "0".
+bool cuda_required() {
+  const char* v = std::getenv("OCEAN_REQUIRE_CUDA");
+  return v != nullptr && std::string_view(v) != "" && std::string_view(v) != "0";
+}
+
+// The parameter's backend: a name of the table, or "cuda_kernels", the CUDA backend on its own
+// FFT kernels instead of cuFFT (make_backend("cuda") takes cuFFT where it loads).
+ocean::Result<std::unique_ptr<ocean::Backend>> make(const std::string& param) {
+#ifdef OCEAN_HAS_CUDA
+  if (param == "cuda_kernels") {
+    auto b = ocean::cuda::make_cuda_backend(ocean::cuda::FftEngine::kernels);
+    if (!b.ok()) return b.status();
+    return std::unique_ptr<ocean::Backend>(std::move(b).value());
+  }
+#endif
+  return ocean::make_backend(param == "cuda_kernels" ? "cuda" : param);
+}
+
+// After a case: a GPU backend's own status (its failures do not reach the Frame).
+void expect_backend_ok(const ocean::Backend& b) {
+#ifdef OCEAN_HAS_VULKAN
+  if (const auto* vk = dynamic_cast<const ocean::vk::VulkanBackend*>(&b)) {
+    EXPECT_TRUE(vk->status().ok()) << vk->status().message();
+    EXPECT_EQ(vk->context().validation_messages.load(), 0u)
+        << vk->context().last_validation_message;
+  }
+#endif
+#ifdef OCEAN_HAS_CUDA
+  if (const auto* cu = dynamic_cast<const ocean::cuda::CudaBackend*>(&b)) {
+    EXPECT_TRUE(cu->status().ok()) << cu->status().message();
+  }
+#endif
+  (void)b;
+}
+
 class Conformance : public ::testing::TestWithParam<std::string> {
  protected:
   void SetUp() override {
     ASSERT_EQ(kValidationOn, 0);
+    const bool cuda = GetParam().starts_with("cuda");
     for (const ocean::BackendInfo& info : ocean::list_backends()) {
-      if (info.name == GetParam() && !info.available)
-        OCEAN_SKIP_OR_FAIL("backend '" + GetParam() + "' unavailable: " + info.detail);
+      if (info.name != (cuda ? "cuda" : GetParam()) || info.available) continue;
+      if (cuda) {
+        if (cuda_required()) GTEST_FAIL() << "OCEAN_REQUIRE_CUDA is set: " << info.detail;
+        GTEST_SKIP() << "backend 'cuda' unavailable (" << info.detail
+                     << "); skipped even under OCEAN_REQUIRE_DEVICES, since CI has no GPU: "
+                        "tools/gpu-check.sh runs it with OCEAN_REQUIRE_CUDA=1 on an NVIDIA "
+                        "machine";
+      }
+      OCEAN_SKIP_OR_FAIL("backend '" + GetParam() + "' unavailable: " + info.detail);
     }
   }
 };
@@ -52,7 +102,7 @@ TEST_P(Conformance, EveryOutputMatchesTheCpuReference) {
     SCOPED_TRACE(c.name);
     auto reference =
         ocean::cpu::make_cpu_backend({.pipeline = ocean::cpu::CpuPipeline::scalar_reference});
-    auto backend = ocean::make_backend(GetParam());
+    auto backend = make(GetParam());
     ASSERT_TRUE(backend.ok()) << backend.status().message();
     const auto frames =
         ocean::conformance::run_case(c, *reference, *backend.value(), *runner, bounds);
@@ -81,12 +131,10 @@ TEST_P(Conformance, EveryOutputMatchesTheCpuReference) {
     }
 #ifdef OCEAN_HAS_VULKAN
     if (auto* vk = dynamic_cast<ocean::vk::VulkanBackend*>(backend.value().get())) {
-      EXPECT_TRUE(vk->status().ok()) << vk->status().message();
       EXPECT_TRUE(vk->context().validation);
-      EXPECT_EQ(vk->context().validation_messages.load(), 0u)
-          << vk->context().last_validation_message;
     }
 #endif
+    expect_backend_ok(*backend.value());
   }
   // The two sides are different computations (other FFT orders, other sin/cos): comparing a
   // pipeline with itself would give zero everywhere and prove nothing.
@@ -121,8 +169,8 @@ TEST_P(Conformance, OptionalOutputsAreLeftOutAndTheRestUnchanged) {
           ocean::FrameOutputs{.jacobian = false}}) {
       ocean::SimulationConfig lean = config;
       lean.outputs = want;
-      auto full = ocean::make_backend(GetParam());
-      auto part = ocean::make_backend(GetParam());
+      auto full = make(GetParam());
+      auto part = make(GetParam());
       ASSERT_TRUE(full.ok() && part.ok());
       ASSERT_TRUE(full.value()->configure(config, *runner).ok());
       ASSERT_TRUE(part.value()->configure(lean, *runner).ok());
@@ -152,13 +200,7 @@ TEST_P(Conformance, OptionalOutputsAreLeftOutAndTheRestUnchanged) {
         }
       }
       EXPECT_GT(foamy, 0.0) << "no foam: the packed maps' blue channel was not exercised";
-#ifdef OCEAN_HAS_VULKAN
-      if (auto* vk = dynamic_cast<ocean::vk::VulkanBackend*>(part.value().get())) {
-        EXPECT_TRUE(vk->status().ok()) << vk->status().message();
-        EXPECT_EQ(vk->context().validation_messages.load(), 0u)
-            << vk->context().last_validation_message;
-      }
-#endif
+      expect_backend_ok(*part.value());
     }
   }
 }
@@ -301,9 +343,11 @@ TEST(ConformanceBounds, CatchAnErrorTenTimesTheLargestMeasured) {
   }
   EXPECT_EQ(&conformance::bounds_for("cpu"), &conformance::kCpuBounds);
   EXPECT_EQ(&conformance::bounds_for("vulkan"), &conformance::kDeviceBounds);
+  EXPECT_EQ(&conformance::bounds_for("cuda"), &conformance::kDeviceBounds);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, Conformance, ::testing::Values("cpu", "vulkan"),
+INSTANTIATE_TEST_SUITE_P(Backends, Conformance,
+                         ::testing::Values("cpu", "vulkan", "cuda", "cuda_kernels"),
                          [](const ::testing::TestParamInfo<std::string>& param) {
                            return param.param;
                          });

@@ -135,7 +135,7 @@ def main(argv):
     t.error(lib.ocean_simulator_heights(sim, doubles([float("nan")]), doubles([0.0]), 1, heights),
             INVALID_ARGUMENT, "x[0] = nan", "NaN position")
     t.error(lib.ocean_simulator_create(config, b"cuda", ctypes.byref(ctypes.c_void_p())),
-            UNSUPPORTED, "unsupported: backend 'cuda'", "backend not built in")
+            UNSUPPORTED, "CUDA", "backend not built in, or no CUDA device")
     t.ok(lib.ocean_simulator_step(sim, 2.0), "step after errors")
     t.check(t.message() == "", "a success clears the message")
 

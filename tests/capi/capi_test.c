@@ -252,7 +252,8 @@ static void test_errors(const char* tmpdir) {
 
   ERROR(ocean_simulator_create(config, "warp", &sim), OCEAN_INVALID_ARGUMENT,
         "backend = 'warp' is unknown");
-  ERROR(ocean_simulator_create(config, "cuda", &sim), OCEAN_UNSUPPORTED, "unsupported: ");
+  /* Built without CUDA, or no usable NVIDIA device ("no CUDA device: ..."). */
+  ERROR(ocean_simulator_create(config, "cuda", &sim), OCEAN_UNSUPPORTED, "CUDA");
   CHECK(sim == NULL);
   {
     ocean_status vulkan = ocean_simulator_create(config, "vulkan", &sim);

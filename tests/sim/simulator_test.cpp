@@ -320,10 +320,14 @@ TEST(Simulator, LoopPeriodThatFreezesTheLongestWavesIsRejected) {
 }
 
 TEST(Backends, UnavailableBackendsSaySo) {
-  const auto cuda = ocean::make_backend("cuda");  // vulkan depends on the build and the machine
+  // vulkan depends on the build and the machine; cuda too, but neither CI nor this test's usual
+  // machines have an NVIDIA driver: built without CUDA, or built with it and no device.
+  const auto cuda = ocean::make_backend("cuda");
   ASSERT_FALSE(cuda.ok());
   EXPECT_EQ(cuda.status().code(), ocean::ErrorCode::unsupported);
-  EXPECT_NE(cuda.status().message().find("built without"), std::string::npos);
+  const std::string why = cuda.status().message();
+  EXPECT_TRUE(why.find("built without") != std::string::npos || why.starts_with("no CUDA device: "))
+      << why;
   EXPECT_EQ(ocean::make_backend("metal").status().code(), ocean::ErrorCode::invalid_argument);
   EXPECT_TRUE(ocean::make_backend("cpu").ok());
 }

@@ -3,6 +3,15 @@
 
 namespace ocean::cli::bench {
 
+SimulationConfig bench_config(int resolution, int cascades, const FrameOutputs& outputs) {
+  static const std::vector<double> kSizes = {1000.0, 233.0, 57.0, 13.0};
+  SimulationConfig config;
+  config.resolution = resolution;
+  config.cascade_patch_sizes_m.assign(kSizes.begin(), kSizes.begin() + cascades);
+  config.outputs = outputs;
+  return config;
+}
+
 Stats stats_of(std::vector<double> seconds) {
   std::sort(seconds.begin(), seconds.end());
   const std::size_t n = seconds.size();

@@ -20,6 +20,10 @@ struct Stats {
 /// Median, minimum and maximum of `seconds` (not empty), in ms.
 Stats stats_of(std::vector<double> seconds);
 
+/// What every backend's row measures: the default sea, central differences, `cascades` of the
+/// first of 1000, 233, 57 and 13 m (cascades ≤ 4), N = resolution, the given outputs.
+SimulationConfig bench_config(int resolution, int cascades, const FrameOutputs& outputs);
+
 using Clock = std::chrono::steady_clock;
 
 // Times body() repeatedly: 2 warm-up runs, then at least 5 runs and about min_time seconds

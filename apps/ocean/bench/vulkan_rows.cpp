@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "bench/harness.hpp"
 #include "bench/report.hpp"
 #include "cli_common.hpp"
 #include "progress.hpp"
@@ -16,16 +17,12 @@ namespace ocean::cli::bench {
 int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>& cascades,
                      const FrameOutputs& outputs, const std::string& outputs_name, bool json) {
 #ifdef OCEAN_HAS_VULKAN
-  const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   Progress progress("bench", static_cast<long long>(resolutions.size() * cascades.size()));
   long long done = 0;
   for (int n : resolutions) {
     for (int c : cascades) {
-      SimulationConfig config;
-      config.resolution = n;
-      config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
-      config.outputs = outputs;
+      const SimulationConfig config = bench_config(n, c, outputs);
       Result<vk::StageTimings> t = vk::benchmark(config, 20);
       if (!t.ok()) return report(t.status());
       const vk::StageTimings& v = t.value();

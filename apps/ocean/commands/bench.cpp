@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "bench/bandwidth.hpp"
+#include "bench/cuda_rows.hpp"
 #include "bench/fftw_engine.hpp"
 #include "bench/harness.hpp"
 #include "bench/parse.hpp"
@@ -73,9 +74,9 @@ struct BenchOptions {
 };
 
 int run_bench(const BenchOptions& o) {
-  if (o.backend != "cpu" && o.backend != "vulkan") {
+  if (o.backend != "cpu" && o.backend != "vulkan" && o.backend != "cuda") {
     return report(invalid_argument("--backend = '" + excerpt(o.backend) +
-                                   "' is unknown: must be one of cpu, vulkan"));
+                                   "' is unknown: must be one of cpu, vulkan, cuda"));
   }
   Result<std::vector<int>> resolutions = parse_ints(kResolution, o.resolutions, false);
   if (!resolutions.ok()) return report(resolutions.status());
@@ -103,11 +104,14 @@ int run_bench(const BenchOptions& o) {
     return report(invalid_argument(
         "--table-one times the CPU and the Vulkan backend back to back: leave out --backend and "
         "--frame-interval"));
-  if (o.backend == "vulkan") {
+  if (o.backend != "cpu") {
     if (interval > 0.0) {
       return report(invalid_argument("--frame-interval = " + excerpt(o.frame_interval) +
                                      ": only the CPU backend's frames can be paced"));
     }
+    if (o.backend == "cuda")
+      return bench::run_cuda_bench(resolutions.value(), cascades.value(), outputs, o.outputs,
+                                   o.json);
     return run_vulkan_bench(resolutions.value(), cascades.value(), outputs, o.outputs, o.json);
   }
   Result<double> min_time = parse(kMinTime, o.min_time);
@@ -124,7 +128,6 @@ int run_bench(const BenchOptions& o) {
       measure_copy_bandwidth_gbps(*make_tbb_runner(), std::size_t{256} << 20, 3);
   const double cache_bandwidth =
       measure_copy_bandwidth_gbps(*make_tbb_runner(), std::size_t{16} << 20, 30);
-  const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   std::vector<Row> rows;
   std::string fftw_note;
   Progress progress("bench",
@@ -135,10 +138,7 @@ int run_bench(const BenchOptions& o) {
     for (int c : cascades.value()) {
       for (int t_request : threads.value()) {
         const int t = t_request == 0 ? hardware : t_request;
-        SimulationConfig config;  // the default sea, central differences
-        config.resolution = n;
-        config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + c);
-        config.outputs = outputs;
+        const SimulationConfig config = bench::bench_config(n, c, outputs);
         std::shared_ptr<TaskRunner> runner = make_tbb_runner(t);
         Row row{n,
                 c,
@@ -229,7 +229,8 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   add_option(*cmd, kMinTime, options->min_time, "Seconds of timed runs per measurement")
       ->capture_default_str();
-  cmd->add_option("--backend", options->backend, "Backend to measure")->capture_default_str();
+  cmd->add_option("--backend", options->backend, "Backend to measure: cpu, vulkan or cuda")
+      ->capture_default_str();
   cmd->add_option("--outputs", options->outputs,
                   "Frame outputs: all (every array), or textures (displacement float3 + half4 and "
                   "the RGBA8 chain, no float normal, Jacobian or foam arrays)")

@@ -1,5 +1,5 @@
 // `ocean info`: the simulation backends of this build (available or why not) and the Vulkan
-// devices of this machine, as a table or JSON.
+// and CUDA devices of this machine, as a table or JSON.
 #include <iostream>
 #include <memory>
 
@@ -8,6 +8,9 @@
 #include "ocean/backends.hpp"
 #ifdef OCEAN_HAS_VULKAN
 #include "ocean/vk.hpp"
+#endif
+#ifdef OCEAN_HAS_CUDA
+#include "ocean/cuda/simulation.hpp"
 #endif
 
 namespace ocean::cli {
@@ -38,9 +41,30 @@ int run_info(bool json) {
     vulkan_status = found.status().message();
   }
 #endif
+  nlohmann::ordered_json cuda_devices = nlohmann::ordered_json::array();
+  std::string cuda_status = "built without CUDA", cuda_versions;
+#ifdef OCEAN_HAS_CUDA
+  cuda_versions = cuda::runtime_versions();
+  Result<std::vector<cuda::DeviceInfo>> cuda_found = cuda::list_devices();
+  cuda_status = cuda_found.ok() ? "ok" : cuda_found.status().message();
+  for (const cuda::DeviceInfo& d :
+       cuda_found.ok() ? cuda_found.value() : std::vector<cuda::DeviceInfo>{}) {
+    cuda_devices.push_back({{"index", d.index},
+                            {"name", d.name},
+                            {"compute_capability", std::to_string(d.compute_major) + "." +
+                                                       std::to_string(d.compute_minor)},
+                            {"memory_bytes", d.memory_bytes},
+                            {"multiprocessors", d.multiprocessors},
+                            {"usable", d.usable},
+                            {"reason", d.reason}});
+  }
+#endif
   if (json) {
     print_json(
-        {{"backends", backends}, {"vulkan", {{"status", vulkan_status}, {"devices", devices}}}});
+        {{"backends", backends},
+         {"vulkan", {{"status", vulkan_status}, {"devices", devices}}},
+         {"cuda",
+          {{"status", cuda_status}, {"versions", cuda_versions}, {"devices", cuda_devices}}}});
     return kExitOk;
   }
   std::cout << "backends:\n";
@@ -59,6 +83,16 @@ int run_info(bool json) {
               << (d["usable"].get<bool>() ? "" : " unusable: " + d["reason"].get<std::string>())
               << "\n";
   }
+  std::cout << "cuda devices:" << (cuda_devices.empty() ? " none (" + cuda_status + ")" : "")
+            << (cuda_versions.empty() ? "" : " [" + cuda_versions + "]") << "\n";
+  for (const auto& d : cuda_devices) {
+    std::cout << "  [" << d["index"].get<int>() << "] " << d["name"].get<std::string>()
+              << " (compute " << d["compute_capability"].get<std::string>() << ", "
+              << d["memory_bytes"].get<std::uint64_t>() / (std::uint64_t{1} << 20) << " MiB, "
+              << d["multiprocessors"].get<int>() << " SMs)"
+              << (d["usable"].get<bool>() ? "" : " unusable: " + d["reason"].get<std::string>())
+              << "\n";
+  }
   return kExitOk;
 }
 
@@ -67,7 +101,7 @@ int run_info(bool json) {
 Command add_info_command(CLI::App& app) {
   auto json = std::make_shared<bool>(false);
   CLI::App* command =
-      app.add_subcommand("info", "list the simulation backends and the Vulkan devices");
+      app.add_subcommand("info", "list the simulation backends and the Vulkan and CUDA devices");
   command->add_flag("--json", *json, "print JSON");
   return {command, [json] { return run_info(*json); }};
 }

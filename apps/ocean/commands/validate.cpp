@@ -14,6 +14,9 @@
 #ifdef OCEAN_HAS_VULKAN
 #include "ocean/vk/simulation.hpp"
 #endif
+#ifdef OCEAN_HAS_CUDA
+#include "ocean/cuda/simulation.hpp"
+#endif
 
 namespace ocean::cli {
 
@@ -52,6 +55,10 @@ int run_validate(const ValidateOptions& o) {
     if (auto* v = dynamic_cast<vk::VulkanBackend*>(backend.value().get()))
       device = v->context().info.name;
 #endif
+#ifdef OCEAN_HAS_CUDA
+    if (auto* cu = dynamic_cast<cuda::CudaBackend*>(backend.value().get()))
+      device = cu->device_name();
+#endif
     Result<std::vector<conformance::FrameResult>> frames =
         conformance::run_case(c, *reference, *backend.value(), *runner, bounds);
     if (!frames.ok()) return report(frames.status());
@@ -60,6 +67,11 @@ int run_validate(const ValidateOptions& o) {
 #ifdef OCEAN_HAS_VULKAN
     if (auto* v = dynamic_cast<vk::VulkanBackend*>(backend.value().get()); v && !v->status().ok())
       return report(v->status());
+#endif
+#ifdef OCEAN_HAS_CUDA
+    if (auto* cu = dynamic_cast<cuda::CudaBackend*>(backend.value().get());
+        cu && !cu->status().ok())
+      return report(cu->status());
 #endif
     all.merge(e);
     nlohmann::ordered_json j = {{"case", c.name}, {"pass", e.pass(bounds)}};

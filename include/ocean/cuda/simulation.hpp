@@ -1,0 +1,126 @@
+// ocean/cuda/simulation.hpp — the CUDA simulation backend: the CPU reference pipeline (evolution,
+// inverse FFTs of height, displacement and slopes, finalize: normals, Jacobian, foam, RGBA8 with
+// its mips, half4) as CUDA kernels and cuFFT (or its own FFT kernels) transforms, each cascade on
+// a stream of its own, the whole frame one CUDA graph; results read back into the Frame arrays.
+//
+// Conformance (tests/backends/conformance_test.cpp, src/backends/cuda/README.md): every output
+// within conformance::kDeviceBounds of the CPU backend's scalar reference pipeline, the bound the
+// Vulkan backend is held to.
+//
+// Contract: make_cuda_backend() answers `unsupported` with a message starting "no CUDA device: "
+// when the machine has no usable device (no driver, a driver older than the runtime, no GPU, a
+// GPU this build has no code for). configure() allocates every device
+// buffer, pinned host buffer, stream, event, cuFFT plan and the frame's graph; step(),
+// submit() and read() allocate nothing. A device failure during a frame leaves the Frame arrays
+// unchanged and is reported by status() with a one-line message.
+// Threading: one thread drives a backend at a time (the Simulator guarantees this).
+// This header includes no CUDA header; its functions exist in builds with the CUDA backend
+// (CMake option OCEAN_CUDA; OCEAN_HAS_CUDA is defined for the code that links it).
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "ocean/sim.hpp"
+
+namespace ocean::cuda {
+
+namespace detail {
+struct DeviceState;  // every CUDA object of a configured simulation (src/backends/cuda)
+}
+
+/// The inverse FFT between evolution and finalize.
+enum class FftEngine {
+  automatic,  ///< cuFFT where libcufft loads, else the own kernels
+  cufft,      ///< NVIDIA's cuFFT (loaded at run time); `unsupported` when it does not load
+  kernels,    ///< the backend's own shared-memory Stockham kernels (the Vulkan backend's port),
+              ///< with the evolution fused into the row transforms
+};
+/// "cufft" or "kernels" ("automatic" for automatic).
+std::string_view to_string(FftEngine engine);
+
+/// One CUDA device as the runtime reports it.
+struct DeviceInfo {
+  int index = 0;
+  std::string name;
+  int compute_major = 0;  ///< compute capability, e.g. 9.0 for an H100/H200
+  int compute_minor = 0;
+  std::uint64_t memory_bytes = 0;
+  int multiprocessors = 0;
+  bool usable = false;  ///< this build carries code the device runs (see reason otherwise)
+  std::string reason;
+};
+
+/// What the CUDA runtime sees: the devices, or an error whose message starts "no CUDA device: "
+/// (unsupported) saying why there are none.
+Result<std::vector<DeviceInfo>> list_devices();
+/// Driver and runtime versions as "driver 13.0, runtime 13.0" (driver "none" without one).
+std::string runtime_versions();
+
+/// GPU time of one frame from CUDA events around the frame's graph, milliseconds.
+struct FrameTimings {
+  double simulation_ms = 0.0;  ///< every stage, cascades on concurrent streams, no readback
+  double serial_ms = 0.0;      ///< the same work with every cascade on one stream
+  double readback_ms = 0.0;    ///< device → pinned host copies of the frame's outputs
+  /// serial_ms / simulation_ms: how much the concurrent streams gain (1 = none).
+  [[nodiscard]] double overlap() const {
+    return simulation_ms > 0.0 ? serial_ms / simulation_ms : 0.0;
+  }
+};
+
+class CudaBackend final : public Backend {
+ public:
+  /// Runs on device `device` (an index of list_devices()) with `fft` (cufft or kernels, already
+  /// resolved: cuFFT must have loaded); see make_cuda_backend.
+  CudaBackend(int device, FftEngine fft);
+  ~CudaBackend() override;
+  CudaBackend(const CudaBackend&) = delete;
+  CudaBackend& operator=(const CudaBackend&) = delete;
+
+  [[nodiscard]] std::string_view name() const override { return "cuda"; }
+  /// Out of device memory and unsupported configurations answer `unsupported` naming the limit.
+  Status configure(const SimulationConfig& config, TaskRunner& runner) override;
+  void allocate(Frame& frame) const override;
+  /// submit(time_s) then read(out).
+  void step(double time_s, Frame& out) override;
+
+  /// Asynchronous use: submit() launches the frame's graph at time_s and returns; read() waits
+  /// for it and copies the outputs into `out`.
+  Status submit(double time_s);
+  Status read(Frame& out);
+
+  /// The first failure of a frame since configure(); ok while everything works.
+  [[nodiscard]] const Status& status() const { return status_; }
+  /// The device's name, as list_devices() gives it.
+  [[nodiscard]] const std::string& device_name() const { return device_name_; }
+  /// The FFT engine in use: FftEngine::cufft or FftEngine::kernels.
+  [[nodiscard]] FftEngine fft_engine() const { return fft_; }
+  /// Times `frames` launches of the simulation graph (concurrent and serial) and of the
+  /// readback after one warm-up frame; means. Needs a configured backend.
+  Result<FrameTimings> time_frames(int frames);
+
+ private:
+  int device_;
+  FftEngine fft_;
+  std::string device_name_;
+  std::unique_ptr<detail::DeviceState> gpu_;
+  SimulationConfig config_;
+  Status status_;
+  double last_time_s_ = 0.0;
+  bool has_stepped_ = false;
+  bool pending_ = false;
+  double pending_time_s_ = 0.0;
+};
+
+/// The first usable device's backend, or `unsupported` "no CUDA device: ..." (see the contract);
+/// FftEngine::cufft where cuFFT does not load: `unsupported` naming the library.
+Result<std::unique_ptr<CudaBackend>> make_cuda_backend(FftEngine fft = FftEngine::automatic);
+
+/// Configures a backend for `config` and returns CudaBackend::time_frames(frames).
+Result<FrameTimings> benchmark(const SimulationConfig& config, int frames,
+                               FftEngine fft = FftEngine::automatic);
+
+}  // namespace ocean::cuda

@@ -1,0 +1,242 @@
+// The CUDA backend: host side. configure() generates every cascade's spectrum with the CPU code
+// (again at each reconfigure), uploads it with the exact phase rates of M.7.3, creates the
+// device state (device_state.cpp) and captures the frame into a graph; a frame rewrites the
+// per-frame parameters, launches the graph and copies the pinned readback into the Frame.
+//
+// This work is based on: Aebi, VR Ocean, §4.2 (stage chain), §4.2.1 (spectrum regenerated on
+// demand); docs/math.md (M.7.3) for the exact looping phase.
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "device_state.hpp"
+#include "errors.hpp"
+
+namespace ocean::cuda {
+
+using detail::DeviceState;
+using detail::to_status;
+
+namespace {
+
+// The configuration's scalars as the kernels read them.
+detail::CascadeArgs base_args(const SimulationConfig& config, const detail::Layout& l) {
+  detail::CascadeArgs a;
+  a.n = l.resolution;
+  a.log2n = l.log2_resolution;
+  a.planes = l.planes;
+  a.normal_method = config.normals == NormalMethod::analytic ? detail::kNormalsAnalytic
+                    : config.normals == NormalMethod::sobel  ? detail::kNormalsSobel
+                                                             : detail::kNormalsCentral;
+  a.blue_is_foam = config.blue_channel == BlueChannel::foam ? 1 : 0;
+  a.choppiness = static_cast<float>(config.choppiness);
+  a.j_start = static_cast<float>(config.foam.jacobian_start);
+  a.j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
+  const float r = static_cast<float>(config.roughness);
+  a.base_length = 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));      // Aebi, VR Ocean, eq. 49
+  const float t = std::clamp(3.0f * a.base_length - 2.0f, 0.0f, 1.0f);  // eq. 53
+  a.base_smoothness = 1.0f - std::sqrt((1.0f - t) * (1.0f + 0.15f * t));
+  for (int m = 0; m <= l.log2_resolution; ++m)
+    a.mip_offset[m] = static_cast<std::uint32_t>(mip_offset(l.resolution, m));
+  return a;
+}
+
+}  // namespace
+
+std::string_view to_string(FftEngine engine) {
+  switch (engine) {
+    case FftEngine::cufft: return "cufft";
+    case FftEngine::kernels: return "kernels";
+    case FftEngine::automatic: break;
+  }
+  return "automatic";
+}
+
+CudaBackend::CudaBackend(int device, FftEngine fft) : device_(device), fft_(fft) {
+  cudaDeviceProp p{};
+  if (cudaGetDeviceProperties(&p, device) == cudaSuccess) device_name_ = p.name;
+}
+CudaBackend::~CudaBackend() {
+  (void)cudaSetDevice(device_);
+  gpu_.reset();
+}
+
+Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runner*/) {
+  Result<detail::Layout> layout = detail::make_layout(config);
+  if (!layout.ok()) return layout.status();
+  const detail::Layout& l = layout.value();
+  Result<SeaState> sea = SeaState::make(config.sea);
+  if (!sea.ok()) return sea.status();
+  const detail::CufftLibrary* cufft = nullptr;
+  if (fft_ == FftEngine::cufft) {
+    Result<const detail::CufftLibrary*> loaded = detail::load_cufft();
+    if (!loaded.ok()) return loaded.status();
+    cufft = loaded.value();
+  }
+  if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return s;
+
+  gpu_.reset();  // frees the previous configuration first (lower peak memory)
+  auto gpu = std::make_unique<DeviceState>();
+  if (Status s = detail::create_device_state(*gpu, l, cufft, base_args(config, l)); !s.ok())
+    return s;
+  std::vector<double> rate(l.texels);
+  std::vector<float> twiddle(2 * static_cast<std::size_t>(l.resolution));
+  for (int t = 0; t < l.resolution; ++t) {  // e^{+2πi·t/N}, double precision then float
+    const double angle = 2.0 * kPi * t / l.resolution;
+    twiddle[2 * static_cast<std::size_t>(t)] = static_cast<float>(std::cos(angle));
+    twiddle[2 * static_cast<std::size_t>(t) + 1] = static_cast<float>(std::sin(angle));
+  }
+  for (int c = 0; c < l.cascades; ++c) {
+    const double size_m = config.cascade_patch_sizes_m[static_cast<std::size_t>(c)];
+    detail::CascadeArgs& args = gpu->args[static_cast<std::size_t>(c)];
+    args.dk = static_cast<float>(2.0 * kPi / size_m);
+    args.inv_spacing = static_cast<float>(l.resolution / size_m);
+    // Spectra on the host (the CPU reference code) and the phase rate of EvolutionPhase (M.7.3).
+    Result<InitialSpectrum> h0 = make_initial_spectrum(
+        sea.value(), cascade_spectrum_params(config, static_cast<std::size_t>(c)));
+    if (!h0.ok())
+      return Status(h0.status().code(),
+                    "cascade " + std::to_string(c) + ": " + h0.status().message());
+    for (std::size_t i = 0; i < l.texels; ++i)
+      rate[i] = EvolutionPhase::rate(h0.value().omega[i], config.loop_period_s);
+    char* block = gpu->device + static_cast<std::size_t>(c) * l.cascade_bytes;
+    if (Status s = to_status(cudaMemcpy(block + l.spectrum.offset, h0.value().packed.data(),
+                                        l.spectrum.bytes, cudaMemcpyHostToDevice),
+                             "the spectrum upload");
+        !s.ok())
+      return s;
+    if (Status s = to_status(cudaMemcpy(block + l.phase_rate.offset, rate.data(),
+                                        l.phase_rate.bytes, cudaMemcpyHostToDevice),
+                             "the spectrum upload");
+        !s.ok())
+      return s;
+    if (Status s = to_status(cudaMemcpy(block + l.twiddle.offset, twiddle.data(), l.twiddle.bytes,
+                                        cudaMemcpyHostToDevice),
+                             "the twiddle upload");
+        !s.ok())
+      return s;
+  }
+  // The uploads and the memset ran on the legacy default stream, with which the backend's
+  // non-blocking streams do not synchronise (and a pageable copy may return before its DMA ends).
+  if (Status s = to_status(cudaDeviceSynchronize(), "the spectrum upload"); !s.ok()) return s;
+  // One eager frame (loads every kernel and cuFFT's, and reports a failure where it happens),
+  // then the same schedule captured once into the graph every step launches.
+  const detail::Schedule frame = detail::make_schedule(l, true, true);
+  if (Status s = detail::issue(*gpu, frame, false); !s.ok()) return s;
+  if (Status s = to_status(cudaStreamSynchronize(gpu->streams.front()), "the first frame"); !s.ok())
+    return s;
+  if (Status s = detail::issue(*gpu, frame, true, &gpu->frame); !s.ok()) return s;
+  gpu_ = std::move(gpu);
+  config_ = config;
+  status_ = {};
+  has_stepped_ = false;
+  pending_ = false;
+  return {};
+}
+
+void CudaBackend::allocate(Frame& frame) const { allocate_frame(config_, frame); }
+
+Status CudaBackend::submit(double time_s) {
+  if (!status_.ok()) return status_;
+  if (!gpu_) return status_ = Status(ErrorCode::internal, "CUDA backend used before configure()");
+  // Foam accumulates over the time since the previous step; a first step or a jump back in time
+  // starts it afresh (as the CPU backend).
+  const bool reset_foam = !has_stepped_ || time_s < last_time_s_;
+  const double dt = reset_foam ? 0.0 : time_s - last_time_s_;
+  *gpu_->params_host = {.clock = EvolutionPhase(time_s, config_.loop_period_s).clock(),
+                        .foam_decay = static_cast<float>(config_.foam.decay_per_s * dt),
+                        .reset_foam = reset_foam ? 1u : 0u};
+  if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return status_ = s;
+  if (Status s = to_status(cudaGraphLaunch(gpu_->frame, gpu_->streams.front()), "cudaGraphLaunch");
+      !s.ok())
+    return status_ = s;
+  pending_ = true;
+  pending_time_s_ = time_s;
+  last_time_s_ = time_s;
+  has_stepped_ = true;
+  return {};
+}
+
+Status CudaBackend::read(Frame& out) {
+  if (!pending_) return status_;
+  pending_ = false;
+  if (Status s = to_status(cudaStreamSynchronize(gpu_->streams.front()), "a frame"); !s.ok())
+    return status_ = s;
+  const detail::Layout& l = gpu_->layout;
+  for (std::size_t c = 0; c < out.cascades.size(); ++c) {
+    CascadeFrame& f = out.cascades[c];
+    const char* block = gpu_->host + c * l.readback.bytes;
+    const auto at = [](auto& v) -> void* { return v.empty() ? nullptr : v.data(); };
+    void* dst[detail::kOutputs] = {at(f.displacement), at(f.displacement_half),
+                                   at(f.normal),       at(f.jacobian),
+                                   at(f.foam),         at(f.packed_mips)};
+    for (int o = 0; o < detail::kOutputs; ++o) {
+      const detail::Region& r = l.outputs[o];
+      if (dst[o] != nullptr && r.bytes != 0) std::memcpy(dst[o], block + r.offset, r.bytes);
+    }
+  }
+  out.time_s = pending_time_s_;
+  ++out.index;
+  return {};
+}
+
+void CudaBackend::step(double time_s, Frame& out) {
+  if (submit(time_s).ok()) (void)read(out);
+}
+
+Result<FrameTimings> CudaBackend::time_frames(int frames) {
+  if (frames < 1) return invalid_argument("frames = " + std::to_string(frames) + " must be ≥ 1");
+  if (!gpu_) return Status(ErrorCode::internal, "CUDA backend timed before configure()");
+  if (!status_.ok()) return status_;
+  if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return s;
+  DeviceState& g = *gpu_;
+  for (auto [graph, concurrent] : {std::pair{&g.simulation, true}, std::pair{&g.serial, false}}) {
+    if (*graph != nullptr) continue;
+    if (Status s =
+            detail::issue(g, detail::make_schedule(g.layout, concurrent, false), true, graph);
+        !s.ok())
+      return s;
+  }
+  cudaStream_t origin = g.streams.front();
+  const detail::Layout& l = g.layout;
+  // Mean GPU time of `frames` runs of `enqueue` on the origin stream, after one warm-up run.
+  const auto time = [&](auto enqueue) -> Result<double> {
+    double total_ms = 0.0;
+    for (int i = 0; i <= frames; ++i) {
+      g.params_host->clock = (i + 1) / 60.0;
+      g.params_host->reset_foam = 0;
+      if (Status s = to_status(cudaEventRecord(g.start, origin), "cudaEventRecord"); !s.ok())
+        return s;
+      if (Status s = enqueue(); !s.ok()) return s;
+      if (Status s = to_status(cudaEventRecord(g.stop, origin), "cudaEventRecord"); !s.ok())
+        return s;
+      if (Status s = to_status(cudaEventSynchronize(g.stop), "a timed frame"); !s.ok()) return s;
+      float ms = 0.0f;
+      if (Status s = to_status(cudaEventElapsedTime(&ms, g.start, g.stop), "cudaEventElapsedTime");
+          !s.ok())
+        return s;
+      if (i > 0) total_ms += ms;
+    }
+    return total_ms / frames;
+  };
+  const auto launch = [&](cudaGraphExec_t graph) {
+    return [&, graph] { return to_status(cudaGraphLaunch(graph, origin), "cudaGraphLaunch"); };
+  };
+  Result<double> concurrent = time(launch(g.simulation));
+  if (!concurrent.ok()) return concurrent.status();
+  Result<double> serial = time(launch(g.serial));
+  if (!serial.ok()) return serial.status();
+  detail::Schedule copies;  // the frame's readback alone, on the origin stream
+  for (int c = 0; c < l.cascades; ++c)
+    copies.ops.push_back({.kind = detail::Op::readback, .cascade = c});
+  Result<double> readback = time([&] { return detail::issue(g, copies, false); });
+  if (!readback.ok()) return readback.status();
+  return FrameTimings{.simulation_ms = concurrent.value(),
+                      .serial_ms = serial.value(),
+                      .readback_ms = readback.value()};
+}
+
+}  // namespace ocean::cuda
