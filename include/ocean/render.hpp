@@ -166,7 +166,7 @@ class Renderer {
   /// array of the wrong size.
   Status set_local_layer(const LocalLayerGrid& grid);
   /// The damping of the cascades by a mask and a bathymetry (docs/waves.md W.12–W.13;
-  /// docs/rendering.md R.20) from the next draw on: each cascade's displacement, slope and foam
+  /// docs/rendering.md R.24) from the next draw on: each cascade's displacement, slope and foam
   /// scaled by its weight, and shallow water tinted by the seabed seen through it (pure water's
   /// absorption). An empty grid removes it. Same errors and copying as set_local_layer().
   Status set_damping(const DampingGrid& grid);

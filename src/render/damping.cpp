@@ -1,4 +1,4 @@
-// The damping of the bands as the renderer samples it (docs/rendering.md R.20): an RGBA16F 2-D
+// The damping of the bands as the renderer samples it (docs/rendering.md R.24): an RGBA16F 2-D
 // array of three layers (the weights of cascades 0–3 and 4–7, the depth), filled from a
 // DampingGrid through a staging buffer. Until the first set_damping() it is 1×1 and the uniforms
 // say "no damping", so the descriptor is always valid.

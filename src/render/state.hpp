@@ -84,7 +84,7 @@ struct Renderer::State {
   bool local_pending = false;
   std::uint32_t local_side = 0;
   shader::LocalLayerUniforms local{};
-  // The damping (R.20): an RGBA16F array of 3 layers (weights 0–3, weights 4–7, depth), 1×1
+  // The damping (R.24): an RGBA16F array of 3 layers (weights 0–3, weights 4–7, depth), 1×1
   // until set_damping(); its staging buffer and placement.
   vk::Image damping_image;
   vk::Buffer damping_staging;

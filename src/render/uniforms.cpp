@@ -81,7 +81,7 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.local.foam_j_full = f(st.foam_ramp[1]);
   u.damping = st.damping;
   // Pure water's absorption at 650, 550 and 450 nm (Pope & Fry 1997: 0.340, 0.0565 and
-  // 0.0092 per m) and a sandy bottom's albedo, a chosen value (R.20).
+  // 0.0092 per m) and a sandy bottom's albedo, a chosen value (R.24).
   u.damping.absorption_per_m = {0.340f, 0.0565f, 0.0092f};
   u.damping.bottom_albedo = {0.45f, 0.40f, 0.30f};
 }

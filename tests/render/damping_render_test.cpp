@@ -1,4 +1,4 @@
-// The damping in the picture (docs/rendering.md R.20): a grid that damps every cascade but the
+// The damping in the picture (docs/rendering.md R.24): a grid that damps every cascade but the
 // first and holds shallow water over one half of a straight-down view calms and tints that half
 // and leaves the other half's pixels as they were. Skips where no Vulkan device exists (fails
 // with OCEAN_REQUIRE_DEVICES=1).

@@ -56,7 +56,7 @@ constexpr NumberOption<double> kWarmup{
 
 enum class OutputKind { png, exr, mp4 };
 
-// Cells per side of the damping grid the renderer samples (docs/rendering.md R.20).
+// Cells per side of the damping grid the renderer samples (docs/rendering.md R.24).
 constexpr int kDampingResolution = 512;
 
 struct Inputs {

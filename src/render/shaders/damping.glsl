@@ -1,5 +1,5 @@
 // damping.glsl — the damping of the cascades by a mask and a bathymetry (docs/waves.md
-// W.12–W.13; docs/rendering.md R.20): per-band amplitude weights and the water depth, baked on
+// W.12–W.13; docs/rendering.md R.24): per-band amplitude weights and the water depth, baked on
 // the CPU (waves::Damping::band_weights) into a square world grid; weight 1 and deep water
 // outside it. The vertex shader scales each cascade's displacement, the fragment shader its
 // slope, foam and roughness, and tints shallow water by the seabed seen through it.
@@ -30,7 +30,7 @@ DampingSample damping_at(vec2 xz) {
 float band_weight(DampingSample d, int c) { return c < 4 ? d.low[c] : d.high[c - 4]; }
 
 // Light from a seabed of albedo ρ at depth d that leaves the surface: down and up through d of
-// water, T = exp(−2·a·d) per channel with pure water's absorption a (R.20). Irradiance E at the
+// water, T = exp(−2·a·d) per channel with pure water's absorption a (R.24). Irradiance E at the
 // surface; a Lambertian bottom sends ρ·E/π.
 vec3 seabed_radiance(float depth_m, vec3 irradiance) {
   vec3 t = exp(-2.0 * u.damping.absorption_per_m * depth_m);

@@ -56,7 +56,7 @@ void main() {
   float footprint = max(length(dx), length(dy));
   float ratio = far_ratio_at(world_xz);
   vec2 blend = preserving_weights(ratio);  // (simulation, far field)
-  DampingSample damping = damping_at(world_xz);  // mask and bathymetry (R.20)
+  DampingSample damping = damping_at(world_xz);  // mask and bathymetry (R.24)
   for (int c = 0; c < cascades; ++c) {
     float inv_size = 1.0 / u.cascades[c].patch_size_m;
     vec2 uv = world_xz * inv_size + 0.5 / u.cascades[c].resolution;
@@ -150,7 +150,7 @@ void main() {
   // surface and by the sky, plus forward scattering through crests lit from behind.
   vec3 sky_e = u.sky_ambient;
   float sun_in = max(L.y, 0.0) * (1.0 - fresnel_schlick(max(L.y, 0.0)));
-  // Over shallow water the column scatters less and the seabed shows through it (R.20).
+  // Over shallow water the column scatters less and the seabed shows through it (R.24).
   vec3 bottom_t = exp(-2.0 * u.damping.absorption_per_m * damping.depth_m);
   vec3 body = u.water_colour * (sun_e * sun_in + sky_e) / PI * (1.0 - bottom_t) +
               seabed_radiance(damping.depth_m, sun_e * sun_in + sky_e);

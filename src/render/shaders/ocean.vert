@@ -39,7 +39,7 @@ void main() {
   vec3 displacement = vec3(0.0);
   int cascades = int(u.cascade_count);
   if (border_weight > 0.0 && u.local.calm < 0.5) {
-    DampingSample damping = damping_at(xz);  // mask and bathymetry (R.20)
+    DampingSample damping = damping_at(xz);  // mask and bathymetry (R.24)
     float ratio = far_ratio_at(xz);
     vec2 blend = preserving_weights(ratio);  // (simulation, far field)
     for (int c = 0; c < cascades; ++c) {

@@ -81,13 +81,13 @@ struct LocalLayerUniforms {
   float local_pad1;
 };
 
-// The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.20): per-band weights
+// The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.24): per-band weights
 // and the depth baked on a square world grid; weight 1 and deep water outside it.
 struct DampingUniforms {
   vec2 origin_m;     // (x0, z0)
   float size_m;      // side
   float resolution;  // N cells per side; 0: no damping
-  vec3 absorption_per_m;  // pure water's absorption, RGB (R.20)
+  vec3 absorption_per_m;  // pure water's absorption, RGB (R.24)
   float damping_pad;
   vec3 bottom_albedo;  // the seabed's reflectance seen through shallow water, RGB
   float damping_pad2;
