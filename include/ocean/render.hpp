@@ -72,13 +72,23 @@ std::string_view to_string(DebugView view);
 /// The view of a name in kDebugViewNames; invalid_argument listing the names otherwise.
 Result<DebugView> parse_debug_view(std::string_view name);
 
-/// One picture's camera, mesh and look.
+/// Earth's mean radius, m (IUGG; Moritz, "Geodetic Reference System 1980").
+inline constexpr double kEarthRadius_m = 6.371e6;
+
+/// One picture's camera, mesh and look. Positions are world metres in double precision; the
+/// renderer draws relative to the quadtree's centre (R.16), so a camera 10⁷ m from the world's
+/// origin sees the same sea as one near it.
 struct View {
   lod::Camera camera;
   lod::Quality quality = lod::quality_preset(lod::QualityPreset::high);
   double ocean_size_m = 4096.0;  ///< side S of the quadtree square, [256, 8192]
-  /// Outer half-extent of the horizon skirt, m; ≤ 0: 10·S.
+  /// Outer half-extent of the horizon skirt, m; ≤ 0: 10·S, or on a curved world beyond the
+  /// horizon (1.25·√(2R(h + Hs)) rounded up to a power of two) when that is farther.
   double skirt_half_extent_m = -1.0;
+  /// Radius R of the planet whose curvature bends the sea down by d²/(2R) at a horizontal
+  /// distance d from the camera (docs/rendering.md R.15), so the horizon sits at its dip
+  /// √(2h/R) below level; > 0; +infinity: a flat world.
+  double planet_radius_m = kEarthRadius_m;
   ShadingParams shading;
   /// Where the far field (R.13) and the hex-tiled lookups (R.14) take over from the simulation.
   FarFieldRange far_field;

@@ -48,8 +48,9 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
                         VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
   if (!inst.ok()) return inst.status();
   st.instances = inst.value();
-  Result<vk::Buffer> skirt = vk::create_buffer(
-      *st.ctx, 24 * 2 * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
+  Result<vk::Buffer> skirt =
+      vk::create_buffer(*st.ctx, kSkirtVertices * 2 * sizeof(float),
+                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
   if (!skirt.ok()) return skirt.status();
   st.skirt_vertices = skirt.value();
   if (st.ctx->timestamps) {

@@ -8,6 +8,7 @@
 //   inputs.cpp       the simulation's images: own ones filled by upload, or borrowed ones
 //   uniforms.cpp     the sky table and the per-frame uniforms
 //   frame.cpp        the recorded frame: LOD selection, HDR pass, tone-map pass
+//   relative.cpp     large worlds and curvature: positions relative to the grid centre
 //   renderer.cpp     construction, resizing, submission, read-back
 #pragma once
 
@@ -72,6 +73,7 @@ struct Renderer::State {
   // From configure().
   int cascades = 0;
   std::array<shader::CascadeUniforms, kMaxCascades> cascade_params{};
+  std::array<double, kMaxCascades> patch_size_m{};  // L_c in double, for the origin's phase (R.16)
   double hs_m = 1.0;
   FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
   double choppiness = 1.0;
@@ -100,11 +102,30 @@ void write_tonemap_image(Renderer::State& st);
 Status create_pipelines(Renderer::State& st);
 
 // mesh.cpp: the patch mesh of V quads per side — vertices and the 16 index lists, plus the
-// skirt's indices (4 rotated copies of its 4 triangles over 24 per-frame vertices).
+// skirt's indices (4 rotated copies of its kSkirtTessellation grid over per-frame vertices).
+inline constexpr lod::SkirtTessellation kSkirtTessellation{.segments = 64, .rings = 40};
+inline constexpr int kSkirtVertices =
+    4 * (kSkirtTessellation.segments + 1) * (kSkirtTessellation.rings + 1);
 Status build_patch_buffers(Renderer::State& st, int vertices);
-// The skirt's 24 vertices in world space around the selection's grid centre, rebuilding the
-// skirt when the ocean size or the skirt's extent changed.
-Status write_skirt_vertices(Renderer::State& st, const View& view);
+// The skirt's vertices relative to the frame's origin (the selection's grid centre), out to
+// `extent_m` (skirt_extent_m), rebuilding the skirt when the ocean size or the extent changed.
+Status write_skirt_vertices(Renderer::State& st, const View& view, double extent_m);
+
+// relative.cpp: large worlds and the planet's curvature (R.15, R.16). The frame's origin is the
+// selection's grid centre; everything handed to the GPU is relative to it.
+// The camera moved by −origin (its view-projection is what the GPU draws with).
+lod::Camera relative_camera(const lod::Camera& camera, const lod::LodSelection& selection);
+// The selection's instances relative to the origin, written to `out` (sel.instances.size()).
+void write_relative_instances(const lod::LodSelection& selection, double ocean_size_m,
+                              lod::PatchInstance* out);
+// The skirt's outer half-extent: the view's, or where it is ≤ 0 the larger of 10·S and 1.25
+// times the horizon's distance √(2R(h + Hs)), rounded up to a power of two (R.15).
+double skirt_extent_m(const View& view, double hs_m);
+// How far the curvature drops the sea inside the ocean square below the camera's tangent
+// plane, at most (widens the culling boxes).
+double curvature_drop_bound_m(const View& view);
+// FrameUniforms::planet and cascade_origin for this frame.
+void fill_origin_uniforms(const Renderer::State& st, const View& view, shader::FrameUniforms& u);
 
 // inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);

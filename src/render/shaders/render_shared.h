@@ -54,7 +54,8 @@ struct CascadeUniforms {
 };
 
 // The far field (docs/rendering.md R.13–R.14): VR-GIS FFT+Perlin's noise octaves fitted to
-// cascade 0's statistics, blended in between D_min and D_max, and the hex-tiled cascade lookups there.
+// cascade 0's statistics, blended in between D_min and D_max, and the hex-tiled cascade lookups
+// there.
 struct FarFieldUniforms {
   vec4 cell_m;          // lattice spacing of octaves 0, 1, 2 (w unused)
   vec4 amplitude_m;     // amplitude of octaves 0, 1, 2 (w unused)
@@ -64,6 +65,17 @@ struct FarFieldUniforms {
   float enabled;        // 0: no far field (before configure), 1: on
   float far_pad;
 };
+
+// Large worlds and the planet's curvature (docs/rendering.md R.15, R.16). Every position the
+// shaders see is relative to the frame's origin O (the quadtree's centre, chosen in double
+// precision on the CPU), so floats stay small however far the camera is from the world's origin.
+struct PlanetUniforms {
+  float inv_two_radius_per_m;  // 1/(2R) of the curvature drop d²/(2R) (R.15); 0: flat
+  float inv_radius_per_m;      // 1/R: the tilt of the surface's up vector per metre (R.15)
+  vec2 noise_origin_m;         // O wrapped to [0, 2^17) m: where the far field's noise is read
+};
+// Cascade c's reading of O: O/L_c wrapped to [0, M_c) periods (R.16); xy used, zw unused.
+#define OCEAN_RENDER_ORIGIN_WRAP_M 131072.0
 
 // Everything per frame, one uniform buffer (std140).
 struct FrameUniforms {
@@ -93,6 +105,8 @@ struct FrameUniforms {
   float hs_pad0, hs_pad1, hs_pad2;
   CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
   FarFieldUniforms far_field;
+  PlanetUniforms planet;
+  vec4 cascade_origin[OCEAN_RENDER_MAX_CASCADES];
 };
 
 // Push constants of the sky pass (std430).
@@ -120,7 +134,10 @@ static_assert(offsetof(FrameUniforms, cascades) == 208);
 static_assert(sizeof(CascadeUniforms) == 16);
 static_assert(offsetof(FrameUniforms, far_field) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(FarFieldUniforms) == 64);
-static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64);
+static_assert(offsetof(FrameUniforms, planet) == 272 + 16 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(PlanetUniforms) == 16);
+static_assert(offsetof(FrameUniforms, cascade_origin) == 288 + 16 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 288 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
