@@ -102,6 +102,12 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --far-field-range -5,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range nan,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range 100", "two distances DMIN,DMAX");
+  // The planet's radius (R.15): positive, a number, at least a kilometre; inf is a flat sea.
+  ocean_test::expect_usage_error("render --planet-radius 0", "--planet-radius = 0 is out of range");
+  ocean_test::expect_usage_error("render --planet-radius -6371000", "--planet-radius");
+  ocean_test::expect_usage_error("render --planet-radius nan", "--planet-radius");
+  ocean_test::expect_usage_error("render --planet-radius 500", "a radius >= 1000 m");
+  ocean_test::expect_usage_error("render --planet-radius earth", "--planet-radius");
 }
 
 TEST(RenderCli, UnwritableOutputFailsBeforeRendering) {
