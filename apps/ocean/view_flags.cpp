@@ -45,6 +45,9 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
              "radius of the planet whose curvature bends the sea and sets the horizon, m; inf: "
              "a flat sea (default " +
                  f.planet_radius + ", Earth's)");
+  command.add_option("--environment", f.environment,
+                     "equirectangular HDR OpenEXR (R, G, B; twice as wide as high) for the sky, "
+                     "its reflections and the fog, scaled by the sky's brightness");
   command.add_option("--view", f.view, "shaded, lod (colours by level) or wireframe");
   command.add_option("--backend", f.backend,
                      "simulation backend: cpu, or vulkan (its images are rendered with no copy)");
@@ -83,9 +86,8 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
   // The far plane reaches past the horizon √(2R·h) of a high eye (R.15); the near plane keeps
   // the depth buffer's precision for it.
   const double altitude = std::max(eye.value()[1], 0.0);
-  const double horizon = std::isinf(v.planet_radius_m)
-                             ? 0.0
-                             : std::sqrt(2.0 * v.planet_radius_m * (altitude + 20.0));
+  const double horizon =
+      std::isinf(v.planet_radius_m) ? 0.0 : std::sqrt(2.0 * v.planet_radius_m * (altitude + 20.0));
   v.camera = {.position_m = {eye.value()[0], eye.value()[1], eye.value()[2]},
               .target_m = {target.value()[0], target.value()[1], target.value()[2]},
               .fov_y_rad = fov.value() * std::numbers::pi / 180.0,
@@ -119,6 +121,11 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
     return invalid_argument("--view = " + excerpt(f.view) + " is not a view: must be " +
                             name_list(render::kDebugViewNames, ", ", " or "));
   v.debug = debug.value();
+  if (!f.environment.empty()) {
+    Result<render::Environment> env = render::load_environment(f.environment);
+    if (!env.ok()) return invalid_argument("--environment: " + env.status().message());
+    scene.environment = std::make_shared<const render::Environment>(std::move(env).value());
+  }
   return {};
 }
 

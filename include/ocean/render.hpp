@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <span>
 #include <string_view>
@@ -112,6 +113,22 @@ struct RenderStats {
 inline constexpr std::uint64_t kTargetBytesPerPixel = 16;
 inline constexpr std::uint64_t kReadbackBytesPerPixel = 8;
 
+/// An HDR environment map (docs/rendering.md R.17): the radiance arriving from every direction
+/// as an equirectangular (latitude–longitude) image that replaces the analytic sky in the
+/// background, the reflections and the fog. Column u (of width) looks towards the azimuth
+/// 2π·(u + ½)/width from +x towards +z, as the sky table; row r (of height) at the elevation
+/// π/2 − π·(r + ½)/height: row 0 is the zenith.
+struct Environment {
+  int width = 0;           ///< 2·height
+  int height = 0;          ///< [2, 8192]
+  std::vector<float> rgb;  ///< width·height·3 linear radiances, finite and ≥ 0, row 0 on top
+};
+/// Reads an equirectangular OpenEXR file (channels R, G, B, half or float) into an Environment,
+/// halved (box filter) until it is at most 2048 wide. io_error "cannot read '<path>': ..." when
+/// the file cannot be read or is not OpenEXR (a PNG or JPEG is not HDR); invalid_argument when
+/// it lacks R, G or B, is not twice as wide as high, or holds negative or non-finite values.
+Result<Environment> load_environment(const std::filesystem::path& path);
+
 struct RendererParams {
   int width = 1280;  ///< [1, 16384] and what the device and memory hold (Renderer::resize)
   int height = 720;  ///< [1, 16384] and what the device and memory hold (Renderer::resize)
@@ -157,6 +174,10 @@ class Renderer {
   /// After the submission holding a record()ed frame has completed: that frame's GPU time, ms
   /// (0 on devices without timestamps). draw() fills stats().gpu_ms itself.
   Result<double> read_gpu_ms();
+  /// Uses `environment` (load_environment) for the sky, its reflections and the fog from now on,
+  /// scaled by ShadingParams::sky_brightness; nullptr returns to the analytic sky. Allocates and
+  /// uploads (waits for the GPU). The sun's light and specular stay analytic (R.17).
+  Status set_environment(const Environment* environment);
   /// The last draw's sRGB pixels, RGBA8, top row first (width·height·4 bytes).
   Status read_srgb(std::vector<std::uint8_t>& rgba);
   /// The last draw's linear HDR pixels, RGBA float, top row first (width·height·4 floats).

@@ -40,7 +40,15 @@ void write_scene_images(Renderer::State& st) {
                                    VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo normal{st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo lut{st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet writes[4] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+  // The environment map is addressed as the sky table: u repeats, v clamps.
+  const VkDescriptorImageInfo env{st.lut_sampler, st.environment.view, VK_IMAGE_LAYOUT_GENERAL};
+  VkWriteDescriptorSet writes[5] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_ENVIRONMENT,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &env},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                                      .dstSet = st.scene_set,
                                      .dstBinding = OCEAN_RENDER_BINDING_SKY_LUT,
                                      .descriptorCount = 1,
@@ -64,7 +72,7 @@ void write_scene_images(Renderer::State& st) {
                                      .descriptorCount = 1,
                                      .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                      .pImageInfo = &normal}};
-  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 4u : 2u;
+  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 5u : 3u;
   vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
 }
 
@@ -103,6 +111,8 @@ Status create_descriptors(Renderer::State& st) {
       {OCEAN_RENDER_BINDING_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {OCEAN_RENDER_BINDING_SKY_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {OCEAN_RENDER_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
   const VkDescriptorSetLayoutCreateInfo scene_info{
       .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
@@ -126,7 +136,7 @@ Status create_descriptors(Renderer::State& st) {
       !s.ok())
     return s;
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4}};
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
                                              .maxSets = 2,
                                              .poolSizeCount = 2,

@@ -39,7 +39,7 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
   if (!lut_staging.ok()) return lut_staging.status();
   st.lut_staging = lut_staging.value();
-  write_scene_images(st);
+  if (Status s = r->set_environment(nullptr); !s.ok()) return s;  // writes the scene's set
   // Instances: the most any selection can hold (W² at S = 8192) and the skirt's one.
   if (Status s = lod::reserve_selection(st.selection, lod::kMaxOceanSize_m); !s.ok()) return s;
   const int w = 1 << lod::max_level(lod::kMaxOceanSize_m);

@@ -9,6 +9,7 @@
 //   uniforms.cpp     the sky table and the per-frame uniforms
 //   frame.cpp        the recorded frame: LOD selection, HDR pass, tone-map pass
 //   relative.cpp     large worlds and curvature: positions relative to the grid centre
+//   environment.cpp  the HDR environment map: reading, upload, its irradiance
 //   renderer.cpp     construction, resizing, submission, read-back
 #pragma once
 
@@ -51,6 +52,10 @@ struct Renderer::State {
   bool lut_pending = false;
   std::optional<ShadingParams> lut_params;  // what the table holds; none before the first draw
   std::array<double, 3> sun_ground{}, sky_ambient{};
+  // The environment map (R.17): a 1×1 black image while there is none.
+  vk::Image2D environment;
+  bool has_environment = false;
+  std::array<double, 3> environment_irradiance{};  // on a horizontal plane, before the scale
   VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkDescriptorSet scene_set = VK_NULL_HANDLE, tonemap_set = VK_NULL_HANDLE;
@@ -135,6 +140,9 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
 void update_sky(Renderer::State& st, const ShadingParams& shading);
 void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
                    shader::FrameUniforms& u);
+// environment.cpp: FrameUniforms::environment, and the sky's irradiance from the map (R.17).
+void fill_environment_uniforms(const Renderer::State& st, const View& view,
+                               shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
 

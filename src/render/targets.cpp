@@ -24,6 +24,7 @@ Renderer::State::~State() {
   for (VkDescriptorSetLayout l : {scene_layout, tonemap_layout})
     if (l != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, l, nullptr);
   vk::destroy_image(*ctx, sky_lut);
+  vk::destroy_image(*ctx, environment);
   vk::destroy_buffer(*ctx, lut_staging);
   for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);

@@ -108,6 +108,14 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --planet-radius nan", "--planet-radius");
   ocean_test::expect_usage_error("render --planet-radius 500", "a radius >= 1000 m");
   ocean_test::expect_usage_error("render --planet-radius earth", "--planet-radius");
+  // The environment map (R.17): readable, OpenEXR (HDR), RGB, twice as wide as high.
+  ocean_test::expect_usage_error("render --environment /nonexistent/sky.exr",
+                                 "--environment: cannot read '/nonexistent/sky.exr'");
+  const ocean_test::ScratchDir dir("ocean_render_environment");
+  const std::vector<std::uint8_t> grey(8 * 4 * 3, 128);
+  ASSERT_TRUE(ocean::io::write_png8(dir.path / "sky.png", 8, 4, 3, grey.data()).ok());
+  ocean_test::expect_usage_error("render --environment " + (dir.path / "sky.png").string(),
+                                 "not an OpenEXR file");
 }
 
 TEST(RenderCli, UnwritableOutputFailsBeforeRendering) {

@@ -41,7 +41,8 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_DISPLACEMENT 1  // sampler2DArray RGBA16F (Dx, h, Dz, 0), per cascade
 #define OCEAN_RENDER_BINDING_NORMAL 2        // sampler2DArray RGBA8 (n_x, n_z, foam, smoothness)
 #define OCEAN_RENDER_BINDING_SKY_LUT 3       // sampler2D sky radiance, u azimuth, v √elevation
-#define OCEAN_RENDER_SCENE_BINDINGS 4
+#define OCEAN_RENDER_BINDING_ENVIRONMENT 4   // sampler2D RGBA32F equirectangular radiance (R.17)
+#define OCEAN_RENDER_SCENE_BINDINGS 5
 // Set 0 of the tone-map pipeline.
 #define OCEAN_RENDER_BINDING_HDR 0  // sampler2D, the linear HDR image
 
@@ -77,6 +78,12 @@ struct PlanetUniforms {
 // Cascade c's reading of O: O/L_c wrapped to [0, M_c) periods (R.16); xy used, zw unused.
 #define OCEAN_RENDER_ORIGIN_WRAP_M 131072.0
 
+// The HDR environment map (docs/rendering.md R.17).
+struct EnvironmentUniforms {
+  float scale;  // multiplies the map's radiance (sky_brightness); 0: the analytic sky instead
+  float environment_pad0, environment_pad1, environment_pad2;
+};
+
 // Everything per frame, one uniform buffer (std140).
 struct FrameUniforms {
   mat4 view_proj;  // lod::view_projection of the camera, column-major
@@ -107,6 +114,7 @@ struct FrameUniforms {
   FarFieldUniforms far_field;
   PlanetUniforms planet;
   vec4 cascade_origin[OCEAN_RENDER_MAX_CASCADES];
+  EnvironmentUniforms environment;
 };
 
 // Push constants of the sky pass (std430).
@@ -137,7 +145,8 @@ static_assert(sizeof(FarFieldUniforms) == 64);
 static_assert(offsetof(FrameUniforms, planet) == 272 + 16 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(PlanetUniforms) == 16);
 static_assert(offsetof(FrameUniforms, cascade_origin) == 288 + 16 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 288 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, environment) == 288 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 304 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
