@@ -13,6 +13,11 @@ constexpr NumberOption<double> kFov{
     .flag = "--fov", .accept = Accept::in_range, .lo = 1.0, .hi = 170.0};
 constexpr NumberOption<double> kFarFieldRange{.flag = "--far-field-range",
                                               .accept = Accept::non_negative};
+// A planet smaller than a kilometre would bend the ocean square itself by more than its waves.
+constexpr NumberOption<double> kPlanetRadius{.flag = "--planet-radius",
+                                             .accept = Accept::in_range,
+                                             .lo = 1000.0,
+                                             .says = "a radius >= 1000 m, or inf for a flat sea"};
 constexpr NumberOption<double> kOceanSize{.flag = "--ocean-size",
                                           .accept = Accept::in_range,
                                           .lo = lod::kMinOceanSize_m,
@@ -36,6 +41,13 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
                      "DMIN,DMAX: distances, m, over which the simulated sea blends into the "
                      "far field's noise and hex-tiled cascades (default " +
                          f.far_field_range + ")");
+  add_option(command, kPlanetRadius, f.planet_radius,
+             "radius of the planet whose curvature bends the sea and sets the horizon, m; inf: "
+             "a flat sea (default " +
+                 f.planet_radius + ", Earth's)");
+  command.add_option("--environment", f.environment,
+                     "equirectangular HDR OpenEXR (R, G, B; twice as wide as high) for the sky, "
+                     "its reflections and the fog, scaled by the sky's brightness");
   command.add_option("--view", f.view, "shaded, lod (colours by level) or wireframe");
   command.add_option("--backend", f.backend,
                      "simulation backend: cpu, or vulkan (its images are rendered with no copy)");
@@ -68,12 +80,20 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
   if (!target.ok()) return target.status();
   Result<double> fov = parse(kFov, f.fov);
   if (!fov.ok()) return fov.status();
+  Result<double> radius = parse(kPlanetRadius, f.planet_radius);
+  if (!radius.ok()) return radius.status();
+  v.planet_radius_m = radius.value();
+  // The far plane reaches past the horizon √(2R·h) of a high eye (R.15); the near plane keeps
+  // the depth buffer's precision for it.
+  const double altitude = std::max(eye.value()[1], 0.0);
+  const double horizon =
+      std::isinf(v.planet_radius_m) ? 0.0 : std::sqrt(2.0 * v.planet_radius_m * (altitude + 20.0));
   v.camera = {.position_m = {eye.value()[0], eye.value()[1], eye.value()[2]},
               .target_m = {target.value()[0], target.value()[1], target.value()[2]},
               .fov_y_rad = fov.value() * std::numbers::pi / 180.0,
               .aspect = w.value() / h.value(),
-              .near_m = 0.2,
-              .far_m = 2.0e5};
+              .near_m = std::max(0.2, 0.005 * altitude),
+              .far_m = std::max(2.0e5, 1.5 * horizon)};
   if (eye.value()[1] <= 0.0)
     return invalid_argument("--camera = " + excerpt(f.camera) +
                             ": the camera must be above the sea (Y > 0)");
@@ -101,6 +121,11 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
     return invalid_argument("--view = " + excerpt(f.view) + " is not a view: must be " +
                             name_list(render::kDebugViewNames, ", ", " or "));
   v.debug = debug.value();
+  if (!f.environment.empty()) {
+    Result<render::Environment> env = render::load_environment(f.environment);
+    if (!env.ok()) return invalid_argument("--environment: " + env.status().message());
+    scene.environment = std::make_shared<const render::Environment>(std::move(env).value());
+  }
   return {};
 }
 

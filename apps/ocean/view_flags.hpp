@@ -16,6 +16,8 @@ struct ViewFlags {
   std::string quality = "high", ocean_size = "4096", view = "shaded";
   std::string backend = "cpu";
   std::string far_field_range = "1000,2500";  // D_min,D_max of the far field (R.13), m
+  std::string planet_radius = "6371000";      // R of the sea's curvature (R.15), m; inf: flat
+  std::string environment;                    // equirectangular HDR OpenEXR sky (R.17); empty: none
   bool validation = false;
 };
 /// Registers the flags; `what` names the image ("image" or "window") in the help.

@@ -240,21 +240,32 @@ Result<PatchMeshes> build_patch_meshes(int vertices);
 
 // ---- skirt (skirt.cpp) --------------------------------------------------------------------------
 
-/// The horizon skirt of Aebi, VR Ocean, §5.7 (L.10): a strip of 3 vertex pairs from the north edge
-/// of the ocean square (half-extent S/2) out to the outer half-extent R, drawn 4 times rotated by
-/// 0°, 90°, 180°, 270° about +y around the grid centre, so the four trapezoids tile the square
-/// ring between S/2 and R.
+/// How finely the skirt is cut: the default is Aebi's (3 vertex pairs); a renderer that bends the
+/// skirt with the planet's curvature needs more.
+struct SkirtTessellation {
+  int segments = 2;  ///< quads along each side of the square, even, ≥ 2
+  int rings = 1;     ///< quads from the square out to the outer edge, ≥ 1
+};
+
+/// The horizon skirt of Aebi, VR Ocean, §5.7 (L.10): a grid from the north edge of the ocean
+/// square (half-extent S/2) out to the outer half-extent R, drawn 4 times rotated by 0°, 90°,
+/// 180°, 270° about +y around the grid centre, so the four trapezoids tile the square ring
+/// between S/2 and R. With the default tessellation it is Aebi's strip of 3 vertex pairs.
 struct SkirtMesh {
-  /// 6 vertices (x, z) relative to the grid centre, m, y = 0: inner (−S/2, S/2), (0, S/2),
-  /// (S/2, S/2) and outer (−R, R), (0, R), (R, R), interleaved inner/outer.
+  /// (segments + 1)·(rings + 1) vertices (x, z) relative to the grid centre, m, y = 0, ring by
+  /// ring from the inside: vertex i of ring k at (d_k·(−1 + 2i/segments), d_k), with the ring's
+  /// half-extent d_k = (S/2)·(R/(S/2))^(k/rings) (rings spaced geometrically).
   std::vector<float> positions_xz;
-  std::vector<std::uint16_t> strip;      ///< triangle strip over the 6 vertices (4 triangles)
-  std::vector<std::uint16_t> triangles;  ///< the same 4 triangles as a list, facing +y
+  /// Triangle strip over (inner, outer) pairs west to east; only for rings = 1, empty otherwise.
+  std::vector<std::uint16_t> strip;
+  std::vector<std::uint16_t> triangles;  ///< 2·segments·rings triangles, facing +y
   /// Instance i rotates by i·90° about +y: (x, z) → (c·x + s·z, −s·x + c·z), stored {c, s}.
   std::array<std::array<float, 2>, 4> rotations{};
 };
-/// invalid_argument unless S is in [256, 8192] and the outer half-extent R > S/2; R ≤ 0 selects
-/// the default R = 10·S.
-Result<SkirtMesh> build_skirt(double ocean_size_m, double outer_half_extent_m = -1.0);
+/// invalid_argument unless S is in [256, 8192], the outer half-extent R > S/2 and the
+/// tessellation is in range (four copies within 16-bit indices); R ≤ 0 selects the default
+/// R = 10·S.
+Result<SkirtMesh> build_skirt(double ocean_size_m, double outer_half_extent_m = -1.0,
+                              SkirtTessellation tessellation = {});
 
 }  // namespace ocean::lod

@@ -16,6 +16,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <span>
 #include <string_view>
@@ -72,13 +73,23 @@ std::string_view to_string(DebugView view);
 /// The view of a name in kDebugViewNames; invalid_argument listing the names otherwise.
 Result<DebugView> parse_debug_view(std::string_view name);
 
-/// One picture's camera, mesh and look.
+/// Earth's mean radius, m (IUGG; Moritz, "Geodetic Reference System 1980").
+inline constexpr double kEarthRadius_m = 6.371e6;
+
+/// One picture's camera, mesh and look. Positions are world metres in double precision; the
+/// renderer draws relative to the quadtree's centre (R.16), so a camera 10⁷ m from the world's
+/// origin sees the same sea as one near it.
 struct View {
   lod::Camera camera;
   lod::Quality quality = lod::quality_preset(lod::QualityPreset::high);
   double ocean_size_m = 4096.0;  ///< side S of the quadtree square, [256, 8192]
-  /// Outer half-extent of the horizon skirt, m; ≤ 0: 10·S.
+  /// Outer half-extent of the horizon skirt, m; ≤ 0: 10·S, or on a curved world beyond the
+  /// horizon (1.25·√(2R(h + Hs)) rounded up to a power of two) when that is farther.
   double skirt_half_extent_m = -1.0;
+  /// Radius R of the planet whose curvature bends the sea down by d²/(2R) at a horizontal
+  /// distance d from the camera (docs/rendering.md R.15), so the horizon sits at its dip
+  /// √(2h/R) below level; > 0; +infinity: a flat world.
+  double planet_radius_m = kEarthRadius_m;
   ShadingParams shading;
   /// Where the far field (R.13) and the hex-tiled lookups (R.14) take over from the simulation.
   FarFieldRange far_field;
@@ -101,6 +112,22 @@ struct RenderStats {
 /// large as the HDR image.
 inline constexpr std::uint64_t kTargetBytesPerPixel = 16;
 inline constexpr std::uint64_t kReadbackBytesPerPixel = 8;
+
+/// An HDR environment map (docs/rendering.md R.17): the radiance arriving from every direction
+/// as an equirectangular (latitude–longitude) image that replaces the analytic sky in the
+/// background, the reflections and the fog. Column u (of width) looks towards the azimuth
+/// 2π·(u + ½)/width from +x towards +z, as the sky table; row r (of height) at the elevation
+/// π/2 − π·(r + ½)/height: row 0 is the zenith.
+struct Environment {
+  int width = 0;           ///< 2·height
+  int height = 0;          ///< [2, 8192]
+  std::vector<float> rgb;  ///< width·height·3 linear radiances, finite and ≥ 0, row 0 on top
+};
+/// Reads an equirectangular OpenEXR file (channels R, G, B, half or float) into an Environment,
+/// halved (box filter) until it is at most 2048 wide. io_error "cannot read '<path>': ..." when
+/// the file cannot be read or is not OpenEXR (a PNG or JPEG is not HDR); invalid_argument when
+/// it lacks R, G or B, is not twice as wide as high, or holds negative or non-finite values.
+Result<Environment> load_environment(const std::filesystem::path& path);
 
 struct RendererParams {
   int width = 1280;  ///< [1, 16384] and what the device and memory hold (Renderer::resize)
@@ -186,6 +213,10 @@ class Renderer {
   /// After the submission holding a record()ed frame has completed: that frame's GPU time, ms
   /// (0 on devices without timestamps). draw() fills stats().gpu_ms itself.
   Result<double> read_gpu_ms();
+  /// Uses `environment` (load_environment) for the sky, its reflections and the fog from now on,
+  /// scaled by ShadingParams::sky_brightness; nullptr returns to the analytic sky. Allocates and
+  /// uploads (waits for the GPU). The sun's light and specular stay analytic (R.17).
+  Status set_environment(const Environment* environment);
   /// The last draw's sRGB pixels, RGBA8, top row first (width·height·4 bytes).
   Status read_srgb(std::vector<std::uint8_t>& rgba);
   /// The last draw's linear HDR pixels, RGBA float, top row first (width·height·4 floats).

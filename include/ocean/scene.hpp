@@ -32,6 +32,8 @@ struct SceneParams {
   std::string backend = "cpu";  ///< cpu (frames uploaded) or vulkan (images sampled, no copy)
   int width = 1280;             ///< render target, pixels, [1, 16384]
   int height = 720;             ///< render target, pixels, [1, 16384]
+  /// The sky from an HDR environment map (Renderer::set_environment); null: the analytic sky.
+  std::shared_ptr<const render::Environment> environment;
   // The context the scene creates in make(params); ignored by make(context, params).
   bool validation = false;  ///< Khronos validation layer on the context
   /// Instance extensions and the swapchain extension, for a window (ocean view).

@@ -87,8 +87,7 @@ Status Renderer::set_damping(const DampingGrid& grid) {
     depth[0] = float_to_half(clamped(grid.depth_m[i], static_cast<float>(OCEAN_RENDER_DEEP_M)));
     depth[1] = depth[2] = depth[3] = 0;
   }
-  st.damping.origin_m = {static_cast<float>(grid.origin_m[0]),
-                         static_cast<float>(grid.origin_m[1])};
+  st.damping_origin_m = grid.origin_m;
   st.damping.size_m = static_cast<float>(grid.size_m);
   st.damping.resolution = static_cast<float>(side);
   st.damping_pending = true;

@@ -40,10 +40,18 @@ void write_scene_images(Renderer::State& st) {
                                    VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo normal{st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo lut{st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL};
+  // The environment map is addressed as the sky table: u repeats, v clamps.
+  const VkDescriptorImageInfo env{st.lut_sampler, st.environment.view, VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo local{st.local_sampler, st.local_image.view, VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo damping{st.damping_sampler, st.damping_image.view,
                                       VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet writes[6] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+  VkWriteDescriptorSet writes[7] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_ENVIRONMENT,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &env},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                                      .dstSet = st.scene_set,
                                      .dstBinding = OCEAN_RENDER_BINDING_DAMPING,
                                      .descriptorCount = 1,
@@ -79,7 +87,7 @@ void write_scene_images(Renderer::State& st) {
                                      .descriptorCount = 1,
                                      .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                      .pImageInfo = &normal}};
-  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 6u : 4u;
+  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 7u : 5u;
   vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
 }
 
@@ -125,6 +133,8 @@ Status create_descriptors(Renderer::State& st) {
        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {OCEAN_RENDER_BINDING_SKY_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {OCEAN_RENDER_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {OCEAN_RENDER_BINDING_LOCAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr},
       {OCEAN_RENDER_BINDING_DAMPING, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr}};
   const VkDescriptorSetLayoutCreateInfo scene_info{
@@ -149,7 +159,7 @@ Status create_descriptors(Renderer::State& st) {
       !s.ok())
     return s;
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6}};
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 7}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
                                              .maxSets = 2,
                                              .poolSizeCount = 2,

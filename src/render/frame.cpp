@@ -20,23 +20,26 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   lp.ocean_size_m = view.ocean_size_m;
   lp.quality = view.quality;
   lp.camera_position_m = view.camera.position_m;
-  const lod::Mat4 vp = lod::view_projection(view.camera);  // culling and drawing share it
-  lp.frustum = lod::frustum_from_view_projection(vp);
-  lp.max_vertical_displacement_m = 1.2 * st.hs_m + 0.5;
+  lp.frustum = lod::frustum_from_view_projection(lod::view_projection(view.camera));
+  lp.max_vertical_displacement_m = 1.2 * st.hs_m + 0.5 + curvature_drop_bound_m(view);
   lp.max_horizontal_displacement_m = st.choppiness * st.hs_m;
   if (Status s = lod::select_patches(lp, st.selection); !s.ok()) return s;
   const lod::LodSelection& sel = st.selection;
   stats_.cpu_select_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  // The GPU draws relative to the grid centre (R.16): the camera, the instances and the skirt.
+  const lod::Mat4 vp = lod::view_projection(relative_camera(view.camera, sel));
   auto* inst = static_cast<lod::PatchInstance*>(st.instances.mapped);
-  std::memcpy(inst, sel.instances.data(), sel.instances.size() * sizeof(lod::PatchInstance));
+  write_relative_instances(sel, view.ocean_size_m, inst);
   const auto skirt_instance = static_cast<std::uint32_t>(sel.instances.size());
   inst[skirt_instance] = {
       .centre_x_m = 0.0f, .centre_z_m = 0.0f, .size_m = 1.0f, .level = kSkirtLevel};
-  if (Status s = write_skirt_vertices(st, view); !s.ok()) return s;
+  if (Status s = write_skirt_vertices(st, view, skirt_extent_m(view, st.hs_m)); !s.ok()) return s;
   update_sky(st, view.shading);
   shader::FrameUniforms u{};
   fill_uniforms(st, view, vp, u);
+  fill_origin_uniforms(st, view, u);
+  fill_environment_uniforms(st, view, u);
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
   const std::array<double, 16> inv = inverse(vp.m);
   shader::SkyPush sky_push{};

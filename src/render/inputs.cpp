@@ -37,6 +37,7 @@ Status Renderer::configure(const SimulationConfig& config) {
     const double k_min = bands[static_cast<std::size_t>(c)][0];
     double wavelength = k_min > 0.0 ? 2.0 * std::numbers::pi / k_min : size;
     wavelength = std::min(wavelength, std::max(peak_wavelength, 4.0 * size / n));
+    st.patch_size_m[static_cast<std::size_t>(c)] = size;
     st.cascade_params[static_cast<std::size_t>(c)] = {
         .patch_size_m = static_cast<float>(size),
         .resolution = static_cast<float>(n),

@@ -76,7 +76,7 @@ Status Renderer::set_local_layer(const LocalLayerGrid& grid) {
       out[4 * i + c] = float_to_half(grid.displacement[3 * i + c]);
     out[4 * i + 3] = 0;
   }
-  st.local.origin_m = {static_cast<float>(grid.origin_m[0]), static_cast<float>(grid.origin_m[1])};
+  st.local_origin_m = grid.origin_m;
   st.local.size_m = static_cast<float>(grid.size_m);
   st.local.resolution = static_cast<float>(side);
   st.local_pending = true;

@@ -8,7 +8,7 @@ namespace ocean::render {
 Status build_patch_buffers(Renderer::State& st, int vertices) {
   Result<lod::PatchMeshes> meshes = lod::build_patch_meshes(vertices);
   if (!meshes.ok()) return meshes.status();
-  Result<lod::SkirtMesh> skirt = lod::build_skirt(lod::kMinOceanSize_m);
+  Result<lod::SkirtMesh> skirt = lod::build_skirt(lod::kMinOceanSize_m, -1.0, kSkirtTessellation);
   if (!skirt.ok()) return skirt.status();
   std::vector<std::uint16_t> all;
   for (int c = 0; c < lod::kConfigurations; ++c) {
@@ -18,9 +18,10 @@ Status build_patch_buffers(Renderer::State& st, int vertices) {
     all.insert(all.end(), list.begin(), list.end());
   }
   st.skirt_first = static_cast<std::uint32_t>(all.size());
-  for (std::uint16_t r = 0; r < 4; ++r) {
+  const std::size_t per_copy = skirt.value().positions_xz.size() / 2;
+  for (std::size_t r = 0; r < 4; ++r) {
     for (std::uint16_t i : skirt.value().triangles)
-      all.push_back(static_cast<std::uint16_t>(r * 6 + i));
+      all.push_back(static_cast<std::uint16_t>(r * per_copy + i));
   }
   st.skirt_count = static_cast<std::uint32_t>(all.size()) - st.skirt_first;
   vk::destroy_buffer(*st.ctx, st.patch_vertices);
@@ -38,23 +39,24 @@ Status build_patch_buffers(Renderer::State& st, int vertices) {
   return {};
 }
 
-Status write_skirt_vertices(Renderer::State& st, const View& view) {
-  const lod::LodSelection& sel = st.selection;
-  // Skirt vertices in world space around this frame's grid centre.
-  if (st.skirt_size != view.ocean_size_m || st.skirt_extent != view.skirt_half_extent_m) {
-    Result<lod::SkirtMesh> skirt = lod::build_skirt(view.ocean_size_m, view.skirt_half_extent_m);
+Status write_skirt_vertices(Renderer::State& st, const View& view, double extent_m) {
+  // Skirt vertices relative to this frame's origin, the grid centre (R.16).
+  if (st.skirt_size != view.ocean_size_m || st.skirt_extent != extent_m) {
+    Result<lod::SkirtMesh> skirt =
+        lod::build_skirt(view.ocean_size_m, extent_m, kSkirtTessellation);
     if (!skirt.ok()) return skirt.status();
     st.skirt = std::move(skirt).value();
-    st.skirt_size = view.ocean_size_m, st.skirt_extent = view.skirt_half_extent_m;
+    st.skirt_size = view.ocean_size_m, st.skirt_extent = extent_m;
   }
   auto* sv = static_cast<float*>(st.skirt_vertices.mapped);
-  for (int r = 0; r < 4; ++r) {
-    const auto [c, s] = st.skirt.rotations[static_cast<std::size_t>(r)];
-    for (int i = 0; i < 6; ++i) {
-      const float x = st.skirt.positions_xz[static_cast<std::size_t>(2 * i)];
-      const float z = st.skirt.positions_xz[static_cast<std::size_t>(2 * i + 1)];
-      sv[(r * 6 + i) * 2] = static_cast<float>(sel.grid_centre_x_m) + c * x + s * z;
-      sv[(r * 6 + i) * 2 + 1] = static_cast<float>(sel.grid_centre_z_m) - s * x + c * z;
+  const std::size_t count = st.skirt.positions_xz.size() / 2;
+  for (std::size_t r = 0; r < 4; ++r) {
+    const auto [c, s] = st.skirt.rotations[r];
+    for (std::size_t i = 0; i < count; ++i) {
+      const float x = st.skirt.positions_xz[2 * i];
+      const float z = st.skirt.positions_xz[2 * i + 1];
+      sv[(r * count + i) * 2] = c * x + s * z;
+      sv[(r * count + i) * 2 + 1] = -s * x + c * z;
     }
   }
   return {};

@@ -51,6 +51,9 @@ Status validate(const View& view) {
   if (view.skirt_half_extent_m > 0.0 && view.skirt_half_extent_m <= 0.5 * view.ocean_size_m)
     return invalid_argument("skirt_half_extent_m = " + std::to_string(view.skirt_half_extent_m) +
                             " must exceed half the ocean size");
+  if (!(view.planet_radius_m > 0.0))  // NaN fails too
+    return invalid_argument("planet_radius_m = " + format_number(view.planet_radius_m) +
+                            " must be > 0 (infinity: a flat world)");
   if (Status s = validate(view.far_field); !s.ok()) return s;
   return validate(view.shading);
 }

@@ -41,7 +41,7 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
   st.lut_staging = lut_staging.value();
   if (Status s = create_local_layer(st); !s.ok()) return s;
   if (Status s = create_damping(st); !s.ok()) return s;
-  write_scene_images(st);
+  if (Status s = r->set_environment(nullptr); !s.ok()) return s;  // writes the scene's set
   // Instances: the most any selection can hold (W² at S = 8192) and the skirt's one.
   if (Status s = lod::reserve_selection(st.selection, lod::kMaxOceanSize_m); !s.ok()) return s;
   const int w = 1 << lod::max_level(lod::kMaxOceanSize_m);
@@ -50,8 +50,9 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
                         VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
   if (!inst.ok()) return inst.status();
   st.instances = inst.value();
-  Result<vk::Buffer> skirt = vk::create_buffer(
-      *st.ctx, 24 * 2 * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
+  Result<vk::Buffer> skirt =
+      vk::create_buffer(*st.ctx, kSkirtVertices * 2 * sizeof(float),
+                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
   if (!skirt.ok()) return skirt.status();
   st.skirt_vertices = skirt.value();
   if (st.ctx->timestamps) {

@@ -8,6 +8,8 @@
 //   inputs.cpp       the simulation's images: own ones filled by upload, or borrowed ones
 //   uniforms.cpp     the sky table and the per-frame uniforms
 //   frame.cpp        the recorded frame: LOD selection, HDR pass, tone-map pass
+//   relative.cpp     large worlds and curvature: positions relative to the grid centre
+//   environment.cpp  the HDR environment map: reading, upload, its irradiance
 //   renderer.cpp     construction, resizing, submission, read-back
 #pragma once
 
@@ -50,6 +52,10 @@ struct Renderer::State {
   bool lut_pending = false;
   std::optional<ShadingParams> lut_params;  // what the table holds; none before the first draw
   std::array<double, 3> sun_ground{}, sky_ambient{};
+  // The environment map (R.17): a 1×1 black image while there is none.
+  vk::Image2D environment;
+  bool has_environment = false;
+  std::array<double, 3> environment_irradiance{};  // on a horizontal plane, before the scale
   VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkDescriptorSet scene_set = VK_NULL_HANDLE, tonemap_set = VK_NULL_HANDLE;
@@ -72,6 +78,7 @@ struct Renderer::State {
   // From configure().
   int cascades = 0;
   std::array<shader::CascadeUniforms, kMaxCascades> cascade_params{};
+  std::array<double, kMaxCascades> patch_size_m{};  // L_c in double, for the origin's phase (R.16)
   double hs_m = 1.0;
   FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
   double choppiness = 1.0;
@@ -84,6 +91,7 @@ struct Renderer::State {
   bool local_pending = false;
   std::uint32_t local_side = 0;
   shader::LocalLayerUniforms local{};
+  std::array<double, 2> local_origin_m{};  // world (x0, z0); the uniforms hold it relative to O
   // The damping (R.24): an RGBA16F array of 3 layers (weights 0–3, weights 4–7, depth), 1×1
   // until set_damping(); its staging buffer and placement.
   vk::Image damping_image;
@@ -92,6 +100,7 @@ struct Renderer::State {
   bool damping_pending = false;
   std::uint32_t damping_side = 0;
   shader::DampingUniforms damping{};
+  std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
 
   ~State();
   void destroy_targets();
@@ -117,11 +126,30 @@ void write_tonemap_image(Renderer::State& st);
 Status create_pipelines(Renderer::State& st);
 
 // mesh.cpp: the patch mesh of V quads per side — vertices and the 16 index lists, plus the
-// skirt's indices (4 rotated copies of its 4 triangles over 24 per-frame vertices).
+// skirt's indices (4 rotated copies of its kSkirtTessellation grid over per-frame vertices).
+inline constexpr lod::SkirtTessellation kSkirtTessellation{.segments = 64, .rings = 40};
+inline constexpr int kSkirtVertices =
+    4 * (kSkirtTessellation.segments + 1) * (kSkirtTessellation.rings + 1);
 Status build_patch_buffers(Renderer::State& st, int vertices);
-// The skirt's 24 vertices in world space around the selection's grid centre, rebuilding the
-// skirt when the ocean size or the skirt's extent changed.
-Status write_skirt_vertices(Renderer::State& st, const View& view);
+// The skirt's vertices relative to the frame's origin (the selection's grid centre), out to
+// `extent_m` (skirt_extent_m), rebuilding the skirt when the ocean size or the extent changed.
+Status write_skirt_vertices(Renderer::State& st, const View& view, double extent_m);
+
+// relative.cpp: large worlds and the planet's curvature (R.15, R.16). The frame's origin is the
+// selection's grid centre; everything handed to the GPU is relative to it.
+// The camera moved by −origin (its view-projection is what the GPU draws with).
+lod::Camera relative_camera(const lod::Camera& camera, const lod::LodSelection& selection);
+// The selection's instances relative to the origin, written to `out` (sel.instances.size()).
+void write_relative_instances(const lod::LodSelection& selection, double ocean_size_m,
+                              lod::PatchInstance* out);
+// The skirt's outer half-extent: the view's, or where it is ≤ 0 the larger of 10·S and 1.25
+// times the horizon's distance √(2R(h + Hs)), rounded up to a power of two (R.15).
+double skirt_extent_m(const View& view, double hs_m);
+// How far the curvature drops the sea inside the ocean square below the camera's tangent
+// plane, at most (widens the culling boxes).
+double curvature_drop_bound_m(const View& view);
+// FrameUniforms::planet and cascade_origin for this frame.
+void fill_origin_uniforms(const Renderer::State& st, const View& view, shader::FrameUniforms& u);
 
 // inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
@@ -137,6 +165,9 @@ void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd);
 void update_sky(Renderer::State& st, const ShadingParams& shading);
 void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
                    shader::FrameUniforms& u);
+// environment.cpp: FrameUniforms::environment, and the sky's irradiance from the map (R.17).
+void fill_environment_uniforms(const Renderer::State& st, const View& view,
+                               shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
 

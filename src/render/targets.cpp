@@ -24,6 +24,7 @@ Renderer::State::~State() {
   for (VkDescriptorSetLayout l : {scene_layout, tonemap_layout})
     if (l != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, l, nullptr);
   vk::destroy_image(*ctx, sky_lut);
+  vk::destroy_image(*ctx, environment);
   vk::destroy_buffer(*ctx, lut_staging);
   vk::destroy_image(*ctx, local_image);
   vk::destroy_buffer(*ctx, local_staging);

@@ -40,8 +40,8 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   const lod::LodSelection& sel = st.selection;
   for (int i = 0; i < 16; ++i)
     u.view_proj.m[i] = static_cast<float>(vp.m[static_cast<std::size_t>(i)]);
-  const lod::Vec3 eye = view.camera.position_m;
-  u.camera_pos_m = to_vec3({eye.x, eye.y, eye.z});
+  const lod::Vec3 eye = view.camera.position_m;  // relative to the grid centre (R.16)
+  u.camera_pos_m = to_vec3({eye.x - sel.grid_centre_x_m, eye.y, eye.z - sel.grid_centre_z_m});
   u.fov_y_rad = static_cast<float>(view.camera.fov_y_rad);
   const ShadingParams& sh = view.shading;
   u.sun_dir = to_vec3(sun_direction(sh.sun_azimuth_deg, sh.sun_elevation_deg));
@@ -52,8 +52,7 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.foam_brightness = static_cast<float>(sh.foam_brightness);
   u.roughness = static_cast<float>(sh.roughness);
   u.fog_density_per_m = static_cast<float>(sh.fog_density_per_m);
-  u.grid_centre_m = {static_cast<float>(sel.grid_centre_x_m),
-                     static_cast<float>(sel.grid_centre_z_m)};
+  u.grid_centre_m = {0.0f, 0.0f};  // the origin of the positions the GPU sees (R.16)
   u.ocean_size_m = static_cast<float>(view.ocean_size_m);
   u.border_fade_m = static_cast<float>(0.1 * view.ocean_size_m);  // R.10
   u.lod_scale = static_cast<float>(view.quality.lod_scale);
@@ -76,10 +75,14 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
       .far_m = f(view.far_field.far_m),
       .enabled = u.cascade_count > 0.0f ? 1.0f : 0.0f,
       .far_pad = 0.0f};
-  u.local = st.local;
+  u.local = st.local;  // its origin relative to the frame's origin O, as every position (R.16)
+  u.local.origin_m = {f(st.local_origin_m[0] - sel.grid_centre_x_m),
+                      f(st.local_origin_m[1] - sel.grid_centre_z_m)};
   u.local.foam_j_start = f(st.foam_ramp[0]);
   u.local.foam_j_full = f(st.foam_ramp[1]);
   u.damping = st.damping;
+  u.damping.origin_m = {f(st.damping_origin_m[0] - sel.grid_centre_x_m),
+                        f(st.damping_origin_m[1] - sel.grid_centre_z_m)};
   // Pure water's absorption at 650, 550 and 450 nm (Pope & Fry 1997: 0.340, 0.0565 and
   // 0.0092 per m) and a sandy bottom's albedo, a chosen value (R.24).
   u.damping.absorption_per_m = {0.340f, 0.0565f, 0.0092f};

@@ -110,6 +110,20 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --bathymetry depth.npy,0,0", "--bathymetry");
   ocean_test::expect_usage_error(
       "render --calm --local-area -100,-100,200 --bathymetry x.npy,0,0,1", "--calm");
+  // The planet's radius (R.15): positive, a number, at least a kilometre; inf is a flat sea.
+  ocean_test::expect_usage_error("render --planet-radius 0", "--planet-radius = 0 is out of range");
+  ocean_test::expect_usage_error("render --planet-radius -6371000", "--planet-radius");
+  ocean_test::expect_usage_error("render --planet-radius nan", "--planet-radius");
+  ocean_test::expect_usage_error("render --planet-radius 500", "a radius >= 1000 m");
+  ocean_test::expect_usage_error("render --planet-radius earth", "--planet-radius");
+  // The environment map (R.17): readable, OpenEXR (HDR), RGB, twice as wide as high.
+  ocean_test::expect_usage_error("render --environment /nonexistent/sky.exr",
+                                 "--environment: cannot read '/nonexistent/sky.exr'");
+  const ocean_test::ScratchDir dir("ocean_render_environment");
+  const std::vector<std::uint8_t> grey(8 * 4 * 3, 128);
+  ASSERT_TRUE(ocean::io::write_png8(dir.path / "sky.png", 8, 4, 3, grey.data()).ok());
+  ocean_test::expect_usage_error("render --environment " + (dir.path / "sky.png").string(),
+                                 "not an OpenEXR file");
 }
 
 // A wake drawn into the picture (docs/rendering.md R.19): the same render with and without it

@@ -1,4 +1,4 @@
-// Fuzz target: the OpenEXR reader of the tests (tests/support/exr_reader.hpp), on any bytes.
+// Fuzz target: the OpenEXR reader read_exr (ocean/io.hpp), on any bytes.
 // An image it accepts has one width*height plane per named channel; anything else is an error
 // (OpenEXR's exceptions included), never a crash or a leak.
 //

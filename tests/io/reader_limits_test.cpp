@@ -1,4 +1,4 @@
-// The OpenEXR test reader (tests/support) on headers that declare more than they hold or that
+// The OpenEXR reader read_exr (ocean/io.hpp) on headers that declare more than they hold or that
 // OpenEXR would read differently from their declared sizes: each is refused before OpenEXR reads
 // the header and allocates what the declaration asks for. Inputs of this kind were found by the
 // fuzz target tests/fuzz/exr_reader_fuzz.cpp (its corpus keeps them).

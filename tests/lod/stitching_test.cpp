@@ -106,8 +106,42 @@ TEST(LodSkirt, FourRotatedStripsTileTheRingToTheHorizon) {
   }
   EXPECT_DOUBLE_EQ(area, (2 * outer) * (2 * outer) - (2 * inner) * (2 * inner));
   EXPECT_TRUE(build_skirt(1024.0, 2000.0).ok());
+  EXPECT_FALSE(build_skirt(1024.0, 2000.0, {.segments = 3, .rings = 4}).ok());
+  EXPECT_FALSE(build_skirt(1024.0, 2000.0, {.segments = 64, .rings = 0}).ok());
+  EXPECT_FALSE(build_skirt(1024.0, 2000.0, {.segments = 254, .rings = 64}).ok());  // > 16 bits
   EXPECT_FALSE(build_skirt(1024.0, 300.0).ok());
   EXPECT_FALSE(build_skirt(10.0).ok());
+}
+
+TEST(LodSkirt, ATessellatedSkirtTilesTheSameRingWithGeometricRings) {
+  const double inner = 512.0, outer = 80000.0;
+  auto skirt = build_skirt(1024.0, outer, {.segments = 8, .rings = 6});
+  ASSERT_TRUE(skirt.ok());
+  const SkirtMesh& m = skirt.value();
+  ASSERT_EQ(m.positions_xz.size(), 2u * 9 * 7);
+  ASSERT_EQ(m.triangles.size(), 3u * 2 * 8 * 6);
+  EXPECT_TRUE(m.strip.empty());
+  // Ring k at inner·(outer/inner)^(k/6): consecutive rings stand in one ratio.
+  for (int k = 0; k <= 6; ++k) {
+    const double d = m.positions_xz[static_cast<std::size_t>(2 * 9 * k + 1)];
+    EXPECT_NEAR(d, inner * std::pow(outer / inner, k / 6.0), 1e-6 * d) << "ring " << k;
+  }
+  double area = 0.0;
+  for (const auto& r : m.rotations) {
+    for (std::size_t t = 0; t < m.triangles.size(); t += 3) {
+      double x[3], z[3];
+      for (std::size_t k = 0; k < 3; ++k) {
+        const double px = m.positions_xz[2 * m.triangles[t + k]];
+        const double pz = m.positions_xz[2 * m.triangles[t + k] + 1];
+        x[k] = r[0] * px + r[1] * pz;
+        z[k] = -r[1] * px + r[0] * pz;
+      }
+      const double a2 = (z[1] - z[0]) * (x[2] - x[0]) - (x[1] - x[0]) * (z[2] - z[0]);
+      EXPECT_GT(a2, 0.0);
+      area += 0.5 * a2;
+    }
+  }
+  EXPECT_NEAR(area, (2 * outer) * (2 * outer) - (2 * inner) * (2 * inner), 1e-6 * outer * outer);
 }
 
 }  // namespace

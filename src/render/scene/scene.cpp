@@ -53,6 +53,7 @@ Result<std::unique_ptr<Scene>> Scene::make(std::shared_ptr<vk::Context> context,
   if (!renderer.ok()) return renderer.status();
   scene->renderer_ = std::move(renderer).value();
   if (Status s = scene->renderer_->configure(p.config); !s.ok()) return s;
+  if (Status s = scene->renderer_->set_environment(p.environment.get()); !s.ok()) return s;
   return scene;
 }
 

@@ -12,6 +12,7 @@
 // distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano
 // & Baker (2010) "LEAN mapping" (slope variance adds across layers and filtering, R.5).
 #include "far_field.glsl"
+#include "planet.glsl"
 #include "local_layer.glsl"
 #include "damping.glsl"
 
@@ -59,7 +60,7 @@ void main() {
   DampingSample damping = damping_at(world_xz);  // mask and bathymetry (R.24)
   for (int c = 0; c < cascades; ++c) {
     float inv_size = 1.0 / u.cascades[c].patch_size_m;
-    vec2 uv = world_xz * inv_size + 0.5 / u.cascades[c].resolution;
+    vec2 uv = cascade_uv(world_xz, c);
     float hex = hex_ratio(ratio, u.cascades[c].patch_size_m, footprint);
     vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
     Shade plain = Shade(vec2(0.0), 0.0, 0.0), tiled = Shade(vec2(0.0), 0.0, 0.0);
@@ -93,7 +94,8 @@ void main() {
       vec3 cell = u.far_field.cell_m.xyz;
       vec3 w = clamp(2.0 - 4.0 * footprint / cell, 0.0, 1.0);  // cells below 4 pixels fade
       float h, sx, sz;
-      far_field_noise(u.far_field, world_xz.x, world_xz.y, w.x, w.y, w.z, h, sx, sz);
+      vec2 p = noise_xz(world_xz);
+      far_field_noise(u.far_field, p.x, p.y, w.x, w.y, w.z, h, sx, sz);
       float unresolved = dot(1.0 - w * w, u.far_field.slope_variance.xyz);
       sh.slope = blend.x * sh.slope + blend.y * vec2(sx, sz);
       sh.extra = blend.x * blend.x * sh.extra + blend.y * blend.y * unresolved;
@@ -113,7 +115,7 @@ void main() {
   local_shade(world_xz, local_slope, local_foam);
   slope += local_slope;
   no_foam *= 1.0 - local_foam;
-  vec3 N = normalize(vec3(slope.x, 1.0, slope.y));
+  vec3 N = normalize(vec3(slope.x, 0.0, slope.y) + curved_up(world_xz));  // R.15
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);
   float foam = 1.0 - no_foam;
 
@@ -154,7 +156,8 @@ void main() {
   vec3 bottom_t = exp(-2.0 * u.damping.absorption_per_m * damping.depth_m);
   vec3 body = u.water_colour * (sun_e * sun_in + sky_e) / PI * (1.0 - bottom_t) +
               seabed_radiance(damping.depth_m, sun_e * sun_in + sky_e);
-  float crest = clamp(world_pos.y / max(0.5 * u.hs_m, 0.05), 0.0, 2.0);  // height over Hs/2
+  float height = world_pos.y + curvature_drop(world_xz);  // above the mean level (R.15)
+  float crest = clamp(height / max(0.5 * u.hs_m, 0.05), 0.0, 2.0);  // height over Hs/2
   float g = 0.6, mu = dot(-L, V), hg_d = 1.0 + g * g - 2.0 * g * mu;
   float forward = (1.0 - g * g) / (4.0 * PI * hg_d * sqrt(hg_d));  // Henyey–Greenstein
   vec3 through = u.crest_scatter * u.water_colour * sun_e * forward * crest *

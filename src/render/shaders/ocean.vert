@@ -9,6 +9,7 @@
 // All weights are functions of the world position and the camera alone, so vertices that two
 // patches share get the same displacement and the stitched mesh stays closed.
 #include "far_field.glsl"
+#include "planet.glsl"
 #include "local_layer.glsl"
 #include "damping.glsl"
 
@@ -16,8 +17,8 @@ layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: 
 layout(location = 1) in vec3 a_instance;  // centre x, centre z, size (skirt: 0, 0, 1)
 layout(location = 2) in uvec4 a_meta;     // grid x, grid y, level (skirt: OCEAN_RENDER_SKIRT_LEVEL), configuration
 
-layout(location = 0) out vec2 world_xz;     // undisplaced position: where the maps are read
-layout(location = 1) out vec3 world_pos;    // displaced position
+layout(location = 0) out vec2 world_xz;     // undisplaced position relative to the origin (R.16)
+layout(location = 1) out vec3 world_pos;    // displaced position relative to the origin
 layout(location = 2) flat out uint level;
 
 float geometry_weight(int c, float spacing_m) {
@@ -45,7 +46,7 @@ void main() {
     for (int c = 0; c < cascades; ++c) {
       float w = geometry_weight(c, spacing);
       if (w <= 0.0 && c > 0) continue;
-      vec2 uv = xz / u.cascades[c].patch_size_m + 0.5 / u.cascades[c].resolution;
+      vec2 uv = cascade_uv(xz, c);
       float hex = hex_ratio(ratio, u.cascades[c].patch_size_m, spacing);
       vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
       vec3 plain = vec3(0.0), tiled = vec3(0.0);
@@ -60,7 +61,8 @@ void main() {
       if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
         float h, sx, sz;
         vec3 cell = u.far_field.cell_m.xyz;
-        far_field_noise(u.far_field, xz.x, xz.y, clamp(2.0 - 4.0 * spacing / cell.x, 0.0, 1.0),
+        vec2 p = noise_xz(xz);
+        far_field_noise(u.far_field, p.x, p.y, clamp(2.0 - 4.0 * spacing / cell.x, 0.0, 1.0),
                         clamp(2.0 - 4.0 * spacing / cell.y, 0.0, 1.0),
                         clamp(2.0 - 4.0 * spacing / cell.z, 0.0, 1.0), h, sx, sz);
         sim = blend.x * sim + vec3(0.0, blend.y * h, 0.0);
@@ -71,7 +73,9 @@ void main() {
   }
   displacement += local_displacement(xz);  // wakes and waveforms (R.19)
   world_xz = xz;
-  world_pos = vec3(xz.x + displacement.x, displacement.y, xz.y + displacement.z);
+  // The planet bends the sea down by d²/(2R) (R.15).
+  world_pos = vec3(xz.x + displacement.x, displacement.y - curvature_drop(xz),
+                   xz.y + displacement.z);
   level = a_meta.z;
   gl_Position = u.view_proj * vec4(world_pos, 1.0);
 }

@@ -22,10 +22,15 @@ layout(set = 0, binding = OCEAN_RENDER_BINDING_FRAME, std140) uniform Frame {
 layout(set = 0, binding = OCEAN_RENDER_BINDING_DISPLACEMENT) uniform sampler2DArray displacement_map;
 layout(set = 0, binding = OCEAN_RENDER_BINDING_NORMAL) uniform sampler2DArray normal_map;
 layout(set = 0, binding = OCEAN_RENDER_BINDING_SKY_LUT) uniform sampler2D sky_lut;
+layout(set = 0, binding = OCEAN_RENDER_BINDING_ENVIRONMENT) uniform sampler2D environment_map;
 
-// --- sky (R.1–R.4): the sky-view table of src/render/sky.cpp ---------------------------------
+// --- sky (R.1–R.4): the sky-view table of src/render/sky.cpp, or an environment map (R.17) ----
 
 vec3 sky_radiance(vec3 v) {
+  if (u.environment.scale > 0.0) {  // the equirectangular map, below the horizon its horizon
+    vec2 uv = vec2(atan(v.z, v.x) / (2.0 * PI), 0.5 - asin(clamp(v.y, 0.0, 1.0)) / PI);
+    return u.environment.scale * textureLod(environment_map, uv, 0.0).rgb;
+  }
   float elevation = asin(clamp(v.y, 0.0, 1.0));
   float azimuth = atan(v.z, v.x);
   vec2 uv = vec2(azimuth / (2.0 * PI), sqrt(elevation / (0.5 * PI)));

@@ -41,9 +41,10 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_DISPLACEMENT 1  // sampler2DArray RGBA16F (Dx, h, Dz, 0), per cascade
 #define OCEAN_RENDER_BINDING_NORMAL 2        // sampler2DArray RGBA8 (n_x, n_z, foam, smoothness)
 #define OCEAN_RENDER_BINDING_SKY_LUT 3       // sampler2D sky radiance, u azimuth, v √elevation
-#define OCEAN_RENDER_BINDING_LOCAL 4         // sampler2D RGBA16F (Dx, h, Dz, 0): the local layer
-#define OCEAN_RENDER_BINDING_DAMPING 5       // sampler2DArray RGBA16F: band weights 0-3, 4-7; depth
-#define OCEAN_RENDER_SCENE_BINDINGS 6
+#define OCEAN_RENDER_BINDING_ENVIRONMENT 4   // sampler2D RGBA32F equirectangular radiance (R.17)
+#define OCEAN_RENDER_BINDING_LOCAL 5         // sampler2D RGBA16F (Dx, h, Dz, 0): the local layer
+#define OCEAN_RENDER_BINDING_DAMPING 6       // sampler2DArray RGBA16F: band weights 0-3, 4-7; depth
+#define OCEAN_RENDER_SCENE_BINDINGS 7
 // The deepest water the damping texture holds, m: deeper is deep water for every band.
 #define OCEAN_RENDER_DEEP_M 1000.0
 // Set 0 of the tone-map pipeline.
@@ -58,7 +59,8 @@ struct CascadeUniforms {
 };
 
 // The far field (docs/rendering.md R.13–R.14): VR-GIS FFT+Perlin's noise octaves fitted to
-// cascade 0's statistics, blended in between D_min and D_max, and the hex-tiled cascade lookups there.
+// cascade 0's statistics, blended in between D_min and D_max, and the hex-tiled cascade lookups
+// there.
 struct FarFieldUniforms {
   vec4 cell_m;          // lattice spacing of octaves 0, 1, 2 (w unused)
   vec4 amplitude_m;     // amplitude of octaves 0, 1, 2 (w unused)
@@ -67,6 +69,23 @@ struct FarFieldUniforms {
   float far_m;          // D_max: farther, the far field alone
   float enabled;        // 0: no far field (before configure), 1: on
   float far_pad;
+};
+
+// Large worlds and the planet's curvature (docs/rendering.md R.15, R.16). Every position the
+// shaders see is relative to the frame's origin O (the quadtree's centre, chosen in double
+// precision on the CPU), so floats stay small however far the camera is from the world's origin.
+struct PlanetUniforms {
+  float inv_two_radius_per_m;  // 1/(2R) of the curvature drop d²/(2R) (R.15); 0: flat
+  float inv_radius_per_m;      // 1/R: the tilt of the surface's up vector per metre (R.15)
+  vec2 noise_origin_m;         // O wrapped to [0, 2^17) m: where the far field's noise is read
+};
+// Cascade c's reading of O: O/L_c wrapped to [0, M_c) periods (R.16); xy used, zw unused.
+#define OCEAN_RENDER_ORIGIN_WRAP_M 131072.0
+
+// The HDR environment map (docs/rendering.md R.17).
+struct EnvironmentUniforms {
+  float scale;  // multiplies the map's radiance (sky_brightness); 0: the analytic sky instead
+  float environment_pad0, environment_pad1, environment_pad2;
 };
 
 // The local layer (ocean/waves.hpp, docs/rendering.md R.19): wakes and waveforms over a square
@@ -121,6 +140,9 @@ struct FrameUniforms {
   float hs_pad0, hs_pad1, hs_pad2;
   CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
   FarFieldUniforms far_field;
+  PlanetUniforms planet;
+  vec4 cascade_origin[OCEAN_RENDER_MAX_CASCADES];
+  EnvironmentUniforms environment;
   LocalLayerUniforms local;
   DampingUniforms damping;
 };
@@ -150,11 +172,15 @@ static_assert(offsetof(FrameUniforms, cascades) == 208);
 static_assert(sizeof(CascadeUniforms) == 16);
 static_assert(offsetof(FrameUniforms, far_field) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(FarFieldUniforms) == 64);
+static_assert(offsetof(FrameUniforms, planet) == 272 + 16 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(PlanetUniforms) == 16);
+static_assert(offsetof(FrameUniforms, cascade_origin) == 288 + 16 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, environment) == 288 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(LocalLayerUniforms) == 32);
-static_assert(offsetof(FrameUniforms, local) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64);
+static_assert(offsetof(FrameUniforms, local) == 304 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(DampingUniforms) == 48);
-static_assert(offsetof(FrameUniforms, damping) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 96);
-static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 96 + 48);
+static_assert(offsetof(FrameUniforms, damping) == 336 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

@@ -22,7 +22,8 @@ void main() {
   float edge = smoothstep(cos(radius * 1.3), cos(radius), cos_sun);
   // The disc's true radiance (E/Ω) would saturate any exposure; 2 % of it keeps a visible
   // limb in the EXR output.
-  if (v.y > 0.0) c += edge * u.sun_ground / solid_angle * 0.02;
+  // An environment map carries its own sun (R.17).
+  if (v.y > 0.0 && u.environment.scale == 0.0) c += edge * u.sun_ground / solid_angle * 0.02;
   // No fog on the sky itself: at the horizon it already is the fog's colour (R.8).
   colour = vec4(c, 1.0);
 }

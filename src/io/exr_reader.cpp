@@ -1,5 +1,5 @@
-// tests/support/exr_reader.cpp — reads every channel of an OpenEXR file as floats.
-#include "support/exr_reader.hpp"
+// Reads every channel of an OpenEXR file as floats, after checking its header for sizes that
+// would make OpenEXR allocate more than the file holds (exr_header.cpp).
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "io/format_detail.hpp"
+#include "exr_header.hpp"
+#include "format_detail.hpp"
 #include "ocean/io.hpp"
-#include "support/exr_header.hpp"
 
 namespace ocean::io {
 namespace {

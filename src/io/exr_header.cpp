@@ -1,4 +1,4 @@
-// tests/support/exr_header.cpp — the OpenEXR header walk of the test reader (see exr_header.hpp).
+// The OpenEXR header walk of read_exr (see exr_header.hpp).
 //
 // This work is based on: [OpenEXR File Layout] (docs/references.md): the magic number, a
 // version word whose bit 12 marks a multi-part file, then per part a list of attributes
@@ -6,7 +6,7 @@
 // multi-part file ends its list of headers with an empty header. Which types OpenEXR 3.1 reads by
 // their declared size and which by their content follows its Header::readFrom and the
 // attributes' readValueFrom.
-#include "support/exr_header.hpp"
+#include "exr_header.hpp"
 
 #include <array>
 #include <cstdint>

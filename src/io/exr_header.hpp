@@ -1,5 +1,5 @@
-// tests/support/exr_header.hpp — the check the OpenEXR reader makes on a file's header before it
-// lets OpenEXR read the file.
+// exr_header.hpp (private to src/io) — the check the OpenEXR reader makes on a file's header before
+// it lets OpenEXR read the file.
 #pragma once
 
 #include <cstddef>
