@@ -23,6 +23,7 @@
 
 #include "ocean/far_field.hpp"
 #include "ocean/lod.hpp"
+#include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
@@ -83,6 +84,9 @@ struct View {
   /// Where the far field (R.13) and the hex-tiled lookups (R.14) take over from the simulation.
   FarFieldRange far_field;
   DebugView debug = DebugView::shaded;
+  /// Meshes placed in the world (indices into Renderer::set_meshes), drawn after the water and
+  /// depth-tested with it (R.20). Each model matrix must be finite.
+  std::vector<ObjectInstance> objects;
 };
 Status validate(const View& view);
 
@@ -134,6 +138,10 @@ class Renderer {
   /// GPU path: samples these images (a VulkanBackend's on the same context) from now on, until
   /// upload() or configure() is called. The images must stay alive while they are in use.
   void use_simulation_images(const vk::SimulationImages& images);
+
+  /// Uploads the meshes View::objects refers to by index (allocates; replaces the previous set,
+  /// waiting for the device first). invalid_argument naming the mesh (validate(Mesh)).
+  Status set_meshes(std::span<const Mesh> meshes);
 
   /// Records the frame into `cmd` (outside any render pass): pending uploads, the HDR pass (sky,
   /// patches, skirt), the tone-map pass. Afterwards the sRGB image is in TRANSFER_SRC_OPTIMAL.

@@ -52,6 +52,10 @@ Status validate(const View& view) {
     return invalid_argument("skirt_half_extent_m = " + std::to_string(view.skirt_half_extent_m) +
                             " must exceed half the ocean size");
   if (Status s = validate(view.far_field); !s.ok()) return s;
+  for (std::size_t i = 0; i < view.objects.size(); ++i)
+    for (double m : view.objects[i].model)
+      if (!std::isfinite(m))
+        return invalid_argument("objects[" + std::to_string(i) + "].model is not finite");
   return validate(view.shading);
 }
 

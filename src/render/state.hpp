@@ -16,6 +16,7 @@
 #include <optional>
 #include <vector>
 
+#include "object_pass.hpp"
 #include "ocean/render.hpp"
 #include "shaders/render_shared.h"
 
@@ -75,6 +76,7 @@ struct Renderer::State {
   double hs_m = 1.0;
   FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
   double choppiness = 1.0;
+  ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
 
   ~State();
   void destroy_targets();

@@ -14,6 +14,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
+#include "object_flags.hpp"
 #include "ocean/io.hpp"
 #include "ocean/scene.hpp"
 #include "output_name.hpp"
@@ -34,6 +35,8 @@ struct RenderOptions {
   std::string time = "20", frames = "1", fps = "30", warmup = "4";
   std::string sun_elevation, sun_azimuth, exposure, sky;
   std::string contact_sheet;
+  std::vector<std::string> objects;  // --object, repeatable
+  bool floating = false;             // --float
   bool json = false;
 };
 
@@ -61,6 +64,7 @@ struct Inputs {
   OutputKind kind = OutputKind::png;
   double time_s = 0.0, fps = 30.0, warmup_s = 0.0;
   long long frames = 1;
+  std::vector<ObjectSpec> objects;
 };
 
 Result<Inputs> parse_inputs(const RenderOptions& o) {
@@ -109,6 +113,13 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   Result<double> warmup = parse(kWarmup, o.warmup);
   if (!warmup.ok()) return warmup.status();
   in.warmup_s = warmup.value();
+  for (const std::string& text : o.objects) {
+    Result<ObjectSpec> spec = parse_object_spec(text);
+    if (!spec.ok()) return spec.status();
+    in.objects.push_back(spec.value());
+  }
+  if (o.floating && o.objects.empty())
+    return invalid_argument("--float needs at least one --object");
   Result<OutputPattern> out = parse_output_pattern(o.out, "--out");
   if (!out.ok()) return out.status();
   in.out = std::move(out).value();
@@ -233,10 +244,15 @@ int run_render(const RenderOptions& o) {
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.open(in.out.name(), w, h, in.fps); !s.ok()) return report(s);
   }
+  Result<std::unique_ptr<SceneObjects>> objects =
+      SceneObjects::make(in.objects, o.floating, in.scene.config);
+  if (!objects.ok()) return report(objects.status());
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
+  if (Status s = renderer.set_meshes(objects.value()->meshes()); !s.ok()) return report(s);
+  render::View view = in.view;
   std::vector<std::uint8_t> srgb;
   std::vector<float> hdr;
   Progress progress("render", in.frames);
@@ -244,7 +260,8 @@ int run_render(const RenderOptions& o) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
     const Status stepped = f == 0 ? scene.warm_up(t, in.warmup_s) : scene.step(t);
     if (!stepped.ok()) return report(stepped);
-    if (Status s = renderer.draw(in.view); !s.ok()) return report(s);
+    if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
+    if (Status s = renderer.draw(view); !s.ok()) return report(s);
     const std::filesystem::path path = frame_path(in, f);
     Status written;
     if (in.kind == OutputKind::exr) {
@@ -315,6 +332,16 @@ Command add_render_command(CLI::App& app) {
                       "instead of one picture: a PNG of the calm, moderate and storm presets from "
                       "a low grazing, an eye-level and a high camera (tiles --width x --height, "
                       "default 480x270)");
+  command
+      ->add_option("--object", o->objects,
+                   "KIND,X,Y,Z[,HEADING_DEG]: an object in the picture, KIND box, buoy, boat "
+                   "or a glTF 2.0 file (.glb/.gltf); X,Y,Z place its origin (m), the heading "
+                   "turns it from +x towards +z. Repeatable")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  command->add_flag("--float", o->floating,
+                    "let the objects float: simulate them as rigid bodies on the waves from t = 0 "
+                    "to the picture's time (glTF meshes must be closed)");
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};
 }
