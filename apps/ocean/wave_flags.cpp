@@ -2,6 +2,8 @@
 // LocalLayer (which validates the rest and builds the wake tables).
 #include "wave_flags.hpp"
 
+#include <cctype>
+#include <filesystem>
 #include <iostream>
 
 #include "options.hpp"
@@ -39,20 +41,30 @@ Result<waves::KelvinWake> parse_wake(const std::string& text) {
   return w;
 }
 
-Result<waves::Waveform> parse_waveform(const std::string& text) {
-  const std::string flag = "--waveform";
+// "FILE,N1,N2,...": the map read from FILE (load_height_map) and lo..hi numbers after it.
+struct FileAndNumbers {
+  waves::HeightMap map;
+  std::vector<double> numbers;
+};
+Result<FileAndNumbers> parse_file_and_numbers(const std::string& flag, const std::string& text,
+                                              std::size_t lo, std::size_t hi, const char* form) {
   const std::size_t comma = text.find(',');
-  if (comma == std::string::npos || comma == 0) {
-    return invalid_argument(flag + " = '" + excerpt(text) +
-                            "' must be FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]");
-  }
-  Result<std::vector<double>> v =
-      numbers(flag, text.substr(comma + 1), 4, 5, "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]");
+  if (comma == std::string::npos || comma == 0)
+    return invalid_argument(flag + " = '" + excerpt(text) + "' must be " + form);
+  Result<std::vector<double>> v = numbers(flag, text.substr(comma + 1), lo, hi, form);
   if (!v.ok()) return v.status();
   Result<waves::HeightMap> map = waves::load_height_map(text.substr(0, comma));
   if (!map.ok()) return Status{map.status().code(), flag + ": " + map.status().message()};
-  const std::vector<double>& n = v.value();
-  const waves::Waveform w{.map = std::make_shared<const waves::HeightMap>(std::move(map).value()),
+  return FileAndNumbers{std::move(map).value(), std::move(v).value()};
+}
+
+Result<waves::Waveform> parse_waveform(const std::string& text) {
+  const std::string flag = "--waveform";
+  Result<FileAndNumbers> f =
+      parse_file_and_numbers(flag, text, 4, 5, "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]");
+  if (!f.ok()) return f.status();
+  const std::vector<double>& n = f.value().numbers;
+  const waves::Waveform w{.map = std::make_shared<const waves::HeightMap>(std::move(f.value().map)),
                           .x_m = n[0],
                           .z_m = n[1],
                           .size_m = n[2],
@@ -60,6 +72,24 @@ Result<waves::Waveform> parse_waveform(const std::string& text) {
                           .rotation_deg = n.size() > 4 ? n[4] : 0.0};
   if (Status s = waves::validate(w); !s.ok()) return flagged(flag, text, s);
   return w;
+}
+
+// FILE,X0,Z0,SIZE_M of --damping-mask or --bathymetry. A PNG mask's [−1, 1] (load_height_map)
+// is its gray level mapped back to [0, 1]; a depth needs metres, so a .npy file.
+Result<waves::PlacedMap> parse_placed_map(const std::string& flag, const std::string& text,
+                                          bool is_mask) {
+  std::string ext = std::filesystem::path(text.substr(0, text.find(','))).extension().string();
+  for (char& ch : ext) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  if (ext == ".png" && !is_mask)
+    return invalid_argument(flag + " '" + excerpt(text) + "': depths in metres need a .npy file");
+  Result<FileAndNumbers> f = parse_file_and_numbers(flag, text, 3, 3, "FILE,X0,Z0,SIZE_M");
+  if (!f.ok()) return f.status();
+  if (ext == ".png")
+    for (float& v : f.value().map.values) v = 0.5f * (v + 1.0f);
+  const std::vector<double>& n = f.value().numbers;
+  return waves::PlacedMap{.map = std::make_shared<const waves::HeightMap>(std::move(f.value().map)),
+                          .origin_m = {n[0], n[1]},
+                          .size_m = n[2]};
 }
 
 }  // namespace
@@ -75,6 +105,40 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
   command.add_option("--local-area", f.local_area, "X0,Z0,SIZE_M: the local layer's square");
   add_option(command, kResolution, f.local_resolution, "cells per side of the local layer")
       ->capture_default_str();
+  command.add_option("--damping-mask", f.damping_mask,
+                     "FILE,X0,Z0,SIZE_M: .npy (or gray PNG) in [0, 1] from corner (X0, Z0); 0 = "
+                     "the low band only, 1 = every band");
+  command.add_option("--bathymetry", f.bathymetry,
+                     "FILE,X0,Z0,SIZE_M: .npy water depth, m, from corner (X0, Z0); damps each "
+                     "band where the water is shallow against its wavelength");
+}
+
+Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
+                                                           const SimulationConfig& config) {
+  if (f.damping_mask.empty() && f.bathymetry.empty())
+    return std::shared_ptr<const waves::Damping>();
+  if (f.calm)
+    return invalid_argument(
+        "--damping-mask and --bathymetry damp the sea's bands: not with --calm");
+  waves::DampingParams p{.band_wavenumbers_radpm = band_wavenumbers(config),
+                         .gravity_mps2 = config.sea.dispersion.gravity_mps2};
+  if (!f.damping_mask.empty()) {
+    Result<waves::PlacedMap> m = parse_placed_map("--damping-mask", f.damping_mask, true);
+    if (!m.ok()) return m.status();
+    p.mask = std::move(m).value();
+  }
+  if (!f.bathymetry.empty()) {
+    Result<waves::PlacedMap> m = parse_placed_map("--bathymetry", f.bathymetry, false);
+    if (!m.ok()) return m.status();
+    p.bathymetry = std::move(m).value();
+  }
+  Result<waves::Damping> d = waves::Damping::make(std::move(p));
+  if (!d.ok()) {
+    const bool mask = d.status().message().starts_with("damping mask");
+    return flagged(mask ? "--damping-mask" : "--bathymetry", mask ? f.damping_mask : f.bathymetry,
+                   d.status());
+  }
+  return std::make_shared<const waves::Damping>(std::move(d).value());
 }
 
 Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, double choppiness) {

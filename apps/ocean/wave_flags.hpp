@@ -1,5 +1,6 @@
 // The flags of the local layer (ocean/waves.hpp) shared by `ocean bake` and `ocean query`:
-// --calm, --kelvin-wake, --waveform, --local-area, --local-resolution, turned into a layer.
+// --calm, --kelvin-wake, --waveform, --local-area, --local-resolution, turned into a layer, and
+// --damping-mask, --bathymetry, turned into the damping of the sea's bands (query only).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -7,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "ocean/sim.hpp"
 #include "ocean/waves.hpp"
 
 namespace ocean::cli {
@@ -17,6 +19,8 @@ struct WaveFlags {
   std::vector<std::string> waveforms;  ///< FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]
   std::string local_area;              ///< X0,Z0,SIZE_M
   std::string local_resolution = "512";
+  std::string damping_mask;  ///< FILE,X0,Z0,SIZE_M
+  std::string bathymetry;    ///< FILE,X0,Z0,SIZE_M
 };
 void add_wave_flags(CLI::App& command, WaveFlags& flags);
 
@@ -25,6 +29,13 @@ void add_wave_flags(CLI::App& command, WaveFlags& flags);
 /// the flag and echoing the value (ocean::excerpt).
 Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& flags,
                                                             double choppiness);
+
+/// The damping of the sea's bands the flags describe (--damping-mask, --bathymetry), for the
+/// cascades of `config`, or null when neither is given. An unreadable file, a bad placement, a
+/// mask value outside [0, 1], a negative or NaN depth, a PNG bathymetry or either flag with
+/// --calm is an error naming the flag.
+Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& flags,
+                                                           const SimulationConfig& config);
 
 /// Prints the layer's warnings at time t on stderr, "ocean: warning: ..." each.
 void print_warnings(const waves::LocalLayer& layer, double time_s);

@@ -54,9 +54,10 @@ struct BandStatistics {
 Result<BandStatistics> cascade0_statistics(const SimulationConfig& config);
 
 /// The fitted noise: octave o has lattice spacing cell_m[o] and amplitude amplitude_m[o].
-/// Spacings are in the ratio 1 : 2/5 : 1/4 (VR-GIS FFT+Perlin's step lengths 2, 5, 8 as
-/// frequencies); their scale and the amplitudes (a geometric progression) are solved so that the
-/// octaves' summed height variance and mean-square slope equal `target` exactly.
+/// Octave o stands for sub-band o of cascade 0's band (its grid wavenumbers from one period to
+/// the band's upper edge, split in three equal ratios): its amplitude and spacing are solved so
+/// that its height variance and mean-square slope equal the sub-band's, so the octaves' sums
+/// equal `target` exactly and each scale keeps its share (docs/rendering.md R.13).
 struct FarFieldNoise {
   std::array<double, 3> cell_m{};
   std::array<double, 3> amplitude_m{};

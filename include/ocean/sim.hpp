@@ -29,7 +29,8 @@ namespace ocean {
 
 namespace waves {
 class LocalLayer;  // ocean/waves.hpp
-}
+class Damping;     // ocean/waves.hpp
+}  // namespace waves
 
 /// How surface normals and the Jacobian are obtained from the synthesised fields.
 enum class NormalMethod {
@@ -136,6 +137,11 @@ Result<double> shortest_loop_period_s(const SimulationConfig& config);
 /// at half of cascade c−1's Nyquist wavenumber π·N/L (M.7.1). Rad/m.
 std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& config);
 
+/// The representative wavenumber of each cascade's band, rad/m, for the damping of the bands
+/// (ocean/waves.hpp, W.14): the geometric mean of the band's finite edges, cascade 0's lower edge
+/// taken at its fundamental 2π/L₀ and the last cascade's upper edge at its Nyquist π·N/L.
+std::vector<double> band_wavenumbers(const SimulationConfig& config);
+
 /// How cascade `index` generates its spectrum: its grid, its band, and its own seed
 /// (seed + 0x9e3779b9·index, so cascades are independent realisations).
 InitialSpectrumParams cascade_spectrum_params(const SimulationConfig& config, std::size_t index);
@@ -222,10 +228,18 @@ class Simulator {
   /// frame's time. nullptr removes it. Call it while no query runs.
   void set_local_layer(std::shared_ptr<const waves::LocalLayer> layer);
   [[nodiscard]] const waves::LocalLayer* local_layer() const { return local_layer_.get(); }
+  /// Damps the sea's bands where a mask or a bathymetry says (ocean/waves.hpp, W.12–W.13): the
+  /// queries multiply cascade c's displacement at (x, z) by band_weights(x, z)[c]; the local
+  /// layer is not damped. Its bands should be band_wavenumbers(config()); a Damping with fewer
+  /// bands than cascades leaves the rest undamped. nullptr removes it. Call it while no query
+  /// runs (and again after reconfigure with a different set of cascades).
+  void set_damping(std::shared_ptr<const waves::Damping> damping);
+  [[nodiscard]] const waves::Damping* damping() const { return damping_.get(); }
 
   /// Displacement (Dx, h, Dz) summed over cascades at the undisplaced point (x, z), bilinear
   /// between texels exactly as a GPU samples the maps with wrap addressing (M.7.6), plus the
-  /// local layer's (Dx, h, Dz) there when one is set.
+  /// local layer's (Dx, h, Dz) there when one is set; each cascade weighed by the damping's band
+  /// weight at (x, z) when one is set.
   [[nodiscard]] std::array<double, 3> displacement_at(double x, double z) const;
   /// Height of the rendered surface above world (x, z): finds the undisplaced point p with
   /// p + D_xz(p) = (x, z) by fixed-point iteration and Newton refinement (M.7.7), then
@@ -243,6 +257,7 @@ class Simulator {
   int front_ = 0;
   std::unique_ptr<Async> async_;
   std::shared_ptr<const waves::LocalLayer> local_layer_;
+  std::shared_ptr<const waves::Damping> damping_;
 };
 
 /// The height queries of Simulator::heights_at on a local layer alone, at time t: the surface of

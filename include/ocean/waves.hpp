@@ -19,6 +19,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -122,6 +123,58 @@ Status validate(const Waveform& waveform);
 /// Height of the waveform at world (x, z): amplitude times the bilinear sample of its map (clamped
 /// at the map's edge cells), 0 outside its rectangle (W.10).
 double waveform_height(const Waveform& waveform, double x, double z);
+
+/// A 2-D map placed in the world by its corner: sample (row r, col c) lies at world
+/// x = x0 + (c + ½)·cell, z = z0 + (r + ½)·cell, cell = size_m / cols, so the map covers
+/// [x0, x0 + size_m] × [z0, z0 + size_m·rows/cols] (rows along +z, as the local layer's files).
+struct PlacedMap {
+  std::shared_ptr<const HeightMap> map;
+  std::array<double, 2> origin_m{0.0, 0.0};  ///< (x0, z0), finite
+  double size_m = 0.0;                       ///< extent along the columns, m, finite and > 0
+};
+/// Bilinear value of the map at world (x, z), clamped to the edge samples inside its rectangle;
+/// `outside` beyond the rectangle. Never allocates.
+double sample(const PlacedMap& placed, double x, double z, double outside);
+
+/// Most cascades (bands) a Damping weighs.
+inline constexpr std::size_t kMaxBands = 16;
+
+/// Where the sea's high-frequency bands are damped: a mask and a bathymetry, both optional.
+struct DampingParams {
+  /// Values in [0, 1]: 0 = the low band (cascade 0) only, 1 = every band; 1 outside the map.
+  std::optional<PlacedMap> mask;
+  /// Water depth, m, finite and ≥ 0; deep water (no attenuation) outside the map.
+  std::optional<PlacedMap> bathymetry;
+  /// Representative wavenumber of each band, rad/m, lowest band first (sim.hpp's
+  /// band_wavenumbers); 1 to kMaxBands values, finite and > 0.
+  std::vector<double> band_wavenumbers_radpm;
+  double gravity_mps2 = 9.81;  ///< g > 0
+};
+/// invalid_argument naming the field and value: a bad placement, a mask value outside [0, 1], a
+/// negative or non-finite depth ("bathymetry value 12 = -3 ..."), bad wavenumbers.
+Status validate(const DampingParams& params);
+
+/// The amplitude weight of a band of (deep-water) wavenumber k over water of depth d (W.12):
+/// √Φ(ω, d), ω = √(g·k), Φ the Kitaigorodskii depth factor of TMA (Bouws et al. 1985) relative
+/// to its deep-water value 1. In [0, 1]; 1 for d = ∞, 0 for d = 0.
+double depth_band_weight(double wavenumber_radpm, double depth_m, double gravity_mps2);
+
+/// The per-band weights of a damping mask and a bathymetry at any world point (W.12–W.13): what
+/// the height queries multiply each cascade's displacement by, and what a renderer multiplies
+/// each cascade's sample by per pixel. Immutable; const methods are thread-safe.
+class Damping {
+ public:
+  static Result<Damping> make(DampingParams params);
+  [[nodiscard]] const DampingParams& params() const { return params_; }
+  [[nodiscard]] std::size_t band_count() const { return params_.band_wavenumbers_radpm.size(); }
+  /// Weight of each band at world (x, z), out[c] for cascade c (out.size() ≥ band_count(); the
+  /// rest is left alone): depth_band_weight(k_c, depth(x, z)) times, for every band but the low
+  /// one, the mask value m(x, z) (W.13). Never allocates.
+  void band_weights(double x, double z, std::span<double> out) const;
+
+ private:
+  DampingParams params_;
+};
 
 /// Everything composited into a layer.
 struct LayerParams {

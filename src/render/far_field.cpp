@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 
@@ -22,10 +23,6 @@
 namespace ocean::render {
 
 namespace {
-
-// Octave spacings relative to octave 0: VR-GIS FFT+Perlin's step lengths 2, 5, 8 read as
-// frequencies.
-constexpr std::array<double, 3> kCellRatio = {1.0, 2.0 / 5.0, 2.0 / 8.0};
 
 double fade(double t) { return t * t * t * (t * (t * 6.0 - 15.0) + 10.0); }
 double fade_derivative(double t) { return 30.0 * t * t * (t * (t - 2.0) + 1.0); }
@@ -94,7 +91,11 @@ UnitNoiseMoments unit_noise_moments() {
   return m;
 }
 
-Result<BandStatistics> cascade0_statistics(const SimulationConfig& config) {
+namespace {
+
+// Cascade 0's wave vectors (as make_initial_spectrum fills them and src/statistics sums them)
+// whose |k| lies in [k_from, k_to) ∩ its band: the sums of BandStatistics.
+Result<BandStatistics> band_statistics(const SimulationConfig& config, double k_from, double k_to) {
   Result<SeaState> sea = SeaState::make(config.sea);
   if (!sea.ok()) return sea.status();
   const std::array<double, 2> band = cascade_bands(config).front();
@@ -103,12 +104,11 @@ Result<BandStatistics> cascade0_statistics(const SimulationConfig& config) {
   const double spacing = config.cascade_patch_sizes_m.front() / n;
   BandStatistics s;
   double h2 = 0.0, s2 = 0.0;
-  // The wave vectors make_initial_spectrum fills for cascade 0 (as src/statistics sums them).
   for (int row = 1; row < n; ++row) {
     for (int col = 1; col < n; ++col) {
       const double kx = dk * (col - half), kz = dk * (row - half);
       const double k = std::hypot(kx, kz);
-      if (k <= 0.0 || k < band[0] || k >= band[1]) continue;
+      if (k <= 0.0 || k < band[0] || k >= band[1] || k < k_from || k >= k_to) continue;
       const double power = sea.value().wave_vector_spectrum(kx, kz) * dk * dk;
       const std::array<double, 2> t = slope_transfer(config.normals, kx, kz, spacing);
       const double slope_power = (t[0] * t[0] + t[1] * t[1]) * power;
@@ -126,43 +126,43 @@ Result<BandStatistics> cascade0_statistics(const SimulationConfig& config) {
   return s;
 }
 
+}  // namespace
+
+Result<BandStatistics> cascade0_statistics(const SimulationConfig& config) {
+  return band_statistics(config, 0.0, std::numeric_limits<double>::infinity());
+}
+
 Result<FarFieldNoise> fit_far_field_noise(const SimulationConfig& config) {
   Result<BandStatistics> target = cascade0_statistics(config);
   if (!target.ok()) return target.status();
   FarFieldNoise noise;
   noise.target = target.value();
-  const double var_h = noise.target.height_variance_m2, var_s = noise.target.slope_variance;
   const UnitNoiseMoments unit = unit_noise_moments();
-  if (!(var_h > 0.0) || !(var_s > 0.0)) {  // a flat band: octaves of zero amplitude
-    noise.cell_m = {1.0, kCellRatio[1], kCellRatio[2]};
-    return noise;
-  }
-  // One octave of spacing ℓ matches both: a²G = var_h and 2a²Gs/ℓ² = var_s. The three spacings
-  // are set around ℓ (octave 0 at 2ℓ, octave 2 at ℓ/2: their geometric mean), and octave
-  // variances a_o² ∝ r^o with r solved by bisection on log r: the slope-to-height ratio they give
-  // grows monotonically with r, from 1/(2ℓ)² to 4/ℓ² times 2Gs/G, which brackets the target.
-  const double ell = std::sqrt(2.0 * unit.slope_variance * var_h / (unit.height_variance * var_s));
-  for (std::size_t o = 0; o < 3; ++o) noise.cell_m[o] = 2.0 * ell * kCellRatio[o];
-  const auto ratio = [&](double r) {
-    double h = 0.0, s = 0.0, x = 1.0;
-    for (std::size_t o = 0; o < 3; ++o, x *= r) {
-      h += x * unit.height_variance;
-      s += x * 2.0 * unit.slope_variance / (noise.cell_m[o] * noise.cell_m[o]);
+  // The band's wavenumbers on the grid, from the lowest (one period) to its upper edge or the
+  // grid's corner, in three equal ratios: octave o stands for the waves of sub-band o.
+  const int n = config.resolution;
+  const double dk = 2.0 * std::numbers::pi / config.cascade_patch_sizes_m.front();
+  const std::array<double, 2> band = cascade_bands(config).front();
+  const double k_lo = std::max(band[0], dk);
+  const double k_hi = std::min(band[1], dk * (n / 2) * std::numbers::sqrt2);
+  const double step = std::cbrt(std::max(k_hi / k_lo, 1.0));
+  double k_from = 0.0;
+  for (std::size_t o = 0; o < 3; ++o) {
+    const double k_to = o == 2 ? std::numeric_limits<double>::infinity()
+                               : k_lo * std::pow(step, static_cast<double>(o + 1));
+    Result<BandStatistics> sub = band_statistics(config, k_from, k_to);
+    if (!sub.ok()) return sub.status();
+    const double var_h = sub.value().height_variance_m2, var_s = sub.value().slope_variance;
+    // One octave of spacing ℓ and amplitude a has a²G = var_h and 2a²Gs/ℓ² = var_s.
+    if (var_h > 0.0 && var_s > 0.0) {
+      noise.cell_m[o] =
+          std::sqrt(2.0 * unit.slope_variance * var_h / (unit.height_variance * var_s));
+      noise.amplitude_m[o] = std::sqrt(var_h / unit.height_variance);
+      noise.slope_variance[o] = var_s;
+    } else {  // an empty sub-band: an octave of zero amplitude at the sub-band's scale
+      noise.cell_m[o] = std::numbers::pi / (k_lo * std::pow(step, static_cast<double>(o) + 0.5));
     }
-    return s / h;
-  };
-  double lo = -30.0, hi = 30.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (ratio(std::exp(mid)) < var_s / var_h ? lo : hi) = mid;
-  }
-  const double r = std::exp(0.5 * (lo + hi));
-  const double scale = var_h / (unit.height_variance * (1.0 + r + r * r));
-  double x = 1.0;
-  for (std::size_t o = 0; o < 3; ++o, x *= r) {
-    noise.amplitude_m[o] = std::sqrt(scale * x);
-    noise.slope_variance[o] =
-        scale * x * 2.0 * unit.slope_variance / (noise.cell_m[o] * noise.cell_m[o]);
+    k_from = k_to;
   }
   return noise;
 }

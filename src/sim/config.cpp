@@ -128,6 +128,18 @@ std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& c) {
   return bands;
 }
 
+std::vector<double> band_wavenumbers(const SimulationConfig& c) {
+  std::vector<double> k;
+  const std::vector<std::array<double, 2>> bands = cascade_bands(c);
+  for (std::size_t i = 0; i < bands.size(); ++i) {
+    const double lo = i == 0 ? 2.0 * kPi / c.cascade_patch_sizes_m[i] : bands[i][0];
+    const double hi =
+        std::isfinite(bands[i][1]) ? bands[i][1] : kPi * c.resolution / c.cascade_patch_sizes_m[i];
+    k.push_back(std::sqrt(lo * hi));  // (W.14)
+  }
+  return k;
+}
+
 InitialSpectrumParams cascade_spectrum_params(const SimulationConfig& c, std::size_t index) {
   const std::array<double, 2> band = cascade_bands(c)[index];
   return {.grid = {.resolution = c.resolution, .patch_size_m = c.cascade_patch_sizes_m[index]},

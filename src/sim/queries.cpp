@@ -1,6 +1,7 @@
 // Height queries on the published frame: bilinear displacement sampling with wrap (as a GPU
-// samples the maps) and the inverse of the horizontal displacement for buoyancy.
-// Equations: docs/math.md (M.7.6), (M.7.7).
+// samples the maps), each cascade weighed by the damping's band weight, and the inverse of the
+// horizontal displacement for buoyancy. Equations: docs/math.md (M.7.6), (M.7.7); docs/waves.md
+// (W.13).
 #include <cmath>
 
 #include "ocean/sim.hpp"
@@ -10,7 +11,8 @@ namespace ocean {
 
 namespace {
 
-void add_bilinear(const CascadeFrame& c, double x, double z, std::array<double, 3>& sum) {
+void add_bilinear(const CascadeFrame& c, double x, double z, double weight,
+                  std::array<double, 3>& sum) {
   const int n = c.resolution;
   const double scale = n / c.patch_size_m;  // texels per metre
   const double u = x * scale;
@@ -30,7 +32,7 @@ void add_bilinear(const CascadeFrame& c, double x, double z, std::array<double, 
   for (int comp = 0; comp < 3; ++comp) {
     const double top = texel(c0, r0, comp) * (1.0 - fu) + texel(c1, r0, comp) * fu;
     const double bottom = texel(c0, r1, comp) * (1.0 - fu) + texel(c1, r1, comp) * fu;
-    sum[static_cast<std::size_t>(comp)] += top * (1.0 - fv) + bottom * fv;  // (M.7.6)
+    sum[static_cast<std::size_t>(comp)] += weight * (top * (1.0 - fv) + bottom * fv);  // (M.7.6)
   }
 }
 
@@ -75,9 +77,18 @@ void Simulator::set_local_layer(std::shared_ptr<const waves::LocalLayer> layer) 
   local_layer_ = std::move(layer);
 }
 
+void Simulator::set_damping(std::shared_ptr<const waves::Damping> damping) {
+  damping_ = std::move(damping);
+}
+
 std::array<double, 3> Simulator::displacement_at(double x, double z) const {
   std::array<double, 3> sum{0.0, 0.0, 0.0};
-  for (const CascadeFrame& c : frame().cascades) add_bilinear(c, x, z, sum);
+  const std::vector<CascadeFrame>& cascades = frame().cascades;
+  std::array<double, waves::kMaxBands> weight;
+  weight.fill(1.0);
+  if (damping_ != nullptr) damping_->band_weights(x, z, weight);  // (W.13)
+  for (std::size_t c = 0; c < cascades.size(); ++c)
+    add_bilinear(cascades[c], x, z, c < weight.size() ? weight[c] : 1.0, sum);
   if (local_layer_ != nullptr) {
     const std::array<double, 3> local = local_layer_->displacement_at(x, z, frame().time_s);
     for (std::size_t k = 0; k < 3; ++k) sum[k] += local[k];

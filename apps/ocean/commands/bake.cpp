@@ -120,6 +120,11 @@ int run_bake(const BakeOptions& o) {
   params.frame_count = frames;
   params.fps = fps.value();
   params.start_time_s = start.value();
+  if (!o.waves.damping_mask.empty() || !o.waves.bathymetry.empty()) {
+    return report(invalid_argument(
+        "--damping-mask and --bathymetry are not applied by bake: its tiles are periodic and a "
+        "world-space map has no place on them (ocean query applies them)"));
+  }
   Result<std::shared_ptr<const waves::LocalLayer>> layer = make_layer(o.waves, c.choppiness);
   if (!layer.ok()) return report(layer.status());
   params.local_layer = layer.value();

@@ -1,6 +1,7 @@
 // `ocean query`: the height of the rendered surface above points (x, z) at a time — the sea of
 // the simulation flags (or none with --calm) plus the local layer's wakes and waveforms — through
-// the library's inverse-displacement query (Simulator::heights_at, ocean::heights_at).
+// the library's inverse-displacement query (Simulator::heights_at, ocean::heights_at), the sea's
+// bands damped by --damping-mask and --bathymetry.
 #include <iostream>
 #include <memory>
 
@@ -53,6 +54,8 @@ int run_query(const QueryOptions& o) {
   Result<std::shared_ptr<const waves::LocalLayer>> layer =
       make_layer(o.waves, config.value().choppiness);
   if (!layer.ok()) return report(layer.status());
+  Result<std::shared_ptr<const waves::Damping>> damping = make_damping(o.waves, config.value());
+  if (!damping.ok()) return report(damping.status());
   if (layer.value() != nullptr) print_warnings(*layer.value(), time.value());
   std::vector<HeightSample> out(points.value().size());
   if (o.waves.calm) {
@@ -61,6 +64,7 @@ int run_query(const QueryOptions& o) {
     Result<std::unique_ptr<Simulator>> sim = make_simulator(config.value(), o.backend);
     if (!sim.ok()) return report(sim.status());
     sim.value()->set_local_layer(layer.value());
+    sim.value()->set_damping(damping.value());
     sim.value()->step(time.value());
     sim.value()->heights_at(points.value(), out);
   }

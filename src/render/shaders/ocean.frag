@@ -62,30 +62,37 @@ void main() {
     Shade plain = Shade(vec2(0.0), 0.0, 0.0), tiled = Shade(vec2(0.0), 0.0, 0.0);
     // Sampled in uniform control flow (implicit derivatives), used where the ratio is below 1.
     plain = shade_of(texture(normal_map, vec3(uv, float(c))), alpha0_sq);
+    float taps_sum = 0.0;
     if (hex > 0.0) {
       HexTaps taps = hex_taps(uv, c);
+      taps_sum = taps.weight.x + taps.weight.y + taps.weight.z;
       for (int i = 0; i < 3; ++i) {
         vec4 t = textureGrad(normal_map, vec3(uv + taps.offset[i], float(c)), dx * inv_size,
                              dy * inv_size);
         Shade one = shade_of(t, alpha0_sq);
         float w = taps.weight[i];
         tiled.slope += w * one.slope;
-        tiled.foam += w * w * one.foam;  // Σ w² = 1: a weighted mean
+        tiled.foam += w * one.foam;  // about the mean below, so flecks keep their contrast
         tiled.extra += w * w * one.extra;
       }
     }
+    // Foam blends like the slopes, about the cascade's mean coverage (its last mip), with the
+    // weights whose squares sum to one: the mean and the contrast of the whitecaps are kept
+    // where tiles meet, which a weighted mean would dim (Heitz & Neyret 2018; R.14).
+    float mean_foam = textureLod(normal_map, vec3(uv, float(c)), 16.0).z;
+    tiled.foam += (1.0 - taps_sum) * mean_foam;
     Shade sh;
     sh.slope = mixing.x * plain.slope + mixing.y * tiled.slope;
-    sh.foam = mixing.x * mixing.x * plain.foam + mixing.y * mixing.y * tiled.foam;
+    sh.foam = clamp(mean_foam + mixing.x * (plain.foam - mean_foam) +
+                        mixing.y * (tiled.foam - mean_foam), 0.0, 1.0);
     sh.extra = mixing.x * mixing.x * plain.extra + mixing.y * mixing.y * tiled.extra;
     if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
       vec3 cell = u.far_field.cell_m.xyz;
-      vec3 w = clamp(2.0 - 8.0 * footprint / cell, 0.0, 1.0);  // octaves finer than 4 pixels fade
+      vec3 w = clamp(2.0 - 4.0 * footprint / cell, 0.0, 1.0);  // cells below 4 pixels fade
       float h, sx, sz;
       far_field_noise(u.far_field, world_xz.x, world_xz.y, w.x, w.y, w.z, h, sx, sz);
       float unresolved = dot(1.0 - w * w, u.far_field.slope_variance.xyz);
       sh.slope = blend.x * sh.slope + blend.y * vec2(sx, sz);
-      sh.foam *= blend.x * blend.x;
       sh.extra = blend.x * blend.x * sh.extra + blend.y * blend.y * unresolved;
     }
     slope += sh.slope;
