@@ -52,6 +52,29 @@ Mesh flat_mesh(std::span<const std::array<double, 3>> vertices,
 /// echoed through ocean::excerpt. Never throws.
 Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path);
 
+/// What the seabed looks like.
+enum class SeabedPattern : std::uint8_t {
+  sand,     ///< albedo modulated by low ripples (±15 %)
+  checker,  ///< squares of side period/2, albedo and a quarter of it (tests, calibration)
+};
+
+/// A flat seabed seen through the water (docs/rendering.md R.22–R.23): the view ray refracted at
+/// the surface (Snell, n = 1.333), attenuated along its path in the water and the light along
+/// its way down by Beer–Lambert with the absorption of pure water, mixed with the water body's
+/// colour as shallow-water reflectance (Maritorena, Morel & Gentili 1994).
+struct Seabed {
+  bool enabled = false;
+  double depth_m = 5.0;                          ///< below the mean sea level, (0, 1e4]
+  std::array<double, 3> albedo{0.6, 0.55, 0.4};  ///< linear RGB, [0, 1]: pale sand
+  SeabedPattern pattern = SeabedPattern::sand;
+  double period_m = 2.0;  ///< of the pattern, (0, 1e4]
+  /// Absorption coefficient per channel, 1/m, [0, 100]: pure water at 650, 550 and 450 nm
+  /// (Pope & Fry 1997, Table 3: 0.340, 0.0565, 0.00922 m⁻¹) — the clearest water there is.
+  std::array<double, 3> absorption_per_m{0.340, 0.0565, 0.00922};
+};
+/// invalid_argument naming the field for values outside the ranges above or not finite.
+Status validate(const Seabed& seabed);
+
 /// One placed mesh: the index into the meshes given to Renderer::set_meshes and its transform.
 struct ObjectInstance {
   std::uint32_t mesh = 0;

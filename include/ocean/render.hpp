@@ -87,6 +87,8 @@ struct View {
   /// Meshes placed in the world (indices into Renderer::set_meshes), drawn after the water and
   /// depth-tested with it (R.20). Each model matrix must be finite.
   std::vector<ObjectInstance> objects;
+  /// A seabed seen through the water (R.22–R.23); off by default.
+  Seabed seabed;
 };
 Status validate(const View& view);
 

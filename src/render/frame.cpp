@@ -117,6 +117,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   stats_.draw_calls = 1;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                     view.debug == DebugView::wireframe ? st.wire : st.ocean);
+  push_seabed(st, cmd, view);
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
   vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);

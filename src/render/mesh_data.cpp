@@ -65,6 +65,16 @@ Mesh flat_mesh(std::span<const std::array<double, 3>> vertices,
   return mesh;
 }
 
+Status validate(const Seabed& s) {
+  if (Status st = require_in_range("seabed depth_m", s.depth_m, 1e-3, 1e4); !st.ok()) return st;
+  if (Status st = require_in_range("seabed period_m", s.period_m, 1e-3, 1e4); !st.ok()) return st;
+  for (double c : s.albedo)
+    if (Status st = require_in_range("seabed albedo", c, 0.0, 1.0); !st.ok()) return st;
+  for (double a : s.absorption_per_m)
+    if (Status st = require_in_range("seabed absorption_per_m", a, 0.0, 100.0); !st.ok()) return st;
+  return {};
+}
+
 std::array<double, 16> model_matrix(const std::array<double, 3>& position_m,
                                     const std::array<double, 4>& q) {
   const double w = q[0], x = q[1], y = q[2], z = q[3];

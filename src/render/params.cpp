@@ -56,6 +56,7 @@ Status validate(const View& view) {
     for (double m : view.objects[i].model)
       if (!std::isfinite(m))
         return invalid_argument("objects[" + std::to_string(i) + "].model is not finite");
+  if (Status s = validate(view.seabed); !s.ok()) return s;
   return validate(view.shading);
 }
 

@@ -1,8 +1,8 @@
 // `ocean render --object ... [--float]`: built-in shapes and a glTF file in the picture, floating
 // on the waves; bad input — a NaN or out-of-range coordinate, an unknown kind, a missing,
 // malformed or (with --float) open glTF mesh, --float without an object — is one line and a
-// non-zero exit with nothing written. Skips the rendering cases where no Vulkan device exists
-// (fails them with OCEAN_REQUIRE_DEVICES=1).
+// non-zero exit with nothing written; so is a seabed depth that is not a positive number. Skips the
+// rendering cases where no Vulkan device exists (fails them with OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -42,6 +42,8 @@ TEST(ObjectsCli, RefusesBadObjectsWithOneLine) {
       {"--object " + garbage.string() + ",0,0,0", "cannot read"},
       {"--object " + open.string() + ",0,0,0 --float", "cannot float"},
       {"--float", "--float needs"},
+      {"--seabed -2", "--seabed"},
+      {"--seabed nan", "--seabed"},
   };
   for (const auto& [args, words] : cases) {
     const ocean_test::CliRun r =

@@ -37,6 +37,7 @@ struct RenderOptions {
   std::string contact_sheet;
   std::vector<std::string> objects;  // --object, repeatable
   bool floating = false;             // --float
+  std::string seabed;                // --seabed DEPTH_M
   bool json = false;
 };
 
@@ -52,6 +53,8 @@ constexpr NumberOption<long long> kFrames{
     .flag = "--frames", .accept = Accept::whole_in_range, .lo = 1.0, .hi = 1e6};
 constexpr NumberOption<double> kFps{
     .flag = "--fps", .accept = Accept::in_range, .lo = 1e-3, .hi = 1000.0};
+constexpr NumberOption<double> kSeabed{
+    .flag = "--seabed", .accept = Accept::in_range, .lo = 1e-3, .hi = 1e4, .unit = "m"};
 constexpr NumberOption<double> kWarmup{
     .flag = "--warmup", .accept = Accept::in_range, .lo = 0.0, .hi = 600.0};
 
@@ -117,6 +120,11 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
     Result<ObjectSpec> spec = parse_object_spec(text);
     if (!spec.ok()) return spec.status();
     in.objects.push_back(spec.value());
+  }
+  if (!o.seabed.empty()) {
+    Result<double> depth = parse(kSeabed, o.seabed);
+    if (!depth.ok()) return depth.status();
+    v.seabed = {.enabled = true, .depth_m = depth.value()};
   }
   if (o.floating && o.objects.empty())
     return invalid_argument("--float needs at least one --object");
@@ -342,6 +350,9 @@ Command add_render_command(CLI::App& app) {
   command->add_flag("--float", o->floating,
                     "let the objects float: simulate them as rigid bodies on the waves from t = 0 "
                     "to the picture's time (glTF meshes must be closed)");
+  add_option(*command, kSeabed, o->seabed,
+             "a flat sandy seabed this far below the sea level, m, seen through clear water "
+             "(refraction, absorption of pure water)");
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};
 }

@@ -12,6 +12,7 @@
 // distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano
 // & Baker (2010) "LEAN mapping" (slope variance adds across layers and filtering, R.5).
 #include "far_field.glsl"
+#include "seabed.glsl"
 
 layout(location = 0) in vec2 world_xz;
 layout(location = 1) in vec3 world_pos;
@@ -144,7 +145,7 @@ void main() {
   float forward = (1.0 - g * g) / (4.0 * PI * hg_d * sqrt(hg_d));  // Henyey–Greenstein
   vec3 through = u.crest_scatter * u.water_colour * sun_e * forward * crest *
                  pow(clamp(0.5 - 0.5 * dot(L, N), 0.0, 1.0), 2.0);
-  vec3 s = body + through;
+  vec3 s = through_water(body + through, world_pos, V, N, L);  // a seabed, if any (R.22)
 
   // Mitchell 2005, eq. 5: s·(1 − r) + r·(env + sun).
   vec3 c = s * (1.0 - fresnel) + fresnel * (env + sun);
