@@ -54,7 +54,7 @@ Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path);
 
 /// What the seabed looks like.
 enum class SeabedPattern : std::uint8_t {
-  sand,     ///< albedo modulated by low ripples (±15 %)
+  sand,     ///< albedo modulated by low ripples (±30 %)
   checker,  ///< squares of side period/2, albedo and a quarter of it (tests, calibration)
 };
 

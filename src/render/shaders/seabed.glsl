@@ -33,7 +33,7 @@ vec3 seabed_albedo(vec2 xz, vec2 footprint) {
   }
   vec2 p = 6.2831853 * xz / period;  // low sand ripples, faded where finer than the pixel
   float fade = clamp(2.0 - 4.0 * max(footprint.x, footprint.y) / period, 0.0, 1.0);
-  return albedo * (1.0 + 0.15 * fade * sin(p.x + 0.6 * sin(0.37 * p.y)) * sin(0.41 * p.y + 1.3));
+  return albedo * (1.0 + 0.3 * fade * sin(p.x + 0.6 * sin(0.37 * p.y)) * sin(0.41 * p.y + 1.3));
 }
 
 // The colour under the surface: `body` (R∞, the deep water's scattered light, R.11) over the bed
