@@ -137,15 +137,15 @@ TEST(Buoyancy, HeaveEnergyStaysBoundedWithoutDrag) {
     return 0.5 * m * v * v + 0.5 * k * y * y;
   };
   const double e0 = energy(), bound = std::sqrt(k / m) * dt / (2 - std::sqrt(k / m) * dt);
-  for (int i = 0; i < 20000; ++i) {
+  for (int i = 0; i < 10000; ++i) {
     ASSERT_TRUE(body.step(calm_surface(), dt).ok());
     ASSERT_NEAR(energy() / e0, 1.0, 1.05 * bound) << "step " << i;
   }
 }
 
 TEST(Buoyancy, LongRunInWavesDoesNotBlowUp) {
-  // A boat, tilted and spinning at the start, five minutes in a steep long wave with the default
-  // drag: its heave stays within the wave's reach and its rotation bounded.
+  // A boat, tilted and spinning at the start, two and a half minutes in a steep long wave with the
+  // default drag: its heave stays within the wave's reach and its rotation bounded.
   const LongWave wave{.amplitude_m = 1.0, .period_s = 7.0};
   auto params = solid_body(boat_hull(8.0, 3.0, 1.2).value(), 350.0).value();
   BodyState start{.position_m = {0.0, 0.0, 0.0}, .angular_velocity_radps = {0.5, 0.2, 0.1}};
@@ -157,7 +157,7 @@ TEST(Buoyancy, LongRunInWavesDoesNotBlowUp) {
     for (std::size_t i = 0; i < xz.size(); ++i) out[i].height_m = wave.height(xz[i][0], t);
   };
   double max_omega = 0.0;
-  for (int i = 0; i < 300 * 60; ++i) {
+  for (int i = 0; i < 150 * 60; ++i) {
     ASSERT_TRUE(body.step(surface, 1.0 / 60).ok()) << i;
     t += 1.0 / 60;
     ASSERT_LT(std::abs(body.state().position_m[1]), 2.0 * wave.amplitude_m + 1.2) << t;
