@@ -9,6 +9,7 @@
 //   uniforms.cpp     the sky table and the per-frame uniforms
 //   frame.cpp        the recorded frame: LOD selection, HDR pass, tone-map pass
 //   renderer.cpp     construction, resizing, submission, read-back
+//   objects.cpp      the object pass (object_pass.hpp); seabed.cpp the seabed's push constants
 #pragma once
 
 #include <array>
