@@ -1,4 +1,5 @@
-// The flags of the local layer (ocean/waves.hpp) shared by `ocean bake` and `ocean query`:
+// The flags of the local layer (ocean/waves.hpp) shared by `ocean bake`, `ocean query` and `ocean
+// render`:
 // --calm, --kelvin-wake, --waveform, --local-area, --local-resolution, turned into a layer, and
 // --damping-mask, --bathymetry, turned into the damping of the sea's bands (query only).
 #pragma once

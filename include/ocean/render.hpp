@@ -113,6 +113,15 @@ struct RendererParams {
   int height = 720;  ///< [1, 16384] and what the device and memory hold (Renderer::resize)
 };
 
+/// A world-space grid of (Dx, h, Dz) over the square [x0, x0 + size] × [z0, z0 + size]: the shape
+/// of ocean/waves.hpp's LocalFrame, cell (col, row) at the cell's centre.
+struct LocalLayerGrid {
+  std::array<double, 2> origin_m{0.0, 0.0};
+  double size_m = 0.0;
+  int resolution = 0;                   ///< N cells per side
+  std::span<const float> displacement;  ///< 3·N² floats, or empty for no layer
+};
+
 class Renderer {
  public:
   /// Builds pipelines, targets and the patch meshes. The context must have been created with
@@ -140,6 +149,14 @@ class Renderer {
   /// GPU path: samples these images (a VulkanBackend's on the same context) from now on, until
   /// upload() or configure() is called. The images must stay alive while they are in use.
   void use_simulation_images(const vk::SimulationImages& images);
+  /// The local layer (ocean/waves.hpp: wakes and waveforms; docs/rendering.md R.19) to add to
+  /// the cascades from the next draw on, until called again: `grid` is a LocalFrame's area and
+  /// displacement (float3 (Dx, h, Dz) per cell, row-major, rows along +z). Displacement,
+  /// normals and foam (from the layer's own Jacobian) join the sea's where the area covers the
+  /// surface. An empty displacement removes the layer. Copies the data (staging); reallocates
+  /// only when the side changes. invalid_argument for a bad area, a side outside [1, 4096] or an
+  /// array of the wrong size.
+  Status set_local_layer(const LocalLayerGrid& grid);
 
   /// Uploads the meshes View::objects refers to by index (allocates; replaces the previous set,
   /// waiting for the device first). invalid_argument naming the mesh (validate(Mesh)).

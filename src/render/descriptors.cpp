@@ -1,6 +1,6 @@
 // The renderer's samplers and descriptors: one set for the scene (frame uniforms, displacement
-// array, normal/foam array with its mips, the sky-view table) and one for the tone map (the HDR
-// image). Binding numbers: shaders/render_shared.h.
+// array, normal/foam array with its mips, the sky-view table, the local layer) and one for the tone
+// map (the HDR image). Binding numbers: shaders/render_shared.h.
 #include "state.hpp"
 
 namespace ocean::render {
@@ -40,7 +40,14 @@ void write_scene_images(Renderer::State& st) {
                                    VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo normal{st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo lut{st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet writes[4] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+  const VkDescriptorImageInfo local{st.local_sampler, st.local_image.view, VK_IMAGE_LAYOUT_GENERAL};
+  VkWriteDescriptorSet writes[5] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_LOCAL,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &local},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                                      .dstSet = st.scene_set,
                                      .dstBinding = OCEAN_RENDER_BINDING_SKY_LUT,
                                      .descriptorCount = 1,
@@ -64,7 +71,7 @@ void write_scene_images(Renderer::State& st) {
                                      .descriptorCount = 1,
                                      .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                      .pImageInfo = &normal}};
-  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 4u : 2u;
+  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 5u : 3u;
   vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
 }
 
@@ -94,6 +101,9 @@ Status create_descriptors(Renderer::State& st) {
   Result<VkSampler> s4 = make_sampler(ctx, true, false, true, 1.0f, false);
   if (!s4.ok()) return s4.status();
   st.lut_sampler = s4.value();
+  Result<VkSampler> s5 = make_sampler(ctx, true, false, false, 1.0f);
+  if (!s5.ok()) return s5.status();
+  st.local_sampler = s5.value();
 
   const VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
   const VkDescriptorSetLayoutBinding scene_bindings[] = {
@@ -103,7 +113,8 @@ Status create_descriptors(Renderer::State& st) {
       {OCEAN_RENDER_BINDING_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {OCEAN_RENDER_BINDING_SKY_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
+       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {OCEAN_RENDER_BINDING_LOCAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr}};
   const VkDescriptorSetLayoutCreateInfo scene_info{
       .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
       .bindingCount = OCEAN_RENDER_SCENE_BINDINGS,
@@ -126,7 +137,7 @@ Status create_descriptors(Renderer::State& st) {
       !s.ok())
     return s;
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 4}};
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 5}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
                                              .maxSets = 2,
                                              .poolSizeCount = 2,

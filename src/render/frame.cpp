@@ -59,6 +59,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
     vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
     st.lut_pending = false;
   }
+  if (st.local_pending) record_local_upload(st, cmd);
   if (st.upload_pending) {
     record_uploads(st, cmd);
     st.upload_pending = false;

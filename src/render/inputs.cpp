@@ -20,6 +20,7 @@ Status Renderer::configure(const SimulationConfig& config) {
   if (!sea.ok()) return sea.status();
   st.hs_m = 4.0 * std::sqrt(std::max(sea.value().variance_m2(), 0.0));
   st.choppiness = config.choppiness;
+  st.foam_ramp = {config.foam.jacobian_start, config.foam.jacobian_full};
   Result<FarFieldNoise> far = fit_far_field_noise(config);
   if (!far.ok()) return far.status();
   st.far_noise = far.value();

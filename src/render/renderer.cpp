@@ -39,6 +39,7 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
   if (!lut_staging.ok()) return lut_staging.status();
   st.lut_staging = lut_staging.value();
+  if (Status s = create_local_layer(st); !s.ok()) return s;
   write_scene_images(st);
   // Instances: the most any selection can hold (W² at S = 8192) and the skirt's one.
   if (Status s = lod::reserve_selection(st.selection, lod::kMaxOceanSize_m); !s.ok()) return s;

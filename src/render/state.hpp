@@ -77,6 +77,15 @@ struct Renderer::State {
   double hs_m = 1.0;
   FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
   double choppiness = 1.0;
+  std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
+  // The local layer (R.19): an RGBA16F image of (Dx, h, Dz, 0), 1×1 of zeros until
+  // set_local_layer(); its staging buffer and placement.
+  vk::Image2D local_image;
+  vk::Buffer local_staging;
+  VkSampler local_sampler = VK_NULL_HANDLE;
+  bool local_pending = false;
+  std::uint32_t local_side = 0;
+  shader::LocalLayerUniforms local{};
   ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
 
   ~State();
@@ -111,6 +120,9 @@ Status write_skirt_vertices(Renderer::State& st, const View& view);
 
 // inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
+// local_layer.cpp: the 1×1 empty layer made at construction, and the copy of a staged layer.
+Status create_local_layer(Renderer::State& st);
+void record_local_upload(Renderer::State& st, VkCommandBuffer cmd);
 
 // uniforms.cpp: recomputes the sky-view table and the irradiances when the sky's parameters
 // changed.

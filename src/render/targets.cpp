@@ -26,7 +26,10 @@ Renderer::State::~State() {
     if (l != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, l, nullptr);
   vk::destroy_image(*ctx, sky_lut);
   vk::destroy_buffer(*ctx, lut_staging);
-  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler})
+  vk::destroy_image(*ctx, local_image);
+  vk::destroy_buffer(*ctx, local_staging);
+  for (VkSampler s :
+       {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler, local_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
   for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices})
     vk::destroy_buffer(*ctx, *b);

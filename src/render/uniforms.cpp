@@ -76,6 +76,9 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
       .far_m = f(view.far_field.far_m),
       .enabled = u.cascade_count > 0.0f ? 1.0f : 0.0f,
       .far_pad = 0.0f};
+  u.local = st.local;
+  u.local.foam_j_start = f(st.foam_ramp[0]);
+  u.local.foam_j_full = f(st.foam_ramp[1]);
 }
 
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).

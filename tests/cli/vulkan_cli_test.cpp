@@ -68,6 +68,32 @@ TEST(VulkanCli, ValidatePassesAndReportsTheError) {
   EXPECT_LE(j["errors"]["height_rel_hs"].get<double>(), bounds.height_rel_hs);
 }
 
+// `ocean bench --table-one`: VR-GIS FFT+Perlin's Table I measured here — one row per size with
+// both backends' times and their ratio, and the source's printed figures beside the sizes it
+// has (its 128² row: 31.68 and 4.01 ms). Which backend is faster is the benchmark's to say.
+TEST(VulkanCli, BenchTableOneHasBothBackendsAndTheSourceRow) {
+  std::string why;
+  if (!vulkan_available(&why)) OCEAN_SKIP_OR_FAIL("vulkan unavailable: " + why);
+  const ocean_test::CliRun r =
+      ocean_test::run_cli("bench --table-one --json --resolution 16,128 --min-time 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_FALSE(j["device"].get<std::string>().empty());
+  ASSERT_EQ(j["rows"].size(), 2u);
+  for (const auto& row : j["rows"]) {
+    const double cpu = row["cpu_ms"].get<double>(), gpu = row["gpu_ms"].get<double>();
+    EXPECT_GT(cpu, 0.0);
+    EXPECT_GT(gpu, 0.0);
+    EXPECT_DOUBLE_EQ(row["cpu_over_gpu"].get<double>(), cpu / gpu);
+    EXPECT_EQ(row["cascades"].get<int>(), 1);
+  }
+  EXPECT_FALSE(j["rows"][0].contains("source_ratio"));
+  EXPECT_EQ(j["rows"][1]["source_cpu_ms"].get<double>(), 31.68);
+  EXPECT_EQ(j["rows"][1]["source_gpu_ms"].get<double>(), 4.01);
+  ocean_test::expect_usage_error("bench --table-one --backend vulkan", "--table-one");
+  ocean_test::expect_usage_error("bench --table-one --frame-interval 5", "--table-one");
+}
+
 TEST(VulkanCli, BakeAgreesWithTheCpuBackend) {
   std::string why;
   if (!vulkan_available(&why)) OCEAN_SKIP_OR_FAIL("vulkan unavailable: " + why);

@@ -8,17 +8,24 @@ export async function loadCore() {
   let texels = 0;
   const f32 = (ptr, count) => new Float32Array(m.HEAPF32.buffer, ptr, count).slice();
   return {
-    // sea: { windMps, fetchM, directionRad, resolution, patchSizeM, seed, loopPeriodS }.
+    // sea: { windMps, fetchM, directionRad, resolution, patchSizesM (largest first), seed,
+    // loopPeriodS }; configures cascade `cascade` of it (its band and seed, as natively).
     // Throws an Error with the library's one-line message when the sea is invalid.
-    configure(sea) {
+    configure(sea, cascade = 0) {
+      const sizes = sea.patchSizesM;
+      const ptr = m._malloc(8 * sizes.length);
+      new Float64Array(m.HEAPF64.buffer, ptr, sizes.length).set(sizes);
       const rc = m._ocean_web_configure(sea.windMps, sea.fetchM, sea.directionRad, sea.resolution,
-                                        sea.patchSizeM, sea.seed, sea.loopPeriodS);
+                                        ptr, sizes.length, cascade, sea.seed, sea.loopPeriodS);
+      m._free(ptr);
       if (rc !== 0) throw new Error(m.UTF8ToString(m._ocean_web_error()));
       texels = sea.resolution * sea.resolution;
     },
     spectrum: (omega) => m._ocean_web_spectrum(omega),  // S(ω), m²·s/rad
     peakOmega: () => m._ocean_web_peak_omega(),         // ωp, rad/s
     hs: () => m._ocean_web_hs(),                        // 4·√m0, m
+    // The configured cascade's geometry fade length, m (the native renderer's, R.9).
+    geometryWavelength: () => m._ocean_web_geometry_wavelength(),
     packed: () => f32(m._ocean_web_packed(), 4 * texels),
     phaseRate: () => f32(m._ocean_web_phase_rate(), texels),
     h0: () => new Float64Array(m.HEAPF64.buffer, m._ocean_web_h0(), 2 * texels).slice(),

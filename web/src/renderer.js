@@ -1,5 +1,6 @@
-// renderer.js — the WebGPU render side: sky, then the water grid (shaders/ocean.wgsl) reading the
-// simulation's storage buffers. capture() renders one frame into the canvas texture and reads it
+// renderer.js — the WebGPU render side: sky, then the water grid (shaders/ocean.wgsl) displaced
+// by the sum of the cascades' displacements and shaded from their trilinearly sampled normal/foam
+// mips (cascades.js). capture() renders one frame into the canvas texture and reads it
 // back for the tests (no NaN or black pixels, sky above, water below).
 import { cameraMatrices } from './camera.js';
 
@@ -7,16 +8,16 @@ const kRings = 160;     // rings of the polar grid
 const kSegments = 256;  // segments per ring
 
 export class Renderer {
-  static async create(device, canvas, simulation) {
+  static async create(device, canvas, ocean) {
     const r = new Renderer();
-    await r.init(device, canvas, simulation);
+    await r.init(device, canvas, ocean);
     return r;
   }
 
-  async init(device, canvas, simulation) {
+  async init(device, canvas, ocean) {
     this.device = device;
     this.canvas = canvas;
-    this.simulation = simulation;
+    this.ocean = ocean;
     this.context = canvas.getContext('webgpu');
     this.format = navigator.gpu.getPreferredCanvasFormat();
     this.context.configure({
@@ -28,8 +29,9 @@ export class Renderer {
     const layout = device.createBindGroupLayout({ entries: [
       { binding: 0, visibility: vf, buffer: { type: 'uniform' } },
       { binding: 1, visibility: vf, buffer: { type: 'read-only-storage' } },
-      { binding: 2, visibility: vf, buffer: { type: 'read-only-storage' } },
-      { binding: 3, visibility: vf, buffer: { type: 'read-only-storage' } },
+      { binding: 2, visibility: GPUShaderStage.FRAGMENT,
+        texture: { sampleType: 'float', viewDimension: '2d-array' } },
+      { binding: 3, visibility: GPUShaderStage.FRAGMENT, sampler: { type: 'filtering' } },
     ] });
     const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [layout] });
     const depthStencil = (write) => ({
@@ -47,20 +49,22 @@ export class Renderer {
         fragment: { module, entryPoint: 'water_fs', targets } }),
     ]);
     this.view = device.createBuffer({
-      size: 176, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+      size: 208, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
     this.bindGroup = device.createBindGroup({ layout, entries: [
       { binding: 0, resource: { buffer: this.view } },
-      { binding: 1, resource: { buffer: simulation.displacement } },
-      { binding: 2, resource: { buffer: simulation.surface } },
-      { binding: 3, resource: { buffer: simulation.foam } },
+      { binding: 1, resource: { buffer: ocean.displacement } },
+      { binding: 2, resource: ocean.mips.texture.createView({ dimension: '2d-array' }) },
+      { binding: 3, resource: device.createSampler({
+        addressModeU: 'repeat', addressModeV: 'repeat', magFilter: 'linear',
+        minFilter: 'linear', mipmapFilter: 'linear', maxAnisotropy: 4 }) },
     ] });
     this.depth = null;
   }
 
-  // Records the simulation step at time t and the drawing of camera's view; returns the canvas
+  // Records the cascades' step at time t and the drawing of camera's view; returns the canvas
   // texture drawn into.
   frame(encoder, timeS, camera) {
-    this.simulation.step(encoder, timeS);
+    this.ocean.step(encoder, timeS);
     const { width, height } = this.canvas;
     if (!this.depth || this.depth.width !== width || this.depth.height !== height) {
       if (this.depth) this.depth.destroy();
@@ -70,12 +74,15 @@ export class Renderer {
     const m = cameraMatrices(camera, width / height);
     const sun = [0.55, 0.3, -0.78];
     const l = Math.hypot(...sun);
-    const data = new Float32Array(44);
+    const data = new Float32Array(52);
     data.set(m.viewProj, 0);
     data.set(m.invViewProj, 16);
     data.set([...m.eye, 1], 32);
     data.set([sun[0] / l, sun[1] / l, sun[2] / l, 0], 36);
-    data.set([this.simulation.sea.patchSizeM, this.simulation.n, kRings, kSegments], 40);
+    const sizes = this.ocean.sea.patchSizesM;
+    data.set([this.ocean.n, kRings, kSegments, sizes.length], 40);
+    data.set(sizes, 44);
+    data.set(this.ocean.geometryWavelengthsM, 48);
     this.device.queue.writeBuffer(this.view, 0, data);
     const texture = this.context.getCurrentTexture();
     const pass = encoder.beginRenderPass({

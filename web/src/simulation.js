@@ -8,7 +8,7 @@
 
 const kFoam = { jacobianStart: 0.8, jacobianFull: 0.5, decayPerS: 0.6 };  // sim.hpp FoamParams
 
-async function shaderText(name) {
+export async function shaderText(name) {
   const response = await fetch(new URL(`shaders/${name}`, import.meta.url));
   if (!response.ok) throw new Error(`cannot load shaders/${name}: ${response.status}`);
   return response.text();
@@ -35,6 +35,37 @@ function phaseClock(timeS, loopPeriodS) {
   if (loopPeriodS <= 0) return timeS;
   const tau = timeS / loopPeriodS;
   return tau - Math.floor(tau);
+}
+
+// The three compute pipelines for resolution n, compiled once per device and shared by the
+// cascades (they differ only in their buffers).
+const compiled = new WeakMap();  // device → Map(n → Promise of kernels)
+function kernels(device, n) {
+  if (!compiled.has(device)) compiled.set(device, new Map());
+  const cache = compiled.get(device);
+  if (!cache.has(n)) cache.set(n, compileKernels(device, n));
+  return cache.get(n);
+}
+async function compileKernels(device, n) {
+  const prefix = `const N: u32 = ${n}u;\nconst LOG2N: u32 = ${Math.log2(n)}u;\n`;
+  const [common, fft, rowsSource, columnsSource, finalizeSource] = await Promise.all(
+    ['common.wgsl', 'fft.wgsl', 'fft_rows.wgsl', 'fft_columns.wgsl', 'finalize.wgsl'].map(
+      shaderText));
+  const entries = [{ binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'uniform' } }];
+  for (let b = 1; b <= 3; ++b)
+    entries.push({ binding: b, visibility: GPUShaderStage.COMPUTE,
+                   buffer: { type: 'read-only-storage' } });
+  for (let b = 4; b <= 7; ++b)
+    entries.push({ binding: b, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } });
+  const bindGroupLayout = device.createBindGroupLayout({ entries });
+  const layout = device.createPipelineLayout({ bindGroupLayouts: [bindGroupLayout] });
+  const pipeline = async (source) => {
+    const module = device.createShaderModule({ code: prefix + common + source });
+    return device.createComputePipelineAsync({ layout, compute: { module, entryPoint: 'main' } });
+  };
+  const [rows, columns, finalize] = await Promise.all(
+    [fft + rowsSource, fft + columnsSource, finalizeSource].map(pipeline));
+  return { bindGroupLayout, rows, columns, finalize };
 }
 
 export class Simulation {
@@ -72,24 +103,8 @@ export class Simulation {
     this.params = device.createBuffer({
       size: 48, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
 
-    const prefix = `const N: u32 = ${n}u;\nconst LOG2N: u32 = ${Math.log2(n)}u;\n`;
-    const [common, fft, rows, columns, finalize] = await Promise.all(
-      ['common.wgsl', 'fft.wgsl', 'fft_rows.wgsl', 'fft_columns.wgsl', 'finalize.wgsl'].map(
-        shaderText));
-    const entries = [{ binding: 0, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'uniform' } }];
-    for (let b = 1; b <= 3; ++b)
-      entries.push({ binding: b, visibility: GPUShaderStage.COMPUTE,
-                     buffer: { type: 'read-only-storage' } });
-    for (let b = 4; b <= 7; ++b)
-      entries.push({ binding: b, visibility: GPUShaderStage.COMPUTE, buffer: { type: 'storage' } });
-    const bindGroupLayout = device.createBindGroupLayout({ entries });
-    const layout = device.createPipelineLayout({ bindGroupLayouts: [bindGroupLayout] });
-    const pipeline = async (source) => {
-      const module = device.createShaderModule({ code: prefix + common + source });
-      return device.createComputePipelineAsync({ layout, compute: { module, entryPoint: 'main' } });
-    };
-    [this.rowsPipeline, this.columnsPipeline, this.finalizePipeline] = await Promise.all(
-      [fft + rows, fft + columns, finalize].map(pipeline));
+    const { bindGroupLayout, rows, columns, finalize } = await kernels(device, n);
+    [this.rowsPipeline, this.columnsPipeline, this.finalizePipeline] = [rows, columns, finalize];
     const buffers = [this.params, this.spectrum, this.phaseRate, this.twiddle, this.planes,
                      this.displacement, this.surface, this.foam];
     this.bindGroup = device.createBindGroup({

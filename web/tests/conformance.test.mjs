@@ -12,7 +12,7 @@ const kDt = 0.5;
 
 await run('conformance', async (check) => {
   for (const n of [64, 128]) {
-    const { browser, page, server, logs } = await openPage({ query: `n=${n}&t=0&panel=0` });
+    const { browser, page, server, logs } = await openPage({ query: `n=${n}&patch=250&t=0&panel=0` });
     const result = await page.evaluate(async (dt) => {
       const { core, simulation } = window.ocean;
       if (window.ocean.error) return { error: window.ocean.error };

@@ -8,9 +8,11 @@
 // library's Status messages, one line, from ocean_web_error(). Single-threaded.
 #include <emscripten/emscripten.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 
@@ -28,12 +30,13 @@ struct WebSea {
   ocean::cpu::CascadeState state;  // spectrum, plane factors and the reference planes
   std::optional<ocean::fft::Plan2D> plan;
   std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
-  std::vector<float> phase_rate;   // EvolutionPhase::rate per texel (the GPU's phase input)
-  std::vector<double> h0;          // re, im per texel
-  ocean::SimulationConfig config;  // normals, roughness and foam parameters of the finalize
-  ocean::CascadeFrame frame;       // the reference outputs
-  std::vector<float> surface;      // (nx, ny, nz, J) per texel, the GPU's layout
-  double choppiness = -1.0;        // λ the plane factors were built for
+  std::vector<float> phase_rate;       // EvolutionPhase::rate per texel (the GPU's phase input)
+  std::vector<double> h0;              // re, im per texel
+  ocean::SimulationConfig config;      // normals, roughness and foam parameters of the finalize
+  ocean::CascadeFrame frame;           // the reference outputs
+  std::vector<float> surface;          // (nx, ny, nz, J) per texel, the GPU's layout
+  double choppiness = -1.0;            // λ the plane factors were built for
+  double geometry_wavelength_m = 0.0;  // the render's fade length of this cascade (R.9)
   std::string error;
 };
 
@@ -48,31 +51,60 @@ int fail(const ocean::Status& status) {
   return 1;
 }
 
+// The length the native renderer fades cascade `cascade`'s displacement against (R.9: full while
+// the vertex spacing is below a quarter of it, none at half), as src/render/inputs.cpp sets it:
+// the longest wave of the cascade's band, 2π/k_min (its patch side when the band starts at 0),
+// but no longer than the sea's shortest peak wavelength, and no shorter than four texels.
+double geometry_wavelength_m(const ocean::SeaState& sea, const ocean::SimulationConfig& config,
+                             int cascade) {
+  const auto c = static_cast<std::size_t>(cascade);
+  double peak_m = 1e9;
+  for (const ocean::WaveSystem& w : sea.systems()) {
+    const double k = sea.dispersion().wavenumber(w.spectrum().peak_omega());
+    if (k > 0.0) peak_m = std::min(peak_m, 2.0 * std::numbers::pi / k);
+  }
+  const double size = config.cascade_patch_sizes_m[c];
+  const double k_min = ocean::cascade_bands(config)[c][0];
+  const double longest_m = k_min > 0.0 ? 2.0 * std::numbers::pi / k_min : size;
+  return std::min(longest_m, std::max(peak_m, 4.0 * size / config.resolution));
+}
+
 }  // namespace
 
 extern "C" {
 
-/// Configures a fetch-limited JONSWAP wind sea with Donelan–Banner spreading (the library's
-/// default_sea_state with the given wind U10 m/s, fetch m and direction rad) on one N×N patch of
-/// side patch_size_m, Gaussian draws from seed (an integer below 2^53), loop period T s (0 = none).
-/// Returns 0, or 1 with ocean_web_error() saying why.
+/// Configures cascade `cascade` of a sea of `cascade_count` cascades with the patch sides
+/// patch_sizes_m[0 … cascade_count) m, largest first (the native SimulationConfig's
+/// cascade_patch_sizes_m): a fetch-limited JONSWAP wind sea with Donelan–Banner spreading (the
+/// library's default_sea_state with the given wind U10 m/s, fetch m and direction rad) on that
+/// cascade's N×N patch, restricted to its wavenumber band and drawn from its own seed as the native
+/// simulation does (cascade_spectrum_params), from seed (an integer below 2^53), loop period T s
+/// (0 = none). One cascade is one full-band patch. Returns 0, or 1 with ocean_web_error() saying
+/// why (the library's validate message for a bad list).
 EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, double direction_rad,
-                                             int resolution, double patch_size_m, double seed,
+                                             int resolution, const double* patch_sizes_m,
+                                             int cascade_count, int cascade, double seed,
                                              double loop_period_s) {
   WebSea& s = sea();
-  ocean::SeaStateParams params = ocean::default_sea_state();
-  params.wind_sea.spectrum.wind_speed_mps = wind_mps;
-  params.wind_sea.spectrum.fetch_m = fetch_m;
-  params.wind_sea.direction_rad = direction_rad;
-  ocean::Result<ocean::SeaState> made = ocean::SeaState::make(params);
-  if (!made.ok()) return fail(made.status());
   if (!(seed >= 0.0 && seed < 9007199254740992.0 && std::floor(seed) == seed))
     return fail(ocean::invalid_argument("seed must be an integer in [0, 2^53)"));
-  ocean::InitialSpectrumParams ip;
-  ip.grid = {.resolution = resolution, .patch_size_m = patch_size_m};
-  ip.seed = static_cast<std::uint64_t>(seed);
-  ip.loop_period_s = loop_period_s;
-  ocean::Result<ocean::InitialSpectrum> spectrum = ocean::make_initial_spectrum(made.value(), ip);
+  if (cascade_count < 1 || cascade_count > 8 || cascade < 0 || cascade >= cascade_count)
+    return fail(ocean::invalid_argument("cascade " + std::to_string(cascade) + " of " +
+                                        std::to_string(cascade_count) + " is out of range"));
+  ocean::SimulationConfig config;
+  config.sea.wind_sea.spectrum.wind_speed_mps = wind_mps;
+  config.sea.wind_sea.spectrum.fetch_m = fetch_m;
+  config.sea.wind_sea.direction_rad = direction_rad;
+  config.resolution = resolution;
+  config.cascade_patch_sizes_m.assign(patch_sizes_m, patch_sizes_m + cascade_count);
+  config.loop_period_s = loop_period_s;
+  config.seed = static_cast<std::uint64_t>(seed);
+  if (ocean::Status valid = ocean::validate(config); !valid.ok()) return fail(valid);
+  ocean::Result<ocean::SeaState> made = ocean::SeaState::make(config.sea);
+  if (!made.ok()) return fail(made.status());
+  const double patch_size_m = config.cascade_patch_sizes_m[static_cast<std::size_t>(cascade)];
+  ocean::Result<ocean::InitialSpectrum> spectrum = ocean::make_initial_spectrum(
+      made.value(), ocean::cascade_spectrum_params(config, static_cast<std::size_t>(cascade)));
   if (!spectrum.ok()) return fail(spectrum.status());
   ocean::Result<ocean::fft::Plan2D> plan = ocean::fft::Plan2D::make(resolution);
   if (!plan.ok()) return fail(plan.status());
@@ -108,8 +140,16 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
   s.frame.packed_mips.assign(texels, 0);  // level 0 only: the reference computes no mips
   s.surface.resize(4 * texels);
   s.choppiness = -1.0;
+  s.geometry_wavelength_m = geometry_wavelength_m(*s.sea, config, cascade);
   s.error.clear();
   return 0;
+}
+
+/// The configured cascade's geometry fade length, m (see geometry_wavelength_m); NaN when nothing
+/// is configured.
+EMSCRIPTEN_KEEPALIVE double ocean_web_geometry_wavelength() {
+  const WebSea& s = sea();
+  return s.sea ? s.geometry_wavelength_m : std::nan("");
 }
 
 /// The last configuration error, one line ("" after a success).

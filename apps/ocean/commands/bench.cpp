@@ -17,6 +17,7 @@
 #include "bench/harness.hpp"
 #include "bench/parse.hpp"
 #include "bench/report.hpp"
+#include "bench/table_one.hpp"
 #include "bench/vulkan_rows.hpp"
 #include "cli_common.hpp"
 #include "commands.hpp"
@@ -67,6 +68,8 @@ struct BenchOptions {
   std::string outputs = "all";
   std::string frame_interval = "0";
   bool json = false;
+  bool table_one = false;
+  bool resolution_given = false;
 };
 
 int run_bench(const BenchOptions& o) {
@@ -96,6 +99,10 @@ int run_bench(const BenchOptions& o) {
   Result<double> interval_ms = parse(kFrameInterval, o.frame_interval);
   if (!interval_ms.ok()) return report(interval_ms.status());
   const double interval = interval_ms.value() * 1e-3;
+  if (o.table_one && (o.backend != "cpu" || interval > 0.0))
+    return report(invalid_argument(
+        "--table-one times the CPU and the Vulkan backend back to back: leave out --backend and "
+        "--frame-interval"));
   if (o.backend == "vulkan") {
     if (interval > 0.0) {
       return report(invalid_argument("--frame-interval = " + excerpt(o.frame_interval) +
@@ -105,6 +112,11 @@ int run_bench(const BenchOptions& o) {
   }
   Result<double> min_time = parse(kMinTime, o.min_time);
   if (!min_time.ok()) return report(min_time.status());
+  if (o.table_one) {
+    const std::vector<int> seed_sizes = {128, 512, 1024, 2048};
+    return bench::run_table_one(o.resolution_given ? resolutions.value() : seed_sizes,
+                                cascades.value().front(), min_time.value(), o.json);
+  }
 
   const std::string target = fft::active_simd_target();
   const double peak = fft::measure_fma_peak_gflops(0.2);
@@ -227,7 +239,14 @@ Command add_bench_command(CLI::App& app) {
              "(0: back to back); the FFT-only runs stay back to back")
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "Print JSON instead of a table");
-  return {cmd, [options] { return run_bench(*options); }};
+  cmd->add_flag("--table-one", options->table_one,
+                "VR-GIS FFT+Perlin's Table I: CPU and Vulkan ms per frame and their ratio at "
+                "128, 512, 1024 and 2048 (or --resolution), the first --cascades count");
+  return {cmd, [options, cmd] {
+            BenchOptions o = *options;
+            o.resolution_given = cmd->get_option("--resolution")->count() > 0;
+            return run_bench(o);
+          }};
 }
 
 }  // namespace ocean::cli

@@ -23,6 +23,7 @@
 #include "simulation_flags.hpp"
 #include "video_writer.hpp"
 #include "view_flags.hpp"
+#include "wave_flags.hpp"
 
 namespace ocean::cli {
 
@@ -38,6 +39,7 @@ struct RenderOptions {
   std::vector<std::string> objects;  // --object, repeatable
   bool floating = false;             // --float
   std::string seabed;                // --seabed DEPTH_M
+  WaveFlags waves;
   bool json = false;
 };
 
@@ -61,6 +63,7 @@ constexpr NumberOption<double> kWarmup{
 enum class OutputKind { png, exr, mp4 };
 
 struct Inputs {
+  std::shared_ptr<const waves::LocalLayer> layer;  // wakes and waveforms, or null
   render::SceneParams scene;
   render::View view;
   OutputPattern out;  // --out, read by the output-name rule
@@ -79,6 +82,17 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   in.scene.config = std::move(config).value();
   // The renderer uploads the displacement and the RGBA8 chain: no float normals, J or foam.
   in.scene.config.outputs = FrameOutputs::textures();
+  // The local layer: wakes and waveforms drawn over the sea (docs/rendering.md R.19).
+  if (o.waves.calm)
+    return invalid_argument("--calm: the renderer draws the sea; for a calm one use --preset calm");
+  if (!o.waves.damping_mask.empty() || !o.waves.bathymetry.empty())
+    return invalid_argument(
+        "--damping-mask and --bathymetry act on height queries (ocean query) and are not drawn "
+        "yet");
+  Result<std::shared_ptr<const waves::LocalLayer>> layer =
+      make_layer(o.waves, in.scene.config.choppiness);
+  if (!layer.ok()) return layer.status();
+  in.layer = layer.value();
   if (Status s = parse_view_flags(o.picture, 1, in.scene, in.view); !s.ok()) return s;
   render::View& v = in.view;
   // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.
@@ -264,10 +278,20 @@ int run_render(const RenderOptions& o) {
   std::vector<std::uint8_t> srgb;
   std::vector<float> hdr;
   Progress progress("render", in.frames);
+  waves::LocalFrame local;
+  if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
     const Status stepped = f == 0 ? scene.warm_up(t, in.warmup_s) : scene.step(t);
     if (!stepped.ok()) return report(stepped);
+    if (in.layer != nullptr) {
+      in.layer->evaluate(t, local);
+      const Status set = renderer.set_local_layer({.origin_m = local.area.origin_m,
+                                                   .size_m = local.area.size_m,
+                                                   .resolution = local.area.resolution,
+                                                   .displacement = local.displacement});
+      if (!set.ok()) return report(set);
+    }
     if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
     if (Status s = renderer.draw(view); !s.ok()) return report(s);
     const std::filesystem::path path = frame_path(in, f);
@@ -353,6 +377,7 @@ Command add_render_command(CLI::App& app) {
   add_option(*command, kSeabed, o->seabed,
              "a flat sandy seabed this far below the sea level, m, seen through clear water "
              "(refraction, absorption of pure water)");
+  add_wave_flags(*command, o->waves);
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};
 }

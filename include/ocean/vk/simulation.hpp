@@ -33,6 +33,7 @@ struct StageTimings {
   double mips_ms = 0.0;             ///< mip chain of the packed map, every level
   double readback_ms = 0.0;         ///< copies of every output into host-visible memory
   double total_ms = 0.0;            ///< first to last timestamp
+  std::string device;               ///< the device's name (benchmark() fills it)
 };
 
 class VulkanBackend final : public Backend {

@@ -255,6 +255,7 @@ Result<StageTimings> benchmark(const SimulationConfig& config, int frames,
   for (double* v : {&sum.evolve_fft_rows_ms, &sum.fft_columns_ms, &sum.finalize_ms, &sum.mips_ms,
                     &sum.readback_ms, &sum.total_ms})
     *v *= inv;
+  sum.device = b.context().info.name;
   return sum;
 }
 

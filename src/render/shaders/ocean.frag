@@ -12,6 +12,7 @@
 // distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano
 // & Baker (2010) "LEAN mapping" (slope variance adds across layers and filtering, R.5).
 #include "far_field.glsl"
+#include "local_layer.glsl"
 #include "seabed.glsl"
 
 layout(location = 0) in vec2 world_xz;
@@ -102,6 +103,11 @@ void main() {
     // so it reads as streaks and speckle rather than snow (R.11).
     no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
   }
+  vec2 local_slope;  // wakes and waveforms (R.19): their gradient adds, their foam joins
+  float local_foam;
+  local_shade(world_xz, local_slope, local_foam);
+  slope += local_slope;
+  no_foam *= 1.0 - local_foam;
   vec3 N = normalize(vec3(slope.x, 1.0, slope.y));
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);
   float foam = 1.0 - no_foam;

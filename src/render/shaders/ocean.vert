@@ -9,6 +9,7 @@
 // All weights are functions of the world position and the camera alone, so vertices that two
 // patches share get the same displacement and the stitched mesh stays closed.
 #include "far_field.glsl"
+#include "local_layer.glsl"
 
 layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)
 layout(location = 1) in vec3 a_instance;  // centre x, centre z, size (skirt: 0, 0, 1)
@@ -66,6 +67,7 @@ void main() {
     }
     displacement *= border_weight;
   }
+  displacement += local_displacement(xz);  // wakes and waveforms (R.19)
   world_xz = xz;
   world_pos = vec3(xz.x + displacement.x, displacement.y, xz.y + displacement.z);
   level = a_meta.z;

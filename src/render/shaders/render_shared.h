@@ -41,7 +41,8 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_DISPLACEMENT 1  // sampler2DArray RGBA16F (Dx, h, Dz, 0), per cascade
 #define OCEAN_RENDER_BINDING_NORMAL 2        // sampler2DArray RGBA8 (n_x, n_z, foam, smoothness)
 #define OCEAN_RENDER_BINDING_SKY_LUT 3       // sampler2D sky radiance, u azimuth, v √elevation
-#define OCEAN_RENDER_SCENE_BINDINGS 4
+#define OCEAN_RENDER_BINDING_LOCAL 4         // sampler2D RGBA16F (Dx, h, Dz, 0): the local layer
+#define OCEAN_RENDER_SCENE_BINDINGS 5
 // Set 0 of the tone-map pipeline.
 #define OCEAN_RENDER_BINDING_HDR 0  // sampler2D, the linear HDR image
 
@@ -63,6 +64,17 @@ struct FarFieldUniforms {
   float far_m;          // D_max: farther, the far field alone
   float enabled;        // 0: no far field (before configure), 1: on
   float far_pad;
+};
+
+// The local layer (ocean/waves.hpp, docs/rendering.md R.19): wakes and waveforms over a square
+// world area, added to the cascades; its texture holds (Dx, h, Dz) at the cells' centres.
+struct LocalLayerUniforms {
+  vec2 origin_m;       // (x0, z0): the area's corner of smallest x and z
+  float size_m;        // side of the area
+  float resolution;    // N cells per side; 0: no layer
+  float foam_j_start;  // the foam ramp of the cascades (M.7.4): foam begins below this J
+  float foam_j_full;   // and is full at this J
+  float local_pad0, local_pad1;
 };
 
 // Everything per frame, one uniform buffer (std140).
@@ -93,6 +105,7 @@ struct FrameUniforms {
   float hs_pad0, hs_pad1, hs_pad2;
   CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
   FarFieldUniforms far_field;
+  LocalLayerUniforms local;
 };
 
 // Push constants of the sky pass (std430).
@@ -120,7 +133,9 @@ static_assert(offsetof(FrameUniforms, cascades) == 208);
 static_assert(sizeof(CascadeUniforms) == 16);
 static_assert(offsetof(FrameUniforms, far_field) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(FarFieldUniforms) == 64);
-static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64);
+static_assert(sizeof(LocalLayerUniforms) == 32);
+static_assert(offsetof(FrameUniforms, local) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64);
+static_assert(sizeof(FrameUniforms) == 208 + 16 * OCEAN_RENDER_MAX_CASCADES + 64 + 32);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

@@ -1,5 +1,7 @@
 // ocean.wgsl — drawing: the sky on a full-screen triangle, then the water on a camera-following
-// polar grid displaced by the simulated field.
+// polar grid displaced by the sum of the cascades' fields (Aebi, VR Ocean, eq. 44) and shaded with
+// the sum of their slopes, read from trilinearly filtered normal/foam mips as the native renderer
+// does (src/render/shaders/ocean.frag).
 //
 // This work is based on:
 //   - Schlick, C. (1994) An inexpensive BRDF model for physically-based rendering: Fresnel
@@ -14,16 +16,18 @@ struct View {
   inv_view_proj: mat4x4f,
   eye: vec4f,          // camera position, m (w unused)
   sun: vec4f,          // direction towards the sun (w unused)
-  patch_size_m: f32,   // L
   resolution: f32,     // N
   grid_rings: f32,     // rings of the polar grid
   grid_segments: f32,  // segments per ring
+  cascades: f32,       // cascade count, 1 … 4
+  patch_size_m: vec4f, // L of each cascade, largest first
+  geometry_wavelength_m: vec4f,  // each cascade's displacement fades against it (R.9)
 }
 
 @group(0) @binding(0) var<uniform> view: View;
-@group(0) @binding(1) var<storage, read> displacement: array<vec4f>;  // (Dx, h, Dz, 0)
-@group(0) @binding(2) var<storage, read> surface: array<vec4f>;       // (n, J)
-@group(0) @binding(3) var<storage, read> foam: array<f32>;
+@group(0) @binding(1) var<storage, read> displacement: array<vec4f>;  // (Dx, h, Dz, 0), N² per cascade
+@group(0) @binding(2) var normal_foam: texture_2d_array<f32>;         // (n, foam) mips, a layer per cascade
+@group(0) @binding(3) var trilinear: sampler;
 
 const kFarRadius = 20000.0;  // m: the grid reaches the horizon
 const kNearRadius = 0.5;     // m: innermost ring
@@ -39,21 +43,19 @@ fn sky(dir: vec3f) -> vec3f {
   return c;
 }
 
-// Bilinear fetch of a periodic per-texel field at world (x, z).
-fn texel(x: i32, z: i32) -> u32 {
+// Bilinear fetch of cascade c's periodic displacement at world (x, z).
+fn texel(c: u32, x: i32, z: i32) -> vec4f {
   let n = i32(view.resolution);
-  return u32(((z % n) + n) % n) * u32(n) + u32(((x % n) + n) % n);
+  return displacement[(c * u32(n) + u32(((z % n) + n) % n)) * u32(n) + u32(((x % n) + n) % n)];
 }
-struct Weights { i00: u32, i10: u32, i01: u32, i11: u32, f: vec2f, }
-fn weights(xz: vec2f) -> Weights {
-  let g = xz / view.patch_size_m * view.resolution;
+fn displacement_at(c: u32, xz: vec2f) -> vec3f {
+  let g = xz / view.patch_size_m[c] * view.resolution;
   let b = floor(g);
+  let f = g - b;
   let x = i32(b.x);
   let z = i32(b.y);
-  return Weights(texel(x, z), texel(x + 1, z), texel(x, z + 1), texel(x + 1, z + 1), g - b);
-}
-fn lerp4(a: vec4f, b: vec4f, c: vec4f, d: vec4f, f: vec2f) -> vec4f {
-  return mix(mix(a, b, f.x), mix(c, d, f.x), f.y);
+  return mix(mix(texel(c, x, z), texel(c, x + 1, z), f.x),
+             mix(texel(c, x, z + 1), texel(c, x + 1, z + 1), f.x), f.y).xyz;
 }
 
 struct SkyOut { @builtin(position) pos: vec4f, @location(0) ndc: vec2f, }
@@ -71,7 +73,6 @@ struct WaterOut {
   @builtin(position) pos: vec4f,
   @location(0) world: vec3f,
   @location(1) plane_xz: vec2f,
-  @location(2) detail: f32,  // 1 near, 0 far: fades waves that the grid can no longer resolve
 }
 
 @vertex fn water_vs(@builtin(vertex_index) v: u32) -> WaterOut {
@@ -85,28 +86,37 @@ struct WaterOut {
   let radius = kNearRadius * pow(kFarRadius / kNearRadius, f32(ring) / view.grid_rings);
   let angle = f32(segment) / f32(segments) * 6.283185307;
   let xz = view.eye.xz + radius * vec2f(cos(angle), sin(angle));
-  let w = weights(xz);
-  let d = lerp4(displacement[w.i00], displacement[w.i10], displacement[w.i01],
-                displacement[w.i11], w.f).xyz;
-  let detail = clamp(1.0 - radius / (0.5 * kFarRadius), 0.0, 1.0);
-  let world = vec3f(xz.x + d.x * detail, d.y * detail, xz.y + d.z * detail);
+  // The native renderer's geometry weight (R.9, src/render/shaders/ocean.vert): each cascade's
+  // displacement is full while the vertex spacing (here the ring step, the larger of the grid's
+  // two) is below a quarter of its wavelength and gone at half, the grid's Nyquist limit; the
+  // mipped normals carry the cascade beyond.
+  let spacing = radius * (pow(kFarRadius / kNearRadius, 1.0 / view.grid_rings) - 1.0);
+  var d = vec3f(0.0);
+  for (var c = 0u; c < u32(view.cascades); c++) {
+    let weight = clamp(2.0 - 4.0 * spacing / view.geometry_wavelength_m[c], 0.0, 1.0);
+    d += weight * displacement_at(c, xz);
+  }
+  let world = vec3f(xz.x + d.x, d.y, xz.y + d.z);
   var out: WaterOut;
   out.pos = view.view_proj * vec4f(world, 1.0);
   out.world = world;
   out.plane_xz = xz;
-  out.detail = detail;
   return out;
 }
 
 @fragment fn water_fs(in: WaterOut) -> @location(0) vec4f {
-  let w = weights(in.plane_xz);
-  let s = lerp4(surface[w.i00], surface[w.i10], surface[w.i01], surface[w.i11], w.f);
-  let f = mix(mix(foam[w.i00], foam[w.i10], w.f.x), mix(foam[w.i01], foam[w.i11], w.f.x), w.f.y);
-  // Normals vary on the texel scale L/N: where a pixel covers several texels they alias into
-  // sparkle, so they fade towards the mean (up) as the pixel footprint grows.
-  let footprint = length(fwidth(in.plane_xz)) * view.resolution / view.patch_size_m;
-  let normal_detail = in.detail * clamp(1.5 - 0.5 * footprint, 0.0, 1.0);
-  let n = normalize(mix(vec3f(0.0, 1.0, 0.0), s.xyz, normal_detail));
+  // Each cascade's mean normal over the pixel (the mips pick the level from the pixel footprint,
+  // so far normals are averages, not aliased samples) becomes a surface gradient; the gradients
+  // add, as the heights do. Texel i sits at x = i·L/N: half a texel's shift.
+  var slope = vec2f(0.0);
+  var f = 0.0;
+  for (var c = 0u; c < u32(view.cascades); c++) {
+    let uv = in.plane_xz / view.patch_size_m[c] + 0.5 / view.resolution;
+    let m = textureSample(normal_foam, trilinear, uv, c);
+    slope += m.xz / max(m.y, 0.05);
+    f += m.w;
+  }
+  let n = normalize(vec3f(slope.x, 1.0, slope.y));
   let to_eye = view.eye.xyz - in.world;
   let distance = length(to_eye);
   let v = to_eye / distance;
@@ -119,7 +129,7 @@ struct WaterOut {
   let h = normalize(view.sun.xyz + v);
   let specular = pow(max(dot(n, h), 0.0), 600.0) * 4.0 * fresnel;
   var c = body * (1.0 - fresnel) + reflected * fresnel + vec3f(1.0, 0.9, 0.7) * specular;
-  c = mix(c, vec3f(0.9, 0.93, 0.95), clamp(f * normal_detail, 0.0, 1.0) * 0.8);
+  c = mix(c, vec3f(0.9, 0.93, 0.95), clamp(f, 0.0, 1.0) * 0.8);
   // Horizon fog: only the distance matters, towards the sky's horizon colour.
   let fog = 1.0 - exp(-distance / 6000.0);
   c = mix(c, sky(normalize(vec3f(-v.x, 0.0, -v.z))), clamp(fog, 0.0, 1.0));
