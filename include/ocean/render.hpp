@@ -24,6 +24,7 @@
 
 #include "ocean/far_field.hpp"
 #include "ocean/lod.hpp"
+#include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
@@ -94,6 +95,11 @@ struct View {
   /// Where the far field (R.13) and the hex-tiled lookups (R.14) take over from the simulation.
   FarFieldRange far_field;
   DebugView debug = DebugView::shaded;
+  /// Meshes placed in the world (indices into Renderer::set_meshes), drawn after the water and
+  /// depth-tested with it (R.20). Each model matrix must be finite.
+  std::vector<ObjectInstance> objects;
+  /// A seabed seen through the water (R.22–R.23); off by default.
+  Seabed seabed;
 };
 Status validate(const View& view);
 
@@ -200,6 +206,10 @@ class Renderer {
   /// A calm sea: the cascades are neither drawn nor shaded, only the local layer (true), or the
   /// sea again (false, the default).
   void set_calm(bool calm);
+
+  /// Uploads the meshes View::objects refers to by index (allocates; replaces the previous set,
+  /// waiting for the device first). invalid_argument naming the mesh (validate(Mesh)).
+  Status set_meshes(std::span<const Mesh> meshes);
 
   /// Records the frame into `cmd` (outside any render pass): pending uploads, the HDR pass (sky,
   /// patches, skirt), the tone-map pass. Afterwards the sRGB image is in TRANSFER_SRC_OPTIMAL.

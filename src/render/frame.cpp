@@ -11,6 +11,7 @@ namespace ocean::render {
 Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   if (Status s = validate(view); !s.ok()) return s;
   State& st = *state_;
+  if (Status s = validate_objects(st, view); !s.ok()) return s;
   if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
@@ -121,6 +122,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   stats_.draw_calls = 1;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                     view.debug == DebugView::wireframe ? st.wire : st.ocean);
+  push_seabed(st, cmd, view);
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
   vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
@@ -136,6 +138,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   ++stats_.draw_calls;
   stats_.triangles += st.skirt_count / 3;
   stats_.patches_per_level = sel.patches_per_level;
+  record_objects(st, cmd, view, stats_);
   vkCmdEndRendering(cmd);
 
   // Tone map HDR → sRGB.

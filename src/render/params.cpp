@@ -55,6 +55,11 @@ Status validate(const View& view) {
     return invalid_argument("planet_radius_m = " + format_number(view.planet_radius_m) +
                             " must be > 0 (infinity: a flat world)");
   if (Status s = validate(view.far_field); !s.ok()) return s;
+  for (std::size_t i = 0; i < view.objects.size(); ++i)
+    for (double m : view.objects[i].model)
+      if (!std::isfinite(m))
+        return invalid_argument("objects[" + std::to_string(i) + "].model is not finite");
+  if (Status s = validate(view.seabed); !s.ok()) return s;
   return validate(view.shading);
 }
 

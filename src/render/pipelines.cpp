@@ -1,12 +1,11 @@
 // The renderer's pipelines (dynamic rendering, no render pass objects): the sky and the tone map
 // as fullscreen triangles, the ocean patches and skirt with the patch vertex/instance layout, and
 // the same mesh as lines for the wireframe view. Push-constant layouts: shaders/render_shared.h.
+#include "object_pass.hpp"
+#include "pipeline_desc.hpp"
 #include "spirv.hpp"
-#include "state.hpp"
 
 namespace ocean::render {
-
-namespace {
 
 Result<VkShaderModule> shader_module(Renderer::State& st, std::span<const std::uint32_t> words) {
   VkShaderModule m = VK_NULL_HANDLE;
@@ -20,16 +19,6 @@ Result<VkShaderModule> shader_module(Renderer::State& st, std::span<const std::u
   st.modules.push_back(m);
   return m;
 }
-
-struct PipelineDesc {
-  VkShaderModule vert = VK_NULL_HANDLE, frag = VK_NULL_HANDLE;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkFormat colour = kHdrFormat;
-  bool depth = true;        // depth attachment present
-  bool depth_test = true;   // test and write
-  bool mesh_input = false;  // the patch vertex/instance layout
-  bool lines = false;
-};
 
 Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) {
   const VkPipelineShaderStageCreateInfo stages[] = {
@@ -54,6 +43,8 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
       .pVertexBindingDescriptions = bindings,
       .vertexAttributeDescriptionCount = d.mesh_input ? 3u : 0u,
       .pVertexAttributeDescriptions = attributes};
+  const VkPipelineVertexInputStateCreateInfo* vertex_input =
+      d.vertex_input != nullptr ? d.vertex_input : &input;
   const VkPipelineInputAssemblyStateCreateInfo assembly{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
       .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
@@ -96,7 +87,7 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
                                           .pNext = &rendering,
                                           .stageCount = 2,
                                           .pStages = stages,
-                                          .pVertexInputState = &input,
+                                          .pVertexInputState = vertex_input,
                                           .pInputAssemblyState = &assembly,
                                           .pViewportState = &viewport,
                                           .pRasterizationState = &raster,
@@ -113,8 +104,6 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
     return s;
   return p;
 }
-
-}  // namespace
 
 Status create_pipelines(Renderer::State& st) {
   const vk::Context& ctx = *st.ctx;
@@ -182,7 +171,7 @@ Status create_pipelines(Renderer::State& st) {
                                                    .depth_test = false});
   if (!tonemap.ok()) return tonemap.status();
   st.tonemap = tonemap.value();
-  return {};
+  return create_object_pipeline(st);
 }
 
 }  // namespace ocean::render

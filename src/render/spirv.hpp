@@ -21,5 +21,7 @@ OCEAN_RENDER_SPIRV(ocean_vert)
 OCEAN_RENDER_SPIRV(ocean_frag)
 OCEAN_RENDER_SPIRV(wire_frag)
 OCEAN_RENDER_SPIRV(tonemap_frag)
+OCEAN_RENDER_SPIRV(object_vert)
+OCEAN_RENDER_SPIRV(object_frag)
 
 #undef OCEAN_RENDER_SPIRV

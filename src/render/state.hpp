@@ -11,6 +11,7 @@
 //   relative.cpp     large worlds and curvature: positions relative to the grid centre
 //   environment.cpp  the HDR environment map: reading, upload, its irradiance
 //   renderer.cpp     construction, resizing, submission, read-back
+//   objects.cpp      the object pass (object_pass.hpp); seabed.cpp the seabed's push constants
 #pragma once
 
 #include <array>
@@ -18,6 +19,7 @@
 #include <optional>
 #include <vector>
 
+#include "object_pass.hpp"
 #include "ocean/render.hpp"
 #include "shaders/render_shared.h"
 
@@ -101,6 +103,7 @@ struct Renderer::State {
   std::uint32_t damping_side = 0;
   shader::DampingUniforms damping{};
   std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
+  ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
 
   ~State();
   void destroy_targets();

@@ -15,6 +15,7 @@ Renderer::State::~State() {
   vkDeviceWaitIdle(d);
   destroy_targets();
   destroy_sim_images();
+  destroy_objects(*this, true);
   for (VkPipeline p : {sky, ocean, wire, tonemap})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);

@@ -14,6 +14,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
+#include "object_flags.hpp"
 #include "ocean/io.hpp"
 #include "ocean/scene.hpp"
 #include "output_name.hpp"
@@ -35,6 +36,9 @@ struct RenderOptions {
   std::string time = "20", frames = "1", fps = "30", warmup = "4";
   std::string sun_elevation, sun_azimuth, exposure, sky;
   std::string contact_sheet;
+  std::vector<std::string> objects;  // --object, repeatable
+  bool floating = false;             // --float
+  std::string seabed;                // --seabed DEPTH_M
   WaveFlags waves;
   bool json = false;
 };
@@ -51,6 +55,8 @@ constexpr NumberOption<long long> kFrames{
     .flag = "--frames", .accept = Accept::whole_in_range, .lo = 1.0, .hi = 1e6};
 constexpr NumberOption<double> kFps{
     .flag = "--fps", .accept = Accept::in_range, .lo = 1e-3, .hi = 1000.0};
+constexpr NumberOption<double> kSeabed{
+    .flag = "--seabed", .accept = Accept::in_range, .lo = 1e-3, .hi = 1e4, .unit = "m"};
 constexpr NumberOption<double> kWarmup{
     .flag = "--warmup", .accept = Accept::in_range, .lo = 0.0, .hi = 600.0};
 
@@ -69,6 +75,7 @@ struct Inputs {
   OutputKind kind = OutputKind::png;
   double time_s = 0.0, fps = 30.0, warmup_s = 0.0;
   long long frames = 1;
+  std::vector<ObjectSpec> objects;
 };
 
 Result<Inputs> parse_inputs(const RenderOptions& o) {
@@ -132,6 +139,18 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   Result<double> warmup = parse(kWarmup, o.warmup);
   if (!warmup.ok()) return warmup.status();
   in.warmup_s = warmup.value();
+  for (const std::string& text : o.objects) {
+    Result<ObjectSpec> spec = parse_object_spec(text);
+    if (!spec.ok()) return spec.status();
+    in.objects.push_back(spec.value());
+  }
+  if (!o.seabed.empty()) {
+    Result<double> depth = parse(kSeabed, o.seabed);
+    if (!depth.ok()) return depth.status();
+    v.seabed = {.enabled = true, .depth_m = depth.value()};
+  }
+  if (o.floating && o.objects.empty())
+    return invalid_argument("--float needs at least one --object");
   Result<OutputPattern> out = parse_output_pattern(o.out, "--out");
   if (!out.ok()) return out.status();
   in.out = std::move(out).value();
@@ -256,10 +275,15 @@ int run_render(const RenderOptions& o) {
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.open(in.out.name(), w, h, in.fps); !s.ok()) return report(s);
   }
+  Result<std::unique_ptr<SceneObjects>> objects =
+      SceneObjects::make(in.objects, o.floating, in.scene.config);
+  if (!objects.ok()) return report(objects.status());
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
+  if (Status s = renderer.set_meshes(objects.value()->meshes()); !s.ok()) return report(s);
+  render::View view = in.view;
   std::vector<std::uint8_t> srgb;
   std::vector<float> hdr;
   Progress progress("render", in.frames);
@@ -287,7 +311,8 @@ int run_render(const RenderOptions& o) {
                                                    .displacement = local.displacement});
       if (!set.ok()) return report(set);
     }
-    if (Status s = renderer.draw(in.view); !s.ok()) return report(s);
+    if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
+    if (Status s = renderer.draw(view); !s.ok()) return report(s);
     const std::filesystem::path path = frame_path(in, f);
     Status written;
     if (in.kind == OutputKind::exr) {
@@ -358,6 +383,19 @@ Command add_render_command(CLI::App& app) {
                       "instead of one picture: a PNG of the calm, moderate and storm presets from "
                       "a low grazing, an eye-level and a high camera (tiles --width x --height, "
                       "default 480x270)");
+  command
+      ->add_option("--object", o->objects,
+                   "KIND,X,Y,Z[,HEADING_DEG]: an object in the picture, KIND box, buoy, boat "
+                   "or a glTF 2.0 file (.glb/.gltf); X,Y,Z place its origin (m), the heading "
+                   "turns it from +x towards +z. Repeatable")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  command->add_flag("--float", o->floating,
+                    "let the objects float: simulate them as rigid bodies on the waves from t = 0 "
+                    "to the picture's time (glTF meshes must be closed)");
+  add_option(*command, kSeabed, o->seabed,
+             "a flat sandy seabed this far below the sea level, m, seen through clear water "
+             "(refraction, absorption of pure water)");
   add_wave_flags(*command, o->waves);
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};

@@ -1,0 +1,36 @@
+// The object pass of the renderer (src/render, private; docs/rendering.md R.20–R.21): the meshes
+// given to Renderer::set_meshes in device-local buffers, their pipeline, and the recording of
+// View::objects inside the HDR pass, after the water, depth-tested with it.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "ocean/render.hpp"
+
+namespace ocean::render {
+
+struct ObjectPass {
+  struct MeshBuffers {
+    vk::Buffer vertices, indices;  // interleaved (position, normal) floats; uint32 indices
+    std::uint32_t index_count = 0;
+    Material material;
+  };
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  std::vector<MeshBuffers> meshes;
+};
+
+// The pipeline layout (the scene set, ObjectPush) and the pipeline; called by create_pipelines.
+Status create_object_pipeline(Renderer::State& st);
+// Draws view.objects (mesh indices checked by validate_objects) inside the HDR pass, whose
+// viewport and scene set are bound. Returns the draws and triangles added.
+void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats);
+// invalid_argument for an instance whose mesh index is not below the meshes set.
+Status validate_objects(const Renderer::State& st, const View& view);
+// seabed.cpp: pushes view.seabed (R.22–R.23) for the ocean pipeline, which must be bound.
+void push_seabed(const Renderer::State& st, VkCommandBuffer cmd, const View& view);
+// Releases the meshes (and, with `all`, the pipeline and its layout).
+void destroy_objects(Renderer::State& st, bool all);
+
+}  // namespace ocean::render

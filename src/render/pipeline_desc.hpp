@@ -1,0 +1,28 @@
+// What a graphics pipeline of the renderer is made from (src/render, private): shaders, layout,
+// attachments, depth, and the vertex input — the patch layout, none (fullscreen passes) or one
+// of the caller's (the object pass). pipelines.cpp builds them all.
+#pragma once
+
+#include <span>
+
+#include "state.hpp"
+
+namespace ocean::render {
+
+struct PipelineDesc {
+  VkShaderModule vert = VK_NULL_HANDLE, frag = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkFormat colour = kHdrFormat;
+  bool depth = true;        // depth attachment present
+  bool depth_test = true;   // test and write
+  bool mesh_input = false;  // the patch vertex/instance layout
+  bool lines = false;
+  // Another vertex input (overrides mesh_input); must outlive make_pipeline.
+  const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr;
+};
+
+// A shader module owned by the state (destroyed with it).
+Result<VkShaderModule> shader_module(Renderer::State& st, std::span<const std::uint32_t> words);
+Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d);
+
+}  // namespace ocean::render

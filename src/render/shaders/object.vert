@@ -1,0 +1,21 @@
+#version 450
+// Objects drawn with the water (docs/rendering.md R.20): a mesh's vertices by its model matrix
+// into the world, then the frame's view-projection; the normal by the model matrix's
+// inverse-transpose.
+#include "render_common.glsl"
+#include "object_shared.h"
+
+layout(push_constant, std430) uniform Push {
+  ObjectPush object;
+};
+layout(location = 0) in vec3 position;
+layout(location = 1) in vec3 normal;
+layout(location = 0) out vec3 world_pos;
+layout(location = 1) out vec3 world_normal;
+
+void main() {
+  vec4 w = object.model * vec4(position, 1.0);
+  world_pos = w.xyz;
+  world_normal = transpose(inverse(mat3(object.model))) * normal;
+  gl_Position = u.view_proj * w;
+}

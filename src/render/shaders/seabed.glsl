@@ -1,0 +1,63 @@
+// seabed.glsl — the seabed seen through the water (docs/rendering.md R.22–R.23): the view ray
+// refracted at the surface normal (Snell's law, n = 1.333), followed to the flat bed, the bed lit
+// by the sun and the sky attenuated on their way down and seen attenuated along the view path
+// (Beer–Lambert per channel, absorption of pure water after Pope & Fry 1997), mixed with the
+// water body's own colour as shallow-water reflectance: R = R∞·(1 − T) + R_bed·T (Maritorena,
+// Morel & Gentili 1994, eq. 9, with T the two-way transmittance).
+#ifndef OCEAN_SEABED_GLSL
+#define OCEAN_SEABED_GLSL
+
+#include "render_common.glsl"
+#include "seabed_shared.h"
+
+layout(push_constant, std430) uniform SeabedBlock {
+  SeabedPush seabed;
+};
+
+const float kWaterIor = 1.333;
+
+// A checker of unit squares, box-filtered over the pixel's footprint w (Quilez, "Filtering
+// procedurals"): 0 or 1 where w is small, ½ where it spans many squares.
+float filtered_checker(vec2 p, vec2 w) {
+  w = max(w, vec2(1e-4));
+  vec2 i = 2.0 * (abs(fract((p - 0.5 * w) * 0.5) - 0.5) - abs(fract((p + 0.5 * w) * 0.5) - 0.5)) / w;
+  return 0.5 - 0.5 * i.x * i.y;
+}
+
+vec3 seabed_albedo(vec2 xz, vec2 footprint) {
+  float period = seabed.pattern.x;
+  vec3 albedo = seabed.albedo_depth.rgb;
+  if (seabed.pattern.y == OCEAN_SEABED_CHECKER) {
+    float light = filtered_checker(2.0 * xz / period, 2.0 * footprint / period);
+    return albedo * mix(0.25, 1.0, light);
+  }
+  vec2 p = 6.2831853 * xz / period;  // low sand ripples, faded where finer than the pixel
+  float fade = clamp(2.0 - 4.0 * max(footprint.x, footprint.y) / period, 0.0, 1.0);
+  return albedo * (1.0 + 0.3 * fade * sin(p.x + 0.6 * sin(0.37 * p.y)) * sin(0.41 * p.y + 1.3));
+}
+
+// The colour under the surface: `body` (R∞, the deep water's scattered light, R.11) over the bed
+// where the refracted view ray reaches it. P0 the surface point, V towards the camera, N the
+// surface normal, L towards the sun.
+vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N, vec3 L) {
+  vec3 T = refract(-V, N, 1.0 / kWaterIor);
+  float depth = seabed.albedo_depth.a;
+  float t = (P0.y + depth) / max(-T.y, 1e-4);  // path length in the water, m (R.22)
+  vec3 P = P0 + t * T;
+  // Derivatives in uniform control flow, before any pixel leaves.
+  vec2 footprint = max(abs(dFdx(P.xz)), abs(dFdy(P.xz)));
+  if (seabed.absorption_enabled.a < 0.5 || T.y > -1e-4 || P0.y <= -depth) return body;
+  vec3 a = seabed.absorption_enabled.rgb;
+  // Light on the bed (R.23): the sun refracted into the water (its path 1/μ_w longer than the
+  // depth) and the sky, attenuated vertically.
+  float mu_s = max(L.y, 0.0);
+  float sin_w = sqrt(max(1.0 - mu_s * mu_s, 0.0)) / kWaterIor;
+  float mu_w = sqrt(1.0 - sin_w * sin_w);
+  vec3 irradiance = u.sun_ground * mu_s * (1.0 - fresnel_schlick(mu_s)) * exp(-a * depth / mu_w) +
+                    u.sky_ambient * exp(-a * depth);
+  vec3 bed = seabed_albedo(P.xz, footprint) * irradiance / PI;
+  vec3 view = exp(-a * t);
+  return body * (1.0 - view * exp(-a * depth)) + bed * view;
+}
+
+#endif
