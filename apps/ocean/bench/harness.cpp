@@ -58,31 +58,47 @@ PipelineResult result_of(const Samples& s, const cpu::CpuBackend& backend, const
 
 }  // namespace
 
+namespace {
+
+// A backend configured on `runner` and a frame for it.
+struct Configured {
+  std::unique_ptr<cpu::CpuBackend> backend;
+  Frame frame;
+};
+
+Result<Configured> configure(const SimulationConfig& config, cpu::CpuOptions options,
+                             TaskRunner& runner) {
+  Configured c{cpu::make_cpu_backend(options), {}};
+  if (Status s = c.backend->configure(config, runner); !s.ok()) return s;
+  c.backend->allocate(c.frame);
+  return c;
+}
+
+}  // namespace
+
 Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
                                     TaskRunner& runner, double min_time, double interval) {
-  const std::unique_ptr<cpu::CpuBackend> backend = cpu::make_cpu_backend(options);
-  if (Status s = backend->configure(config, runner); !s.ok()) return s;
-  Frame frame;
-  backend->allocate(frame);
+  Result<Configured> c = configure(config, options, runner);
+  if (!c.ok()) return c.status();
   double t = 0.0;
   Samples samples;
-  time_round(*backend, frame, t, min_time, interval, runner, samples);
-  return result_of(samples, *backend, frame);
+  time_round(*c.value().backend, c.value().frame, t, min_time, interval, runner, samples);
+  return result_of(samples, *c.value().backend, c.value().frame);
 }
 
 Result<PacedResult> run_paced_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
                                        TaskRunner& runner, double min_time, double interval) {
-  const std::unique_ptr<cpu::CpuBackend> backend = cpu::make_cpu_backend(options);
-  if (Status s = backend->configure(config, runner); !s.ok()) return s;
-  Frame frame;
-  backend->allocate(frame);
+  Result<Configured> c = configure(config, options, runner);
+  if (!c.ok()) return c.status();
+  cpu::CpuBackend& backend = *c.value().backend;
+  Frame& frame = c.value().frame;
   double t = 0.0;
   Samples paced, back_to_back;
   for (int round = 0; round < kPacedRounds; ++round) {
-    time_round(*backend, frame, t, min_time / kPacedRounds, 0.0, runner, back_to_back);
-    time_round(*backend, frame, t, min_time / kPacedRounds, interval, runner, paced);
+    time_round(backend, frame, t, min_time / kPacedRounds, 0.0, runner, back_to_back);
+    time_round(backend, frame, t, min_time / kPacedRounds, interval, runner, paced);
   }
-  return PacedResult{result_of(paced, *backend, frame), result_of(back_to_back, *backend, frame)};
+  return PacedResult{result_of(paced, backend, frame), result_of(back_to_back, backend, frame)};
 }
 
 }  // namespace ocean::cli::bench
