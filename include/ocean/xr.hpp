@@ -39,8 +39,9 @@ struct SessionParams {
   bool validation = false;
 };
 
-/// A pose in the session's LOCAL reference space: metres, Y up, −Z forward (OpenXR's axes,
-/// which are the ocean's: docs/conventions.md), orientation a unit quaternion (x, y, z, w).
+/// A pose in the session's LOCAL reference space: metres, right-handed, +Y up, −Z forward
+/// (OpenXR's axes, which map onto the ocean's world unchanged: docs/conventions.md),
+/// orientation a unit quaternion (x, y, z, w).
 struct Pose {
   std::array<double, 4> orientation{0.0, 0.0, 0.0, 1.0};
   std::array<double, 3> position_m{0.0, 0.0, 0.0};

@@ -113,6 +113,7 @@ int run_xr(const XrOptions& o) {
       continue;  // the runtime may stop the session at once: poll before another frame
     }
     if (!session.running()) {  // waiting for READY, or for the end after STOPPING
+      if (done && !exit_requested) break;  // stopped before the session began: nothing to end
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
       continue;
     }
