@@ -95,15 +95,15 @@ struct ReadyRunnerParams {
 
 /// A pool of threads-1 workers for frame loops. An idle worker spins (with a pause instruction)
 /// for spin_us before it sleeps, and wake() makes sleeping workers spin again for spin_us, so a
-/// frame that starts within the bound finds every worker running instead of waking them (on the
-/// reference machine a oneTBB worker asleep since the previous 90 Hz frame missed the frame's
-/// start: docs/performance.md, paced frames). A caller that waits for its loop, or for an async
-/// job, runs chunks of open loops meanwhile, so nested loops neither deadlock nor serialise.
-/// Scheduling: chunks of `grain` indices claimed in order from a shared list of open loops (no
-/// stealing deques); fine for a few threads, the loops' owner running its own chunks first.
-/// Its async slot runs the job on a worker (or on the caller's thread in wait() if none took it).
-/// Allocates the threads at creation; parallel_for, kick and wait do not allocate.
-/// Precondition: params.threads in [0, 256], spin_us in [0, 1e6] (asserted).
+/// frame that starts within the bound finds every worker running instead of waking them (on a
+/// quiet reference machine a 90 Hz frame on oneTBB took twice its back-to-back time, read as its
+/// sleeping worker missing the frame's start: docs/performance.md, paced frames). A caller that
+/// waits for its loop, or for an async job, runs chunks of open loops meanwhile, so nested loops
+/// neither deadlock nor serialise. Scheduling: chunks of `grain` indices claimed in order from a
+/// shared list of open loops (no stealing deques); fine for a few threads, the loops' owner running
+/// its own chunks first. Its async slot runs the job on a worker (or on the caller's thread in
+/// wait() if none took it). Allocates the threads at creation; parallel_for, kick and wait do not
+/// allocate. Precondition: params.threads in [0, 256], spin_us in [0, 1e6] (asserted).
 std::unique_ptr<TaskRunner> make_ready_runner(const ReadyRunnerParams& params = {});
 
 }  // namespace ocean

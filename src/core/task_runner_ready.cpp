@@ -1,9 +1,10 @@
 // The ready runner: a small thread pool for paced frame loops whose idle workers spin for a
 // bounded time before they sleep, and which a frame loop wakes ahead of a frame (wake()).
 //
-// Why: a oneTBB worker that has slept since the previous frame wakes too late at 90 Hz to take
-// its share of a 0.5 ms frame, so the calling thread runs the whole frame alone and the paced
-// frame takes twice its back-to-back time (docs/performance.md, paced frames). Spinning while a
+// Why: at 90 Hz a 0.5 ms frame on oneTBB took twice its back-to-back time on a quiet reference
+// machine, read as its worker, asleep since the previous frame, waking too late to take its
+// share, so that the calling thread runs the whole frame alone (docs/performance.md, paced
+// frames; inferred, not traced). Spinning while a
 // frame is due keeps the workers on their cores; the bound keeps an idle application from
 // burning the CPU (on a headset: the battery) between frames.
 //
