@@ -24,5 +24,6 @@ Command add_lod_command(CLI::App& app);
 Command add_query_command(CLI::App& app);
 Command add_render_command(CLI::App& app);  // Vulkan builds only
 Command add_view_command(CLI::App& app);    // builds with GLFW and Dear ImGui only
+Command add_xr_command(CLI::App& app);      // builds with the OpenXR loader only
 
 }  // namespace ocean::cli

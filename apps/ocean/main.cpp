@@ -40,6 +40,9 @@ int run(int argc, char** argv, Doing& doing) {
 #ifdef OCEAN_HAS_VIEW
       ocean::cli::add_view_command(app),
 #endif
+#ifdef OCEAN_HAS_XR
+      ocean::cli::add_xr_command(app),
+#endif
   };
   // CLI11 would only say "A subcommand is required": name the word it did not know.
   std::string names;

@@ -1,6 +1,7 @@
 // ocean/task_runner.hpp — the job-system seam. The simulation expresses its parallel work as
 // parallel_for over index ranges; engines plug in their own scheduler by implementing
-// TaskRunner, the library ships a serial runner and a oneTBB runner (the default).
+// TaskRunner, the library ships a serial runner, a oneTBB runner (the default) and a ready
+// runner for paced frame loops (workers that spin, within a bound, instead of sleeping).
 //
 // Two kinds of work: parallel_for (a loop split over threads) and an async slot (one job
 // started with kick and joined with wait, the simulator's double buffering).
@@ -72,6 +73,10 @@ class TaskRunner {
   /// slot must not outlive the runner. The default runs each job inline in kick(), so a runner
   /// that implements parallel_for only stays correct (without overlap).
   [[nodiscard]] virtual std::unique_ptr<AsyncSlot> make_async_slot();
+  /// A hint from a frame loop: work follows soon (within the runner's spin bound), so sleeping
+  /// workers should get ready now rather than when the first loop arrives. Never needed for
+  /// correctness; cheap (no allocation, at most one notification). The default does nothing.
+  virtual void wake() {}
 };
 
 /// Runs everything on the calling thread, in order; its async slot runs jobs inline in kick().
@@ -80,5 +85,25 @@ std::unique_ptr<TaskRunner> make_serial_runner();
 /// slot runs a job as a oneTBB task (a tbb::task_group) on a worker thread, concurrently with the
 /// caller; the job's parallel loops run in the runner's arena.
 std::unique_ptr<TaskRunner> make_tbb_runner(int max_threads = 0);
+
+struct ReadyRunnerParams {
+  int threads = 0;  ///< threads that run loops, the caller's included (0 = all hardware threads)
+  /// How long an idle worker keeps spinning, µs, after its last piece of work or after wake():
+  /// the bound on the CPU time a frame loop's runner burns between frames. [0, 1e6].
+  double spin_us = 2000.0;
+};
+
+/// A pool of threads-1 workers for frame loops. An idle worker spins (with a pause instruction)
+/// for spin_us before it sleeps, and wake() makes sleeping workers spin again for spin_us, so a
+/// frame that starts within the bound finds every worker running instead of waking them (on a
+/// quiet reference machine a 90 Hz frame on oneTBB took twice its back-to-back time, read as its
+/// sleeping worker missing the frame's start: docs/performance.md, paced frames). A caller that
+/// waits for its loop, or for an async job, runs chunks of open loops meanwhile, so nested loops
+/// neither deadlock nor serialise. Scheduling: chunks of `grain` indices claimed in order from a
+/// shared list of open loops (no stealing deques); fine for a few threads, the loops' owner running
+/// its own chunks first. Its async slot runs the job on a worker (or on the caller's thread in
+/// wait() if none took it). Allocates the threads at creation; parallel_for, kick and wait do not
+/// allocate. Precondition: params.threads in [0, 256], spin_us in [0, 1e6] (asserted).
+std::unique_ptr<TaskRunner> make_ready_runner(const ReadyRunnerParams& params = {});
 
 }  // namespace ocean

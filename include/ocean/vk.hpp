@@ -48,6 +48,9 @@ struct ContextParams {
   std::vector<const char*> instance_extensions;
   /// Enables VK_KHR_swapchain on the device (presenting to a window).
   bool swapchain = false;
+  /// Extra device extensions (those an OpenXR runtime asks for); `unsupported` naming the
+  /// first one the device lacks.
+  std::vector<const char*> device_extensions;
 };
 
 /// An instance, a logical device and its compute queue.

@@ -224,18 +224,25 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
     if (supported.features.samplerAnisotropy == VK_TRUE)
       ctx->max_anisotropy = detail::max_anisotropy(ctx->properties);
   }
+  std::uint32_t count = 0;
+  vkEnumerateDeviceExtensionProperties(ctx->physical, nullptr, &count, nullptr);
+  std::vector<VkExtensionProperties> extensions(count);
+  vkEnumerateDeviceExtensionProperties(ctx->physical, nullptr, &count, extensions.data());
+  const auto has = [&](const char* name) {
+    return std::any_of(extensions.begin(), extensions.end(),
+                       [&](const auto& e) { return std::strcmp(e.extensionName, name) == 0; });
+  };
   if (params.swapchain) {
-    std::uint32_t count = 0;
-    vkEnumerateDeviceExtensionProperties(ctx->physical, nullptr, &count, nullptr);
-    std::vector<VkExtensionProperties> extensions(count);
-    vkEnumerateDeviceExtensionProperties(ctx->physical, nullptr, &count, extensions.data());
-    const bool present = std::any_of(extensions.begin(), extensions.end(), [](const auto& e) {
-      return std::strcmp(e.extensionName, VK_KHR_SWAPCHAIN_EXTENSION_NAME) == 0;
-    });
-    if (!present)
+    if (!has(VK_KHR_SWAPCHAIN_EXTENSION_NAME))
       return unsupported("Vulkan device '" + ctx->info.name +
                          "' cannot present to a window (no VK_KHR_swapchain)");
     device_extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
+  }
+  for (const char* name : params.device_extensions) {
+    if (!has(name))
+      return unsupported("Vulkan device '" + ctx->info.name + "' lacks the extension " +
+                         excerpt(name));
+    device_extensions.push_back(name);
   }
 
   const float priority = 1.0f;

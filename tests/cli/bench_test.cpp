@@ -63,22 +63,34 @@ TEST(BenchCli, TextureOutputsLeaveOutTheOptionalArrays) {
 
 // --frame-interval paces the timed frames as a frame loop would; the rows say so and still carry
 // consistent figures. (How long a frame takes is the benchmark's to measure, not a test's.)
+// Paced rows also time the same pipeline back to back in alternated rounds (the ratio's
+// baseline), for each runner asked for.
 TEST(BenchCli, FrameIntervalPacesTheFrames) {
   const ocean_test::CliRun r = ocean_test::run_cli(
-      "bench --json --resolution 16 --cascades 1 --threads 1 --min-time 0 --frame-interval 20");
+      "bench --json --resolution 16 --cascades 1 --threads 2 --min-time 0 --frame-interval 20 "
+      "--runner tbb,ready");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  const nlohmann::json row = nlohmann::json::parse(r.out)["rows"][0];
-  EXPECT_EQ(row["frame_interval_ms"].get<double>(), 20.0);
-  EXPECT_GE(row["frames"].get<int>(), 5);
-  const double ours = row["ours_ms"].get<double>();
-  EXPECT_TRUE(std::isfinite(ours));
-  EXPECT_GT(ours, 0.0);
-  EXPECT_LE(row["ours_min_ms"].get<double>(), ours);
-  EXPECT_GE(row["ours_max_ms"].get<double>(), ours);
+  const nlohmann::json rows = nlohmann::json::parse(r.out)["rows"];
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0]["runner"], "tbb");
+  EXPECT_EQ(rows[1]["runner"], "ready");
+  for (const nlohmann::json& row : rows) {
+    EXPECT_EQ(row["frame_interval_ms"].get<double>(), 20.0);
+    EXPECT_GE(row["frames"].get<int>(), 5 * 4);  // at least 5 frames in each of the 4 rounds
+    const double ours = row["ours_ms"].get<double>();
+    EXPECT_TRUE(std::isfinite(ours));
+    EXPECT_GT(ours, 0.0);
+    EXPECT_LE(row["ours_min_ms"].get<double>(), ours);
+    EXPECT_GE(row["ours_max_ms"].get<double>(), ours);
+    const double back_to_back = row["back_to_back_ms"].get<double>();
+    EXPECT_GT(back_to_back, 0.0);
+    EXPECT_DOUBLE_EQ(row["paced_ratio"].get<double>(), ours / back_to_back);
+  }
   const ocean_test::CliRun unpaced =
       ocean_test::run_cli("bench --json --resolution 16 --cascades 1 --threads 1 --min-time 0");
   ASSERT_EQ(unpaced.exit_code, 0) << unpaced.err;
   EXPECT_EQ(nlohmann::json::parse(unpaced.out)["rows"][0]["frame_interval_ms"].get<double>(), 0.0);
+  EXPECT_FALSE(nlohmann::json::parse(unpaced.out)["rows"][0].contains("back_to_back_ms"));
 }
 
 TEST(BenchCli, TableForPeople) {
@@ -97,6 +109,8 @@ TEST(BenchCli, BadInputIsOneLineAndExitTwo) {
   ocean_test::expect_usage_error("bench --threads nan", "--threads");
   ocean_test::expect_usage_error("bench --min-time -1", "--min-time");
   ocean_test::expect_usage_error("bench --outputs some", "--outputs");
+  ocean_test::expect_usage_error("bench --runner fast", "--runner");
+  ocean_test::expect_usage_error("bench --runner ''", "--runner is empty");
   ocean_test::expect_usage_error("bench --frame-interval -1", "--frame-interval");
   ocean_test::expect_usage_error("bench --frame-interval nan", "--frame-interval");
   ocean_test::expect_usage_error("bench --frame-interval 5000", "--frame-interval");

@@ -1,6 +1,7 @@
 // Task runners cover every index exactly once, whatever the grain and thread count, also when a
 // body runs a parallel loop of its own (the CPU backend's chained frame does); async slots run
-// a job inline (serial), concurrently with the caller (oneTBB), or on an engine's own threads.
+// a job inline (serial), concurrently with the caller (oneTBB, the ready runner), or on an
+// engine's own threads. Nothing here is timed: the ready runner's speed is bench's to show.
 #include "ocean/task_runner.hpp"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,9 @@ TEST(TaskRunner, CoversEveryIndexOnce) {
   runners.push_back(ocean::make_tbb_runner(1));
   runners.push_back(ocean::make_tbb_runner(2));
   runners.push_back(ocean::make_tbb_runner());
+  runners.push_back(ocean::make_ready_runner({.threads = 1}));
+  runners.push_back(ocean::make_ready_runner({.threads = 2, .spin_us = 0.0}));
+  runners.push_back(ocean::make_ready_runner({.threads = 3}));
   for (auto& runner : runners) {
     for (std::size_t n : {0u, 1u, 7u, 1000u}) {
       for (std::size_t grain : {1u, 3u, 64u}) {
@@ -32,6 +36,7 @@ TEST(TaskRunner, CoversEveryIndexOnce) {
   }
   EXPECT_EQ(ocean::make_serial_runner()->concurrency(), 1);
   EXPECT_EQ(ocean::make_tbb_runner(1)->concurrency(), 1);
+  EXPECT_EQ(ocean::make_ready_runner({.threads = 3})->concurrency(), 3);
 }
 
 TEST(TaskRunner, NestedLoopsCoverEveryIndexOnce) {
@@ -39,6 +44,8 @@ TEST(TaskRunner, NestedLoopsCoverEveryIndexOnce) {
   runners.push_back(ocean::make_serial_runner());
   runners.push_back(ocean::make_tbb_runner(1));
   runners.push_back(ocean::make_tbb_runner(2));
+  runners.push_back(ocean::make_ready_runner({.threads = 2, .spin_us = 0.0}));
+  runners.push_back(ocean::make_ready_runner({.threads = 3}));
   for (auto& runner : runners) {
     constexpr std::size_t kOuter = 3, kInner = 500;
     std::vector<std::atomic<int>> hits(kOuter * kInner);
@@ -72,9 +79,7 @@ TEST(TaskRunner, SerialSlotRunsTheJobInlineInKick) {
 }
 
 // The job waits for the caller to pass kick(): it can finish only if it runs concurrently.
-TEST(TaskRunner, TbbSlotRunsTheJobConcurrentlyWithTheCaller) {
-  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one hardware thread";
-  auto runner = ocean::make_tbb_runner();
+void expect_job_runs_concurrently(ocean::TaskRunner* runner) {
   auto slot = runner->make_async_slot();
   std::atomic<bool> kicked{false}, saw_kick{false};
   std::vector<std::atomic<int>> hits(1000);
@@ -95,6 +100,58 @@ TEST(TaskRunner, TbbSlotRunsTheJobConcurrentlyWithTheCaller) {
     EXPECT_TRUE(saw_kick.load());
   }
   for (const auto& h : hits) ASSERT_EQ(h.load(), 3);
+}
+
+TEST(TaskRunner, TbbSlotRunsTheJobConcurrentlyWithTheCaller) {
+  if (std::thread::hardware_concurrency() < 2) GTEST_SKIP() << "one hardware thread";
+  expect_job_runs_concurrently(ocean::make_tbb_runner().get());
+}
+
+// The ready runner's threads are its own: two of them work concurrently on any machine.
+TEST(TaskRunner, ReadySlotRunsTheJobConcurrentlyWithTheCaller) {
+  auto sleeping = ocean::make_ready_runner({.threads = 2, .spin_us = 0.0});
+  expect_job_runs_concurrently(sleeping.get());
+  auto spinning = ocean::make_ready_runner({.threads = 2, .spin_us = 1e6});
+  expect_job_runs_concurrently(spinning.get());
+}
+
+// Two chunks that each wait for the other to start finish only if two threads run the loop at
+// once: the caller and a worker, whether the worker slept (spin 0), was woken by wake(), or is
+// still spinning.
+TEST(TaskRunner, ReadyRunnerRunsALoopOnTwoThreads) {
+  for (double spin_us : {0.0, 1e6}) {
+    auto runner = ocean::make_ready_runner({.threads = 2, .spin_us = spin_us});
+    for (int round = 0; round < 20; ++round) {
+      if (round % 2) runner->wake();
+      std::atomic<int> started{0};
+      std::atomic<int> met{0};
+      runner->parallel_for(2, 1, [&](std::size_t, std::size_t) {
+        started.fetch_add(1);
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+        while (started.load() < 2 && std::chrono::steady_clock::now() < deadline)
+          std::this_thread::yield();
+        if (started.load() == 2) met.fetch_add(1);
+      });
+      ASSERT_EQ(met.load(), 2) << "spin " << spin_us << " round " << round;
+    }
+  }
+}
+
+// A kicked job that nobody has taken yet runs in wait(); a slot destroyed with a job in flight
+// waits for it.
+TEST(TaskRunner, ReadySlotFinishesItsJob) {
+  auto runner = ocean::make_ready_runner({.threads = 2, .spin_us = 0.0});
+  int runs = 0;
+  auto job = [&] { ++runs; };
+  {
+    auto slot = runner->make_async_slot();
+    for (int i = 0; i < 50; ++i) {
+      slot->kick(job);
+      slot->wait();
+    }
+    slot->kick(job);
+  }
+  EXPECT_EQ(runs, 51);
 }
 
 // An engine's job system: parallel_for on the caller's thread, async jobs on a thread the

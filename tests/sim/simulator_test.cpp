@@ -61,7 +61,8 @@ TEST(Simulator, LoopRepeatsAfterPeriodEvenAfterDays) {
 
 // The CPU backend keeps each cascade group's chain of stages on one thread when there are no
 // more threads than groups, and spreads every chain's stages over the threads otherwise: 2
-// cascades (one group) and 4 (two groups) on 1, 2 and 3 threads take both ways.
+// cascades (one group) and 4 (two groups) on 1, 2 and 3 threads take both ways, on oneTBB and
+// on the ready runner (the frame loops' pool), stepped and kicked.
 TEST(Simulator, BitIdenticalForAnyThreadCount) {
   for (const std::vector<double>& sizes :
        {std::vector<double>{300.0, 71.0}, std::vector<double>{300.0, 71.0, 17.0, 4.0}}) {
@@ -72,13 +73,20 @@ TEST(Simulator, BitIdenticalForAnyThreadCount) {
     auto two = make(c, std::shared_ptr<ocean::TaskRunner>(ocean::make_tbb_runner(2)));
     auto three = make(c, std::shared_ptr<ocean::TaskRunner>(ocean::make_tbb_runner(3)));
     auto all = make(c);
-    for (auto* sim : {serial.get(), two.get(), three.get(), all.get()}) {
+    auto ready2 = make(c, std::shared_ptr<ocean::TaskRunner>(
+                              ocean::make_ready_runner({.threads = 2, .spin_us = 100.0})));
+    auto ready3 = make(c, std::shared_ptr<ocean::TaskRunner>(
+                              ocean::make_ready_runner({.threads = 3, .spin_us = 0.0})));
+    for (auto* sim : {serial.get(), two.get(), three.get(), all.get(), ready2.get()}) {
       sim->step(3.0);
       sim->step(3.5);
     }
+    ready3->kick(3.0);
+    ready3->kick(3.5);
+    ready3->wait();
     for (std::size_t k = 0; k < c.cascade_patch_sizes_m.size(); ++k) {
       const auto& a = serial->frame().cascades[k];
-      for (auto* sim : {two.get(), three.get(), all.get()}) {
+      for (auto* sim : {two.get(), three.get(), all.get(), ready2.get(), ready3.get()}) {
         const auto& b = sim->frame().cascades[k];
         EXPECT_EQ(
             std::memcmp(a.displacement.data(), b.displacement.data(), a.displacement.size() * 4),

@@ -28,35 +28,86 @@ std::size_t frame_bytes(const CascadeFrame& f) {
          bytes(f.foam) + bytes(f.packed_mips);
 }
 
-}  // namespace
+// The frame times and stage times of repeated runs, appended over rounds.
+struct Samples {
+  std::vector<double> frames, synthesis, finalize, mips;
+};
 
-Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
-                                    TaskRunner& runner, double min_time, double interval) {
-  const std::unique_ptr<cpu::CpuBackend> backend = cpu::make_cpu_backend(options);
-  if (Status s = backend->configure(config, runner); !s.ok()) return s;
-  Frame frame;
-  backend->allocate(frame);
-  double t = 0.0;
+// Times one round on a configured backend, appending to `out`.
+void time_round(cpu::CpuBackend& backend, Frame& frame, double& t, double min_time, double interval,
+                TaskRunner& runner, Samples& out) {
   std::vector<double> synthesis, finalize, mips;
   const std::vector<double> frames = time_runs(
       min_time,
       [&] {
-        backend->step(t, frame);
+        backend.step(t, frame);
         t += 1.0 / 90.0;
-        synthesis.push_back(backend->last_stage_times().synthesis_s);
-        finalize.push_back(backend->last_stage_times().finalize_s);
-        mips.push_back(backend->last_stage_times().mips_s);
+        synthesis.push_back(backend.last_stage_times().synthesis_s);
+        finalize.push_back(backend.last_stage_times().finalize_s);
+        mips.push_back(backend.last_stage_times().mips_s);
       },
-      interval);
-  const auto drop_warmup = [](std::vector<double>& v) { v.erase(v.begin(), v.begin() + 2); };
-  drop_warmup(synthesis), drop_warmup(finalize), drop_warmup(mips);
-  return PipelineResult{stats_of(frames),
-                        stats_of(synthesis),
-                        stats_of(finalize),
-                        stats_of(mips),
-                        frames.size(),
-                        backend->state_bytes_per_cascade(),
-                        frame_bytes(frame.cascades.front())};
+      interval, &runner);
+  const auto append_timed = [](std::vector<double>& to, const std::vector<double>& from) {
+    to.insert(to.end(), from.begin() + 2, from.end());  // without the two warm-up frames
+  };
+  out.frames.insert(out.frames.end(), frames.begin(), frames.end());
+  append_timed(out.synthesis, synthesis), append_timed(out.finalize, finalize);
+  append_timed(out.mips, mips);
+}
+
+PipelineResult result_of(const Samples& s, const cpu::CpuBackend& backend, const Frame& frame) {
+  return {stats_of(s.frames),
+          stats_of(s.synthesis),
+          stats_of(s.finalize),
+          stats_of(s.mips),
+          s.frames.size(),
+          backend.state_bytes_per_cascade(),
+          frame_bytes(frame.cascades.front())};
+}
+
+}  // namespace
+
+namespace {
+
+// A backend configured on `runner` and a frame for it.
+struct Configured {
+  std::unique_ptr<cpu::CpuBackend> backend;
+  Frame frame;
+};
+
+Result<Configured> configure(const SimulationConfig& config, cpu::CpuOptions options,
+                             TaskRunner& runner) {
+  Configured c{cpu::make_cpu_backend(options), {}};
+  if (Status s = c.backend->configure(config, runner); !s.ok()) return s;
+  c.backend->allocate(c.frame);
+  return c;
+}
+
+}  // namespace
+
+Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
+                                    TaskRunner& runner, double min_time, double interval) {
+  Result<Configured> c = configure(config, options, runner);
+  if (!c.ok()) return c.status();
+  double t = 0.0;
+  Samples samples;
+  time_round(*c.value().backend, c.value().frame, t, min_time, interval, runner, samples);
+  return result_of(samples, *c.value().backend, c.value().frame);
+}
+
+Result<PacedResult> run_paced_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
+                                       TaskRunner& runner, double min_time, double interval) {
+  Result<Configured> c = configure(config, options, runner);
+  if (!c.ok()) return c.status();
+  cpu::CpuBackend& backend = *c.value().backend;
+  Frame& frame = c.value().frame;
+  double t = 0.0;
+  Samples paced, back_to_back;
+  for (int round = 0; round < kPacedRounds; ++round) {
+    time_round(backend, frame, t, min_time / kPacedRounds, 0.0, runner, back_to_back);
+    time_round(backend, frame, t, min_time / kPacedRounds, interval, runner, paced);
+  }
+  return PacedResult{result_of(paced, backend, frame), result_of(back_to_back, backend, frame)};
 }
 
 }  // namespace ocean::cli::bench

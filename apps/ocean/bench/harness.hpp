@@ -26,15 +26,29 @@ SimulationConfig bench_config(int resolution, int cascades, const FrameOutputs& 
 
 using Clock = std::chrono::steady_clock;
 
+// How long before a paced frame's start the harness calls TaskRunner::wake(), as a frame loop
+// that knows when its next frame starts does (ocean xr: before xrWaitFrame). Within the ready
+// runner's default spin bound (2 ms).
+constexpr double kWakeLead_s = 1e-3;
+
 // Times body() repeatedly: 2 warm-up runs, then at least 5 runs and about min_time seconds
 // (at most 500 runs). With an interval, the runs start that many seconds apart, as frames of a
-// frame loop do (the thread sleeps in between); min_time then counts the intervals.
+// frame loop do (the thread sleeps in between, and wakes `runner` kWakeLead_s before each
+// frame when one is given); min_time then counts the intervals.
 template <typename Body>
-std::vector<double> time_runs(double min_time, Body body, double interval = 0.0) {
+std::vector<double> time_runs(double min_time, Body body, double interval = 0.0,
+                              TaskRunner* runner = nullptr) {
+  const auto at = [](Clock::time_point start, double seconds) {
+    return start +
+           std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
+  };
   const auto pace = [&](Clock::time_point start) {
-    if (interval > 0.0)
-      std::this_thread::sleep_until(start + std::chrono::duration_cast<Clock::duration>(
-                                                std::chrono::duration<double>(interval)));
+    if (interval <= 0.0) return;
+    if (runner != nullptr && interval > kWakeLead_s) {
+      std::this_thread::sleep_until(at(start, interval - kWakeLead_s));
+      runner->wake();
+    }
+    std::this_thread::sleep_until(at(start, interval));
   };
   for (int i = 0; i < 2; ++i) {
     const Clock::time_point start = Clock::now();
@@ -65,6 +79,17 @@ struct PipelineResult {
 /// for about min_time seconds after two warm-up frames.
 Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
                                     TaskRunner& runner, double min_time, double interval);
+
+struct PacedResult {
+  PipelineResult paced, back_to_back;
+};
+
+/// The same pipeline paced `interval` s apart and back to back, alternated in kPacedRounds
+/// rounds of min_time / kPacedRounds seconds each so that both see the same minutes of a noisy
+/// machine; the medians are over all rounds' frames.
+constexpr int kPacedRounds = 4;
+Result<PacedResult> run_paced_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
+                                       TaskRunner& runner, double min_time, double interval);
 
 // Scratch planes for the FFT-only measurements: `count` N×N split-complex planes.
 struct Planes {

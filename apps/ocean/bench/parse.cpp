@@ -29,4 +29,18 @@ Result<std::vector<int>> parse_ints(const NumberOption<int>& item, const std::st
   return out;
 }
 
+Result<std::vector<std::string>> parse_runners(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream stream(text);
+  std::string word;
+  while (std::getline(stream, word, ',')) {
+    if (word != "tbb" && word != "ready")
+      return invalid_argument("--runner = '" + excerpt(word) +
+                              "' is unknown: must be one of tbb, ready");
+    out.push_back(word);
+  }
+  if (out.empty()) return invalid_argument("--runner is empty");
+  return out;
+}
+
 }  // namespace ocean::cli::bench

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ocean/core.hpp"
@@ -15,5 +16,18 @@ namespace ocean::cli::bench {
 /// empty text is "<flag> is empty"; a trailing comma is ignored.
 Result<std::vector<int>> parse_ints(const NumberOption<int>& item, const std::string& text,
                                     bool allow_all);
+
+/// Runner names separated by commas, each one of tbb, ready: "--runner = '<name>' is unknown:
+/// must be one of tbb, ready" otherwise; an empty list is "--runner is empty".
+Result<std::vector<std::string>> parse_runners(const std::string& text);
+
+/// Every (a, b) pair, a in the outer loop.
+template <typename A, typename B>
+std::vector<std::pair<A, B>> product(const std::vector<A>& as, const std::vector<B>& bs) {
+  std::vector<std::pair<A, B>> out;
+  for (const A& a : as)
+    for (const B& b : bs) out.emplace_back(a, b);
+  return out;
+}
 
 }  // namespace ocean::cli::bench

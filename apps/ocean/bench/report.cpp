@@ -25,12 +25,17 @@ nlohmann::ordered_json to_json(const Row& r) {
   j["resolution"] = r.resolution;
   j["cascades"] = r.cascades;
   j["threads"] = r.threads;
+  j["runner"] = r.runner;
   j["outputs"] = r.outputs;
   j["frame_interval_ms"] = r.frame_interval_ms;
   j["ours_ms"] = r.ours.frame.median_ms;
   j["ours_min_ms"] = r.ours.frame.min_ms;
   j["ours_max_ms"] = r.ours.frame.max_ms;
   j["ours_stages_ms"] = stage_json(r.ours);
+  if (r.frame_interval_ms > 0.0) {
+    j["back_to_back_ms"] = r.back_to_back.frame.median_ms;
+    j["paced_ratio"] = r.ours.frame.median_ms / r.back_to_back.frame.median_ms;
+  }
   j["ours_fft_only_ms"] = r.ours_fft.median_ms;
   j["fftw_pipeline_ms"] = or_null(r.fftw.frame.median_ms);
   j["fftw_pipeline_min_ms"] = or_null(r.fftw.frame.min_ms);
@@ -65,16 +70,24 @@ void print_table(const std::vector<Row>& rows, const std::string& target, double
   if (!rows.empty() && rows.front().frame_interval_ms > 0.0)
     std::cout << "; frames " << fixed(rows.front().frame_interval_ms, 1) << " ms apart";
   std::cout << "; times are medians in ms\n";
-  std::cout << std::setw(6) << "N" << std::setw(4) << "C" << std::setw(5) << "thr" << std::setw(10)
-            << "ours" << std::setw(10) << "fftw-pipe" << std::setw(7) << "ratio" << std::setw(10)
+  const bool paced = !rows.empty() && rows.front().frame_interval_ms > 0.0;
+  std::cout << std::setw(6) << "N" << std::setw(4) << "C" << std::setw(5) << "thr" << std::setw(7)
+            << "runner" << std::setw(10) << "ours";
+  if (paced) std::cout << std::setw(10) << "b2b" << std::setw(7) << "paced";
+  std::cout << std::setw(10) << "fftw-pipe" << std::setw(7) << "ratio" << std::setw(10)
             << "ours-fft" << std::setw(10) << "fftw-fft" << std::setw(9) << "GFLOP/s"
             << std::setw(7) << "%peak" << std::setw(10) << "MiB/casc"
             << "   stages synth/final/mips\n";
   for (const Row& r : rows) {
     const auto opt = [&](double v, int digits) { return r.has_fftw ? fixed(v, digits) : "-"; };
     std::cout << std::setw(6) << r.resolution << std::setw(4) << r.cascades << std::setw(5)
-              << r.threads << std::setw(10) << fixed(r.ours.frame.median_ms, 3) << std::setw(10)
-              << opt(r.fftw.frame.median_ms, 3) << std::setw(7)
+              << r.threads << std::setw(7) << r.runner << std::setw(10)
+              << fixed(r.ours.frame.median_ms, 3);
+    if (paced) {
+      std::cout << std::setw(10) << fixed(r.back_to_back.frame.median_ms, 3) << std::setw(7)
+                << fixed(r.ours.frame.median_ms / r.back_to_back.frame.median_ms, 2);
+    }
+    std::cout << std::setw(10) << opt(r.fftw.frame.median_ms, 3) << std::setw(7)
               << opt(r.ours.frame.median_ms / r.fftw.frame.median_ms, 2) << std::setw(10)
               << fixed(r.ours_fft.median_ms, 3) << std::setw(10) << opt(r.fftw_fft.median_ms, 3)
               << std::setw(9) << fixed(r.fft_gflops, 1) << std::setw(7)

@@ -12,10 +12,12 @@
 namespace ocean::cli::bench {
 
 struct Row {
-  int resolution, cascades, threads;
+  int resolution = 0, cascades = 0, threads = 0;
+  std::string runner;  ///< tbb or ready
   std::string outputs;
   double frame_interval_ms = 0.0;
   PipelineResult ours, fftw;
+  PipelineResult back_to_back;  ///< ours back to back in the same rounds, when paced
   int fftw_threads = 0;
   Stats ours_fft, fftw_fft;
   double fft_gflops = 0.0, peak_fraction = 0.0;

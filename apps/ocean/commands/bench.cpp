@@ -29,11 +29,15 @@ namespace ocean::cli {
 namespace {
 
 using bench::measure_copy_bandwidth_gbps;
+using bench::PacedResult;
 using bench::parse_ints;
+using bench::parse_runners;
 using bench::PipelineResult;
 using bench::Planes;
 using bench::print_table;
+using bench::product;
 using bench::Row;
+using bench::run_paced_pipeline;
 using bench::run_pipeline;
 using bench::run_vulkan_bench;
 using bench::Stats;
@@ -68,6 +72,7 @@ struct BenchOptions {
   std::string backend = "cpu";
   std::string outputs = "all";
   std::string frame_interval = "0";
+  std::string runners = "tbb";
   bool json = false;
   bool table_one = false;
   bool resolution_given = false;
@@ -121,6 +126,8 @@ int run_bench(const BenchOptions& o) {
     return bench::run_table_one(o.resolution_given ? resolutions.value() : seed_sizes,
                                 cascades.value().front(), min_time.value(), o.json);
   }
+  Result<std::vector<std::string>> runner_names = parse_runners(o.runners);
+  if (!runner_names.ok()) return report(runner_names.status());
 
   const std::string target = fft::active_simd_target();
   const double peak = fft::measure_fma_peak_gflops(0.2);
@@ -132,31 +139,34 @@ int run_bench(const BenchOptions& o) {
   std::string fftw_note;
   Progress progress("bench",
                     static_cast<long long>(resolutions.value().size() * cascades.value().size() *
-                                           threads.value().size()));
+                                           threads.value().size() * runner_names.value().size()));
   long long done = 0;
   for (int n : resolutions.value()) {
     for (int c : cascades.value()) {
-      for (int t_request : threads.value()) {
-        const int t = t_request == 0 ? hardware : t_request;
+      for (const std::pair<int, std::string>& tr : product(threads.value(), runner_names.value())) {
+        const int t = tr.first == 0 ? hardware : tr.first;
+        const std::string& runner_name = tr.second;
         const SimulationConfig config = bench::bench_config(n, c, outputs);
-        std::shared_ptr<TaskRunner> runner = make_tbb_runner(t);
-        Row row{n,
-                c,
-                runner->concurrency(),
-                o.outputs,
-                interval_ms.value(),
-                {},
-                {},
-                0,
-                {},
-                {},
-                0.0,
-                0.0,
-                0,
-                false};
-        Result<PipelineResult> ours = run_pipeline(config, {}, *runner, min_time.value(), interval);
-        if (!ours.ok()) return report(ours.status());
-        row.ours = ours.value();
+        std::shared_ptr<TaskRunner> runner =
+            runner_name == "ready" ? make_ready_runner({.threads = t}) : make_tbb_runner(t);
+        Row row{.resolution = n,
+                .cascades = c,
+                .threads = runner->concurrency(),
+                .runner = runner_name,
+                .outputs = o.outputs,
+                .frame_interval_ms = interval_ms.value()};
+        if (interval > 0.0) {
+          Result<PacedResult> ours =
+              run_paced_pipeline(config, {}, *runner, min_time.value(), interval);
+          if (!ours.ok()) return report(ours.status());
+          row.ours = ours.value().paced;
+          row.back_to_back = ours.value().back_to_back;
+        } else {
+          Result<PipelineResult> ours =
+              run_pipeline(config, {}, *runner, min_time.value(), interval);
+          if (!ours.ok()) return report(ours.status());
+          row.ours = ours.value();
+        }
         // The same transforms alone: two planes per cascade, three per pair of cascades (the
         // pipelines pair cascades: one plane carries both cascades' Dz).
         const auto plane_count = static_cast<std::size_t>(3 * (c / 2) + 2 * (c % 2));
@@ -237,7 +247,12 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   add_option(*cmd, kFrameInterval, options->frame_interval,
              "Milliseconds from one timed frame's start to the next, as in a frame loop "
-             "(0: back to back); the FFT-only runs stay back to back")
+             "(0: back to back); the FFT-only runs stay back to back, and our pipeline is "
+             "also timed back to back, alternated with the paced frames, for the ratio")
+      ->capture_default_str();
+  cmd->add_option("--runner", options->runners,
+                  "Comma-separated task runners: tbb (oneTBB), ready (workers spin up to 2 ms "
+                  "and are woken 1 ms before a paced frame)")
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "Print JSON instead of a table");
   cmd->add_flag("--table-one", options->table_one,
