@@ -1,6 +1,7 @@
 // The object pass (object_pass.hpp): meshes uploaded once by Renderer::set_meshes into
 // device-local buffers, drawn per instance with the model matrix and material as push constants,
 // in the HDR pass after the water and depth-tested with it (docs/rendering.md R.20–R.21).
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -102,7 +103,12 @@ void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view,
   for (const ObjectInstance& o : view.objects) {
     const ObjectPass::MeshBuffers& m = st.objects.meshes[o.mesh];
     shader::ObjectPush push{};
-    for (std::size_t i = 0; i < 16; ++i) push.model.m[i] = static_cast<float>(o.model[i]);
+    // Positions the GPU sees are relative to the frame's origin O (R.16): the translation moves
+    // by −O in double before it becomes float.
+    std::array<double, 16> model = o.model;
+    model[12] -= st.selection.grid_centre_x_m;
+    model[14] -= st.selection.grid_centre_z_m;
+    for (std::size_t i = 0; i < 16; ++i) push.model.m[i] = static_cast<float>(model[i]);
     push.base_metallic = {static_cast<float>(m.material.base_colour[0]),
                           static_cast<float>(m.material.base_colour[1]),
                           static_cast<float>(m.material.base_colour[2]),

@@ -93,6 +93,25 @@ TEST(Objects, ABoxAboveTheSeaCoversItsProjectionAndIsHiddenBelowIt) {
   EXPECT_EQ(helpers::difference(sunk, empty).max, 0);
 }
 
+// Far from the world's origin (R.16: the GPU sees positions relative to the frame's origin) a
+// box stays where its model matrix puts it: the same view and box moved by 10⁶ m in x show the
+// box's orange at its projected centre.
+TEST(Objects, ABoxFarFromTheOriginStaysWhereItIs) {
+  auto rig = make_rig();
+  if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  View view = helpers::eye_level_view(kW, kH);
+  constexpr double kOffset = 1e6;
+  view.camera.position_m.x += kOffset;
+  view.camera.target_m.x += kOffset;
+  const std::array<double, 3> centre{kOffset - 40.0, 6.0, -28.0};
+  view.objects = {{.mesh = 0, .model = model_matrix(centre, {1, 0, 0, 0})}};
+  const std::vector<std::uint8_t> px = draw(*rig, view);
+  const auto [cx, cy] = pixel_of(view, centre);
+  ASSERT_TRUE(cx > 5 && cx < kW - 5 && cy > 5 && cy < kH - 5);
+  const auto at = [&](int c) { return int(px[static_cast<std::size_t>((cy * kW + cx) * 4 + c)]); };
+  EXPECT_GT(at(0), at(2) + 20);
+}
+
 TEST(Objects, RefusesBadMeshesIndicesAndTransforms) {
   auto rig = make_rig();
   if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
