@@ -1,8 +1,7 @@
-// The HDR environment map (docs/rendering.md R.17): an equirectangular OpenEXR image read with
-// read_exr (ocean/io.hpp), halved to at most 2048 × 1024, uploaded as an RGBA32F image the
-// shaders read instead of the analytic sky's table (background, reflections, fog), and its
-// irradiance on a horizontal plane, which lights the water body and the foam in place of the
-// analytic sky's.
+// The HDR environment map on the device (docs/rendering.md R.17; environment_map.cpp reads the
+// file): uploaded as an RGBA32F image the shaders read instead of the analytic sky's table
+// (background, reflections, fog), and its irradiance on a horizontal plane, which lights the water
+// body and the foam in place of the analytic sky's.
 //
 // Sources: Paleologue 2024 (the skybox the water reflects); Mitchell 2005 (the environment term
 // of the composition); Blinn & Newell 1976 (reflection mapping by a latitude–longitude map).
@@ -10,30 +9,11 @@
 #include <cstring>
 #include <numbers>
 
-#include "ocean/io.hpp"
 #include "state.hpp"
 
 namespace ocean::render {
 
 namespace {
-
-constexpr int kMaxWidth = 2048;
-
-// Halves both sides with a 2×2 box (w and h even).
-Environment halve(const Environment& e) {
-  Environment out{.width = e.width / 2, .height = e.height / 2, .rgb = {}};
-  out.rgb.resize(static_cast<std::size_t>(out.width) * out.height * 3);
-  const auto at = [&](int x, int y, int c) {
-    return e.rgb[(static_cast<std::size_t>(y) * e.width + x) * 3 + c];
-  };
-  for (int y = 0; y < out.height; ++y)
-    for (int x = 0; x < out.width; ++x)
-      for (int c = 0; c < 3; ++c)
-        out.rgb[(static_cast<std::size_t>(y) * out.width + x) * 3 + c] =
-            0.25f * (at(2 * x, 2 * y, c) + at(2 * x + 1, 2 * y, c) + at(2 * x, 2 * y + 1, c) +
-                     at(2 * x + 1, 2 * y + 1, c));
-  return out;
-}
 
 // ∫ L cosθ dω over the upper hemisphere, texel by texel: a row at elevation e spans the solid
 // angle (2π/width)·(π/height)·cos e per texel and sees the plane at cosθ = sin e.
@@ -52,39 +32,6 @@ std::array<double, 3> irradiance(const Environment& e) {
 }
 
 }  // namespace
-
-Result<Environment> load_environment(const std::filesystem::path& path) {
-  Result<io::ExrImage> read = io::read_exr(path);
-  if (!read.ok()) return read.status();
-  const io::ExrImage& image = read.value();
-  const std::string name = "environment '" + excerpt(path.string()) + "'";
-  std::array<const std::vector<float>*, 3> planes{};
-  constexpr std::array<const char*, 3> kChannels = {"R", "G", "B"};
-  for (std::size_t c = 0; c < 3; ++c) {
-    for (std::size_t i = 0; i < image.channel_names.size(); ++i)
-      if (image.channel_names[i] == kChannels[c]) planes[c] = &image.planes[i];
-    if (planes[c] == nullptr)
-      return invalid_argument(name + " has no channel " + kChannels[c] +
-                              ": an environment map is an RGB OpenEXR image");
-  }
-  if (image.width != 2 * image.height || image.height < 2 || image.height % 2 != 0)
-    return invalid_argument(name + " is " + std::to_string(image.width) + "x" +
-                            std::to_string(image.height) +
-                            ": an equirectangular map is twice as wide as high (an even height)");
-  Environment e{.width = image.width, .height = image.height, .rgb = {}};
-  e.rgb.resize(static_cast<std::size_t>(e.width) * e.height * 3);
-  for (std::size_t p = 0; p < e.rgb.size() / 3; ++p) {
-    for (std::size_t c = 0; c < 3; ++c) {
-      const float v = (*planes[c])[p];
-      if (!std::isfinite(v) || v < 0.0f)
-        return invalid_argument(name + " holds a negative or non-finite radiance (" +
-                                format_number(v) + "): it must be a linear HDR image");
-      e.rgb[3 * p + c] = v;
-    }
-  }
-  while (e.width > kMaxWidth && e.height % 2 == 0) e = halve(e);
-  return e;
-}
 
 Status Renderer::set_environment(const Environment* environment) {
   State& st = *state_;
