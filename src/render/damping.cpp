@@ -9,12 +9,12 @@
 
 #include "ocean/half.hpp"
 #include "state.hpp"
+#include "world_grid.hpp"
 
 namespace ocean::render {
 
 namespace {
 
-constexpr int kMaxDampingSide = 4096;
 constexpr std::uint32_t kLayers = 3;
 
 Status allocate_damping(Renderer::State& st, std::uint32_t side) {
@@ -51,12 +51,8 @@ Status Renderer::set_damping(const DampingGrid& grid) {
     st.damping.resolution = 0.0f;
     return {};
   }
-  if (grid.resolution < 1 || grid.resolution > kMaxDampingSide)
-    return invalid_argument("damping: resolution = " + std::to_string(grid.resolution) +
-                            " must be in [1, " + std::to_string(kMaxDampingSide) + "]");
-  if (!std::isfinite(grid.size_m) || !(grid.size_m > 0.0) || !std::isfinite(grid.origin_m[0]) ||
-      !std::isfinite(grid.origin_m[1]))
-    return invalid_argument("damping: the area (origin and size) must be finite, size > 0");
+  if (Status s = check_world_grid("damping", grid.origin_m, grid.size_m, grid.resolution); !s.ok())
+    return s;
   const auto side = static_cast<std::uint32_t>(grid.resolution);
   const std::size_t cells = static_cast<std::size_t>(side) * side;
   if (grid.band_weights.size() != kDampingBands * cells || grid.depth_m.size() != cells)
@@ -97,16 +93,8 @@ Status Renderer::set_damping(const DampingGrid& grid) {
 void Renderer::set_calm(bool calm) { state_->local.calm = calm ? 1.0f : 0.0f; }
 
 void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd) {
-  vk::image_barrier(cmd, st.damping_image.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
-                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  const std::uint32_t n = st.damping_side;
-  const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, kLayers},
-                                 .imageExtent = {n, n, 1}};
-  vkCmdCopyBufferToImage(cmd, st.damping_staging.buffer, st.damping_image.image,
-                         VK_IMAGE_LAYOUT_GENERAL, 1, &region);
-  vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-              VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+  record_world_grid_upload(cmd, st.damping_staging.buffer, st.damping_image.image, st.damping_side,
+                           kLayers);
   st.damping_pending = false;
 }
 

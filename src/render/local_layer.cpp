@@ -2,18 +2,16 @@
 // (Dx, h, Dz, 0), filled from a LocalLayerGrid through a staging buffer. Until the first
 // set_local_layer() it is 1×1 of zeros and the uniforms say "no layer", so the descriptor is
 // always valid.
-#include <cmath>
 #include <cstring>
 #include <string>
 
 #include "ocean/half.hpp"
 #include "state.hpp"
+#include "world_grid.hpp"
 
 namespace ocean::render {
 
 namespace {
-
-constexpr int kMaxLocalSide = 4096;
 
 // The image and its staging buffer for a side × side layer; the old ones are destroyed first.
 Status allocate_local(Renderer::State& st, std::uint32_t side) {
@@ -50,12 +48,9 @@ Status Renderer::set_local_layer(const LocalLayerGrid& grid) {
     st.local.resolution = 0.0f;
     return {};
   }
-  if (grid.resolution < 1 || grid.resolution > kMaxLocalSide)
-    return invalid_argument("local layer: resolution = " + std::to_string(grid.resolution) +
-                            " must be in [1, " + std::to_string(kMaxLocalSide) + "]");
-  if (!std::isfinite(grid.size_m) || !(grid.size_m > 0.0) || !std::isfinite(grid.origin_m[0]) ||
-      !std::isfinite(grid.origin_m[1]))
-    return invalid_argument("local layer: the area (origin and size) must be finite, size > 0");
+  if (Status s = check_world_grid("local layer", grid.origin_m, grid.size_m, grid.resolution);
+      !s.ok())
+    return s;
   const auto side = static_cast<std::uint32_t>(grid.resolution);
   const std::size_t cells = static_cast<std::size_t>(side) * side;
   if (grid.displacement.size() != 3 * cells)
@@ -84,15 +79,7 @@ Status Renderer::set_local_layer(const LocalLayerGrid& grid) {
 }
 
 void record_local_upload(Renderer::State& st, VkCommandBuffer cmd) {
-  vk::image_barrier(cmd, st.local_image.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                    VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0,
-                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-  const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                                 .imageExtent = {st.local_side, st.local_side, 1}};
-  vkCmdCopyBufferToImage(cmd, st.local_staging.buffer, st.local_image.image,
-                         VK_IMAGE_LAYOUT_GENERAL, 1, &region);
-  vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
-              VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
+  record_world_grid_upload(cmd, st.local_staging.buffer, st.local_image.image, st.local_side, 1);
   st.local_pending = false;
 }
 
