@@ -203,6 +203,9 @@ class LocalLayer {
   LocalLayer& operator=(const LocalLayer&) = delete;
 
   [[nodiscard]] const LayerParams& params() const { return params_; }
+  /// How many wake tables make() computed: one per distinct (U, L), speeds equal to a relative
+  /// 1e-6 counting as one (a path at constant speed needs one table, whatever its segments).
+  [[nodiscard]] std::size_t table_count() const;
   /// (Dx, h, Dz) of the layer at the undisplaced world point (x, z) at time t, m: the sum of the
   /// wakes (their tables moved and turned to each object's pose, bilinear) and the waveforms,
   /// times the soft-edge weight. Never allocates.

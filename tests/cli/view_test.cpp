@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -173,6 +174,41 @@ TEST_F(ViewCli, DebugViewsAndTheVulkanBackendRun) {
   EXPECT_TRUE(r.out.empty()) << r.out;  // nothing printed without --screenshot
 }
 
+// The lagoon seen from above with the boat circling it (validation on): the island in the
+// middle of the picture is drawn as its sandy bottom under still water, brighter than the deep
+// water at the corners; without --shallows the middle is water like the corners.
+TEST_F(ViewCli, LagoonAndBoatDrawFromAbove) {
+  const auto shoot = [&](const std::string& flags) {
+    const fs::path png = dir_ / "lagoon.png";
+    const ocean_test::CliRun r = ocean_test::run_cli(
+        "view --frames 2 --width 160 --height 160 --quality low --resolution 64 --validation "
+        "--camera 0,150,1 --target 0,0,0 " +
+        flags + " --screenshot " + png.string());
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    auto read = ocean::io::read_png(png);
+    EXPECT_TRUE(read.ok()) << read.status().message();
+    return read.ok() ? std::move(read).value() : ocean::io::PngImage{};
+  };
+  // Mean green of a 20-pixel square at (x0, y0).
+  const auto patch = [](const ocean::io::PngImage& im, int x0, int y0) {
+    if (im.width != 160 || im.height != 160) return 0.0;
+    double sum = 0.0;
+    for (int y = y0; y < y0 + 20; ++y)
+      for (int x = x0; x < x0 + 20; ++x) sum += im.samples[(y * 160 + x) * 3 + 1];
+    return sum / 400.0;
+  };
+  const auto corners = [&](const ocean::io::PngImage& im) {
+    return (patch(im, 0, 0) + patch(im, 140, 0) + patch(im, 0, 140) + patch(im, 140, 140)) / 4;
+  };
+  const ocean::io::PngImage lagoon = shoot("--shallows lagoon --boat");
+  const ocean::io::PngImage sea = shoot("");
+  // The island is pale sand, the deep sea dark blue; the shallows at the corners (11 m deep)
+  // lie between.
+  EXPECT_GT(patch(lagoon, 70, 70), 4.0 * patch(sea, 70, 70));
+  EXPECT_GT(patch(lagoon, 70, 70), 1.3 * corners(lagoon));
+  EXPECT_GT(corners(lagoon), 2.0 * corners(sea));
+}
+
 TEST(ViewCliNoDisplay, FailsWithOneLine) {
   const char* saved = std::getenv("DISPLAY");
   const std::string display = saved != nullptr ? saved : "";
@@ -198,6 +234,7 @@ TEST(ViewCliNoDisplay, BadFlagsAreUsageErrors) {
   ocean_test::expect_usage_error("view --camera 0,-1,0", "--camera");
   ocean_test::expect_usage_error("view --screenshot shot.jpg", "--screenshot");
   ocean_test::expect_usage_error("view --resolution 100", "resolution");
+  ocean_test::expect_usage_error("view --shallows reef", "--shallows");
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <iostream>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,7 @@
 #include "view/frame_times.hpp"
 #include "view/free_camera.hpp"
 #include "view/imgui_layer.hpp"
+#include "view/interaction.hpp"
 #include "view/panel.hpp"
 #include "view/presenter.hpp"
 #include "view/sea_controls.hpp"
@@ -51,6 +53,8 @@ struct ViewOptions {
   SimulationFlags sim;
   ViewFlags picture{.quality = "medium"};
   std::string frames = "0", screenshot;
+  bool boat = false;
+  std::string shallows = "none";
 };
 
 struct Inputs {
@@ -58,6 +62,7 @@ struct Inputs {
   render::View view;
   int quality = 1;
   long long frames = 0;  // 0: until the window closes
+  view::Shallows shallows = view::Shallows::none;
 };
 
 Result<Inputs> parse_inputs(const ViewOptions& o) {
@@ -75,6 +80,11 @@ Result<Inputs> parse_inputs(const ViewOptions& o) {
   Result<long long> frames = parse(kFrames, o.frames);
   if (!frames.ok()) return frames.status();
   in.frames = frames.value();
+  const std::optional<view::Shallows> shallows = view::parse_shallows(o.shallows);
+  if (!shallows)
+    return invalid_argument("--shallows = '" + excerpt(o.shallows) +
+                            "': must be none, lily-pads or lagoon");
+  in.shallows = *shallows;
   if (!o.screenshot.empty()) {
     if (Status s = check_output_name("--screenshot", o.screenshot); !s.ok()) return s;
     if (std::filesystem::path(o.screenshot).extension() != ".png")
@@ -175,6 +185,15 @@ int run_view(const ViewOptions& o) {
   view::FreeCamera camera = start;
   SimulationConfig config = in.scene.config;
   view::PanelState panel{.sea = view::sea_controls(config), .quality = in.quality};
+  // The boat circles, and the shallows lie, about the point the camera first looks at.
+  const std::array<double, 2> scene_centre{in.view.camera.target_m.x, in.view.camera.target_m.z};
+  panel.boat.on = o.boat;
+  panel.boat.centre_m = scene_centre;
+  panel.shallows = static_cast<int>(in.shallows);
+  Result<std::unique_ptr<view::InteractionScene>> interaction_made =
+      view::InteractionScene::make(renderer, config);
+  if (!interaction_made.ok()) return report(interaction_made.status());
+  view::InteractionScene& interaction = *interaction_made.value();
   view::PanelStats stats{
       .device = ctx.info.name, .backend = in.scene.backend, .wireframe_available = ctx.wireframe};
   view::FrameTimes times;
@@ -184,6 +203,9 @@ int run_view(const ViewOptions& o) {
   std::uint64_t generation = 0;  // the presenter's swapchain the renderer is sized for
   double t = kStartTime_s;
   if (Status s = scene.warm_up(t, kWarmup_s); !s.ok()) return report(s);
+  if (Status s = interaction.set_boat(panel.boat, t, renderer); !s.ok()) return report(s);
+  if (Status s = interaction.set_shallows(in.shallows, scene_centre, config, renderer); !s.ok())
+    return report(s);
   long long frame = 0;
   auto last = std::chrono::steady_clock::now();
 
@@ -239,8 +261,19 @@ int run_view(const ViewOptions& o) {
       }
     }
 
+    if (actions.boat_changed) {
+      if (Status s = interaction.set_boat(panel.boat, t, renderer); !s.ok()) return report(s);
+    }
+    if (actions.shallows_changed || (actions.sea_changed && panel.error.empty())) {
+      // The damping's bands follow the cascades: a new sea needs them again.
+      const auto scene_kind = static_cast<view::Shallows>(panel.shallows);
+      if (Status s = interaction.set_shallows(scene_kind, scene_centre, config, renderer); !s.ok())
+        return report(s);
+    }
+
     if (!panel.paused) t += (in.frames > 0 ? kFixedStep_s : dt) * panel.time_scale;
     if (Status s = scene.step(t); !s.ok()) return report(s);
+    if (Status s = interaction.update(t, renderer, in.view); !s.ok()) return report(s);
     // A new mesh density uploads through the renderer's own command buffer: before ours.
     if (actions.quality_changed) {
       if (Status s = renderer.prepare(in.view); !s.ok()) return report(s);
@@ -299,6 +332,12 @@ Command add_view_command(CLI::App& app) {
              "default 0: until the window is closed");
   command->add_option("--screenshot", o->screenshot,
                       "after the last frame, save the 3D view (without the panel) as this PNG");
+  command->add_flag("--boat", o->boat,
+                    "start with a boat circling the --target point, leaving its Kelvin wake "
+                    "(panel: Boat and shallows)");
+  command->add_option("--shallows", o->shallows,
+                      "none, lily-pads (a damping mask) or lagoon (a bathymetry), about the "
+                      "--target point; default none");
   return {command, [o] { return run_view(*o); }};
 }
 

@@ -136,6 +136,18 @@ void view_section(PanelState& state, render::View& view, const PanelStats& stats
   if (ImGui::Button("quit")) actions.quit = true;
 }
 
+void interaction_section(PanelState& state, PanelActions& actions) {
+  if (ImGui::Checkbox("boat and its wake", &state.boat.on)) actions.boat_changed = true;
+  ImGui::BeginDisabled(!state.boat.on);
+  sim_slider("boat speed", state.boat.speed_mps, 1.0, 20.0, "%.1f m/s", actions.boat_changed);
+  sim_slider("circle radius", state.boat.radius_m, 10.0, 500.0, "%.0f m", actions.boat_changed,
+             kLog);
+  ImGui::EndDisabled();
+  if (ImGui::Combo("shallows", &state.shallows, kShallowsLabels.data(),
+                   static_cast<int>(kShallowsLabels.size())))
+    actions.shallows_changed = true;
+}
+
 void stats_section(const PanelStats& s) {
   ImGui::Text("frame %.1f ms (%.0f fps), CPU, median of 60", s.frame_ms,
               s.frame_ms > 0.0 ? 1000.0 / s.frame_ms : 0.0);
@@ -168,6 +180,7 @@ PanelActions draw_panel(PanelState& state, render::View& view, const PanelStats&
     ImGui::TextWrapped("%s", state.error.c_str());
     ImGui::PopStyleColor();
   }
+  if (ImGui::CollapsingHeader("Boat and shallows")) interaction_section(state, actions);
   if (ImGui::CollapsingHeader("Shading")) shading_section(view.shading);
   if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen))
     view_section(state, view, stats, actions);

@@ -11,6 +11,7 @@
 #include <string_view>
 
 #include "ocean/render.hpp"
+#include "view/interaction.hpp"
 #include "view/sea_controls.hpp"
 
 namespace ocean::cli::view {
@@ -21,6 +22,8 @@ struct PanelState {
   double time_scale = 1.0;  ///< simulated seconds per real second
   bool paused = false;
   std::string error;  ///< the last failed reconfiguration, shown in the panel
+  BoatControls boat;  ///< the circling boat and its wake
+  int shallows = 0;   ///< Shallows index
 };
 
 /// What the panel shows but does not edit.
@@ -39,6 +42,8 @@ struct PanelActions {
   bool sea_changed = false;      ///< state.sea was edited: reconfigure the simulation
   bool quality_changed = false;  ///< view.quality is a new preset
   bool reset_camera = false;     ///< back to the --camera/--target pose
+  bool boat_changed = false;     ///< state.boat was edited: make the wake's layer again
+  bool shallows_changed = false;  ///< state.shallows is a new scene
   bool quit = false;
 };
 
