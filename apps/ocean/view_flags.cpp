@@ -53,6 +53,7 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
                      "simulation backend: cpu, or vulkan (its images are rendered with no copy)");
   command.add_flag("--validation", f.validation,
                    "enable the Khronos validation layer; fail if it reports anything");
+  add_sphere_flags(command, f.sphere);
 }
 
 Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& scene,
@@ -94,7 +95,7 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
               .aspect = w.value() / h.value(),
               .near_m = std::max(0.2, 0.005 * altitude),
               .far_m = std::max(2.0e5, 1.5 * horizon)};
-  if (eye.value()[1] <= 0.0)
+  if (eye.value()[1] <= 0.0 && !f.sphere.enabled)  // on a sphere: parse_sphere_flags checks
     return invalid_argument("--camera = " + excerpt(f.camera) +
                             ": the camera must be above the sea (Y > 0)");
   if (Status s = lod::validate(v.camera); !s.ok())
@@ -126,7 +127,7 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
     if (!env.ok()) return invalid_argument("--environment: " + env.status().message());
     scene.environment = std::make_shared<const render::Environment>(std::move(env).value());
   }
-  return {};
+  return parse_sphere_flags(f.sphere, v);
 }
 
 }  // namespace ocean::cli

@@ -7,6 +7,7 @@
 
 #include "ocean/render.hpp"
 #include "ocean/scene.hpp"
+#include "sphere_flags.hpp"
 
 namespace ocean::cli {
 
@@ -19,6 +20,7 @@ struct ViewFlags {
   std::string planet_radius = "6371000";      // R of the sea's curvature (R.15), m; inf: flat
   std::string environment;                    // equirectangular HDR OpenEXR sky (R.17); empty: none
   bool validation = false;
+  SphereFlags sphere;  // --sphere, --latitude, --longitude, --altitude
 };
 /// Registers the flags; `what` names the image ("image" or "window") in the help.
 void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what);

@@ -77,6 +77,20 @@ Result<DebugView> parse_debug_view(std::string_view name);
 /// Earth's mean radius, m (IUGG; Moritz, "Geodetic Reference System 1980").
 inline constexpr double kEarthRadius_m = 6.371e6;
 
+/// The sea on a sphere (docs/rendering.md R.30–R.38) instead of the flat sea: a planet of radius
+/// View::planet_radius_m covered by the cube-sphere LOD of ocean/sphere.hpp. The view's camera
+/// (position and target) is then in metres along the local axes (east, up, north) of the
+/// surface point at (latitude, longitude), with the origin on the sphere there: a camera at
+/// (0, h, 0) is h metres above that point. The sky, the sun's direction and the fog are in those
+/// axes. Not drawn on the sphere: the far field, the hex tiles, the local layer, the damping, the
+/// seabed, the objects and the wireframe view.
+struct SphereView {
+  bool enabled = false;
+  double latitude_deg = 0.0;     ///< [−90, 90]
+  double longitude_deg = 0.0;    ///< finite, from +x towards +z
+  double finest_patch_m = 16.0;  ///< side below which no patch splits, > 0
+};
+
 /// One picture's camera, mesh and look. Positions are world metres in double precision; the
 /// renderer draws relative to the quadtree's centre (R.16), so a camera 10⁷ m from the world's
 /// origin sees the same sea as one near it.
@@ -100,8 +114,14 @@ struct View {
   std::vector<ObjectInstance> objects;
   /// A seabed seen through the water (R.22–R.23); off by default.
   Seabed seabed;
+  /// The sea on a sphere of radius planet_radius_m (R.30–R.38); off by default.
+  SphereView sphere;
 };
 Status validate(const View& view);
+/// invalid_argument naming the field for a latitude outside [−90, 90], a non-finite longitude,
+/// a planet radius that is not finite and positive, a finest patch ≤ 0, objects, a seabed or the
+/// wireframe view in the view, or a camera inside the planet.
+Status validate_sphere(const View& view);
 
 /// What the last draw did.
 struct RenderStats {

@@ -29,7 +29,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   stats_.cpu_select_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   // The GPU draws relative to the grid centre (R.16): the camera, the instances and the skirt.
-  const lod::Mat4 vp = lod::view_projection(relative_camera(view.camera, sel));
+  lod::Mat4 vp = lod::view_projection(relative_camera(view.camera, sel));
   auto* inst = static_cast<lod::PatchInstance*>(st.instances.mapped);
   write_relative_instances(sel, view.ocean_size_m, inst);
   const auto skirt_instance = static_cast<std::uint32_t>(sel.instances.size());
@@ -41,6 +41,8 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   fill_uniforms(st, view, vp, u);
   fill_origin_uniforms(st, view, u);
   fill_environment_uniforms(st, view, u);
+  if (view.sphere.enabled)  // the sea on a sphere (R.30–R.38) instead
+    if (Status s = prepare_sphere(st, view, vp, u); !s.ok()) return s;
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
   const std::array<double, 16> inv = inverse(vp.m);
   shader::SkyPush sky_push{};
@@ -120,24 +122,29 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdDraw(cmd, 3, 1, 0, 0);
   stats_ = {.cpu_select_ms = stats_.cpu_select_ms};
   stats_.draw_calls = 1;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                    view.debug == DebugView::wireframe ? st.wire : st.ocean);
-  push_seabed(st, cmd, view);
-  const VkDeviceSize zero = 0;
-  vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
-  vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
-  vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
-  for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (Aebi, VR Ocean, eq. 70)
-    vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
+  if (view.sphere.enabled) {
+    draw_sphere(st, cmd, stats_);
+  } else {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                      view.debug == DebugView::wireframe ? st.wire : st.ocean);
+    push_seabed(st, cmd, view);
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
+    vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
+    vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
+    for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (Aebi, VR Ocean, eq. 70)
+      vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0,
+                       b.first);
+      ++stats_.draw_calls;
+      stats_.patches += b.count;
+      stats_.triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
+    }
+    vkCmdBindVertexBuffers(cmd, 0, 1, &st.skirt_vertices.buffer, &zero);
+    vkCmdDrawIndexed(cmd, st.skirt_count, 1, st.skirt_first, 0, skirt_instance);
     ++stats_.draw_calls;
-    stats_.patches += b.count;
-    stats_.triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
+    stats_.triangles += st.skirt_count / 3;
+    stats_.patches_per_level = sel.patches_per_level;
   }
-  vkCmdBindVertexBuffers(cmd, 0, 1, &st.skirt_vertices.buffer, &zero);
-  vkCmdDrawIndexed(cmd, st.skirt_count, 1, st.skirt_first, 0, skirt_instance);
-  ++stats_.draw_calls;
-  stats_.triangles += st.skirt_count / 3;
-  stats_.patches_per_level = sel.patches_per_level;
   record_objects(st, cmd, view, stats_);
   vkCmdEndRendering(cmd);
 

@@ -60,6 +60,8 @@ Status validate(const View& view) {
       if (!std::isfinite(m))
         return invalid_argument("objects[" + std::to_string(i) + "].model is not finite");
   if (Status s = validate(view.seabed); !s.ok()) return s;
+  if (view.sphere.enabled)
+    if (Status s = validate_sphere(view); !s.ok()) return s;
   return validate(view.shading);
 }
 

@@ -171,6 +171,7 @@ Status create_pipelines(Renderer::State& st) {
                                                    .depth_test = false});
   if (!tonemap.ok()) return tonemap.status();
   st.tonemap = tonemap.value();
+  if (Status s = create_sphere_pass(st); !s.ok()) return s;
   return create_object_pipeline(st);
 }
 

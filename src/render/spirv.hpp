@@ -23,5 +23,7 @@ OCEAN_RENDER_SPIRV(wire_frag)
 OCEAN_RENDER_SPIRV(tonemap_frag)
 OCEAN_RENDER_SPIRV(object_vert)
 OCEAN_RENDER_SPIRV(object_frag)
+OCEAN_RENDER_SPIRV(sphere_vert)
+OCEAN_RENDER_SPIRV(sphere_frag)
 
 #undef OCEAN_RENDER_SPIRV

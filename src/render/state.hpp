@@ -21,6 +21,7 @@
 
 #include "object_pass.hpp"
 #include "ocean/render.hpp"
+#include "ocean/sphere.hpp"
 #include "shaders/render_shared.h"
 
 namespace ocean::render {
@@ -104,6 +105,10 @@ struct Renderer::State {
   shader::DampingUniforms damping{};
   std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
   ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
+  // The sea on a sphere (sphere.cpp, R.30–R.38): its pipeline, per-frame instances and selection.
+  VkPipeline sphere_pipeline = VK_NULL_HANDLE;
+  vk::Buffer sphere_instances;  // host-visible, kMaxSphereInstances
+  sphere::SphereSelection sphere_selection;
 
   ~State();
   void destroy_targets();
@@ -153,6 +158,15 @@ double skirt_extent_m(const View& view, double hs_m);
 double curvature_drop_bound_m(const View& view);
 // FrameUniforms::planet and cascade_origin for this frame.
 void fill_origin_uniforms(const Renderer::State& st, const View& view, shader::FrameUniforms& u);
+
+// sphere.cpp: the sea on a sphere (R.30–R.38). The pipeline and the instance buffer (at make()).
+Status create_sphere_pass(Renderer::State& st);
+// Selects the cube-sphere's patches and writes their instances; sets `vp` (relative to the
+// camera, local axes) and the uniforms that differ from the flat sea's.
+Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
+                      shader::FrameUniforms& u);
+// The instanced draws of the selection, by configuration.
+void draw_sphere(Renderer::State& st, VkCommandBuffer cmd, RenderStats& stats);
 
 // inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);

@@ -1,6 +1,9 @@
 // What the renderer's and the scene's tests share: a validated graphics context, a small sea, an
-// eye-level view and the difference of two sRGB pictures.
+// eye-level view, the difference of two sRGB pictures and a renderer whose validation layer must
+// stay silent.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -62,5 +65,20 @@ inline PictureDifference difference(const std::vector<std::uint8_t>& a,
   d.mean = a.empty() ? 0.0 : sum / static_cast<double>(a.size());
   return d;
 }
+
+/// A validated context and a renderer on it; at destruction, expects that the validation layer
+/// reported nothing.
+struct ValidatedRig {
+  std::shared_ptr<vk::Context> ctx;
+  std::unique_ptr<Renderer> renderer;
+  ValidatedRig() = default;
+  ValidatedRig(const ValidatedRig&) = delete;
+  ValidatedRig& operator=(const ValidatedRig&) = delete;
+  ~ValidatedRig() {
+    if (ctx != nullptr) {
+      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
+    }
+  }
+};
 
 }  // namespace ocean::render::testing

@@ -112,6 +112,16 @@ struct DampingUniforms {
   float damping_pad2;
 };
 
+// The sea on a sphere (docs/rendering.md R.30–R.38): positions relative to the camera in the
+// local axes (east, up, north) of the surface point the view names; cascade_origin[c].xyz then
+// holds the camera's planet-centred position over L_c, wrapped (R.38).
+struct SphereUniforms {
+  vec4 local_from_planet[3];  // rows: east, up, north in planet axes (w unused)
+  float radius_m;             // R
+  float enabled;              // 1: sphere mode
+  float sphere_pad0, sphere_pad1;
+};
+
 // Everything per frame, one uniform buffer (std140).
 struct FrameUniforms {
   mat4 view_proj;  // lod::view_projection of the camera, column-major
@@ -145,6 +155,7 @@ struct FrameUniforms {
   EnvironmentUniforms environment;
   LocalLayerUniforms local;
   DampingUniforms damping;
+  SphereUniforms sphere;
 };
 
 // Push constants of the sky pass (std430).
@@ -180,7 +191,9 @@ static_assert(sizeof(LocalLayerUniforms) == 32);
 static_assert(offsetof(FrameUniforms, local) == 304 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(DampingUniforms) == 48);
 static_assert(offsetof(FrameUniforms, damping) == 336 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, sphere) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(SphereUniforms) == 64);
+static_assert(sizeof(FrameUniforms) == 448 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
