@@ -23,5 +23,12 @@ OCEAN_RENDER_SPIRV(wire_frag)
 OCEAN_RENDER_SPIRV(tonemap_frag)
 OCEAN_RENDER_SPIRV(object_vert)
 OCEAN_RENDER_SPIRV(object_frag)
+// Stereo in one pass: the same shaders with OCEAN_MULTIVIEW (gl_ViewIndex picks the eye).
+OCEAN_RENDER_SPIRV(sky_vert_mv)
+OCEAN_RENDER_SPIRV(sky_frag_mv)
+OCEAN_RENDER_SPIRV(ocean_vert_mv)
+OCEAN_RENDER_SPIRV(ocean_frag_mv)
+OCEAN_RENDER_SPIRV(object_vert_mv)
+OCEAN_RENDER_SPIRV(object_frag_mv)
 
 #undef OCEAN_RENDER_SPIRV

@@ -12,6 +12,7 @@
 //   environment.cpp  the HDR environment map: reading, upload, its irradiance
 //   renderer.cpp     construction, resizing, submission, read-back
 //   objects.cpp      the object pass (object_pass.hpp); seabed.cpp the seabed's push constants
+//   stereo.cpp       both eyes in one multiview pass (stereo_pass.hpp, frame_steps.hpp)
 #pragma once
 
 #include <array>
@@ -22,6 +23,7 @@
 #include "object_pass.hpp"
 #include "ocean/render.hpp"
 #include "shaders/render_shared.h"
+#include "stereo_pass.hpp"
 
 namespace ocean::render {
 
@@ -104,6 +106,7 @@ struct Renderer::State {
   shader::DampingUniforms damping{};
   std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
   ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
+  StereoPass stereo;   // layered targets and multiview pipelines (stereo.cpp), once used
 
   ~State();
   void destroy_targets();
@@ -173,5 +176,8 @@ void fill_environment_uniforms(const Renderer::State& st, const View& view,
                                shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
+
+// stereo.cpp: releases the layered targets (with `all`, the multiview pipelines too).
+void destroy_stereo(Renderer::State& st, bool all);
 
 }  // namespace ocean::render

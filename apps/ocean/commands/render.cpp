@@ -21,6 +21,7 @@
 #include "progress.hpp"
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
+#include "stereo_flags.hpp"
 #include "video_writer.hpp"
 #include "view_flags.hpp"
 #include "wave_flags.hpp"
@@ -40,6 +41,7 @@ struct RenderOptions {
   bool floating = false;             // --float
   std::string seabed;                // --seabed DEPTH_M
   WaveFlags waves;
+  StereoFlags stereo;
   bool json = false;
 };
 
@@ -76,6 +78,7 @@ struct Inputs {
   double time_s = 0.0, fps = 30.0, warmup_s = 0.0;
   long long frames = 1;
   std::vector<ObjectSpec> objects;
+  std::optional<double> ipd;  // --stereo: both eyes side by side, this far apart
 };
 
 Result<Inputs> parse_inputs(const RenderOptions& o) {
@@ -103,6 +106,14 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (!layer.ok()) return layer.status();
   in.layer = layer.value();
   if (Status s = parse_view_flags(o.picture, 1, in.scene, in.view); !s.ok()) return s;
+  Result<std::optional<double>> ipd = parse_stereo_flags(o.stereo);
+  if (!ipd.ok()) return ipd.status();
+  in.ipd = ipd.value();
+  if (in.ipd.has_value()) {  // each eye is --width wide; the picture holds both
+    if (in.scene.width > 8192)
+      return invalid_argument("--stereo: --width is at most 8192 (the picture is twice as wide)");
+    in.scene.width *= 2;
+  }
   render::View& v = in.view;
   // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.
   std::string sky = o.sky;
@@ -254,6 +265,8 @@ int run_contact_sheet(const RenderOptions& o) {
 }
 
 int run_render(const RenderOptions& o) {
+  if (!o.contact_sheet.empty() && o.stereo.stereo)
+    return report(invalid_argument("--stereo draws one view, not a --contact-sheet"));
   if (!o.contact_sheet.empty()) return run_contact_sheet(o);
   Result<Inputs> parsed = parse_inputs(o);
   if (!parsed.ok()) return report(parsed.status());
@@ -283,6 +296,7 @@ int run_render(const RenderOptions& o) {
   render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
   if (Status s = renderer.set_meshes(objects.value()->meshes()); !s.ok()) return report(s);
+  if (Status s = check_stereo_device(in.ipd, *scene.context()); !s.ok()) return report(s);
   render::View view = in.view;
   std::vector<std::uint8_t> srgb;
   std::vector<float> hdr;
@@ -312,7 +326,9 @@ int run_render(const RenderOptions& o) {
       if (!set.ok()) return report(set);
     }
     if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
-    if (Status s = renderer.draw(view); !s.ok()) return report(s);
+    const Status drawn =
+        in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
+    if (!drawn.ok()) return report(drawn);
     const std::filesystem::path path = frame_path(in, f);
     Status written;
     if (in.kind == OutputKind::exr) {
@@ -397,6 +413,7 @@ Command add_render_command(CLI::App& app) {
              "a flat sandy seabed this far below the sea level, m, seen through clear water "
              "(refraction, absorption of pure water)");
   add_wave_flags(*command, o->waves);
+  add_stereo_flags(*command, o->stereo);
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};
 }

@@ -35,7 +35,7 @@ void main() {
   float border_weight = clamp((half_size - border) / u.border_fade_m, 0.0, 1.0);  // R.10
   // The spacing a patch at this distance has at most: a node splits while the camera is closer
   // than τ·s (eq. 57), so a leaf at distance d has s ≤ d/τ·2 and spacing s/V.
-  float d = length(vec3(xz.x, 0.0, xz.y) - u.camera_pos_m);
+  float d = length(vec3(xz.x, 0.0, xz.y) - eye_position());
   float spacing = max(2.0 * d / (u.lod_scale * u.vertices), 1e-3);
   vec3 displacement = vec3(0.0);
   int cascades = int(u.cascade_count);
@@ -77,5 +77,5 @@ void main() {
   world_pos = vec3(xz.x + displacement.x, displacement.y - curvature_drop(xz),
                    xz.y + displacement.z);
   level = a_meta.z;
-  gl_Position = u.view_proj * vec4(world_pos, 1.0);
+  gl_Position = eye_view_proj() * vec4(world_pos, 1.0);
 }
