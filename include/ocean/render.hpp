@@ -231,6 +231,20 @@ class Renderer {
   Status record_stereo(VkCommandBuffer cmd, const View& view, double ipd_m);
   /// record_stereo() on the renderer's own command buffer, submitted and waited for.
   Status draw_stereo(const View& view, double ipd_m);
+  /// Motion vectors (docs/rendering.md R.26) from the next draw() on (true), or none (false, the
+  /// default): per pixel, how far the surface point seen there moved on the screen since the
+  /// previous draw — the camera's motion and the waves' (the same undisplaced point, the
+  /// previous frame's cascades and camera) — into an RG16F target read by read_motion(). The
+  /// first draw after enabling (or after a configure() to another size) has no previous
+  /// frame and shows none. Allocates its pipelines here, the target and a copy of the cascades'
+  /// displacement at the next draw. Objects and the local layer carry no motion of their own
+  /// (the water's or the sky's is written under an object). unsupported at draw time with
+  /// use_simulation_images() (only uploaded cascades are kept); not with record_stereo().
+  Status set_motion_vectors(bool on);
+  /// The last draw's motion, pixels (dx, dy) per pixel, rows down, top row first
+  /// (width·height·2 floats): the point at pixel (x, y) was at (x − dx, y − dy) a frame ago.
+  /// invalid_argument when motion vectors are off or nothing was drawn with them.
+  Status read_motion(std::vector<float>& xy);
   /// After the submission holding a record()ed frame has completed: that frame's GPU time, ms
   /// (0 on devices without timestamps). draw() fills stats().gpu_ms itself.
   Result<double> read_gpu_ms();

@@ -113,7 +113,6 @@ void begin_scene(Renderer::State& st, VkCommandBuffer cmd, const vk::Image2D& co
 void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                   const ScenePipelines& pipelines, const shader::SkyPush& sky_push,
                   std::uint32_t skirt_instance, RenderStats& stats) {
-  const lod::LodSelection& sel = st.selection;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.sky);
   vkCmdPushConstants(cmd, st.scene_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(sky_push), &sky_push);
@@ -121,22 +120,29 @@ void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
   stats.draw_calls = 1;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.ocean);
   push_seabed(st, cmd, view);
+  record_patches(st, cmd, skirt_instance, &stats);
+  stats.patches_per_level = st.selection.patches_per_level;
+  record_objects(st, cmd, view, stats, pipelines.objects);
+}
+
+void record_patches(Renderer::State& st, VkCommandBuffer cmd, std::uint32_t skirt_instance,
+                    RenderStats* stats) {
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
   vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
-  for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (Aebi, VR Ocean, eq. 70)
+  for (const lod::Batch& b : st.selection.batches) {  // ≤ 16 instanced draws (Aebi, eq. 70)
     vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
-    ++stats.draw_calls;
-    stats.patches += b.count;
-    stats.triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
+    if (stats == nullptr) continue;
+    ++stats->draw_calls;
+    stats->patches += b.count;
+    stats->triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
   }
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.skirt_vertices.buffer, &zero);
   vkCmdDrawIndexed(cmd, st.skirt_count, 1, st.skirt_first, 0, skirt_instance);
-  ++stats.draw_calls;
-  stats.triangles += st.skirt_count / 3;
-  stats.patches_per_level = sel.patches_per_level;
-  record_objects(st, cmd, view, stats, pipelines.objects);
+  if (stats == nullptr) return;
+  ++stats->draw_calls;
+  stats->triangles += st.skirt_count / 3;
 }
 
 void finish_frame(Renderer::State& st, VkCommandBuffer cmd, double exposure,
@@ -190,6 +196,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
+  if (Status s = prepare_motion(st); !s.ok()) return s;
   Result<std::uint32_t> skirt_instance =
       select_frame(st, view, view.camera.position_m,
                    lod::frustum_from_view_projection(lod::view_projection(view.camera)), stats_);
@@ -212,6 +219,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                {.sky = st.sky, .ocean = view.debug == DebugView::wireframe ? st.wire : st.ocean},
                sky_push, skirt_instance.value(), stats_);
   vkCmdEndRendering(cmd);
+  if (st.motion.enabled) record_motion(st, cmd, view.camera, skirt_instance.value());
   finish_frame(st, cmd, view.shading.exposure, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                stats_);

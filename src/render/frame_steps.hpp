@@ -29,6 +29,19 @@ void begin_scene(Renderer::State& st, VkCommandBuffer cmd, const vk::Image2D& co
 void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                   const ScenePipelines& pipelines, const shader::SkyPush& sky_push,
                   std::uint32_t skirt_instance, RenderStats& stats);
+// Inside a pass whose pipeline takes the patch layout: the patches by stitching configuration
+// and the skirt (bound buffers, draws, and with `stats` their counts).
+void record_patches(Renderer::State& st, VkCommandBuffer cmd, std::uint32_t skirt_instance,
+                    RenderStats* stats);
+// motion.cpp: with motion vectors on, before recording: the target and the previous frame's
+// array at the current sizes (allocates when they changed); unsupported on borrowed images.
+Status prepare_motion(Renderer::State& st);
+// After the HDR pass: the motion pass over st.depth (cleared again) into the motion target for
+// `camera`, then this frame kept as the previous one.
+void record_motion(Renderer::State& st, VkCommandBuffer cmd, const lod::Camera& camera,
+                   std::uint32_t skirt_instance);
+// stereo.cpp: a column-major double matrix as the shaders' float one.
+shader::mat4 to_mat4(const std::array<double, 16>& m);
 // Tone maps st.hdr (in `hdr_layout`, written by `src_stage`/`src_access`) into st.srgb, leaves
 // it in TRANSFER_SRC_OPTIMAL and writes the end timestamp.
 void finish_frame(Renderer::State& st, VkCommandBuffer cmd, double exposure,

@@ -30,5 +30,9 @@ OCEAN_RENDER_SPIRV(ocean_vert_mv)
 OCEAN_RENDER_SPIRV(ocean_frag_mv)
 OCEAN_RENDER_SPIRV(object_vert_mv)
 OCEAN_RENDER_SPIRV(object_frag_mv)
+// Motion vectors (R.26).
+OCEAN_RENDER_SPIRV(ocean_vert_motion)
+OCEAN_RENDER_SPIRV(motion_frag)
+OCEAN_RENDER_SPIRV(motion_sky_frag)
 
 #undef OCEAN_RENDER_SPIRV

@@ -13,6 +13,7 @@
 //   renderer.cpp     construction, resizing, submission, read-back
 //   objects.cpp      the object pass (object_pass.hpp); seabed.cpp the seabed's push constants
 //   stereo.cpp       both eyes in one multiview pass (stereo_pass.hpp, frame_steps.hpp)
+//   motion.cpp       motion vectors: the previous frame reprojected (motion_pass.hpp)
 #pragma once
 
 #include <array>
@@ -23,6 +24,7 @@
 #include "object_pass.hpp"
 #include "ocean/render.hpp"
 #include "shaders/render_shared.h"
+#include "motion_pass.hpp"
 #include "stereo_pass.hpp"
 
 namespace ocean::render {
@@ -107,6 +109,7 @@ struct Renderer::State {
   std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
   ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
   StereoPass stereo;   // layered targets and multiview pipelines (stereo.cpp), once used
+  MotionPass motion;   // motion vectors (motion.cpp), once enabled
 
   ~State();
   void destroy_targets();
@@ -179,5 +182,8 @@ std::array<double, 16> inverse(const std::array<double, 16>& m);
 
 // stereo.cpp: releases the layered targets (with `all`, the multiview pipelines too).
 void destroy_stereo(Renderer::State& st, bool all);
+// motion.cpp: releases the motion target and the previous frame (with `all`, the pipelines,
+// layouts and descriptors too).
+void destroy_motion(Renderer::State& st, bool all);
 
 }  // namespace ocean::render

@@ -70,13 +70,13 @@ Status create_stereo_targets(Renderer::State& st) {
   return {};
 }
 
+}  // namespace
+
 shader::mat4 to_mat4(const std::array<double, 16>& m) {
   shader::mat4 out{};
   for (std::size_t i = 0; i < 16; ++i) out.m[i] = static_cast<float>(m[i]);
   return out;
 }
-
-}  // namespace
 
 Result<std::array<lod::Camera, 2>> stereo_eyes(const lod::Camera& head, double ipd_m) {
   if (!std::isfinite(ipd_m) || ipd_m < 0.0)

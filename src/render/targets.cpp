@@ -17,6 +17,7 @@ Renderer::State::~State() {
   destroy_sim_images();
   destroy_objects(*this, true);
   destroy_stereo(*this, true);
+  destroy_motion(*this, true);
   for (VkPipeline p : {sky, ocean, wire, tonemap})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
@@ -47,6 +48,7 @@ void Renderer::State::destroy_targets() {
   vk::destroy_image(*ctx, srgb);
   vk::destroy_buffer(*ctx, readback);
   destroy_stereo(*this, false);
+  destroy_motion(*this, false);
 }
 
 void Renderer::State::destroy_sim_images() {

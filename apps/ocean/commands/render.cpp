@@ -14,6 +14,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
+#include "motion_output.hpp"
 #include "object_flags.hpp"
 #include "ocean/io.hpp"
 #include "ocean/scene.hpp"
@@ -42,6 +43,7 @@ struct RenderOptions {
   std::string seabed;                // --seabed DEPTH_M
   WaveFlags waves;
   StereoFlags stereo;
+  std::string motion_vectors;  // --motion-vectors FILE.png
   bool json = false;
 };
 
@@ -109,6 +111,13 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   Result<std::optional<double>> ipd = parse_stereo_flags(o.stereo);
   if (!ipd.ok()) return ipd.status();
   in.ipd = ipd.value();
+  if (!o.motion_vectors.empty()) {
+    if (in.ipd.has_value())
+      return invalid_argument("--motion-vectors draws one view, not --stereo");
+    if (std::filesystem::path(o.motion_vectors).extension() != ".png")
+      return invalid_argument("--motion-vectors = '" + excerpt(o.motion_vectors) +
+                              "': the name must end in .png");
+  }
   if (in.ipd.has_value()) {  // each eye is --width wide; the picture holds both
     if (in.scene.width > 8192)
       return invalid_argument("--stereo: --width is at most 8192 (the picture is twice as wide)");
@@ -273,6 +282,9 @@ int run_render(const RenderOptions& o) {
   const Inputs& in = parsed.value();
   // Fail before any work when the output cannot be written (or ffmpeg cannot be started).
   if (Status s = io::check_parent_writable(frame_path(in, 0)); !s.ok()) return report(s);
+  if (!o.motion_vectors.empty()) {
+    if (Status s = io::check_parent_writable(o.motion_vectors); !s.ok()) return report(s);
+  }
   // ... or when the picture cannot fit in memory.
   // Indexed by OutputKind: png, exr, mp4.
   constexpr std::uint64_t kBytesPerPixel[] = {kPngBytesPerPixel, kExrBytesPerPixel,
@@ -315,7 +327,15 @@ int run_render(const RenderOptions& o) {
   if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
-    const Status stepped = f == 0 ? scene.warm_up(t, in.warmup_s) : scene.step(t);
+    // With motion vectors the first frame has one before it, 1/fps earlier (R.26).
+    const bool motion = f == 0 && !o.motion_vectors.empty();
+    Status stepped =
+        f == 0 ? scene.warm_up(motion ? t - 1.0 / in.fps : t, in.warmup_s) : scene.step(t);
+    if (stepped.ok() && motion) {
+      if (Status s = renderer.set_motion_vectors(true); !s.ok()) return report(s);
+      if (Status s = renderer.draw(view); !s.ok()) return report(s);
+      stepped = scene.step(t);
+    }
     if (!stepped.ok()) return report(stepped);
     if (in.layer != nullptr) {
       in.layer->evaluate(t, local);
@@ -343,6 +363,15 @@ int run_render(const RenderOptions& o) {
   }
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.close(); !s.ok()) return report(s);
+  }
+  if (!o.motion_vectors.empty()) {  // the last frame's motion
+    std::vector<float> xy;
+    if (Status s = renderer.read_motion(xy); !s.ok()) return report(s);
+    Result<double> scale = write_motion_png(o.motion_vectors, w, h, xy);
+    if (!scale.ok()) return report(scale.status());
+    if (!o.json)
+      std::cout << "wrote " << o.motion_vectors << " (motion; full colour at " << scale.value()
+                << " px per frame)\n";
   }
   if (in.frames > 1) progress.finish();
   if (Status s = validation_status(*scene.context()); !s.ok()) return report(s);
@@ -414,6 +443,10 @@ Command add_render_command(CLI::App& app) {
              "(refraction, absorption of pure water)");
   add_wave_flags(*command, o->waves);
   add_stereo_flags(*command, o->stereo);
+  command->add_option("--motion-vectors", o->motion_vectors,
+                      "also write the last frame's motion vectors (camera and waves, pixels per "
+                      "frame) as a PNG: red right, green down, grey still (docs/rendering.md "
+                      "R.26)");
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};
 }
