@@ -240,6 +240,31 @@ class Renderer {
   Status prepare(const View& view);
   /// record() on the renderer's own command buffer, submitted and waited for.
   Status draw(const View& view);
+  /// Stereo in one pass (VK_KHR_multiview; docs/rendering.md R.25): the two eyes of
+  /// stereo_eyes(view.camera, ipd_m) drawn by the same draws, from one LOD selection (from the
+  /// head, culled by the hull of both eyes' frusta) and one simulation state, into the left and
+  /// right halves of the targets: each eye is width()/2 × height() and view.camera.aspect is an
+  /// eye's. Afterwards as record(): the sRGB image holds the side-by-side picture. Allocates the
+  /// layered targets and the multiview pipelines on first use (and the targets after a resize).
+  /// unsupported when the context lacks multiview (Context::multiview); invalid_argument for an
+  /// IPD that is negative or not finite, or an odd width.
+  Status record_stereo(VkCommandBuffer cmd, const View& view, double ipd_m);
+  /// record_stereo() on the renderer's own command buffer, submitted and waited for.
+  Status draw_stereo(const View& view, double ipd_m);
+  /// Motion vectors (docs/rendering.md R.26) from the next draw() on (true), or none (false, the
+  /// default): per pixel, how far the surface point seen there moved on the screen since the
+  /// previous draw — the camera's motion and the waves' (the same undisplaced point, the
+  /// previous frame's cascades and camera) — into an RG16F target read by read_motion(). The
+  /// first draw after enabling (or after a configure() to another size) has no previous
+  /// frame and shows none. Allocates its pipelines here, the target and a copy of the cascades'
+  /// displacement at the next draw. Objects and the local layer carry no motion of their own
+  /// (the water's or the sky's is written under an object). unsupported at draw time with
+  /// use_simulation_images() (only uploaded cascades are kept); not with record_stereo().
+  Status set_motion_vectors(bool on);
+  /// The last draw's motion, pixels (dx, dy) per pixel, rows down, top row first
+  /// (width·height·2 floats): the point at pixel (x, y) was at (x − dx, y − dy) a frame ago.
+  /// invalid_argument when motion vectors are off or nothing was drawn with them.
+  Status read_motion(std::vector<float>& xy);
   /// After the submission holding a record()ed frame has completed: that frame's GPU time, ms
   /// (0 on devices without timestamps). draw() fills stats().gpu_ms itself.
   Result<double> read_gpu_ms();
@@ -268,6 +293,15 @@ class Renderer {
   std::unique_ptr<State> state_;
   RenderStats stats_;
 };
+
+/// The default interpupillary distance, m: the adult mean (Dodgson, "Variation and extrema of
+/// human interpupillary distance", 2004: 63 mm; headsets default to 63–64 mm).
+inline constexpr double kDefaultIpd_m = 0.064;
+/// The left and right eyes of a head whose camera is `head` (docs/rendering.md R.25): moved by
+/// ∓ipd/2 along the head's right axis (forward × world up), looking along the head's direction
+/// (parallel axes) with its field of view, aspect, near and far planes. invalid_argument for an
+/// IPD that is negative or not finite.
+Result<std::array<lod::Camera, 2>> stereo_eyes(const lod::Camera& head, double ipd_m);
 
 /// The sun's unit direction for azimuth/elevation (world, Y up).
 std::array<double, 3> sun_direction(double azimuth_deg, double elevation_deg);

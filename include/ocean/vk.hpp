@@ -51,6 +51,9 @@ struct ContextParams {
   /// Extra device extensions (those an OpenXR runtime asks for); `unsupported` naming the
   /// first one the device lacks.
   std::vector<const char*> device_extensions;
+  /// With `graphics`: enables multiview (VK_KHR_multiview, core in Vulkan 1.1; stereo in one
+  /// pass) where the device has it. false leaves it off, as on a device without it.
+  bool multiview = true;
 };
 
 /// An instance, a logical device and its compute queue.
@@ -72,6 +75,7 @@ struct Context {
   bool graphics = false;        ///< the queue does graphics too (ContextParams::graphics)
   bool wireframe = false;       ///< fillModeNonSolid is enabled
   float max_anisotropy = 1.0f;  ///< > 1 when samplerAnisotropy is enabled
+  bool multiview = false;       ///< VkPhysicalDeviceVulkan11Features::multiview is enabled
   double timestamp_period_ns = 1.0;
   /// Validation warnings and errors reported so far (tests assert zero); performance advice
   /// is not counted.
@@ -114,6 +118,8 @@ struct AdoptedDevice {
   bool fill_mode_non_solid = false;
   /// VkPhysicalDeviceFeatures::samplerAnisotropy was enabled (anisotropic filtering).
   bool sampler_anisotropy = false;
+  /// VkPhysicalDeviceVulkan11Features::multiview was enabled (stereo in one pass).
+  bool multiview = false;
 };
 
 /// A Context around the caller's instance, physical device, device and queue; the VulkanBackend
@@ -181,17 +187,20 @@ Result<Image> create_image_array(const Context& ctx, VkFormat format, std::uint3
                                  std::uint32_t layers, std::uint32_t mips, VkImageUsageFlags usage);
 void destroy_image(const Context& ctx, Image& image);
 
-/// A single 2D image with one view over its only mip level (render targets).
+/// A single 2D image with one view over its only mip level (render targets); with `layers` > 1
+/// a layered target (multiview) whose view is a 2D array over every layer.
 struct Image2D {
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   VkImageView view = VK_NULL_HANDLE;
   VkFormat format = VK_FORMAT_UNDEFINED;
   std::uint32_t width = 0, height = 0;
+  std::uint32_t layers = 1;
 };
 Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32_t width,
                                 std::uint32_t height, VkImageUsageFlags usage,
-                                VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT);
+                                VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT,
+                                std::uint32_t layers = 1);
 void destroy_image(const Context& ctx, Image2D& image);
 
 /// A compute pipeline, its layout and its shader module.

@@ -52,7 +52,8 @@ Status Renderer::configure(const SimulationConfig& config) {
   const std::uint32_t mips = static_cast<std::uint32_t>(std::countr_zero(size)) + 1;
   const VkImageUsageFlags usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
   Result<vk::Image> disp =
-      vk::create_image_array(*st.ctx, VK_FORMAT_R16G16B16A16_SFLOAT, size, layers, 1, usage);
+      vk::create_image_array(*st.ctx, VK_FORMAT_R16G16B16A16_SFLOAT, size, layers, 1,
+                             usage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);  // motion: kept (R.26)
   if (!disp.ok()) return disp.status();
   st.displacement = disp.value();
   Result<vk::Image> normal =

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "ocean/render.hpp"
@@ -23,9 +24,16 @@ struct ObjectPass {
 
 // The pipeline layout (the scene set, ObjectPush) and the pipeline; called by create_pipelines.
 Status create_object_pipeline(Renderer::State& st);
+// An object pipeline on that layout from these shaders, drawing the views of `view_mask`
+// (0: one view; the stereo pass builds its multiview one this way). Owned by the caller.
+Result<VkPipeline> make_object_pipeline(Renderer::State& st, std::span<const std::uint32_t> vert,
+                                        std::span<const std::uint32_t> frag,
+                                        std::uint32_t view_mask);
 // Draws view.objects (mesh indices checked by validate_objects) inside the HDR pass, whose
-// viewport and scene set are bound. Returns the draws and triangles added.
-void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats);
+// viewport and scene set are bound, with `pipeline` (null: the mono one). Returns the draws and
+// triangles added.
+void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats,
+                    VkPipeline pipeline = VK_NULL_HANDLE);
 // invalid_argument for an instance whose mesh index is not below the meshes set.
 Status validate_objects(const Renderer::State& st, const View& view);
 // seabed.cpp: pushes view.seabed (R.22–R.23) for the ocean pipeline, which must be bound.

@@ -13,6 +13,30 @@
 
 namespace ocean::render {
 
+Result<VkPipeline> make_object_pipeline(Renderer::State& st, std::span<const std::uint32_t> vert,
+                                        std::span<const std::uint32_t> frag,
+                                        std::uint32_t view_mask) {
+  Result<VkShaderModule> v = shader_module(st, vert);
+  if (!v.ok()) return v.status();
+  Result<VkShaderModule> f = shader_module(st, frag);
+  if (!f.ok()) return f.status();
+  const VkVertexInputBindingDescription binding{0, OCEAN_OBJECT_VERTEX_FLOATS * sizeof(float),
+                                                VK_VERTEX_INPUT_RATE_VERTEX};
+  const VkVertexInputAttributeDescription attributes[] = {
+      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)}};
+  const VkPipelineVertexInputStateCreateInfo input{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
+      .vertexBindingDescriptionCount = 1,
+      .pVertexBindingDescriptions = &binding,
+      .vertexAttributeDescriptionCount = 2,
+      .pVertexAttributeDescriptions = attributes};
+  return make_pipeline(*st.ctx, {.vert = v.value(),
+                                 .frag = f.value(),
+                                 .layout = st.objects.layout,
+                                 .vertex_input = &input,
+                                 .view_mask = view_mask});
+}
+
 Status create_object_pipeline(Renderer::State& st) {
   const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                  sizeof(shader::ObjectPush)};
@@ -26,24 +50,8 @@ Status create_object_pipeline(Renderer::State& st) {
                     "vkCreatePipelineLayout");
       !s.ok())
     return s;
-  Result<VkShaderModule> vert = shader_module(st, spirv::object_vert());
-  if (!vert.ok()) return vert.status();
-  Result<VkShaderModule> frag = shader_module(st, spirv::object_frag());
-  if (!frag.ok()) return frag.status();
-  const VkVertexInputBindingDescription binding{0, OCEAN_OBJECT_VERTEX_FLOATS * sizeof(float),
-                                                VK_VERTEX_INPUT_RATE_VERTEX};
-  const VkVertexInputAttributeDescription attributes[] = {
-      {0, 0, VK_FORMAT_R32G32B32_SFLOAT, 0}, {1, 0, VK_FORMAT_R32G32B32_SFLOAT, 3 * sizeof(float)}};
-  const VkPipelineVertexInputStateCreateInfo input{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
-      .vertexBindingDescriptionCount = 1,
-      .pVertexBindingDescriptions = &binding,
-      .vertexAttributeDescriptionCount = 2,
-      .pVertexAttributeDescriptions = attributes};
-  Result<VkPipeline> pipeline = make_pipeline(*st.ctx, {.vert = vert.value(),
-                                                        .frag = frag.value(),
-                                                        .layout = st.objects.layout,
-                                                        .vertex_input = &input});
+  Result<VkPipeline> pipeline =
+      make_object_pipeline(st, spirv::object_vert(), spirv::object_frag(), 0);
   if (!pipeline.ok()) return pipeline.status();
   st.objects.pipeline = pipeline.value();
   return {};
@@ -93,10 +101,11 @@ Status validate_objects(const Renderer::State& st, const View& view) {
   return {};
 }
 
-void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view,
-                    RenderStats& stats) {
+void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats,
+                    VkPipeline pipeline) {
   if (view.objects.empty()) return;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.objects.pipeline);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
+                    pipeline != VK_NULL_HANDLE ? pipeline : st.objects.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.objects.layout, 0, 1,
                           &st.scene_set, 0, nullptr);
   const VkDeviceSize zero = 0;

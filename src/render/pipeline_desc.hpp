@@ -19,6 +19,7 @@ struct PipelineDesc {
   bool lines = false;
   // Another vertex input (overrides mesh_input); must outlive make_pipeline.
   const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr;
+  std::uint32_t view_mask = 0;  // multiview: the views drawn at once (stereo: 0b11)
 };
 
 // A shader module owned by the state (destroyed with it).

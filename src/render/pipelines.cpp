@@ -80,6 +80,7 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
       .pDynamicStates = dynamic_states};
   const VkPipelineRenderingCreateInfo rendering{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+      .viewMask = d.view_mask,
       .colorAttachmentCount = 1,
       .pColorAttachmentFormats = &d.colour,
       .depthAttachmentFormat = d.depth ? kDepthFormat : VK_FORMAT_UNDEFINED};

@@ -25,5 +25,16 @@ OCEAN_RENDER_SPIRV(object_vert)
 OCEAN_RENDER_SPIRV(object_frag)
 OCEAN_RENDER_SPIRV(sphere_vert)
 OCEAN_RENDER_SPIRV(sphere_frag)
+// Stereo in one pass: the same shaders with OCEAN_MULTIVIEW (gl_ViewIndex picks the eye).
+OCEAN_RENDER_SPIRV(sky_vert_mv)
+OCEAN_RENDER_SPIRV(sky_frag_mv)
+OCEAN_RENDER_SPIRV(ocean_vert_mv)
+OCEAN_RENDER_SPIRV(ocean_frag_mv)
+OCEAN_RENDER_SPIRV(object_vert_mv)
+OCEAN_RENDER_SPIRV(object_frag_mv)
+// Motion vectors (R.26).
+OCEAN_RENDER_SPIRV(ocean_vert_motion)
+OCEAN_RENDER_SPIRV(motion_frag)
+OCEAN_RENDER_SPIRV(motion_sky_frag)
 
 #undef OCEAN_RENDER_SPIRV

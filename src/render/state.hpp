@@ -12,6 +12,8 @@
 //   environment.cpp  the HDR environment map: reading, upload, its irradiance
 //   renderer.cpp     construction, resizing, submission, read-back
 //   objects.cpp      the object pass (object_pass.hpp); seabed.cpp the seabed's push constants
+//   stereo.cpp       both eyes in one multiview pass (stereo_pass.hpp, frame_steps.hpp)
+//   motion.cpp       motion vectors: the previous frame reprojected (motion_pass.hpp)
 #pragma once
 
 #include <array>
@@ -23,6 +25,8 @@
 #include "ocean/render.hpp"
 #include "ocean/sphere.hpp"
 #include "shaders/render_shared.h"
+#include "motion_pass.hpp"
+#include "stereo_pass.hpp"
 
 namespace ocean::render {
 
@@ -109,6 +113,8 @@ struct Renderer::State {
   VkPipeline sphere_pipeline = VK_NULL_HANDLE;
   vk::Buffer sphere_instances;  // host-visible, kMaxSphereInstances
   sphere::SphereSelection sphere_selection;
+  StereoPass stereo;   // layered targets and multiview pipelines (stereo.cpp), once used
+  MotionPass motion;   // motion vectors (motion.cpp), once enabled
 
   ~State();
   void destroy_targets();
@@ -187,5 +193,11 @@ void fill_environment_uniforms(const Renderer::State& st, const View& view,
                                shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
+
+// stereo.cpp: releases the layered targets (with `all`, the multiview pipelines too).
+void destroy_stereo(Renderer::State& st, bool all);
+// motion.cpp: releases the motion target and the previous frame (with `all`, the pipelines,
+// layouts and descriptors too).
+void destroy_motion(Renderer::State& st, bool all);
 
 }  // namespace ocean::render

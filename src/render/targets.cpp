@@ -16,6 +16,8 @@ Renderer::State::~State() {
   destroy_targets();
   destroy_sim_images();
   destroy_objects(*this, true);
+  destroy_stereo(*this, true);
+  destroy_motion(*this, true);
   for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
@@ -46,6 +48,8 @@ void Renderer::State::destroy_targets() {
   vk::destroy_image(*ctx, depth);
   vk::destroy_image(*ctx, srgb);
   vk::destroy_buffer(*ctx, readback);
+  destroy_stereo(*this, false);
+  destroy_motion(*this, false);
 }
 
 void Renderer::State::destroy_sim_images() {
@@ -101,7 +105,8 @@ Status create_targets(Renderer::State& st, int width, int height) {
   Result<vk::Image2D> hdr =
       vk::create_image_2d(*st.ctx, kHdrFormat, w, h,
                           VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+                              VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                              VK_IMAGE_USAGE_TRANSFER_DST_BIT);  // stereo: the eyes' layers
   if (!hdr.ok()) return hdr.status();
   st.hdr = hdr.value();
   Result<vk::Image2D> depth =

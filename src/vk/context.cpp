@@ -198,15 +198,19 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
   detail::read_device(*ctx, family_timestamps);
   if (!found) return unsupported("Vulkan device '" + ctx->info.name + "' has no graphics queue");
 
-  // The renderer's features: dynamic rendering (core 1.3), wireframe and anisotropic filtering
-  // where present.
+  // The renderer's features: dynamic rendering (core 1.3), wireframe, anisotropic filtering and
+  // multiview where present.
+  VkPhysicalDeviceVulkan11Features features11{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
   VkPhysicalDeviceVulkan13Features features13{
-      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, .pNext = &features11};
   VkPhysicalDeviceFeatures2 supported{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
                                       .pNext = &features13};
   VkPhysicalDeviceFeatures2 enabled{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+  VkPhysicalDeviceVulkan11Features enabled11{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
   VkPhysicalDeviceVulkan13Features enabled13{
-      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES, .pNext = &enabled11};
   std::vector<const char*> device_extensions;
   if (params.graphics) {
     if (ctx->properties.apiVersion < VK_API_VERSION_1_3)
@@ -221,6 +225,9 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
     enabled.features.samplerAnisotropy = supported.features.samplerAnisotropy;
     ctx->graphics = true;
     ctx->wireframe = supported.features.fillModeNonSolid == VK_TRUE;
+    // Stereo in one pass (VK_KHR_multiview, core since 1.1).
+    enabled11.multiview = params.multiview ? features11.multiview : VK_FALSE;
+    ctx->multiview = enabled11.multiview == VK_TRUE;
     if (supported.features.samplerAnisotropy == VK_TRUE)
       ctx->max_anisotropy = detail::max_anisotropy(ctx->properties);
   }

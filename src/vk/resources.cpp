@@ -151,16 +151,17 @@ void destroy_image(const Context& ctx, Image& im) {
 
 Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32_t width,
                                 std::uint32_t height, VkImageUsageFlags usage,
-                                VkImageAspectFlags aspect) {
+                                VkImageAspectFlags aspect, std::uint32_t layers) {
   Image2D im;
-  im.format = format, im.width = width, im.height = height;
-  Status s = create_device_image(ctx, format, width, height, 1, 1, usage, im.image, im.memory);
+  im.format = format, im.width = width, im.height = height, im.layers = layers;
+  Status s = create_device_image(ctx, format, width, height, layers, 1, usage, im.image, im.memory);
   if (s.ok()) {
-    const VkImageViewCreateInfo v{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
-                                  .image = im.image,
-                                  .viewType = VK_IMAGE_VIEW_TYPE_2D,
-                                  .format = format,
-                                  .subresourceRange = {aspect, 0, 1, 0, 1}};
+    const VkImageViewCreateInfo v{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+        .image = im.image,
+        .viewType = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D,
+        .format = format,
+        .subresourceRange = {aspect, 0, 1, 0, layers}};
     s = check(vkCreateImageView(ctx.device, &v, nullptr, &im.view), "vkCreateImageView");
   }
   if (!s.ok()) {

@@ -14,6 +14,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
+#include "motion_output.hpp"
 #include "object_flags.hpp"
 #include "ocean/io.hpp"
 #include "ocean/scene.hpp"
@@ -21,6 +22,7 @@
 #include "progress.hpp"
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
+#include "stereo_flags.hpp"
 #include "video_writer.hpp"
 #include "view_flags.hpp"
 #include "wave_flags.hpp"
@@ -40,6 +42,8 @@ struct RenderOptions {
   bool floating = false;             // --float
   std::string seabed;                // --seabed DEPTH_M
   WaveFlags waves;
+  StereoFlags stereo;
+  std::string motion_vectors;  // --motion-vectors FILE.png
   bool json = false;
 };
 
@@ -76,6 +80,7 @@ struct Inputs {
   double time_s = 0.0, fps = 30.0, warmup_s = 0.0;
   long long frames = 1;
   std::vector<ObjectSpec> objects;
+  std::optional<double> ipd;  // --stereo: both eyes side by side, this far apart
 };
 
 Result<Inputs> parse_inputs(const RenderOptions& o) {
@@ -103,6 +108,21 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (!layer.ok()) return layer.status();
   in.layer = layer.value();
   if (Status s = parse_view_flags(o.picture, 1, in.scene, in.view); !s.ok()) return s;
+  Result<std::optional<double>> ipd = parse_stereo_flags(o.stereo);
+  if (!ipd.ok()) return ipd.status();
+  in.ipd = ipd.value();
+  if (!o.motion_vectors.empty()) {
+    if (in.ipd.has_value())
+      return invalid_argument("--motion-vectors draws one view, not --stereo");
+    if (std::filesystem::path(o.motion_vectors).extension() != ".png")
+      return invalid_argument("--motion-vectors = '" + excerpt(o.motion_vectors) +
+                              "': the name must end in .png");
+  }
+  if (in.ipd.has_value()) {  // each eye is --width wide; the picture holds both
+    if (in.scene.width > 8192)
+      return invalid_argument("--stereo: --width is at most 8192 (the picture is twice as wide)");
+    in.scene.width *= 2;
+  }
   render::View& v = in.view;
   // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.
   std::string sky = o.sky;
@@ -254,12 +274,17 @@ int run_contact_sheet(const RenderOptions& o) {
 }
 
 int run_render(const RenderOptions& o) {
+  if (!o.contact_sheet.empty() && o.stereo.stereo)
+    return report(invalid_argument("--stereo draws one view, not a --contact-sheet"));
   if (!o.contact_sheet.empty()) return run_contact_sheet(o);
   Result<Inputs> parsed = parse_inputs(o);
   if (!parsed.ok()) return report(parsed.status());
   const Inputs& in = parsed.value();
   // Fail before any work when the output cannot be written (or ffmpeg cannot be started).
   if (Status s = io::check_parent_writable(frame_path(in, 0)); !s.ok()) return report(s);
+  if (!o.motion_vectors.empty()) {
+    if (Status s = io::check_parent_writable(o.motion_vectors); !s.ok()) return report(s);
+  }
   // ... or when the picture cannot fit in memory.
   // Indexed by OutputKind: png, exr, mp4.
   constexpr std::uint64_t kBytesPerPixel[] = {kPngBytesPerPixel, kExrBytesPerPixel,
@@ -283,6 +308,7 @@ int run_render(const RenderOptions& o) {
   render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
   if (Status s = renderer.set_meshes(objects.value()->meshes()); !s.ok()) return report(s);
+  if (Status s = check_stereo_device(in.ipd, *scene.context()); !s.ok()) return report(s);
   render::View view = in.view;
   std::vector<std::uint8_t> srgb;
   std::vector<float> hdr;
@@ -301,7 +327,15 @@ int run_render(const RenderOptions& o) {
   if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
-    const Status stepped = f == 0 ? scene.warm_up(t, in.warmup_s) : scene.step(t);
+    // With motion vectors the first frame has one before it, 1/fps earlier (R.26).
+    const bool motion = f == 0 && !o.motion_vectors.empty();
+    Status stepped =
+        f == 0 ? scene.warm_up(motion ? t - 1.0 / in.fps : t, in.warmup_s) : scene.step(t);
+    if (stepped.ok() && motion) {
+      if (Status s = renderer.set_motion_vectors(true); !s.ok()) return report(s);
+      if (Status s = renderer.draw(view); !s.ok()) return report(s);
+      stepped = scene.step(t);
+    }
     if (!stepped.ok()) return report(stepped);
     if (in.layer != nullptr) {
       in.layer->evaluate(t, local);
@@ -312,7 +346,9 @@ int run_render(const RenderOptions& o) {
       if (!set.ok()) return report(set);
     }
     if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
-    if (Status s = renderer.draw(view); !s.ok()) return report(s);
+    const Status drawn =
+        in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
+    if (!drawn.ok()) return report(drawn);
     const std::filesystem::path path = frame_path(in, f);
     Status written;
     if (in.kind == OutputKind::exr) {
@@ -327,6 +363,15 @@ int run_render(const RenderOptions& o) {
   }
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.close(); !s.ok()) return report(s);
+  }
+  if (!o.motion_vectors.empty()) {  // the last frame's motion
+    std::vector<float> xy;
+    if (Status s = renderer.read_motion(xy); !s.ok()) return report(s);
+    Result<double> scale = write_motion_png(o.motion_vectors, w, h, xy);
+    if (!scale.ok()) return report(scale.status());
+    if (!o.json)
+      std::cout << "wrote " << o.motion_vectors << " (motion; full colour at " << scale.value()
+                << " px per frame)\n";
   }
   if (in.frames > 1) progress.finish();
   if (Status s = validation_status(*scene.context()); !s.ok()) return report(s);
@@ -397,6 +442,11 @@ Command add_render_command(CLI::App& app) {
              "a flat sandy seabed this far below the sea level, m, seen through clear water "
              "(refraction, absorption of pure water)");
   add_wave_flags(*command, o->waves);
+  add_stereo_flags(*command, o->stereo);
+  command->add_option("--motion-vectors", o->motion_vectors,
+                      "also write the last frame's motion vectors (camera and waves, pixels per "
+                      "frame) as a PNG: red right, green down, grey still (docs/rendering.md "
+                      "R.26)");
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};
 }

@@ -18,7 +18,7 @@
 // configuration.
 float far_ratio_at(vec2 xz) {
   if (u.far_field.enabled <= 0.0) return 0.0;
-  return far_ratio(u.far_field, length(vec3(xz.x, 0.0, xz.y) - u.camera_pos_m));
+  return far_ratio(u.far_field, length(vec3(xz.x, 0.0, xz.y) - eye_position()));
 }
 
 // Seed 003's eq. 7 with weights whose squares sum to one: two independent fields of equal

@@ -29,7 +29,7 @@ void main() {
   float metallic = object.base_metallic.a;
   float alpha = object.roughness_pad.x * object.roughness_pad.x;
   float alpha_sq = max(alpha * alpha, 1e-4);
-  vec3 to_camera = u.camera_pos_m - world_pos;
+  vec3 to_camera = eye_position() - world_pos;
   float distance_m = length(to_camera);
   vec3 V = to_camera / distance_m;
   vec3 N = normalize(world_normal);

@@ -17,5 +17,5 @@ void main() {
   vec4 w = object.model * vec4(position, 1.0);
   world_pos = w.xyz;
   world_normal = transpose(inverse(mat3(object.model))) * normal;
-  gl_Position = u.view_proj * w;
+  gl_Position = eye_view_proj() * w;
 }

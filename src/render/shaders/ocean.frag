@@ -120,7 +120,7 @@ void main() {
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);
   float foam = 1.0 - no_foam;
 
-  vec3 to_camera = u.camera_pos_m - world_pos;
+  vec3 to_camera = eye_position() - world_pos;
   float distance_m = length(to_camera);
   vec3 V = to_camera / distance_m;
   vec3 L = u.sun_dir;

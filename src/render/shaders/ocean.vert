@@ -12,6 +12,17 @@
 #include "planet.glsl"
 #include "local_layer.glsl"
 #include "damping.glsl"
+#include "displacement.glsl"
+#ifdef OCEAN_MOTION
+#include "motion_shared.h"
+// Motion vectors (R.26): the cascades of the previous frame and its camera.
+layout(set = 1, binding = OCEAN_MOTION_BINDING_PREVIOUS) uniform sampler2DArray previous_map;
+layout(push_constant, std430) uniform MotionBlock {
+  MotionPush motion;
+};
+layout(location = 3) out vec4 clip_now;
+layout(location = 4) out vec4 clip_previous;
+#endif
 
 layout(location = 0) in vec2 a_position;  // unit patch [−0.5, 0.5]² (skirt: world x, z)
 layout(location = 1) in vec3 a_instance;  // centre x, centre z, size (skirt: 0, 0, 1)
@@ -21,12 +32,6 @@ layout(location = 0) out vec2 world_xz;     // undisplaced position relative to 
 layout(location = 1) out vec3 world_pos;    // displaced position relative to the origin
 layout(location = 2) flat out uint level;
 
-float geometry_weight(int c, float spacing_m) {
-  // Full while the vertex spacing is below a quarter of the cascade's dominant wavelength, none
-  // at half of it (the mesh's Nyquist limit) (R.9).
-  return clamp(2.0 - 4.0 * spacing_m / u.cascades[c].wavelength_m, 0.0, 1.0);
-}
-
 void main() {
   vec2 xz = a_instance.xy + a_position * a_instance.z;
   vec2 rel = xz - u.grid_centre_m;
@@ -35,47 +40,25 @@ void main() {
   float border_weight = clamp((half_size - border) / u.border_fade_m, 0.0, 1.0);  // R.10
   // The spacing a patch at this distance has at most: a node splits while the camera is closer
   // than τ·s (eq. 57), so a leaf at distance d has s ≤ d/τ·2 and spacing s/V.
-  float d = length(vec3(xz.x, 0.0, xz.y) - u.camera_pos_m);
+  float d = length(vec3(xz.x, 0.0, xz.y) - eye_position());
   float spacing = max(2.0 * d / (u.lod_scale * u.vertices), 1e-3);
   vec3 displacement = vec3(0.0);
-  int cascades = int(u.cascade_count);
-  if (border_weight > 0.0 && u.local.calm < 0.5) {
-    DampingSample damping = damping_at(xz);  // mask and bathymetry (R.24)
-    float ratio = far_ratio_at(xz);
-    vec2 blend = preserving_weights(ratio);  // (simulation, far field)
-    for (int c = 0; c < cascades; ++c) {
-      float w = geometry_weight(c, spacing);
-      if (w <= 0.0 && c > 0) continue;
-      vec2 uv = cascade_uv(xz, c);
-      float hex = hex_ratio(ratio, u.cascades[c].patch_size_m, spacing);
-      vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
-      vec3 plain = vec3(0.0), tiled = vec3(0.0);
-      if (hex < 1.0) plain = textureLod(displacement_map, vec3(uv, float(c)), 0.0).xyz;
-      if (hex > 0.0) {
-        HexTaps taps = hex_taps(uv, c);
-        for (int i = 0; i < 3; ++i)
-          tiled += taps.weight[i] *
-                   textureLod(displacement_map, vec3(uv + taps.offset[i], float(c)), 0.0).xyz;
-      }
-      vec3 sim = w * band_weight(damping, c) * (mixing.x * plain + mixing.y * tiled);
-      if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
-        float h, sx, sz;
-        vec3 cell = u.far_field.cell_m.xyz;
-        vec2 p = noise_xz(xz);
-        far_field_noise(u.far_field, p.x, p.y, clamp(2.0 - 4.0 * spacing / cell.x, 0.0, 1.0),
-                        clamp(2.0 - 4.0 * spacing / cell.y, 0.0, 1.0),
-                        clamp(2.0 - 4.0 * spacing / cell.z, 0.0, 1.0), h, sx, sz);
-        sim = blend.x * sim + vec3(0.0, blend.y * h, 0.0);
-      }
-      displacement += sim;
-    }
-    displacement *= border_weight;
-  }
+  if (border_weight > 0.0 && u.local.calm < 0.5)
+    displacement = border_weight * sea_displacement(displacement_map, xz, spacing);
   displacement += local_displacement(xz);  // wakes and waveforms (R.19)
   world_xz = xz;
   // The planet bends the sea down by d²/(2R) (R.15).
   world_pos = vec3(xz.x + displacement.x, displacement.y - curvature_drop(xz),
                    xz.y + displacement.z);
   level = a_meta.z;
-  gl_Position = u.view_proj * vec4(world_pos, 1.0);
+  gl_Position = eye_view_proj() * vec4(world_pos, 1.0);
+#ifdef OCEAN_MOTION
+  // The same surface point (the label xz) a frame ago: its displacement then, the camera then.
+  vec3 previous = local_displacement(xz);
+  if (border_weight > 0.0 && u.local.calm < 0.5)
+    previous += border_weight * sea_displacement(previous_map, xz, spacing);
+  clip_now = gl_Position;
+  clip_previous = motion.previous_view_proj *
+                  vec4(xz.x + previous.x, previous.y - curvature_drop(xz), xz.y + previous.z, 1.0);
+#endif
 }

@@ -25,14 +25,14 @@ vec2 noise_xz(vec2 xz) {
 // How far the sea at xz lies below the camera's tangent plane: d²/(2R), d its horizontal
 // distance from the camera (R.15); 0 on a flat world.
 float curvature_drop(vec2 xz) {
-  vec2 d = xz - u.camera_pos_m.xz;
+  vec2 d = xz - eye_position().xz;
   return dot(d, d) * u.planet.inv_two_radius_per_m;
 }
 
 // The sphere's up vector at xz in the camera's tangent frame, to first order in d/R (R.15),
 // unnormalised: (d_x/R, 1, d_z/R).
 vec3 curved_up(vec2 xz) {
-  vec2 d = (xz - u.camera_pos_m.xz) * u.planet.inv_radius_per_m;
+  vec2 d = (xz - eye_position().xz) * u.planet.inv_radius_per_m;
   return vec3(d.x, 1.0, d.y);
 }
 

@@ -19,6 +19,17 @@ layout(set = 0, binding = OCEAN_RENDER_BINDING_FRAME, std140) uniform Frame {
   FrameUniforms u;
 };
 
+// The camera of this view: the frame's one camera, or with OCEAN_MULTIVIEW (stereo in one pass,
+// R.25) the eye gl_ViewIndex picks.
+#ifdef OCEAN_MULTIVIEW
+#extension GL_EXT_multiview : require
+vec3 eye_position() { return u.eyes[gl_ViewIndex].camera_pos_m.xyz; }
+mat4 eye_view_proj() { return u.eyes[gl_ViewIndex].view_proj; }
+#else
+vec3 eye_position() { return u.camera_pos_m; }
+mat4 eye_view_proj() { return u.view_proj; }
+#endif
+
 layout(set = 0, binding = OCEAN_RENDER_BINDING_DISPLACEMENT) uniform sampler2DArray displacement_map;
 layout(set = 0, binding = OCEAN_RENDER_BINDING_NORMAL) uniform sampler2DArray normal_map;
 layout(set = 0, binding = OCEAN_RENDER_BINDING_SKY_LUT) uniform sampler2D sky_lut;

@@ -122,6 +122,14 @@ struct SphereUniforms {
   float sphere_pad0, sphere_pad1;
 };
 
+// One eye of a stereo frame drawn in one pass (docs/rendering.md R.25): what the mono fields
+// view_proj and camera_pos_m hold for a single camera, per view index.
+struct EyeUniforms {
+  mat4 view_proj;          // the eye's lod::view_projection relative to the origin (R.16)
+  mat4 inverse_view_proj;  // its inverse (the sky's view rays)
+  vec4 camera_pos_m;       // the eye relative to the origin; w unused
+};
+
 // Everything per frame, one uniform buffer (std140).
 struct FrameUniforms {
   mat4 view_proj;  // lod::view_projection of the camera, column-major
@@ -156,6 +164,7 @@ struct FrameUniforms {
   LocalLayerUniforms local;
   DampingUniforms damping;
   SphereUniforms sphere;
+  EyeUniforms eyes[2];  // stereo (OCEAN_MULTIVIEW shaders) only: eye 0 left, 1 right
 };
 
 // Push constants of the sky pass (std430).
@@ -193,7 +202,9 @@ static_assert(sizeof(DampingUniforms) == 48);
 static_assert(offsetof(FrameUniforms, damping) == 336 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, sphere) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SphereUniforms) == 64);
-static_assert(sizeof(FrameUniforms) == 448 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(EyeUniforms) == 144);
+static_assert(offsetof(FrameUniforms, eyes) == 448 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 736 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

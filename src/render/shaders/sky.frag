@@ -4,6 +4,9 @@
 #include "render_common.glsl"
 
 layout(location = 0) in vec2 ndc;
+#ifdef OCEAN_MULTIVIEW
+layout(location = 1) in vec4 eye_far_point;  // linear in screen space: interpolates exactly
+#endif
 layout(location = 0) out vec4 colour;
 layout(push_constant) uniform Push {
   SkyPush push;
@@ -12,8 +15,12 @@ layout(push_constant) uniform Push {
 void main() {
   // Vulkan's framebuffer y runs down; the projection is unflipped and the viewport negative,
   // so ndc.y here already points up.
+#ifdef OCEAN_MULTIVIEW
+  vec4 far_point = eye_far_point;
+#else
   vec4 far_point = push.inverse_view_proj * vec4(ndc, 1.0, 1.0);
-  vec3 v = normalize(far_point.xyz / far_point.w - u.camera_pos_m);
+#endif
+  vec3 v = normalize(far_point.xyz / far_point.w - eye_position());
   vec3 c = sky_radiance(v);
   // Sun disc, angular radius 0.27°, limb-darkened edge over a pixel or so.
   float cos_sun = dot(v, u.sun_dir);

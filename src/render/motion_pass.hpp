@@ -1,0 +1,26 @@
+// Motion vectors (src/render, private; docs/rendering.md R.26): the RG16F target the motion pass
+// draws into, its pipelines and layout, and the previous frame it reprojects to — a copy of the
+// cascades' displacement array and the camera. Made by Renderer::set_motion_vectors(true).
+#pragma once
+
+#include <optional>
+
+#include "ocean/lod.hpp"
+#include "ocean/vk.hpp"
+
+namespace ocean::render {
+
+struct MotionPass {
+  bool enabled = false;
+  vk::Image2D target;           // RG16F, NDC motion (now − previous), the renderer's size
+  vk::Image previous;           // the displacement array of the previous frame (GENERAL)
+  bool previous_valid = false;  // `previous` and `camera` hold the last drawn frame
+  lod::Camera camera;           // the previous frame's camera, world metres
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE;
+};
+
+}  // namespace ocean::render

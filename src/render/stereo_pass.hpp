@@ -1,0 +1,18 @@
+// Stereo in one pass (src/render, private; docs/rendering.md R.25): the layered targets of one
+// eye's size that the multiview pass draws both eyes into, and its pipelines, made on the first
+// stereo frame so that mono renderers pay nothing for them.
+#pragma once
+
+#include <cstdint>
+
+#include "ocean/vk.hpp"
+
+namespace ocean::render {
+
+struct StereoPass {
+  vk::Image2D hdr, depth;  // 2 layers each: eye 0 (left), eye 1 (right)
+  VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE,
+             objects = VK_NULL_HANDLE;
+};
+
+}  // namespace ocean::render
