@@ -26,6 +26,7 @@
 #include "ocean/lod.hpp"
 #include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
+#include "ocean/underwater.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
 
@@ -100,6 +101,8 @@ struct View {
   std::vector<ObjectInstance> objects;
   /// A seabed seen through the water (R.22–R.23); off by default.
   Seabed seabed;
+  /// The water seen from a camera below the surface (R.50–R.52); absorption is seabed's.
+  Underwater underwater;
 };
 Status validate(const View& view);
 

@@ -41,6 +41,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   fill_uniforms(st, view, vp, u);
   fill_origin_uniforms(st, view, u);
   fill_environment_uniforms(st, view, u);
+  fill_underwater_uniforms(st, view, u);
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
   const std::array<double, 16> inv = inverse(vp.m);
   shader::SkyPush sky_push{};

@@ -171,6 +171,9 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
 // environment.cpp: FrameUniforms::environment, and the sky's irradiance from the map (R.17).
 void fill_environment_uniforms(const Renderer::State& st, const View& view,
                                shader::FrameUniforms& u);
+// underwater.cpp: FrameUniforms::underwater, the water's optics below the surface (R.50–R.52).
+void fill_underwater_uniforms(const Renderer::State& st, const View& view,
+                              shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
 

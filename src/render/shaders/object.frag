@@ -8,7 +8,7 @@
 //
 // Sources: Burley (2012) "Physically-based shading at Disney" and the glTF 2.0 specification's
 // Appendix B (the metallic-roughness BRDF, α = roughness²); Walter et al. (2007) (GGX).
-#include "render_common.glsl"
+#include "underwater.glsl"
 #include "object_shared.h"
 
 layout(push_constant, std430) uniform Push {
@@ -60,6 +60,9 @@ void main() {
   vec3 sky_specular = F_env * env * mix(1.0, 0.3, object.roughness_pad.x);
   vec3 c = sun + (1.0 - F_env) * sky_diffuse + sky_specular;
 
-  c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+  if (under_surface(world_pos) && under_surface(u.camera_pos_m))  // both in the water (R.51)
+    c = water_fog(c, distance_m, V);
+  else
+    c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
   colour = vec4(c, 1.0);
 }

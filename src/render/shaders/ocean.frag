@@ -16,6 +16,7 @@
 #include "local_layer.glsl"
 #include "damping.glsl"
 #include "seabed.glsl"
+#include "underwater.glsl"
 
 layout(location = 0) in vec2 world_xz;
 layout(location = 1) in vec3 world_pos;
@@ -55,6 +56,7 @@ void main() {
   // variance the averaging removed (Toksvig 2005): every cascade is used at every distance and
   // the filtering alone decides how much of it is detail and how much roughness (R.5).
   vec2 dx = dFdx(world_xz), dy = dFdy(world_xz);
+  bool below = seen_from_below(world_pos);  // the camera under this surface (R.50)
   float footprint = max(length(dx), length(dy));
   float ratio = far_ratio_at(world_xz);
   vec2 blend = preserving_weights(ratio);  // (simulation, far field)
@@ -124,6 +126,7 @@ void main() {
   float distance_m = length(to_camera);
   vec3 V = to_camera / distance_m;
   vec3 L = u.sun_dir;
+  vec3 N_up = N;
   // Normals that face away from the viewer (grazing views of steep waves) are bent back.
   float n_dot_v = dot(N, V);
   if (n_dot_v < 1e-3) {
@@ -172,8 +175,11 @@ void main() {
   vec3 foam_colour = 0.85 * u.foam_brightness * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
 
-  // Horizon fog (Paleologue 2024, R.8).
-  c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+  if (below) {  // the underside, through the water between it and the camera (R.50, R.51)
+    c = water_fog(underside_radiance(world_pos, N_up, V, foam), distance_m, V);
+  } else {  // horizon fog (Paleologue 2024, R.8)
+    c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+  }
 
   if (u.debug_view == OCEAN_RENDER_DEBUG_LOD_COLOURS) {
     vec3 lc = level < 9u ? kLevelColours[level] : vec3(0.5);

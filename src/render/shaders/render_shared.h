@@ -103,13 +103,22 @@ struct LocalLayerUniforms {
 // The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.24): per-band weights
 // and the depth baked on a square world grid; weight 1 and deep water outside it.
 struct DampingUniforms {
-  vec2 origin_m;     // (x0, z0)
-  float size_m;      // side
-  float resolution;  // N cells per side; 0: no damping
+  vec2 origin_m;          // (x0, z0)
+  float size_m;           // side
+  float resolution;       // N cells per side; 0: no damping
   vec3 absorption_per_m;  // pure water's absorption, RGB (R.24)
   float damping_pad;
   vec3 bottom_albedo;  // the seabed's reflectance seen through shallow water, RGB
   float damping_pad2;
+};
+
+// The water below the surface (docs/rendering.md R.50–R.52): its absorption (the seabed's, pure
+// water) and scattering, which make the fog a camera under the sea looks through.
+struct UnderwaterUniforms {
+  vec3 absorption_per_m;   // a per channel, RGB
+  float scattering_per_m;  // b, every channel
+  float skirt_extent_m;    // E: the outer half-extent of the drawn sea, from the camera
+  float underwater_pad0, underwater_pad1, underwater_pad2;
 };
 
 // Everything per frame, one uniform buffer (std140).
@@ -145,6 +154,7 @@ struct FrameUniforms {
   EnvironmentUniforms environment;
   LocalLayerUniforms local;
   DampingUniforms damping;
+  UnderwaterUniforms underwater;
 };
 
 // Push constants of the sky pass (std430).
@@ -180,7 +190,8 @@ static_assert(sizeof(LocalLayerUniforms) == 32);
 static_assert(offsetof(FrameUniforms, local) == 304 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(DampingUniforms) == 48);
 static_assert(offsetof(FrameUniforms, damping) == 336 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, underwater) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 416 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
