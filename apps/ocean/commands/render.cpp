@@ -394,8 +394,9 @@ Command add_render_command(CLI::App& app) {
                     "let the objects float: simulate them as rigid bodies on the waves from t = 0 "
                     "to the picture's time (glTF meshes must be closed)");
   add_option(*command, kSeabed, o->seabed,
-             "a flat sandy seabed this far below the sea level, m, seen through clear water "
-             "(refraction, absorption of pure water)");
+             "a sandy seabed this far below the sea level, m, seen through clear water "
+             "(refraction, absorption of pure water); with --bathymetry at the map's depth "
+             "where the map covers it");
   add_wave_flags(*command, o->waves);
   command->add_flag("--json", o->json, "print the statistics as JSON");
   return {command, [o] { return run_render(*o); }};

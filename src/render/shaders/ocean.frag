@@ -156,10 +156,12 @@ void main() {
   // surface and by the sky, plus forward scattering through crests lit from behind.
   vec3 sky_e = u.sky_ambient;
   float sun_in = max(L.y, 0.0) * (1.0 - fresnel_schlick(max(L.y, 0.0)));
-  // Over shallow water the column scatters less and the seabed shows through it (R.24).
-  vec3 bottom_t = exp(-2.0 * u.damping.absorption_per_m * damping.depth_m);
+  // Over shallow water the column scatters less and the seabed shows through it (R.24); a drawn
+  // seabed takes the bathymetry's depth and shows itself instead (R.22, R.52).
+  float tint_depth = seabed.absorption_enabled.a > 0.5 ? OCEAN_RENDER_DEEP_M : damping.depth_m;
+  vec3 bottom_t = exp(-2.0 * u.damping.absorption_per_m * tint_depth);
   vec3 body = u.water_colour * (sun_e * sun_in + sky_e) / PI * (1.0 - bottom_t) +
-              seabed_radiance(damping.depth_m, sun_e * sun_in + sky_e);
+              seabed_radiance(tint_depth, sun_e * sun_in + sky_e);
   float height = world_pos.y + curvature_drop(world_xz);  // above the mean level (R.15)
   float crest = clamp(height / max(0.5 * u.hs_m, 0.05), 0.0, 2.0);  // height over Hs/2
   float g = 0.6, mu = dot(-L, V), hg_d = 1.0 + g * g - 2.0 * g * mu;
