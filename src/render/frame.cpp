@@ -77,6 +77,8 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
               VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_VERTEX_SHADER_BIT |
                   VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 
+  stats_ = {.cpu_select_ms = stats_.cpu_select_ms};
+  record_reflection(st, cmd, view, stats_);  // the objects mirrored in the sea (R.53)
   const std::uint32_t w = st.hdr.width, h = st.hdr.height;
   vk::image_barrier(
       cmd, st.hdr.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
@@ -119,8 +121,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdPushConstants(cmd, st.scene_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(sky_push), &sky_push);
   vkCmdDraw(cmd, 3, 1, 0, 0);
-  stats_ = {.cpu_select_ms = stats_.cpu_select_ms};
-  stats_.draw_calls = 1;
+  ++stats_.draw_calls;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                     view.debug == DebugView::wireframe ? st.wire : st.ocean);
   push_seabed(st, cmd, view);

@@ -25,7 +25,15 @@ struct ObjectPass {
 Status create_object_pipeline(Renderer::State& st);
 // Draws view.objects (mesh indices checked by validate_objects) inside the HDR pass, whose
 // viewport and scene set are bound. Returns the draws and triangles added.
-void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats);
+// With `mirrored`, the objects mirrored in y = 0 for the reflection target (R.53).
+void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats,
+                    bool mirrored = false);
+// reflection.cpp (R.53): the reflection target sized for the picture (half its resolution while
+// there are meshes, 1×1 otherwise) and written into the scene set; and its pass, recorded
+// outside any render pass before the HDR pass.
+Status size_reflection(Renderer::State& st);
+void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& view,
+                       RenderStats& stats);
 // invalid_argument for an instance whose mesh index is not below the meshes set.
 Status validate_objects(const Renderer::State& st, const View& view);
 // seabed.cpp: pushes view.seabed (R.22–R.23) for the ocean pipeline, which must be bound.

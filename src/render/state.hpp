@@ -104,6 +104,9 @@ struct Renderer::State {
   shader::DampingUniforms damping{};
   std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
   ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
+  // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
+  // coverage) and depth while there are meshes, 1×1 otherwise.
+  vk::Image2D reflection, reflection_depth;
 
   ~State();
   void destroy_targets();

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "object_pass.hpp"
 #include "ocean/memory_budget.hpp"
 #include "state.hpp"
 
@@ -45,6 +46,8 @@ void Renderer::State::destroy_targets() {
   vk::destroy_image(*ctx, depth);
   vk::destroy_image(*ctx, srgb);
   vk::destroy_buffer(*ctx, readback);
+  vk::destroy_image(*ctx, reflection);
+  vk::destroy_image(*ctx, reflection_depth);
 }
 
 void Renderer::State::destroy_sim_images() {
@@ -119,7 +122,7 @@ Status create_targets(Renderer::State& st, int width, int height) {
   if (!rb.ok()) return rb.status();
   st.readback = rb.value();
   write_tonemap_image(st);
-  return {};
+  return size_reflection(st);  // its size follows the picture's (R.53)
 }
 
 }  // namespace ocean::render

@@ -18,6 +18,20 @@
 #include "seabed.glsl"
 #include "underwater.glsl"
 
+// The objects mirrored in the sea level (R.53): colour, coverage in alpha.
+layout(set = 0, binding = OCEAN_RENDER_BINDING_REFLECTION) uniform sampler2D reflection_map;
+
+// The reflection target's texel where the reflected ray R from the water point P shows an
+// object: the ray followed for the eye's distance r to P, mirrored in y = 0 and projected. On
+// calm water this is P's own pixel, exactly the mirror's geometry; waves move it with R.
+vec4 object_reflection(vec3 P, vec3 R, float r) {
+  vec3 X = P + r * R;
+  vec4 clip = u.view_proj * vec4(X.x, -X.y, X.z, 1.0);
+  if (clip.w <= 0.0) return vec4(0.0);
+  vec2 ndc = clip.xy / clip.w;
+  return textureLod(reflection_map, vec2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y), 0.0);
+}
+
 layout(location = 0) in vec2 world_xz;
 layout(location = 1) in vec3 world_pos;
 layout(location = 2) flat in uint level;
@@ -137,6 +151,8 @@ void main() {
   // Reflection of the sky (R.6).
   vec3 R = reflect(-V, N);
   vec3 env = sky_radiance(R);
+  vec4 mirrored = object_reflection(world_pos, R, distance_m);  // objects over the sky (R.53)
+  env = mirrored.rgb + (1.0 - mirrored.a) * env;
   float fresnel = fresnel_schlick(n_dot_v);
 
   // Sun specular: GGX with height-correlated Smith masking (R.7), radiance reflected = BRDF·E·cos.

@@ -44,7 +44,8 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_ENVIRONMENT 4   // sampler2D RGBA32F equirectangular radiance (R.17)
 #define OCEAN_RENDER_BINDING_LOCAL 5         // sampler2D RGBA16F (Dx, h, Dz, 0): the local layer
 #define OCEAN_RENDER_BINDING_DAMPING 6       // sampler2DArray RGBA16F: band weights 0-3, 4-7; depth
-#define OCEAN_RENDER_SCENE_BINDINGS 7
+#define OCEAN_RENDER_BINDING_REFLECTION 7    // sampler2D RGBA16F: objects mirrored in y = 0 (R.53)
+#define OCEAN_RENDER_SCENE_BINDINGS 8
 // The deepest water the damping texture holds, m: deeper is deep water for every band.
 #define OCEAN_RENDER_DEEP_M 1000.0
 // Set 0 of the tone-map pipeline.
