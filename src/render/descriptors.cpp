@@ -92,16 +92,20 @@ void write_scene_images(Renderer::State& st) {
   vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
 }
 
-void write_tonemap_image(Renderer::State& st) {
-  const VkDescriptorImageInfo image{st.hdr_sampler, st.hdr.view,
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
+                          VkImageView view) {
+  const VkDescriptorImageInfo image{st.hdr_sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                   .dstSet = st.tonemap_set,
-                                   .dstBinding = OCEAN_RENDER_BINDING_HDR,
+                                   .dstSet = set,
+                                   .dstBinding = binding,
                                    .descriptorCount = 1,
                                    .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                    .pImageInfo = &image};
   vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
+}
+
+void write_tonemap_image(Renderer::State& st) {
+  write_rendered_image(st, st.tonemap_set, OCEAN_RENDER_BINDING_HDR, st.hdr.view);
 }
 
 Status create_descriptors(Renderer::State& st) {

@@ -29,15 +29,7 @@ Status size_reflection(Renderer::State& st) {
                           VK_IMAGE_ASPECT_DEPTH_BIT);
   if (!depth.ok()) return depth.status();
   st.reflection_depth = depth.value();
-  const VkDescriptorImageInfo image{st.hdr_sampler, st.reflection.view,
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
-  const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                   .dstSet = st.scene_set,
-                                   .dstBinding = OCEAN_RENDER_BINDING_REFLECTION,
-                                   .descriptorCount = 1,
-                                   .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                   .pImageInfo = &image};
-  vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
+  write_rendered_image(st, st.scene_set, OCEAN_RENDER_BINDING_REFLECTION, st.reflection.view);
   return {};
 }
 

@@ -126,6 +126,9 @@ Status create_descriptors(Renderer::State& st);
 void write_scene_images(Renderer::State& st);
 // The tone map's set: the HDR image.
 void write_tonemap_image(Renderer::State& st);
+// One image the renderer drew (SHADER_READ_ONLY_OPTIMAL, the HDR sampler) into a set's binding.
+void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
+                          VkImageView view);
 
 // pipelines.cpp: pipeline layouts, shader modules and the four pipelines (the wireframe one only
 // where the device has fillModeNonSolid).

@@ -19,7 +19,12 @@ void fill_underwater_uniforms(const Renderer::State& st, const View& view,
   u.underwater = {.absorption_per_m = {static_cast<float>(a[0]), static_cast<float>(a[1]),
                                        static_cast<float>(a[2])},
                   .scattering_per_m = static_cast<float>(view.underwater.scattering_per_m),
-                  .skirt_extent_m = static_cast<float>(skirt_extent_m(view, st.hs_m))};
+                  .skirt_extent_m = static_cast<float>(skirt_extent_m(view, st.hs_m)),
+                  .bed_enabled = view.seabed.enabled ? 1.0f : 0.0f,
+                  .bed_albedo_depth = {static_cast<float>(view.seabed.albedo[0]),
+                                       static_cast<float>(view.seabed.albedo[1]),
+                                       static_cast<float>(view.seabed.albedo[2]),
+                                       static_cast<float>(view.seabed.depth_m)}};
 }
 
 }  // namespace ocean::render

@@ -1,6 +1,9 @@
-// What the renderer's and the scene's tests share: a validated graphics context, a small sea, an
-// eye-level view and the difference of two sRGB pictures.
+// What the renderer's and the scene's tests share: a validated graphics context and a rig that
+// checks the validation layer stayed silent, a small sea, an eye-level view and the difference of
+// two sRGB pictures.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +23,19 @@ inline std::shared_ptr<vk::Context> graphics_context() {
   if (!ctx.ok()) return nullptr;
   return std::shared_ptr<vk::Context>(std::move(ctx).value());
 }
+
+/// A context, a simulator and a renderer; when it goes, the validation layer must have stayed
+/// silent.
+struct ValidatedRig {
+  std::shared_ptr<vk::Context> ctx;
+  std::unique_ptr<Simulator> sim;
+  std::unique_ptr<Renderer> renderer;
+  ~ValidatedRig() {
+    if (ctx != nullptr) {
+      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
+    }
+  }
+};
 
 /// Two cascades of a 12 m/s wind sea at N = 64.
 inline SimulationConfig small_config() {

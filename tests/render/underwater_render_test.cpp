@@ -20,16 +20,7 @@ using namespace ocean::render;
 namespace helpers = ocean::render::testing;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-struct Rig {
-  std::shared_ptr<ocean::vk::Context> ctx;
-  std::unique_ptr<ocean::Simulator> sim;
-  std::unique_ptr<Renderer> renderer;
-  ~Rig() {
-    if (ctx != nullptr) {
-      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
-    }
-  }
-};
+using Rig = helpers::ValidatedRig;
 
 std::unique_ptr<Rig> make_rig(int width, int height) {
   auto rig = std::make_unique<Rig>();
@@ -134,6 +125,42 @@ TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
     straddling += crossed == kW ? 1 : 0;
   }
   EXPECT_GE(straddling, 1) << "no eye height put the waterline across the whole picture";
+}
+
+// Looking straight down from 2 m under calm water onto a 5 m bed (R.51, R.52): the bed's light
+// (R.23's irradiance at 5 m on its albedo, Lambertian) through 3 m of water, plus the water's own
+// light looking down from 2 m, as R.51 writes them with the stated absorption and scattering.
+TEST(Underwater, TheBedBelowShowsThroughTheWatersFog) {
+  constexpr int kSide = 33;
+  auto rig = make_rig(kSide, kSide);
+  if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  rig->renderer->set_calm(true);
+  View v = helpers::eye_level_view(kSide, kSide);
+  v.planet_radius_m = std::numeric_limits<double>::infinity();
+  v.camera.position_m = {0.0, -2.0, 0.0};
+  v.camera.target_m = {1e-3, -10.0, 0.0};  // straight down
+  v.seabed = {.enabled = true, .depth_m = 5.0, .albedo = {0.5, 0.5, 0.5}};
+  ASSERT_TRUE(rig->renderer->draw(v).ok());
+  std::vector<float> hdr;
+  ASSERT_TRUE(rig->renderer->read_hdr(hdr).ok());
+  const Sky sky(v.shading);
+  const std::array<double, 3> sun = sky.sun_irradiance_ground(),
+                              sky_e = sky.sky_irradiance_horizontal();
+  const double mu_s = std::sin(v.shading.sun_elevation_deg * kDeg);
+  const double fresnel = 0.02 + 0.98 * std::pow(1.0 - mu_s, 5.0);
+  const double mu_w = std::sqrt(1.0 - (1.0 - mu_s * mu_s) / (1.333 * 1.333));
+  const std::size_t centre = static_cast<std::size_t>(4 * ((kSide / 2) * kSide + kSide / 2));
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double a = v.seabed.absorption_per_m[c], b = v.underwater.scattering_per_m;
+    const double on_bed =
+        sun[c] * mu_s * (1.0 - fresnel) * std::exp(-a * 5.0 / mu_w) + sky_e[c] * std::exp(-a * 5.0);
+    const double bed = 0.5 * on_bed / std::numbers::pi;
+    const double water = v.shading.water_colour[c] * (sun[c] * mu_s * (1.0 - fresnel) + sky_e[c]) /
+                         std::numbers::pi * std::exp(-a * 2.0);  // looking down: 3^0
+    const double t = std::exp(-(a + b) * 3.0);
+    const double expected = bed * t + water * (1.0 - t);
+    EXPECT_NEAR(hdr[centre + c], expected, 0.01 * expected) << "channel " << c;
+  }
 }
 
 }  // namespace

@@ -184,7 +184,7 @@ void main() {
   float forward = (1.0 - g * g) / (4.0 * PI * hg_d * sqrt(hg_d));  // Henyey–Greenstein
   vec3 through = u.crest_scatter * u.water_colour * sun_e * forward * crest *
                  pow(clamp(0.5 - 0.5 * dot(L, N), 0.0, 1.0), 2.0);
-  vec3 s = through_water(body + through, world_pos, V, N, L);  // a seabed, if any (R.22)
+  vec3 s = through_water(body + through, world_pos, V, N);  // a seabed, if any (R.22)
 
   // Mitchell 2005, eq. 5: s·(1 − r) + r·(env + sun).
   vec3 c = s * (1.0 - fresnel) + fresnel * (env + sun);

@@ -119,7 +119,9 @@ struct UnderwaterUniforms {
   vec3 absorption_per_m;   // a per channel, RGB
   float scattering_per_m;  // b, every channel
   float skirt_extent_m;    // E: the outer half-extent of the drawn sea, from the camera
-  float underwater_pad0, underwater_pad1, underwater_pad2;
+  float bed_enabled;       // 1: View::seabed is drawn, seen from below too (R.52)
+  float underwater_pad1, underwater_pad2;
+  vec4 bed_albedo_depth;  // the seabed's albedo (rgb) and flat depth, m (a)
 };
 
 // Everything per frame, one uniform buffer (std140).
@@ -192,7 +194,7 @@ static_assert(offsetof(FrameUniforms, local) == 304 + 32 * OCEAN_RENDER_MAX_CASC
 static_assert(sizeof(DampingUniforms) == 48);
 static_assert(offsetof(FrameUniforms, damping) == 336 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, underwater) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 416 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 432 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

@@ -7,9 +7,8 @@
 #ifndef OCEAN_SEABED_GLSL
 #define OCEAN_SEABED_GLSL
 
-#include "damping.glsl"
-#include "render_common.glsl"
 #include "seabed_shared.h"
+#include "underwater.glsl"
 
 layout(push_constant, std430) uniform SeabedBlock {
   SeabedPush seabed;
@@ -37,27 +36,16 @@ vec3 seabed_albedo(vec2 xz, vec2 footprint) {
   return albedo * (1.0 + 0.3 * fade * sin(p.x + 0.6 * sin(0.37 * p.y)) * sin(0.41 * p.y + 1.3));
 }
 
-// The bed's depth below the mean sea level at xz, m (R.52): the bathymetry's where the damping
-// grid (R.24) covers the point, the flat bed's elsewhere.
-float bed_depth_at(vec2 xz) {
-  if (u.damping.resolution > 0.0) {
-    vec2 uv = (xz - u.damping.origin_m) / u.damping.size_m;
-    if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))))
-      return textureLod(damping_map, vec3(uv, 2.0), 0.0).x;
-  }
-  return seabed.albedo_depth.a;
-}
-
 // The colour under the surface: `body` (R∞, the deep water's scattered light, R.11) over the bed
 // where the refracted view ray reaches it. P0 the surface point, V towards the camera, N the
-// surface normal, L towards the sun.
-vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N, vec3 L) {
+// surface normal.
+vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N) {
   vec3 T = refract(-V, N, 1.0 / kWaterIor);
   // Path length in the water to the bed, m (R.22); on a bathymetry the depth where the ray
   // lands, found by one more step from the depth above it (R.52). Dry land: the bed at once.
-  float depth = bed_depth_at(P0.xz);
+  float depth = bed_depth_at(P0.xz, seabed.albedo_depth.a);
   float t = max(P0.y + depth, 0.0) / max(-T.y, 1e-4);
-  depth = bed_depth_at(P0.xz + t * T.xz);
+  depth = bed_depth_at(P0.xz + t * T.xz, seabed.albedo_depth.a);
   t = max(P0.y + depth, 0.0) / max(-T.y, 1e-4);
   vec3 P = P0 + t * T;
   // Derivatives in uniform control flow, before any pixel leaves.
@@ -65,14 +53,8 @@ vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N, vec3 L) {
   if (seabed.absorption_enabled.a < 0.5 || T.y > -1e-4 || depth >= OCEAN_RENDER_DEEP_M)
     return body;
   vec3 a = seabed.absorption_enabled.rgb;
-  // Light on the bed (R.23): the sun refracted into the water (its path 1/μ_w longer than the
-  // depth) and the sky, attenuated vertically.
-  float mu_s = max(L.y, 0.0);
-  float sin_w = sqrt(max(1.0 - mu_s * mu_s, 0.0)) / kWaterIor;
-  float mu_w = sqrt(1.0 - sin_w * sin_w);
-  vec3 irradiance = u.sun_ground * mu_s * (1.0 - fresnel_schlick(mu_s)) * exp(-a * depth / mu_w) +
-                    u.sky_ambient * exp(-a * depth);
-  vec3 bed = seabed_albedo(P.xz, footprint) * irradiance / PI;
+  // Light on the bed (R.23), as underwater.glsl computes it for the view from below.
+  vec3 bed = seabed_albedo(P.xz, footprint) * bed_irradiance(depth) / PI;
   vec3 view = exp(-a * t);
   return body * (1.0 - view * exp(-a * depth)) + bed * view;
 }

@@ -17,7 +17,7 @@ void main() {
   // A ray that meets no surface lies in the water all along when it ends under the sea: the
   // pixel looks into the depth (R.50, R.51).
   if (ray_stays_in_water(v)) {
-    colour = vec4(water_path_radiance(eye_depth(), v), 1.0);
+    colour = vec4(seen_under_water(u.camera_pos_m, v), 1.0);
     return;
   }
   vec3 c = sky_radiance(v);

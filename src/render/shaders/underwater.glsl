@@ -112,6 +112,44 @@ vec3 water_fog(vec3 radiance, float r, vec3 v) {
   return radiance * t + water_path_radiance(eye_depth(), -v) * (1.0 - t);
 }
 
+// The bed's depth below the mean sea level at xz, m (R.52): the bathymetry's where the damping
+// grid (R.24) covers the point, `flat_depth_m` elsewhere.
+float bed_depth_at(vec2 xz, float flat_depth_m) {
+  if (u.damping.resolution > 0.0) {
+    vec2 uv = (xz - u.damping.origin_m) / u.damping.size_m;
+    if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))))
+      return textureLod(damping_map, vec3(uv, 2.0), 0.0).x;
+  }
+  return flat_depth_m;
+}
+
+// Irradiance on a bed `depth_m` down (R.23): the sun refracted into the water (its path 1/μ_w
+// longer than the depth) and the sky, attenuated vertically.
+vec3 bed_irradiance(float depth_m) {
+  vec3 a = u.underwater.absorption_per_m;
+  float mu_s = max(u.sun_dir.y, 0.0);
+  float sin_w = sqrt(max(1.0 - mu_s * mu_s, 0.0)) / kUnderwaterIor;
+  float mu_w = sqrt(1.0 - sin_w * sin_w);
+  return u.sun_ground * mu_s * (1.0 - fresnel_schlick(mu_s)) * exp(-a * depth_m / mu_w) +
+         u.sky_ambient * exp(-a * depth_m);
+}
+
+// What a ray from `eye` under the sea along v, one that meets no surface, sees (R.51, R.52): the
+// seabed where it reaches one (uniform albedo: the sand's ripples are left out), through the
+// water's fog, or the water's own light.
+vec3 seen_under_water(vec3 eye, vec3 v) {
+  vec3 deep = water_path_radiance(eye_depth(), v);
+  if (u.underwater.bed_enabled < 0.5 || v.y > -1e-4) return deep;
+  float flat_depth = u.underwater.bed_albedo_depth.a;
+  float depth = bed_depth_at(eye.xz, flat_depth);
+  float t = max(eye.y + depth, 0.0) / -v.y;
+  depth = bed_depth_at(eye.xz + t * v.xz, flat_depth);  // once more where it lands
+  t = max(eye.y + depth, 0.0) / -v.y;
+  if (depth >= OCEAN_RENDER_DEEP_M) return deep;
+  vec3 bed = u.underwater.bed_albedo_depth.rgb * bed_irradiance(depth) / PI;
+  return water_fog(bed, t, -v);
+}
+
 // The underside of the surface at P seen from the camera below (R.50): N the surface's upward
 // normal, V towards the camera. The ray from the water refracts into the air when it meets the
 // surface within the critical angle (Snell's window), carrying the sky's radiance times
@@ -121,8 +159,8 @@ vec3 underside_radiance(vec3 P, vec3 N, vec3 V, float foam) {
   float cos_i = dot(V, n_water);
   if (cos_i < 1e-3) n_water = normalize(n_water + (1e-3 - cos_i) * V);  // bent back, as above
   vec3 T = refract(-V, n_water, kUnderwaterIor);
-  // Total internal reflection: the water below, mirrored.
-  vec3 depth_light = water_path_radiance(0.0, reflect(-V, n_water));
+  // Total internal reflection: the water below, or the seabed, mirrored.
+  vec3 depth_light = seen_under_water(P, reflect(-V, n_water));
   vec3 c = depth_light;
   if (dot(T, T) > 0.0) {
     // Fresnel is the same both ways through an interface; Schlick's form takes the air side's
