@@ -163,4 +163,15 @@ TEST(Underwater, TheBedBelowShowsThroughTheWatersFog) {
   }
 }
 
+TEST(Underwater, RefusesABadScattering) {
+  for (const double b : {-0.1, 11.0, std::numeric_limits<double>::quiet_NaN()}) {
+    View v;
+    v.underwater.scattering_per_m = b;
+    const ocean::Status s = validate(v);
+    EXPECT_EQ(s.code(), ocean::ErrorCode::invalid_argument) << b;
+    EXPECT_NE(s.message().find("scattering_per_m"), std::string::npos) << s.message();
+  }
+  EXPECT_TRUE(validate(View{}).ok());
+}
+
 }  // namespace
