@@ -9,6 +9,8 @@
 namespace ocean::cli {
 
 namespace {
+// How deep --camera may dive, m: far below, the water is the same dark fog everywhere.
+constexpr double kDeepestCamera_m = 1000.0;
 constexpr NumberOption<double> kFov{
     .flag = "--fov", .accept = Accept::in_range, .lo = 1.0, .hi = 170.0};
 constexpr NumberOption<double> kFarFieldRange{.flag = "--far-field-range",
@@ -95,9 +97,11 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
               .aspect = w.value() / h.value(),
               .near_m = std::max(0.2, 0.005 * altitude),
               .far_m = std::max(2.0e5, 1.5 * horizon)};
-  if (eye.value()[1] <= 0.0 && !f.sphere.enabled)  // on a sphere: parse_sphere_flags checks
+  // Below the surface the camera sees the underside of the waves (docs/rendering.md R.50); on a
+  // sphere parse_sphere_flags checks the camera.
+  if (eye.value()[1] < -kDeepestCamera_m && !f.sphere.enabled)
     return invalid_argument("--camera = " + excerpt(f.camera) +
-                            ": the camera must be above the sea (Y > 0)");
+                            ": the camera must be at most 1000 m below the sea (Y >= -1000)");
   if (Status s = lod::validate(v.camera); !s.ok())
     return invalid_argument("--camera/--target: " + s.message());
   Result<lod::QualityPreset> preset = lod::parse_preset(f.quality);

@@ -26,6 +26,7 @@
 #include "ocean/lod.hpp"
 #include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
+#include "ocean/underwater.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
 
@@ -116,6 +117,8 @@ struct View {
   Seabed seabed;
   /// The sea on a sphere of radius planet_radius_m (R.30–R.38); off by default.
   SphereView sphere;
+  /// The water seen from a camera below the surface (R.50–R.52); absorption is seabed's.
+  Underwater underwater;
 };
 Status validate(const View& view);
 /// invalid_argument naming the field for a latitude outside [−90, 90], a non-finite longitude,

@@ -1,5 +1,6 @@
 // The renderer's samplers and descriptors: one set for the scene (frame uniforms, displacement
-// array, normal/foam array with its mips, the sky-view table, the local layer, the damping) and one
+// array, normal/foam array with its mips, the sky-view table, the local layer, the damping, the
+// objects' reflection, written by reflection.cpp) and one
 // for the tone map (the HDR image). Binding numbers: shaders/render_shared.h.
 #include "state.hpp"
 
@@ -91,16 +92,20 @@ void write_scene_images(Renderer::State& st) {
   vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
 }
 
-void write_tonemap_image(Renderer::State& st) {
-  const VkDescriptorImageInfo image{st.hdr_sampler, st.hdr.view,
-                                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
+void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
+                          VkImageView view) {
+  const VkDescriptorImageInfo image{st.hdr_sampler, view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                   .dstSet = st.tonemap_set,
-                                   .dstBinding = OCEAN_RENDER_BINDING_HDR,
+                                   .dstSet = set,
+                                   .dstBinding = binding,
                                    .descriptorCount = 1,
                                    .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                    .pImageInfo = &image};
   vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
+}
+
+void write_tonemap_image(Renderer::State& st) {
+  write_rendered_image(st, st.tonemap_set, OCEAN_RENDER_BINDING_HDR, st.hdr.view);
 }
 
 Status create_descriptors(Renderer::State& st) {
@@ -136,7 +141,9 @@ Status create_descriptors(Renderer::State& st) {
       {OCEAN_RENDER_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
        VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
       {OCEAN_RENDER_BINDING_LOCAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr},
-      {OCEAN_RENDER_BINDING_DAMPING, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr}};
+      {OCEAN_RENDER_BINDING_DAMPING, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr},
+      {OCEAN_RENDER_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
   const VkDescriptorSetLayoutCreateInfo scene_info{
       .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
       .bindingCount = OCEAN_RENDER_SCENE_BINDINGS,
@@ -159,7 +166,7 @@ Status create_descriptors(Renderer::State& st) {
       !s.ok())
     return s;
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 7}};
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
                                              .maxSets = 2,
                                              .poolSizeCount = 2,

@@ -117,7 +117,7 @@ void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
   vkCmdPushConstants(cmd, st.scene_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                      sizeof(sky_push), &sky_push);
   vkCmdDraw(cmd, pipelines.sky_vertices, 1, 0, 0);
-  stats.draw_calls = 1;
+  ++stats.draw_calls;
   if (view.sphere.enabled) {  // the sea on a sphere (R.30–R.38) instead of the flat patches
     draw_sphere(st, cmd, stats);
   } else {
@@ -213,6 +213,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   fill_uniforms(st, view, vp, u);
   fill_origin_uniforms(st, view, u);
   fill_environment_uniforms(st, view, u);
+  fill_underwater_uniforms(st, view, u);
   if (view.sphere.enabled)  // the sea on a sphere (R.30–R.38): its selection, uniforms and vp
     if (Status s = prepare_sphere(st, view, vp, u); !s.ok()) return s;
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
@@ -222,6 +223,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
     sky_push.inverse_view_proj.m[i] = static_cast<float>(inv[static_cast<std::size_t>(i)]);
 
   begin_frame(st, cmd);
+  record_reflection(st, cmd, view, stats_);  // the objects mirrored in the sea (R.53)
   begin_scene(st, cmd, st.hdr, st.depth, 0);
   record_scene(st, cmd, view,
                {.sky = st.sky, .ocean = view.debug == DebugView::wireframe ? st.wire : st.ocean},

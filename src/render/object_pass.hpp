@@ -31,9 +31,15 @@ Result<VkPipeline> make_object_pipeline(Renderer::State& st, std::span<const std
                                         std::uint32_t view_mask);
 // Draws view.objects (mesh indices checked by validate_objects) inside the HDR pass, whose
 // viewport and scene set are bound, with `pipeline` (null: the mono one). Returns the draws and
-// triangles added.
+// triangles added. With `mirrored`, the objects mirrored in y = 0 for the reflection target (R.53).
 void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats,
-                    VkPipeline pipeline = VK_NULL_HANDLE);
+                    VkPipeline pipeline = VK_NULL_HANDLE, bool mirrored = false);
+// reflection.cpp (R.53): the reflection target sized for the picture (half its resolution while
+// there are meshes, 1×1 otherwise) and written into the scene set; and its pass, recorded
+// outside any render pass before the HDR pass.
+Status size_reflection(Renderer::State& st);
+void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& view,
+                       RenderStats& stats);
 // invalid_argument for an instance whose mesh index is not below the meshes set.
 Status validate_objects(const Renderer::State& st, const View& view);
 // seabed.cpp: pushes view.seabed (R.22–R.23) for the ocean pipeline, which must be bound.

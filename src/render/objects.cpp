@@ -89,7 +89,7 @@ Status Renderer::set_meshes(std::span<const Mesh> meshes) {
     b.material = m.material;
     st.objects.meshes.push_back(b);
   }
-  return {};
+  return size_reflection(st);  // the objects' reflections (R.53)
 }
 
 Status validate_objects(const Renderer::State& st, const View& view) {
@@ -102,7 +102,7 @@ Status validate_objects(const Renderer::State& st, const View& view) {
 }
 
 void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats,
-                    VkPipeline pipeline) {
+                    VkPipeline pipeline, bool mirrored) {
   if (view.objects.empty()) return;
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
                     pipeline != VK_NULL_HANDLE ? pipeline : st.objects.pipeline);
@@ -122,7 +122,8 @@ void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, 
                           static_cast<float>(m.material.base_colour[1]),
                           static_cast<float>(m.material.base_colour[2]),
                           static_cast<float>(m.material.metallic)};
-    push.roughness_pad = {static_cast<float>(m.material.roughness), 0.0f, 0.0f, 0.0f};
+    push.roughness_pad = {static_cast<float>(m.material.roughness), mirrored ? 1.0f : 0.0f, 0.0f,
+                          0.0f};
     vkCmdPushConstants(cmd, st.objects.layout,
                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
                        &push);

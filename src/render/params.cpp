@@ -62,6 +62,7 @@ Status validate(const View& view) {
   if (Status s = validate(view.seabed); !s.ok()) return s;
   if (view.sphere.enabled)
     if (Status s = validate_sphere(view); !s.ok()) return s;
+  if (Status s = validate(view.underwater); !s.ok()) return s;
   return validate(view.shading);
 }
 

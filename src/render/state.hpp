@@ -115,6 +115,9 @@ struct Renderer::State {
   sphere::SphereSelection sphere_selection;
   StereoPass stereo;   // layered targets and multiview pipelines (stereo.cpp), once used
   MotionPass motion;   // motion vectors (motion.cpp), once enabled
+  // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
+  // coverage) and depth while there are meshes, 1×1 otherwise.
+  vk::Image2D reflection, reflection_depth;
 
   ~State();
   void destroy_targets();
@@ -134,6 +137,9 @@ Status create_descriptors(Renderer::State& st);
 void write_scene_images(Renderer::State& st);
 // The tone map's set: the HDR image.
 void write_tonemap_image(Renderer::State& st);
+// One image the renderer drew (SHADER_READ_ONLY_OPTIMAL, the HDR sampler) into a set's binding.
+void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
+                          VkImageView view);
 
 // pipelines.cpp: pipeline layouts, shader modules and the four pipelines (the wireframe one only
 // where the device has fillModeNonSolid).
@@ -191,6 +197,9 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
 // environment.cpp: FrameUniforms::environment, and the sky's irradiance from the map (R.17).
 void fill_environment_uniforms(const Renderer::State& st, const View& view,
                                shader::FrameUniforms& u);
+// underwater.cpp: FrameUniforms::underwater, the water's optics below the surface (R.50–R.52).
+void fill_underwater_uniforms(const Renderer::State& st, const View& view,
+                              shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
 

@@ -140,6 +140,7 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
   fill_uniforms(st, view, lod::view_projection(relative_camera(view.camera, sel)), u);
   fill_origin_uniforms(st, view, u);
   fill_environment_uniforms(st, view, u);
+  fill_underwater_uniforms(st, view, u);
   for (std::size_t e = 0; e < 2; ++e) {
     const lod::Camera eye = relative_camera(eyes.value()[e], sel);
     const lod::Mat4 vp = lod::view_projection(eye);
@@ -152,6 +153,8 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
 
   begin_frame(st, cmd);
+  // The objects mirrored in the sea (R.53) from the head's pose, shared by both eyes.
+  record_reflection(st, cmd, view, stats_);
   const StereoPass& sp = st.stereo;
   begin_scene(st, cmd, sp.hdr, sp.depth, kBothEyes);
   record_scene(st, cmd, view,

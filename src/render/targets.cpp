@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <string>
 
+#include "object_pass.hpp"
 #include "ocean/memory_budget.hpp"
 #include "state.hpp"
 
@@ -50,6 +51,8 @@ void Renderer::State::destroy_targets() {
   vk::destroy_buffer(*ctx, readback);
   destroy_stereo(*this, false);
   destroy_motion(*this, false);
+  vk::destroy_image(*ctx, reflection);
+  vk::destroy_image(*ctx, reflection_depth);
 }
 
 void Renderer::State::destroy_sim_images() {
@@ -125,7 +128,7 @@ Status create_targets(Renderer::State& st, int width, int height) {
   if (!rb.ok()) return rb.status();
   st.readback = rb.value();
   write_tonemap_image(st);
-  return {};
+  return size_reflection(st);  // its size follows the picture's (R.53)
 }
 
 }  // namespace ocean::render

@@ -124,7 +124,7 @@ TEST(NamesCli, HugeRenderValuesComeBackAsOneShortLine) {
            {"render", "--fps", kHuge},
            {"render", "--width", kHuge},
            {"render", "--camera", kHuge},
-           {"render", "--camera", "0,-1." + std::string(100000, '0') + ",0"},
+           {"render", "--camera", "0,-2000." + std::string(100000, '0') + ",0"},
            {"render", "--sky", kHuge},
            {"render", "--quality", kHuge},
            {"render", "--view", kHuge},

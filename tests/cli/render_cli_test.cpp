@@ -90,7 +90,7 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --width 0", "--width");
   ocean_test::expect_usage_error("render --height -5", "--height");
   ocean_test::expect_usage_error("render --out picture.jpg", ".png, .exr or .mp4");
-  ocean_test::expect_usage_error("render --camera 0,-3,0", "above the sea");
+  ocean_test::expect_usage_error("render --camera 0,-3000,0", "at most 1000 m below the sea");
   ocean_test::expect_usage_error("render --camera 1,2", "--camera");
   ocean_test::expect_usage_error("render --quality extreme", "--quality");
   ocean_test::expect_usage_error("render --view xray", "--view");

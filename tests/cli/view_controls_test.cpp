@@ -1,6 +1,6 @@
 // The window-free parts of `ocean view`: the free camera's conventions (yaw from +x towards +z,
-// right = forward × up, never below 0.5 m), the panel's sea controls ⇄ SimulationConfig, and
-// the frame-time median.
+// right = forward × up, never below 1000 m under the sea), the panel's sea controls ⇄
+// SimulationConfig, and the frame-time median.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -59,16 +59,17 @@ TEST(FreeCamera, RightIsPlusZAtYawZeroAndTheMouseTurnsThatWay) {
   EXPECT_EQ(still.yaw_rad(), 0.0);
 }
 
-TEST(FreeCamera, StaysAboveTheWaterAndNeverFlips) {
-  FreeCamera cam({0, 0.1, 0}, {10, 0.1, 0});
-  EXPECT_EQ(cam.position().y, 0.5);
+TEST(FreeCamera, DivesNoDeeperThanItsFloorAndNeverFlips) {
+  FreeCamera cam({0, -3.0, 0}, {10, -3.0, 0});
+  EXPECT_EQ(cam.position().y, -3.0);  // under the sea: the view from below (R.50)
   cam.update({.down = true, .fast = true}, 100.0);
-  EXPECT_EQ(cam.position().y, 0.5);
+  EXPECT_EQ(cam.position().y, cam.params().min_height_m);
+  EXPECT_EQ(cam.params().min_height_m, -1000.0);
   cam.update({.looking = true, .mouse_dy_px = -1e6}, 0.016);
   EXPECT_LE(cam.pitch_rad(), cam.params().max_pitch_rad);
   EXPECT_TRUE(ocean::lod::validate(cam.camera(1.0, 1.0)).ok());
   cam.update({.forward = true}, 10.0);  // straight up: moves up, not sideways much
-  EXPECT_GT(cam.position().y, 100.0);
+  EXPECT_GT(cam.position().y, -1000.0 + 100.0);
 }
 
 TEST(SeaControls, RoundTripTheDefaultConfiguration) {

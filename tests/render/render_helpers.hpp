@@ -1,6 +1,6 @@
-// What the renderer's and the scene's tests share: a validated graphics context, a small sea, an
-// eye-level view, the difference of two sRGB pictures and a renderer whose validation layer must
-// stay silent.
+// What the renderer's and the scene's tests share: a validated graphics context and a rig that
+// checks the validation layer stayed silent, a small sea, an eye-level view and the difference of
+// two sRGB pictures.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -23,6 +23,22 @@ inline std::shared_ptr<vk::Context> graphics_context() {
   if (!ctx.ok()) return nullptr;
   return std::shared_ptr<vk::Context>(std::move(ctx).value());
 }
+
+/// A context, a simulator and a renderer; when it goes, the validation layer must have stayed
+/// silent.
+struct ValidatedRig {
+  std::shared_ptr<vk::Context> ctx;
+  std::unique_ptr<Simulator> sim;
+  std::unique_ptr<Renderer> renderer;
+  ValidatedRig() = default;
+  ValidatedRig(const ValidatedRig&) = delete;
+  ValidatedRig& operator=(const ValidatedRig&) = delete;
+  ~ValidatedRig() {
+    if (ctx != nullptr) {
+      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
+    }
+  }
+};
 
 /// Two cascades of a 12 m/s wind sea at N = 64.
 inline SimulationConfig small_config() {
@@ -65,20 +81,5 @@ inline PictureDifference difference(const std::vector<std::uint8_t>& a,
   d.mean = a.empty() ? 0.0 : sum / static_cast<double>(a.size());
   return d;
 }
-
-/// A validated context and a renderer on it; at destruction, expects that the validation layer
-/// reported nothing.
-struct ValidatedRig {
-  std::shared_ptr<vk::Context> ctx;
-  std::unique_ptr<Renderer> renderer;
-  ValidatedRig() = default;
-  ValidatedRig(const ValidatedRig&) = delete;
-  ValidatedRig& operator=(const ValidatedRig&) = delete;
-  ~ValidatedRig() {
-    if (ctx != nullptr) {
-      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
-    }
-  }
-};
 
 }  // namespace ocean::render::testing

@@ -218,4 +218,38 @@ TEST(Seabed, ContrastFadesWithDepthAsBeerLambertStates) {
   EXPECT_GT(c2[2] / c1[2], 0.9);
 }
 
+// A bathymetry under the flat bed (R.52): where its grid covers the water the bed lies at the
+// map's depth — the picture of a 6 m bed under a grid that says 2 m is the picture of a flat 2 m
+// bed, shallow water's tint (R.24) not added twice — and outside the grid at the flat depth.
+TEST(Seabed, TheBathymetrysDepthReplacesTheFlatBeds) {
+  auto rig = make_rig();
+  if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const std::vector<float> flat2 = draw(*rig, straight_down(2.0, 1.0));
+  const std::vector<float> flat6 = draw(*rig, straight_down(6.0, 1.0));
+  constexpr int kN = 4;
+  const std::vector<float> weights(kDampingBands * kN * kN, 1.0f), depth(kN * kN, 2.0f);
+  const auto mean_difference = [](const std::vector<float>& a, const std::vector<float>& b) {
+    double sum = 0.0, level = 0.0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      if (i % 4 == 3) continue;
+      sum += std::abs(a[i] - b[i]);
+      level += std::abs(b[i]);
+    }
+    return sum / level;  // relative to the reference's mean
+  };
+  ASSERT_GT(mean_difference(flat6, flat2), 0.2);  // the two depths look apart
+  // The grid over the whole picture, then a grid far away.
+  for (const double origin : {-100.0, 1000.0}) {
+    ASSERT_TRUE(rig->renderer
+                    ->set_damping({.origin_m = {origin, origin},
+                                   .size_m = 200.0,
+                                   .resolution = kN,
+                                   .band_weights = weights,
+                                   .depth_m = depth})
+                    .ok());
+    const std::vector<float> mapped = draw(*rig, straight_down(6.0, 1.0));
+    EXPECT_LT(mean_difference(mapped, origin < 0.0 ? flat2 : flat6), 0.01) << origin;
+  }
+}
+
 }  // namespace

@@ -439,8 +439,9 @@ Command add_render_command(CLI::App& app) {
                     "let the objects float: simulate them as rigid bodies on the waves from t = 0 "
                     "to the picture's time (glTF meshes must be closed)");
   add_option(*command, kSeabed, o->seabed,
-             "a flat sandy seabed this far below the sea level, m, seen through clear water "
-             "(refraction, absorption of pure water)");
+             "a sandy seabed this far below the sea level, m, seen through clear water "
+             "(refraction, absorption of pure water); with --bathymetry at the map's depth "
+             "where the map covers it");
   add_wave_flags(*command, o->waves);
   add_stereo_flags(*command, o->stereo);
   command->add_option("--motion-vectors", o->motion_vectors,

@@ -26,8 +26,10 @@ struct FreeCameraParams {
   double speed_mps = 15.0;          ///< movement speed without Shift
   double fast_factor = 6.0;         ///< Shift multiplies the speed
   double turn_rad_per_px = 0.0035;  ///< mouse sensitivity
-  double min_height_m = 0.5;        ///< the eye never goes below this height above y = 0
-  double max_pitch_rad = 1.55;      ///< |pitch| limit, just under π/2 (no flip at the pole)
+  /// The eye never goes below this height above y = 0: it may dive under the sea and see the
+  /// waves from below (docs/rendering.md R.50), as deep as `ocean render --camera` allows.
+  double min_height_m = -1000.0;
+  double max_pitch_rad = 1.55;  ///< |pitch| limit, just under π/2 (no flip at the pole)
 };
 
 class FreeCamera {

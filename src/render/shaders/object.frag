@@ -8,7 +8,7 @@
 //
 // Sources: Burley (2012) "Physically-based shading at Disney" and the glTF 2.0 specification's
 // Appendix B (the metallic-roughness BRDF, α = roughness²); Walter et al. (2007) (GGX).
-#include "render_common.glsl"
+#include "underwater.glsl"
 #include "object_shared.h"
 
 layout(push_constant, std430) uniform Push {
@@ -29,7 +29,12 @@ void main() {
   float metallic = object.base_metallic.a;
   float alpha = object.roughness_pad.x * object.roughness_pad.x;
   float alpha_sq = max(alpha * alpha, 1e-4);
-  vec3 to_camera = eye_position() - world_pos;
+  // Mirrored (R.53): the object as the eye's mirror image below the sea level sees it, only the
+  // part above the water, unfogged (the water's pixel is fogged), coverage in alpha.
+  bool mirrored = object.roughness_pad.y > 0.5;
+  if (mirrored && world_pos.y < 0.0) discard;
+  vec3 eye = mirrored ? eye_position() * vec3(1.0, -1.0, 1.0) : eye_position();
+  vec3 to_camera = eye - world_pos;
   float distance_m = length(to_camera);
   vec3 V = to_camera / distance_m;
   vec3 N = normalize(world_normal);
@@ -60,6 +65,11 @@ void main() {
   vec3 sky_specular = F_env * env * mix(1.0, 0.3, object.roughness_pad.x);
   vec3 c = sun + (1.0 - F_env) * sky_diffuse + sky_specular;
 
-  c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+  if (!mirrored) {
+    if (under_surface(world_pos) && under_surface(u.camera_pos_m))  // both in the water (R.51)
+      c = water_fog(c, distance_m, V);
+    else
+      c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+  }
   colour = vec4(c, 1.0);
 }

@@ -17,5 +17,8 @@ void main() {
   vec4 w = object.model * vec4(position, 1.0);
   world_pos = w.xyz;
   world_normal = transpose(inverse(mat3(object.model))) * normal;
+  // The reflection pass (R.53) draws the object's mirror image in the sea level, shaded where it
+  // really is.
+  if (object.roughness_pad.y > 0.5) w.y = -w.y;
   gl_Position = eye_view_proj() * w;
 }

@@ -17,7 +17,8 @@ namespace ocean::render::shader {
 struct ObjectPush {
   mat4 model;          // mesh frame → world, column-major
   vec4 base_metallic;  // linear base colour (rgb) and metallic (a)
-  vec4 roughness_pad;  // perceptual roughness (x); y, z, w unused
+  vec4
+      roughness_pad;  // perceptual roughness (x); 1: drawn mirrored in y = 0 (y, R.53); z, w unused
 };
 
 #ifdef __cplusplus

@@ -16,6 +16,21 @@
 #include "local_layer.glsl"
 #include "damping.glsl"
 #include "seabed.glsl"
+#include "underwater.glsl"
+
+// The objects mirrored in the sea level (R.53): colour, coverage in alpha.
+layout(set = 0, binding = OCEAN_RENDER_BINDING_REFLECTION) uniform sampler2D reflection_map;
+
+// The reflection target's texel where the reflected ray R from the water point P shows an
+// object: the ray followed for the eye's distance r to P, mirrored in y = 0 and projected. On
+// calm water this is P's own pixel, exactly the mirror's geometry; waves move it with R.
+vec4 object_reflection(vec3 P, vec3 R, float r) {
+  vec3 X = P + r * R;
+  vec4 clip = u.view_proj * vec4(X.x, -X.y, X.z, 1.0);
+  if (clip.w <= 0.0) return vec4(0.0);
+  vec2 ndc = clip.xy / clip.w;
+  return textureLod(reflection_map, vec2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y), 0.0);
+}
 
 layout(location = 0) in vec2 world_xz;
 layout(location = 1) in vec3 world_pos;
@@ -55,6 +70,7 @@ void main() {
   // variance the averaging removed (Toksvig 2005): every cascade is used at every distance and
   // the filtering alone decides how much of it is detail and how much roughness (R.5).
   vec2 dx = dFdx(world_xz), dy = dFdy(world_xz);
+  bool below = seen_from_below(world_pos);  // the camera under this surface (R.50)
   float footprint = max(length(dx), length(dy));
   float ratio = far_ratio_at(world_xz);
   vec2 blend = preserving_weights(ratio);  // (simulation, far field)
@@ -124,6 +140,7 @@ void main() {
   float distance_m = length(to_camera);
   vec3 V = to_camera / distance_m;
   vec3 L = u.sun_dir;
+  vec3 N_up = N;
   // Normals that face away from the viewer (grazing views of steep waves) are bent back.
   float n_dot_v = dot(N, V);
   if (n_dot_v < 1e-3) {
@@ -134,6 +151,8 @@ void main() {
   // Reflection of the sky (R.6).
   vec3 R = reflect(-V, N);
   vec3 env = sky_radiance(R);
+  vec4 mirrored = object_reflection(world_pos, R, distance_m);  // objects over the sky (R.53)
+  env = mirrored.rgb + (1.0 - mirrored.a) * env;
   float fresnel = fresnel_schlick(n_dot_v);
 
   // Sun specular: GGX with height-correlated Smith masking (R.7), radiance reflected = BRDF·E·cos.
@@ -153,17 +172,19 @@ void main() {
   // surface and by the sky, plus forward scattering through crests lit from behind.
   vec3 sky_e = u.sky_ambient;
   float sun_in = max(L.y, 0.0) * (1.0 - fresnel_schlick(max(L.y, 0.0)));
-  // Over shallow water the column scatters less and the seabed shows through it (R.24).
-  vec3 bottom_t = exp(-2.0 * u.damping.absorption_per_m * damping.depth_m);
+  // Over shallow water the column scatters less and the seabed shows through it (R.24); a drawn
+  // seabed takes the bathymetry's depth and shows itself instead (R.22, R.52).
+  float tint_depth = seabed.absorption_enabled.a > 0.5 ? OCEAN_RENDER_DEEP_M : damping.depth_m;
+  vec3 bottom_t = exp(-2.0 * u.damping.absorption_per_m * tint_depth);
   vec3 body = u.water_colour * (sun_e * sun_in + sky_e) / PI * (1.0 - bottom_t) +
-              seabed_radiance(damping.depth_m, sun_e * sun_in + sky_e);
+              seabed_radiance(tint_depth, sun_e * sun_in + sky_e);
   float height = world_pos.y + curvature_drop(world_xz);  // above the mean level (R.15)
   float crest = clamp(height / max(0.5 * u.hs_m, 0.05), 0.0, 2.0);  // height over Hs/2
   float g = 0.6, mu = dot(-L, V), hg_d = 1.0 + g * g - 2.0 * g * mu;
   float forward = (1.0 - g * g) / (4.0 * PI * hg_d * sqrt(hg_d));  // Henyey–Greenstein
   vec3 through = u.crest_scatter * u.water_colour * sun_e * forward * crest *
                  pow(clamp(0.5 - 0.5 * dot(L, N), 0.0, 1.0), 2.0);
-  vec3 s = through_water(body + through, world_pos, V, N, L);  // a seabed, if any (R.22)
+  vec3 s = through_water(body + through, world_pos, V, N);  // a seabed, if any (R.22)
 
   // Mitchell 2005, eq. 5: s·(1 − r) + r·(env + sun).
   vec3 c = s * (1.0 - fresnel) + fresnel * (env + sun);
@@ -172,8 +193,11 @@ void main() {
   vec3 foam_colour = 0.85 * u.foam_brightness * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
 
-  // Horizon fog (Paleologue 2024, R.8).
-  c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+  if (below) {  // the underside, through the water between it and the camera (R.50, R.51)
+    c = water_fog(underside_radiance(world_pos, N_up, V, foam), distance_m, V);
+  } else {  // horizon fog (Paleologue 2024, R.8)
+    c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+  }
 
   if (u.debug_view == OCEAN_RENDER_DEBUG_LOD_COLOURS) {
     vec3 lc = level < 9u ? kLevelColours[level] : vec3(0.5);

@@ -44,7 +44,8 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_ENVIRONMENT 4   // sampler2D RGBA32F equirectangular radiance (R.17)
 #define OCEAN_RENDER_BINDING_LOCAL 5         // sampler2D RGBA16F (Dx, h, Dz, 0): the local layer
 #define OCEAN_RENDER_BINDING_DAMPING 6       // sampler2DArray RGBA16F: band weights 0-3, 4-7; depth
-#define OCEAN_RENDER_SCENE_BINDINGS 7
+#define OCEAN_RENDER_BINDING_REFLECTION 7    // sampler2D RGBA16F: objects mirrored in y = 0 (R.53)
+#define OCEAN_RENDER_SCENE_BINDINGS 8
 // The deepest water the damping texture holds, m: deeper is deep water for every band.
 #define OCEAN_RENDER_DEEP_M 1000.0
 // Set 0 of the tone-map pipeline.
@@ -103,9 +104,9 @@ struct LocalLayerUniforms {
 // The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.24): per-band weights
 // and the depth baked on a square world grid; weight 1 and deep water outside it.
 struct DampingUniforms {
-  vec2 origin_m;     // (x0, z0)
-  float size_m;      // side
-  float resolution;  // N cells per side; 0: no damping
+  vec2 origin_m;          // (x0, z0)
+  float size_m;           // side
+  float resolution;       // N cells per side; 0: no damping
   vec3 absorption_per_m;  // pure water's absorption, RGB (R.24)
   float damping_pad;
   vec3 bottom_albedo;  // the seabed's reflectance seen through shallow water, RGB
@@ -128,6 +129,17 @@ struct EyeUniforms {
   mat4 view_proj;          // the eye's lod::view_projection relative to the origin (R.16)
   mat4 inverse_view_proj;  // its inverse (the sky's view rays)
   vec4 camera_pos_m;       // the eye relative to the origin; w unused
+};
+
+// The water below the surface (docs/rendering.md R.50–R.52): its absorption (the seabed's, pure
+// water) and scattering, which make the fog a camera under the sea looks through.
+struct UnderwaterUniforms {
+  vec3 absorption_per_m;   // a per channel, RGB
+  float scattering_per_m;  // b, every channel
+  float skirt_extent_m;    // E: the outer half-extent of the drawn sea, from the camera
+  float bed_enabled;       // 1: View::seabed is drawn, seen from below too (R.52)
+  float underwater_pad1, underwater_pad2;
+  vec4 bed_albedo_depth;  // the seabed's albedo (rgb) and flat depth, m (a)
 };
 
 // Everything per frame, one uniform buffer (std140).
@@ -165,6 +177,7 @@ struct FrameUniforms {
   DampingUniforms damping;
   SphereUniforms sphere;
   EyeUniforms eyes[2];  // stereo (OCEAN_MULTIVIEW shaders) only: eye 0 left, 1 right
+  UnderwaterUniforms underwater;
 };
 
 // Push constants of the sky pass (std430).
@@ -204,7 +217,8 @@ static_assert(offsetof(FrameUniforms, sphere) == 384 + 32 * OCEAN_RENDER_MAX_CAS
 static_assert(sizeof(SphereUniforms) == 64);
 static_assert(sizeof(EyeUniforms) == 144);
 static_assert(offsetof(FrameUniforms, eyes) == 448 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 736 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, underwater) == 736 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 784 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

@@ -7,8 +7,8 @@
 #ifndef OCEAN_SEABED_GLSL
 #define OCEAN_SEABED_GLSL
 
-#include "render_common.glsl"
 #include "seabed_shared.h"
+#include "underwater.glsl"
 
 layout(push_constant, std430) uniform SeabedBlock {
   SeabedPush seabed;
@@ -38,24 +38,23 @@ vec3 seabed_albedo(vec2 xz, vec2 footprint) {
 
 // The colour under the surface: `body` (R∞, the deep water's scattered light, R.11) over the bed
 // where the refracted view ray reaches it. P0 the surface point, V towards the camera, N the
-// surface normal, L towards the sun.
-vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N, vec3 L) {
+// surface normal.
+vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N) {
   vec3 T = refract(-V, N, 1.0 / kWaterIor);
-  float depth = seabed.albedo_depth.a;
-  float t = (P0.y + depth) / max(-T.y, 1e-4);  // path length in the water, m (R.22)
+  // Path length in the water to the bed, m (R.22); on a bathymetry the depth where the ray
+  // lands, found by one more step from the depth above it (R.52). Dry land: the bed at once.
+  float depth = bed_depth_at(P0.xz, seabed.albedo_depth.a);
+  float t = max(P0.y + depth, 0.0) / max(-T.y, 1e-4);
+  depth = bed_depth_at(P0.xz + t * T.xz, seabed.albedo_depth.a);
+  t = max(P0.y + depth, 0.0) / max(-T.y, 1e-4);
   vec3 P = P0 + t * T;
   // Derivatives in uniform control flow, before any pixel leaves.
   vec2 footprint = max(abs(dFdx(P.xz)), abs(dFdy(P.xz)));
-  if (seabed.absorption_enabled.a < 0.5 || T.y > -1e-4 || P0.y <= -depth) return body;
+  if (seabed.absorption_enabled.a < 0.5 || T.y > -1e-4 || depth >= OCEAN_RENDER_DEEP_M)
+    return body;
   vec3 a = seabed.absorption_enabled.rgb;
-  // Light on the bed (R.23): the sun refracted into the water (its path 1/μ_w longer than the
-  // depth) and the sky, attenuated vertically.
-  float mu_s = max(L.y, 0.0);
-  float sin_w = sqrt(max(1.0 - mu_s * mu_s, 0.0)) / kWaterIor;
-  float mu_w = sqrt(1.0 - sin_w * sin_w);
-  vec3 irradiance = u.sun_ground * mu_s * (1.0 - fresnel_schlick(mu_s)) * exp(-a * depth / mu_w) +
-                    u.sky_ambient * exp(-a * depth);
-  vec3 bed = seabed_albedo(P.xz, footprint) * irradiance / PI;
+  // Light on the bed (R.23), as underwater.glsl computes it for the view from below.
+  vec3 bed = seabed_albedo(P.xz, footprint) * bed_irradiance(depth) / PI;
   vec3 view = exp(-a * t);
   return body * (1.0 - view * exp(-a * depth)) + bed * view;
 }

@@ -1,7 +1,7 @@
 #version 450
 // The sky behind the ocean: sky radiance along each pixel's view ray and the sun's disc
 // (docs/rendering.md R.1–R.4).
-#include "render_common.glsl"
+#include "underwater.glsl"
 
 layout(location = 0) in vec2 ndc;
 #ifdef OCEAN_MULTIVIEW
@@ -21,6 +21,12 @@ void main() {
   vec4 far_point = push.inverse_view_proj * vec4(ndc, 1.0, 1.0);
 #endif
   vec3 v = normalize(far_point.xyz / far_point.w - eye_position());
+  // A ray that meets no surface lies in the water all along when it ends under the sea: the
+  // pixel looks into the depth (R.50, R.51).
+  if (ray_stays_in_water(v)) {
+    colour = vec4(seen_under_water(eye_position(), v), 1.0);
+    return;
+  }
   vec3 c = sky_radiance(v);
   // Sun disc, angular radius 0.27°, limb-darkened edge over a pixel or so.
   float cos_sun = dot(v, u.sun_dir);
