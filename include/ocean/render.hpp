@@ -26,6 +26,7 @@
 #include "ocean/lod.hpp"
 #include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
+#include "ocean/tessellation.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
 
@@ -100,6 +101,9 @@ struct View {
   std::vector<ObjectInstance> objects;
   /// A seabed seen through the water (R.22–R.23); off by default.
   Seabed seabed;
+  /// The mesh: the quadtree (default) or seed 003's tessellated base grid (R.40–R.42), which
+  /// needs a device with tessellation shaders (`unsupported` from record() otherwise).
+  TessellationParams tessellation;
 };
 Status validate(const View& view);
 

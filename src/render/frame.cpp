@@ -14,6 +14,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   if (Status s = validate_objects(st, view); !s.ok()) return s;
   if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
+  if (Status s = check_tessellation(*st.ctx, view.tessellation); !s.ok()) return s;
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
   // LOD selection (Aebi, VR Ocean, §5) with culling boxes that include the waves' reach.
   const auto t0 = std::chrono::steady_clock::now();
@@ -127,11 +128,16 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
   vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
-  for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (Aebi, VR Ocean, eq. 70)
-    vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
-    ++stats_.draw_calls;
-    stats_.patches += b.count;
-    stats_.triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
+  if (view.tessellation.mesh == MeshMode::tessellation) {  // R.40–R.42, tessellation.cpp
+    record_tessellated(st, cmd, view, stats_);
+  } else {
+    for (const lod::Batch& b : sel.batches) {  // ≤ 16 instanced draws (Aebi, VR Ocean, eq. 70)
+      vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0,
+                       b.first);
+      ++stats_.draw_calls;
+      stats_.patches += b.count;
+      stats_.triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
+    }
   }
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.skirt_vertices.buffer, &zero);
   vkCmdDrawIndexed(cmd, st.skirt_count, 1, st.skirt_first, 0, skirt_instance);

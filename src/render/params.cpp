@@ -60,6 +60,7 @@ Status validate(const View& view) {
       if (!std::isfinite(m))
         return invalid_argument("objects[" + std::to_string(i) + "].model is not finite");
   if (Status s = validate(view.seabed); !s.ok()) return s;
+  if (Status s = validate(view.tessellation); !s.ok()) return s;
   return validate(view.shading);
 }
 

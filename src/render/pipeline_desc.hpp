@@ -19,6 +19,8 @@ struct PipelineDesc {
   bool lines = false;
   // Another vertex input (overrides mesh_input); must outlive make_pipeline.
   const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr;
+  // Tessellation stages (both or neither): patches of one control point (tessellation.cpp).
+  VkShaderModule tesc = VK_NULL_HANDLE, tese = VK_NULL_HANDLE;
 };
 
 // A shader module owned by the state (destroyed with it).

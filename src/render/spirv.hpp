@@ -23,5 +23,8 @@ OCEAN_RENDER_SPIRV(wire_frag)
 OCEAN_RENDER_SPIRV(tonemap_frag)
 OCEAN_RENDER_SPIRV(object_vert)
 OCEAN_RENDER_SPIRV(object_frag)
+OCEAN_RENDER_SPIRV(ocean_tess_vert)
+OCEAN_RENDER_SPIRV(ocean_tesc)
+OCEAN_RENDER_SPIRV(ocean_tese)
 
 #undef OCEAN_RENDER_SPIRV

@@ -16,7 +16,7 @@ Renderer::State::~State() {
   destroy_targets();
   destroy_sim_images();
   destroy_objects(*this, true);
-  for (VkPipeline p : {sky, ocean, wire, tonemap})
+  for (VkPipeline p : {sky, ocean, wire, tonemap, tessellated, tessellated_wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
   for (VkPipelineLayout l : {scene_pipeline_layout, tonemap_pipeline_layout})
@@ -34,7 +34,8 @@ Renderer::State::~State() {
   for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler, local_sampler,
                       damping_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
-  for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices})
+  for (vk::Buffer* b :
+       {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices, &tess_cells})
     vk::destroy_buffer(*ctx, *b);
   vk::destroy_timestamps(*ctx, timestamps);
   vk::destroy_commands(*ctx, commands);

@@ -198,8 +198,8 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
   detail::read_device(*ctx, family_timestamps);
   if (!found) return unsupported("Vulkan device '" + ctx->info.name + "' has no graphics queue");
 
-  // The renderer's features: dynamic rendering (core 1.3), wireframe and anisotropic filtering
-  // where present.
+  // The renderer's features: dynamic rendering (core 1.3), wireframe, anisotropic filtering and
+  // tessellation shaders where present.
   VkPhysicalDeviceVulkan13Features features13{
       .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
   VkPhysicalDeviceFeatures2 supported{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
@@ -219,6 +219,8 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
     enabled.pNext = &enabled13;
     enabled.features.fillModeNonSolid = supported.features.fillModeNonSolid;
     enabled.features.samplerAnisotropy = supported.features.samplerAnisotropy;
+    enabled.features.tessellationShader = supported.features.tessellationShader;
+    ctx->tessellation = supported.features.tessellationShader == VK_TRUE;
     ctx->graphics = true;
     ctx->wireframe = supported.features.fillModeNonSolid == VK_TRUE;
     if (supported.features.samplerAnisotropy == VK_TRUE)

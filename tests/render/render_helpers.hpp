@@ -1,6 +1,9 @@
-// What the renderer's and the scene's tests share: a validated graphics context, a small sea, an
-// eye-level view and the difference of two sRGB pictures.
+// What the renderer's and the scene's tests share: a validated graphics context, a renderer with
+// a simulated frame uploaded, a small sea, an eye-level view and the difference of two sRGB
+// pictures.
 #pragma once
+
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
@@ -10,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "ocean/backends.hpp"
 #include "ocean/render.hpp"
 
 namespace ocean::render::testing {
@@ -19,6 +23,39 @@ inline std::shared_ptr<vk::Context> graphics_context() {
   auto ctx = vk::create_context({.validation = true, .graphics = true});
   if (!ctx.ok()) return nullptr;
   return std::shared_ptr<vk::Context>(std::move(ctx).value());
+}
+
+/// A context, a CPU simulation and a renderer on the context; on destruction, expects that the
+/// validation layer reported nothing.
+struct Rig {
+  std::shared_ptr<vk::Context> ctx;
+  std::unique_ptr<Simulator> sim;
+  std::unique_ptr<Renderer> renderer;
+  ~Rig() {
+    if (ctx != nullptr) {
+      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
+    }
+  }
+};
+/// A renderer of w × h pixels on `ctx` with the CPU backend's frame of `config` at t = 3 s
+/// uploaded; nullptr when `ctx` is or anything fails.
+inline std::unique_ptr<Rig> make_rig(std::shared_ptr<vk::Context> ctx,
+                                     const SimulationConfig& config, int w, int h) {
+  if (ctx == nullptr) return nullptr;
+  auto rig = std::make_unique<Rig>();
+  rig->ctx = std::move(ctx);
+  auto backend = make_backend("cpu");
+  if (!backend.ok()) return nullptr;
+  auto sim = Simulator::make(config, std::move(backend).value());
+  if (!sim.ok()) return nullptr;
+  rig->sim = std::move(sim).value();
+  auto r = Renderer::make(rig->ctx, {.width = w, .height = h});
+  if (!r.ok()) return nullptr;
+  rig->renderer = std::move(r).value();
+  if (!rig->renderer->configure(config).ok()) return nullptr;
+  rig->sim->step(3.0);
+  if (!rig->renderer->upload(rig->sim->frame()).ok()) return nullptr;
+  return rig;
 }
 
 /// Two cascades of a 12 m/s wind sea at N = 64.
