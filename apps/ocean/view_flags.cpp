@@ -51,6 +51,10 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
                      "equirectangular HDR OpenEXR (R, G, B; twice as wide as high) for the sky, "
                      "its reflections and the fog, scaled by the sky's brightness");
   command.add_option("--view", f.view, "shaded, lod (colours by level) or wireframe");
+  command.add_option("--mesh", f.mesh,
+                     "the sea's mesh: quadtree, or tessellation (a base grid subdivided by the "
+                     "GPU's tessellation shaders; default " +
+                         f.mesh + ")");
   command.add_option("--backend", f.backend,
                      "simulation backend: cpu, or vulkan (its images are rendered with no copy)");
   command.add_flag("--validation", f.validation,
@@ -126,12 +130,24 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
     return invalid_argument("--view = " + excerpt(f.view) + " is not a view: must be " +
                             name_list(render::kDebugViewNames, ", ", " or "));
   v.debug = debug.value();
+  Result<render::MeshMode> mesh = render::parse_mesh_mode(f.mesh);
+  if (!mesh.ok())
+    return invalid_argument("--mesh = " + excerpt(f.mesh) + " is not a mesh: must be " +
+                            name_list(render::kMeshModeNames, ", ", " or "));
+  v.tessellation.mesh = mesh.value();
   if (!f.environment.empty()) {
     Result<render::Environment> env = render::load_environment(f.environment);
     if (!env.ok()) return invalid_argument("--environment: " + env.status().message());
     scene.environment = std::make_shared<const render::Environment>(std::move(env).value());
   }
   return parse_sphere_flags(f.sphere, v);
+}
+
+Status check_mesh_support(const render::View& view, const vk::Context& ctx) {
+  if (view.tessellation.mesh == render::MeshMode::tessellation && !ctx.tessellation)
+    return unsupported("--mesh tessellation: Vulkan device '" + ctx.info.name +
+                       "' lacks tessellation shaders; use --mesh quadtree");
+  return {};
 }
 
 }  // namespace ocean::cli

@@ -19,6 +19,7 @@ struct ViewFlags {
   std::string far_field_range = "1000,2500";  // D_min,D_max of the far field (R.13), m
   std::string planet_radius = "6371000";      // R of the sea's curvature (R.15), m; inf: flat
   std::string environment;                    // equirectangular HDR OpenEXR sky (R.17); empty: none
+  std::string mesh = "quadtree";              // quadtree or tessellation (R.40–R.42)
   bool validation = false;
   SphereFlags sphere;  // --sphere, --latitude, --longitude, --altitude
 };
@@ -30,5 +31,9 @@ void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what
 /// accepted.
 Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,
                         render::View& view);
+
+/// `unsupported` naming the device when `view` asks for the tessellated mesh (--mesh
+/// tessellation) and the device lacks tessellation shaders; checked before any work is done.
+Status check_mesh_support(const render::View& view, const vk::Context& ctx);
 
 }  // namespace ocean::cli

@@ -27,6 +27,7 @@
 #include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/underwater.hpp"
+#include "ocean/tessellation.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
 
@@ -119,6 +120,9 @@ struct View {
   SphereView sphere;
   /// The water seen from a camera below the surface (R.50–R.52); absorption is seabed's.
   Underwater underwater;
+  /// The mesh: the quadtree (default) or seed 003's tessellated base grid (R.40–R.42), which
+  /// needs a device with tessellation shaders (`unsupported` from record() otherwise).
+  TessellationParams tessellation;
 };
 Status validate(const View& view);
 /// invalid_argument naming the field for a latitude outside [−90, 90], a non-finite longitude,

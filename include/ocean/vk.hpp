@@ -42,7 +42,8 @@ struct ContextParams {
   /// Index into list_devices(); −1 picks the best usable one (discrete > integrated > cpu).
   int device_index = -1;
   /// The queue must do graphics as well as compute (the renderer): Vulkan 1.3 with dynamic
-  /// rendering, and fillModeNonSolid / samplerAnisotropy where the device has them.
+  /// rendering, and fillModeNonSolid / samplerAnisotropy / tessellationShader where the device has
+  /// them.
   bool graphics = false;
   /// Extra instance extensions (a window system's surface extensions, e.g. from GLFW).
   std::vector<const char*> instance_extensions;
@@ -74,6 +75,7 @@ struct Context {
   bool timestamps = false;      ///< the compute queue supports timestamp queries
   bool graphics = false;        ///< the queue does graphics too (ContextParams::graphics)
   bool wireframe = false;       ///< fillModeNonSolid is enabled
+  bool tessellation = false;    ///< tessellationShader is enabled (the tessellated mesh)
   float max_anisotropy = 1.0f;  ///< > 1 when samplerAnisotropy is enabled
   bool multiview = false;       ///< VkPhysicalDeviceVulkan11Features::multiview is enabled
   double timestamp_period_ns = 1.0;
@@ -120,6 +122,8 @@ struct AdoptedDevice {
   bool sampler_anisotropy = false;
   /// VkPhysicalDeviceVulkan11Features::multiview was enabled (stereo in one pass).
   bool multiview = false;
+  /// VkPhysicalDeviceFeatures::tessellationShader was enabled (the tessellated mesh).
+  bool tessellation_shader = false;
 };
 
 /// A Context around the caller's instance, physical device, device and queue; the VulkanBackend

@@ -129,7 +129,10 @@ Status create_descriptors(Renderer::State& st) {
   if (!s6.ok()) return s6.status();
   st.damping_sampler = s6.value();
 
-  const VkShaderStageFlags both = VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+  // The vertex stages (and the tessellation evaluation stage, R.41) and the fragment stage.
+  const VkShaderStageFlags both =
+      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT |
+      (ctx.tessellation ? VkShaderStageFlags{VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT} : 0u);
   const VkDescriptorSetLayoutBinding scene_bindings[] = {
       {OCEAN_RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
       {OCEAN_RENDER_BINDING_DISPLACEMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both,

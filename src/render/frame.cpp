@@ -4,6 +4,7 @@
 // (frame_steps.hpp) serve the stereo frame of stereo.cpp as well.
 #include <chrono>
 #include <cstring>
+#include <string>
 
 #include "frame_steps.hpp"
 
@@ -123,19 +124,22 @@ void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
   } else {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.ocean);
     push_seabed(st, cmd, view);
-    record_patches(st, cmd, skirt_instance, &stats);
+    const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
+    if (tessellated) record_tessellated(st, cmd, view, stats);  // R.40–R.42, tessellation.cpp
+    record_patches(st, cmd, skirt_instance, &stats, !tessellated);
     stats.patches_per_level = st.selection.patches_per_level;
   }
   record_objects(st, cmd, view, stats, pipelines.objects);
 }
 
 void record_patches(Renderer::State& st, VkCommandBuffer cmd, std::uint32_t skirt_instance,
-                    RenderStats* stats) {
+                    RenderStats* stats, bool quadtree) {
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
   vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
   for (const lod::Batch& b : st.selection.batches) {  // ≤ 16 instanced draws (Aebi, eq. 70)
+    if (!quadtree) break;
     vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
     if (stats == nullptr) continue;
     ++stats->draw_calls;
@@ -200,8 +204,13 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
-  if (view.sphere.enabled && st.motion.enabled)
-    return unsupported("motion vectors: not drawn for the sea on a sphere");
+  if (Status s = check_tessellation(*st.ctx, view.tessellation); !s.ok()) return s;
+  const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
+  if ((view.sphere.enabled || tessellated) && st.motion.enabled)
+    return unsupported(std::string("motion vectors: not drawn for ") +
+                       (tessellated ? "the tessellated mesh" : "the sea on a sphere"));
+  if (view.sphere.enabled && tessellated)
+    return unsupported("the tessellated mesh: not drawn for the sea on a sphere");
   if (Status s = prepare_motion(st); !s.ok()) return s;
   Result<std::uint32_t> skirt_instance =
       select_frame(st, view, view.camera.position_m,

@@ -30,9 +30,10 @@ void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                   const ScenePipelines& pipelines, const shader::SkyPush& sky_push,
                   std::uint32_t skirt_instance, RenderStats& stats);
 // Inside a pass whose pipeline takes the patch layout: the patches by stitching configuration
-// and the skirt (bound buffers, draws, and with `stats` their counts).
+// (without `quadtree`: none, the tessellated mesh drew the square) and the skirt (bound buffers,
+// draws, and with `stats` their counts).
 void record_patches(Renderer::State& st, VkCommandBuffer cmd, std::uint32_t skirt_instance,
-                    RenderStats* stats);
+                    RenderStats* stats, bool quadtree = true);
 // motion.cpp: with motion vectors on, before recording: the target and the previous frame's
 // array at the current sizes (allocates when they changed); unsupported on borrowed images.
 Status prepare_motion(Renderer::State& st);

@@ -63,6 +63,7 @@ Status validate(const View& view) {
   if (view.sphere.enabled)
     if (Status s = validate_sphere(view); !s.ok()) return s;
   if (Status s = validate(view.underwater); !s.ok()) return s;
+  if (Status s = validate(view.tessellation); !s.ok()) return s;
   return validate(view.shading);
 }
 

@@ -20,6 +20,8 @@ struct PipelineDesc {
   // Another vertex input (overrides mesh_input); must outlive make_pipeline.
   const VkPipelineVertexInputStateCreateInfo* vertex_input = nullptr;
   std::uint32_t view_mask = 0;  // multiview: the views drawn at once (stereo: 0b11)
+  // Tessellation stages (both or neither): patches of one control point (tessellation.cpp).
+  VkShaderModule tesc = VK_NULL_HANDLE, tese = VK_NULL_HANDLE;
 };
 
 // A shader module owned by the state (destroyed with it).

@@ -29,7 +29,18 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
       {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
        .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
        .module = d.frag,
+       .pName = "main"},
+      {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+       .stage = VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT,
+       .module = d.tesc,
+       .pName = "main"},
+      {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+       .stage = VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT,
+       .module = d.tese,
        .pName = "main"}};
+  const bool tessellated = d.tesc != VK_NULL_HANDLE;
+  const VkPipelineTessellationStateCreateInfo tessellation{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO, .patchControlPoints = 1};
   const VkVertexInputBindingDescription bindings[] = {
       {0, 2 * sizeof(float), VK_VERTEX_INPUT_RATE_VERTEX},
       {1, sizeof(lod::PatchInstance), VK_VERTEX_INPUT_RATE_INSTANCE}};
@@ -47,7 +58,8 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
       d.vertex_input != nullptr ? d.vertex_input : &input;
   const VkPipelineInputAssemblyStateCreateInfo assembly{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
-      .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
+      .topology =
+          tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
   const VkPipelineViewportStateCreateInfo viewport{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
       .viewportCount = 1,
@@ -84,19 +96,21 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
       .colorAttachmentCount = 1,
       .pColorAttachmentFormats = &d.colour,
       .depthAttachmentFormat = d.depth ? kDepthFormat : VK_FORMAT_UNDEFINED};
-  const VkGraphicsPipelineCreateInfo info{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
-                                          .pNext = &rendering,
-                                          .stageCount = 2,
-                                          .pStages = stages,
-                                          .pVertexInputState = vertex_input,
-                                          .pInputAssemblyState = &assembly,
-                                          .pViewportState = &viewport,
-                                          .pRasterizationState = &raster,
-                                          .pMultisampleState = &multisample,
-                                          .pDepthStencilState = d.depth ? &depth : nullptr,
-                                          .pColorBlendState = &blend,
-                                          .pDynamicState = &dynamic,
-                                          .layout = d.layout};
+  const VkGraphicsPipelineCreateInfo info{
+      .sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+      .pNext = &rendering,
+      .stageCount = tessellated ? 4u : 2u,
+      .pStages = stages,
+      .pVertexInputState = vertex_input,
+      .pInputAssemblyState = &assembly,
+      .pTessellationState = tessellated ? &tessellation : nullptr,
+      .pViewportState = &viewport,
+      .pRasterizationState = &raster,
+      .pMultisampleState = &multisample,
+      .pDepthStencilState = d.depth ? &depth : nullptr,
+      .pColorBlendState = &blend,
+      .pDynamicState = &dynamic,
+      .layout = d.layout};
   VkPipeline p = VK_NULL_HANDLE;
   if (Status s =
           vk::check(vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &info, nullptr, &p),
@@ -108,13 +122,15 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d) 
 
 Status create_pipelines(Renderer::State& st) {
   const vk::Context& ctx = *st.ctx;
-  const VkPushConstantRange scene_push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(shader::SkyPush)};
+  // The fragment stage's range, and the tessellation stages' after it where the device has them.
+  const VkPushConstantRange scene_push[] = {
+      {VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(shader::SkyPush)}, tessellation_push_range()};
   const VkPipelineLayoutCreateInfo scene_layout{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
       .setLayoutCount = 1,
       .pSetLayouts = &st.scene_layout,
-      .pushConstantRangeCount = 1,
-      .pPushConstantRanges = &scene_push};
+      .pushConstantRangeCount = ctx.tessellation ? 2u : 1u,
+      .pPushConstantRanges = scene_push};
   if (Status s = vk::check(
           vkCreatePipelineLayout(ctx.device, &scene_layout, nullptr, &st.scene_pipeline_layout),
           "vkCreatePipelineLayout");
@@ -173,6 +189,7 @@ Status create_pipelines(Renderer::State& st) {
   if (!tonemap.ok()) return tonemap.status();
   st.tonemap = tonemap.value();
   if (Status s = create_sphere_pass(st); !s.ok()) return s;
+  if (Status s = create_tessellation(st); !s.ok()) return s;
   return create_object_pipeline(st);
 }
 

@@ -27,6 +27,7 @@
 #include "shaders/render_shared.h"
 #include "motion_pass.hpp"
 #include "stereo_pass.hpp"
+#include "shaders/tessellation.h"
 
 namespace ocean::render {
 
@@ -118,6 +119,10 @@ struct Renderer::State {
   // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
   // coverage) and depth while there are meshes, 1×1 otherwise.
   vk::Image2D reflection, reflection_depth;
+  // The tessellated mesh (R.40–R.42, tessellation.cpp): its pipelines where the device has
+  // tessellation shaders, and the per-frame list of visible base quads (host-visible).
+  VkPipeline tessellated = VK_NULL_HANDLE, tessellated_wire = VK_NULL_HANDLE;
+  vk::Buffer tess_cells;
 
   ~State();
   void destroy_targets();
@@ -188,6 +193,21 @@ void record_local_upload(Renderer::State& st, VkCommandBuffer cmd);
 // damping.cpp: the same for the damping's weights and depth.
 Status create_damping(Renderer::State& st);
 void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd);
+
+// tessellation.cpp: the tessellated mesh's pipelines and cell buffer (nothing where the device
+// lacks tessellation shaders), its push range in the scene layout, and its draw: the visible base
+// quads and the tessellation stages, then the ocean (or wireframe) pipeline bound again for the
+// skirt. record_tessellated needs Context::tessellation (Renderer::record checks it).
+Status create_tessellation(Renderer::State& st);
+// `unsupported` when the parameters ask for the tessellated mesh on a device without tessellation
+// shaders or with a maxTessellationGenerationLevel below N; nothing for the quadtree.
+Status check_tessellation(const vk::Context& ctx, const TessellationParams& params);
+// tessellation_levels.cpp: the push constants of a grid (what tessellation_levels evaluates).
+shader::TessellationPush tessellation_push(const TessellationParams& params,
+                                           const TessellationGrid& grid);
+VkPushConstantRange tessellation_push_range();
+void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& view,
+                        RenderStats& stats);
 
 // uniforms.cpp: recomputes the sky-view table and the irradiances when the sky's parameters
 // changed.

@@ -121,6 +121,8 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
                             " must be even (two eyes side by side)");
   if (Status s = validate(view); !s.ok()) return s;
   if (view.sphere.enabled) return unsupported("stereo: not drawn for the sea on a sphere");
+  if (view.tessellation.mesh == MeshMode::tessellation)
+    return unsupported("stereo: not drawn with the tessellated mesh");
   if (Status s = validate_objects(st, view); !s.ok()) return s;
   if (view.debug == DebugView::wireframe && !st.ctx->wireframe)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");

@@ -19,7 +19,7 @@ Renderer::State::~State() {
   destroy_objects(*this, true);
   destroy_stereo(*this, true);
   destroy_motion(*this, true);
-  for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline})
+  for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline, tessellated, tessellated_wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
   for (VkPipelineLayout l : {scene_pipeline_layout, tonemap_pipeline_layout})
@@ -38,7 +38,8 @@ Renderer::State::~State() {
                       damping_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
   for (vk::Buffer* b :
-       {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices, &sphere_instances})
+       {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices, &sphere_instances,
+        &tess_cells})
     vk::destroy_buffer(*ctx, *b);
   vk::destroy_timestamps(*ctx, timestamps);
   vk::destroy_commands(*ctx, commands);

@@ -78,6 +78,7 @@ Result<std::unique_ptr<Context>> adopt_context(const AdoptedDevice& a) {
   ctx->graphics = a.graphics;
   ctx->wireframe = a.graphics && a.fill_mode_non_solid;
   ctx->multiview = a.graphics && a.multiview;
+  ctx->tessellation = a.graphics && a.tessellation_shader;
   if (a.graphics && a.sampler_anisotropy)
     ctx->max_anisotropy = detail::max_anisotropy(ctx->properties);
   return ctx;

@@ -199,7 +199,7 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
   if (!found) return unsupported("Vulkan device '" + ctx->info.name + "' has no graphics queue");
 
   // The renderer's features: dynamic rendering (core 1.3), wireframe, anisotropic filtering and
-  // multiview where present.
+  // multiview and tessellation shaders where present.
   VkPhysicalDeviceVulkan11Features features11{
       .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
   VkPhysicalDeviceVulkan13Features features13{
@@ -223,6 +223,8 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
     enabled.pNext = &enabled13;
     enabled.features.fillModeNonSolid = supported.features.fillModeNonSolid;
     enabled.features.samplerAnisotropy = supported.features.samplerAnisotropy;
+    enabled.features.tessellationShader = supported.features.tessellationShader;
+    ctx->tessellation = supported.features.tessellationShader == VK_TRUE;
     ctx->graphics = true;
     ctx->wireframe = supported.features.fillModeNonSolid == VK_TRUE;
     // Stereo in one pass (VK_KHR_multiview, core since 1.1).

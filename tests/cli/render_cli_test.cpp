@@ -209,4 +209,28 @@ TEST(RenderCli, NoVulkanDeviceIsOneLine) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// The tessellated mesh (docs/rendering.md R.40–R.42): sky above, water below; where the device
+// lacks tessellation shaders, one line and no file. An unknown mesh is a usage error.
+TEST(RenderCli, TessellatedMeshRendersOrIsRefusedInOneLine) {
+  ocean_test::expect_usage_error("render --mesh triangles", "quadtree or tessellation");
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const fs::path out = scratch("tessellated.png");
+  const ocean_test::CliRun r =
+      ocean_test::run_cli("render --mesh tessellation --out " + out.string() + kSmall + " --json");
+  if (r.exit_code != 0) {
+    EXPECT_NE(r.err.find("lacks tessellation shaders"), std::string::npos) << r.err;
+    EXPECT_EQ(line_count(r.err), 1) << r.err;
+    EXPECT_FALSE(fs::exists(out));
+    return;
+  }
+  EXPECT_GT(nlohmann::json::parse(r.out)["patches"].get<int>(), 0);
+  auto png = ocean::io::read_png(out);
+  ASSERT_TRUE(png.ok()) << png.status().message();
+  const auto& px = png.value().samples;
+  const auto blue = [&](int x, int y) {
+    return px[static_cast<std::size_t>((y * 80 + x) * 3 + 2)];
+  };
+  EXPECT_GT(blue(5, 2), blue(5, 43));
+}
+
 }  // namespace

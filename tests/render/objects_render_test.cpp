@@ -16,28 +16,13 @@ namespace {
 using namespace ocean::render;
 namespace helpers = ocean::render::testing;
 
-struct Rig {
-  std::shared_ptr<ocean::vk::Context> ctx;
-  std::unique_ptr<ocean::Simulator> sim;
-  std::unique_ptr<Renderer> renderer;
-  ~Rig() {
-    if (ctx != nullptr) {
-      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
-    }
-  }
-};
+using helpers::Rig;
 
 constexpr int kW = 96, kH = 64;
 
 std::unique_ptr<Rig> make_rig() {
-  auto rig = std::make_unique<Rig>();
-  rig->ctx = helpers::graphics_context();
-  if (rig->ctx == nullptr) return nullptr;
-  rig->sim = ocean::make_simulator(helpers::small_config()).value();
-  rig->renderer = Renderer::make(rig->ctx, {.width = kW, .height = kH}).value();
-  EXPECT_TRUE(rig->renderer->configure(rig->sim->config()).ok());
-  rig->sim->step(3.0);
-  EXPECT_TRUE(rig->renderer->upload(rig->sim->frame()).ok());
+  auto rig = helpers::make_rig(helpers::graphics_context(), helpers::small_config(), kW, kH);
+  if (rig == nullptr) return nullptr;
   const auto hull = ocean::bodies::box_hull({4.0, 4.0, 4.0}).value();
   const Mesh box = flat_mesh(hull.vertices, hull.triangles, {.base_colour = {0.9, 0.2, 0.02}});
   EXPECT_TRUE(rig->renderer->set_meshes(std::span(&box, 1)).ok());

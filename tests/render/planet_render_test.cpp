@@ -26,32 +26,11 @@ using ocean::render::testing::graphics_context;
 
 constexpr double kPi = std::numbers::pi;
 
-struct Rig {
-  std::shared_ptr<ocean::vk::Context> ctx;
-  std::unique_ptr<ocean::Simulator> sim;
-  std::unique_ptr<Renderer> renderer;
-  ~Rig() {
-    if (ctx != nullptr) {
-      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
-    }
-  }
-};
+using ocean::render::testing::Rig;
 
 // The CPU backend's frame at t = 3 s uploaded to a renderer of w × h pixels.
 std::unique_ptr<Rig> make_rig(const ocean::SimulationConfig& config, int w, int h) {
-  auto rig = std::make_unique<Rig>();
-  rig->ctx = graphics_context();
-  if (rig->ctx == nullptr) return nullptr;
-  auto sim = ocean::Simulator::make(config, std::move(ocean::make_backend("cpu")).value());
-  if (!sim.ok()) return nullptr;
-  rig->sim = std::move(sim).value();
-  auto r = Renderer::make(rig->ctx, {.width = w, .height = h});
-  if (!r.ok()) return nullptr;
-  rig->renderer = std::move(r).value();
-  if (!rig->renderer->configure(config).ok()) return nullptr;
-  rig->sim->step(3.0);
-  if (!rig->renderer->upload(rig->sim->frame()).ok()) return nullptr;
-  return rig;
+  return ocean::render::testing::make_rig(graphics_context(), config, w, h);
 }
 
 #define REQUIRE_RIG(rig)                                                       \

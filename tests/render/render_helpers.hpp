@@ -1,6 +1,6 @@
-// What the renderer's and the scene's tests share: a validated graphics context and a rig that
-// checks the validation layer stayed silent, a small sea, an eye-level view and the difference of
-// two sRGB pictures.
+// What the renderer's and the scene's tests share: a validated graphics context, a rig that
+// checks the validation layer stayed silent (and one with a simulated frame uploaded), a small
+// sea, an eye-level view and the difference of two sRGB pictures.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -13,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "ocean/backends.hpp"
 #include "ocean/render.hpp"
 
 namespace ocean::render::testing {
@@ -39,6 +40,28 @@ struct ValidatedRig {
     }
   }
 };
+using Rig = ValidatedRig;
+
+/// A renderer of w × h pixels on `ctx` with the CPU backend's frame of `config` at t = 3 s
+/// uploaded; nullptr when `ctx` is or anything fails.
+inline std::unique_ptr<Rig> make_rig(std::shared_ptr<vk::Context> ctx,
+                                     const SimulationConfig& config, int w, int h) {
+  if (ctx == nullptr) return nullptr;
+  auto rig = std::make_unique<Rig>();
+  rig->ctx = std::move(ctx);
+  auto backend = make_backend("cpu");
+  if (!backend.ok()) return nullptr;
+  auto sim = Simulator::make(config, std::move(backend).value());
+  if (!sim.ok()) return nullptr;
+  rig->sim = std::move(sim).value();
+  auto r = Renderer::make(rig->ctx, {.width = w, .height = h});
+  if (!r.ok()) return nullptr;
+  rig->renderer = std::move(r).value();
+  if (!rig->renderer->configure(config).ok()) return nullptr;
+  rig->sim->step(3.0);
+  if (!rig->renderer->upload(rig->sim->frame()).ok()) return nullptr;
+  return rig;
+}
 
 /// Two cascades of a 12 m/s wind sea at N = 64.
 inline SimulationConfig small_config() {

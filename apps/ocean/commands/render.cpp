@@ -307,6 +307,7 @@ int run_render(const RenderOptions& o) {
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
   render::Renderer& renderer = scene.renderer();
+  if (Status s = check_mesh_support(in.view, *scene.context()); !s.ok()) return report(s);
   if (Status s = renderer.set_meshes(objects.value()->meshes()); !s.ok()) return report(s);
   if (Status s = check_stereo_device(in.ipd, *scene.context()); !s.ok()) return report(s);
   render::View view = in.view;

@@ -171,6 +171,7 @@ int run_view(const ViewOptions& o) {
   if (in.view.debug == render::DebugView::wireframe && !ctx.wireframe)
     return report(unsupported("--view wireframe: Vulkan device '" + ctx.info.name +
                               "' lacks fillModeNonSolid"));
+  if (Status s = check_mesh_support(in.view, ctx); !s.ok()) return report(s);
   Result<std::unique_ptr<view::Presenter>> presenter_made =
       view::Presenter::make(scene.context(), *window.value());
   if (!presenter_made.ok()) return report(presenter_made.status());

@@ -8,11 +8,7 @@
 // hex tiles with random offsets and cascade 0 blends into the far field's noise (R.13, R.14).
 // All weights are functions of the world position and the camera alone, so vertices that two
 // patches share get the same displacement and the stitched mesh stays closed.
-#include "far_field.glsl"
-#include "planet.glsl"
-#include "local_layer.glsl"
-#include "damping.glsl"
-#include "displacement.glsl"
+#include "ocean_displacement.glsl"
 #ifdef OCEAN_MOTION
 #include "motion_shared.h"
 // Motion vectors (R.26): the cascades of the previous frame and its camera.
@@ -34,18 +30,11 @@ layout(location = 2) flat out uint level;
 
 void main() {
   vec2 xz = a_instance.xy + a_position * a_instance.z;
-  vec2 rel = xz - u.grid_centre_m;
-  float half_size = 0.5 * u.ocean_size_m;
-  float border = max(abs(rel.x), abs(rel.y));
-  float border_weight = clamp((half_size - border) / u.border_fade_m, 0.0, 1.0);  // R.10
   // The spacing a patch at this distance has at most: a node splits while the camera is closer
   // than τ·s (eq. 57), so a leaf at distance d has s ≤ d/τ·2 and spacing s/V.
   float d = length(vec3(xz.x, 0.0, xz.y) - eye_position());
   float spacing = max(2.0 * d / (u.lod_scale * u.vertices), 1e-3);
-  vec3 displacement = vec3(0.0);
-  if (border_weight > 0.0 && u.local.calm < 0.5)
-    displacement = border_weight * sea_displacement(displacement_map, xz, spacing);
-  displacement += local_displacement(xz);  // wakes and waveforms (R.19)
+  vec3 displacement = ocean_displacement(xz, spacing);
   world_xz = xz;
   // The planet bends the sea down by d²/(2R) (R.15).
   world_pos = vec3(xz.x + displacement.x, displacement.y - curvature_drop(xz),
@@ -54,9 +43,7 @@ void main() {
   gl_Position = eye_view_proj() * vec4(world_pos, 1.0);
 #ifdef OCEAN_MOTION
   // The same surface point (the label xz) a frame ago: its displacement then, the camera then.
-  vec3 previous = local_displacement(xz);
-  if (border_weight > 0.0 && u.local.calm < 0.5)
-    previous += border_weight * sea_displacement(previous_map, xz, spacing);
+  vec3 previous = ocean_displacement_from(previous_map, xz, spacing);
   clip_now = gl_Position;
   clip_previous = motion.previous_view_proj *
                   vec4(xz.x + previous.x, previous.y - curvature_drop(xz), xz.y + previous.z, 1.0);
