@@ -46,6 +46,9 @@ void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
   add_option(command, kCascades, f.cascades, "patch sizes L1,L2,... in metres, largest first");
   command.add_option("--normals", f.normals, name_list(kNormalMethodNames, " | ", " | "));
   add_option(command, kLoopPeriod, f.loop_period, "loop period T, s (0 = no loop)");
+  command.add_option("--band-roles", f.band_roles,
+                     "ROLE,ROLE,...: one per cascade, largest first: both (default) | displace "
+                     "(moves the surface, flat shading) | shade (normals and foam, no motion)");
 }
 
 Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
@@ -100,6 +103,12 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
     Result<NormalMethod> m = parse_normal_method(f.normals);
     if (!m.ok()) return Status(m.status().code(), "--normals: " + m.status().message());
     c.normals = m.value();
+  }
+  if (!f.band_roles.empty()) {
+    Result<std::vector<BandRole>> roles = parse_band_roles(f.band_roles);
+    if (!roles.ok())
+      return Status(roles.status().code(), "--band-roles: " + roles.status().message());
+    c.band_roles = std::move(roles).value();
   }
   if (Status st = validate(c); !st.ok()) return st;
   if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();

@@ -21,7 +21,7 @@ struct SimulationFlags {
   std::string preset_path;
   std::vector<std::string> set;  ///< key=value, dotted keys, JSON values (strings may be bare)
   SpectrumFlags sea;
-  std::string resolution, seed, choppiness, cascades, normals, loop_period;
+  std::string resolution, seed, choppiness, cascades, normals, loop_period, band_roles;
 };
 void add_simulation_flags(CLI::App& command, SimulationFlags& flags);
 /// Default config ← preset file ← --set overrides ← explicit flags; then validated.

@@ -103,7 +103,7 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
                      "X,Z,HEADING_DEG,SPEED_MPS,LENGTH_M: an object at (X, Z) at t = 0 moving "
                      "along HEADING (0 = +x, 90 = +z); repeatable");
   command.add_option("--waveform", f.waveforms,
-                     "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]: a .npy or gray PNG height map "
+                     "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]: a .npy, gray PNG or EXR height map "
                      "centred at (X, Z); repeatable");
   command.add_option("--local-area", f.local_area, "X0,Z0,SIZE_M: the local layer's square");
   add_option(command, kResolution, f.local_resolution, "cells per side of the local layer")

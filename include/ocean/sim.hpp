@@ -93,6 +93,27 @@ struct FrameOutputs {
   friend bool operator==(const FrameOutputs&, const FrameOutputs&) = default;
 };
 
+/// What one cascade (band) contributes to the surface (Mitchell 2005, §3.3: a low band that
+/// displaces the geometry and a broad band that only shades it). Applied to each published
+/// frame by apply_band_roles, so every consumer of a frame (height queries, renderer, bake)
+/// honours it.
+enum class BandRole {
+  both,      ///< moves the surface and shades it (the default)
+  displace,  ///< moves the surface only: its normal map is flat (0, 1, 0), J = 1, no foam
+  shade,     ///< shades only (normals, Jacobian, foam): its displacement is 0
+};
+/// The names of the band roles in presets, flags and messages.
+inline constexpr std::array<EnumName<BandRole>, 3> kBandRoleNames{{
+    {BandRole::both, "both"},
+    {BandRole::displace, "displace"},
+    {BandRole::shade, "shade"},
+}};
+/// The role's name in kBandRoleNames.
+std::string_view to_string(BandRole role);
+/// The roles of a comma-separated list of names ("displace,both,shade"), one per cascade;
+/// invalid_argument naming the unknown entry and listing the names.
+Result<std::vector<BandRole>> parse_band_roles(std::string_view list);
+
 /// The default sea: a fetch-limited JONSWAP wind sea, U10 = 10 m/s over 100 km, Donelan–Banner
 /// spreading, waves travelling towards +x.
 inline SeaStateParams default_sea_state() {
@@ -121,6 +142,9 @@ struct SimulationConfig {
   FoamParams foam;
   BlueChannel blue_channel = BlueChannel::foam;
   FrameOutputs outputs;  ///< which optional arrays each frame carries
+  /// The role of each cascade, band_roles[c] for cascade c: empty = every cascade BandRole::both;
+  /// otherwise exactly one per cascade.
+  std::vector<BandRole> band_roles;
 };
 
 /// Validates a configuration (and, when it loops, its sea state); the message names the field,
@@ -166,16 +190,42 @@ struct CascadeFrame {
   LargeVector<std::uint32_t> packed_mips;
 };
 
+/// The sea and the local layer summed on the layer's grid (docs/math.md M.7.9): what the surface
+/// is where wakes and waveforms are, with the normal, Jacobian and foam of the sum, so a wake
+/// folds and foams where it meets a crest of the sea as the sea itself does. Cell (col, row) is
+/// the point that starts at (x0 + (col + ½)·size/N, z0 + (row + ½)·size/N), as the layer's.
+struct LocalSurfaceFrame {
+  std::array<double, 2> origin_m{};  ///< (x0, z0) of the layer's area
+  double size_m = 0.0;               ///< side of the area, m
+  int resolution = 0;                ///< N cells per side; 0: no local layer, arrays empty
+  /// float3 (Dx, h, Dz) per cell, index row·N + col, m: Simulator::displacement_at at the cell
+  /// centre (the cascades as the frame carries them, damped, plus the layer).
+  std::vector<float> displacement;
+  std::vector<float> normal;    ///< float3 unit normal of the summed surface (M.7.5)
+  std::vector<float> jacobian;  ///< J of the summed horizontal map (eq. 48)
+  std::vector<float> foam;      ///< accumulated foam coverage [0, 1] from J (M.7.4)
+};
+
 struct Frame {
   double time_s = 0.0;
   std::uint64_t index = 0;  ///< frames computed since configuration
   std::vector<CascadeFrame> cascades;
+  /// The local surface, computed by the Simulator after the backend's step when a local layer
+  /// is set (Simulator::set_local_layer); empty otherwise.
+  LocalSurfaceFrame local;
 };
 
 /// Sizes every array of `frame` for `config` (one CascadeFrame per cascade, mips included; the
 /// arrays config.outputs does not request empty) and resets the values: displacement, normal
 /// and foam 0, Jacobian 1. What Backend::allocate does.
 void allocate_frame(const SimulationConfig& config, Frame& frame);
+
+/// Applies config.band_roles to a frame a backend computed for `config` (docs/math.md M.7.8): a
+/// shade-only cascade's displacement (float3 and half4) becomes 0, a displace-only cascade's
+/// normal becomes (0, 1, 0), its Jacobian 1, its foam 0 and its packed map (every mip) the flat
+/// texel of the configured roughness. What Simulator does to every frame it publishes; the
+/// other arrays are left as the backend wrote them. Never allocates; no-op without roles.
+void apply_band_roles(const SimulationConfig& config, Frame& frame);
 
 /// A simulation implementation. configure() allocates and plans; step() never allocates,
 /// never throws and writes every field of `out` (whose arrays configure() sized).
@@ -187,7 +237,8 @@ class Backend {
   virtual Status configure(const SimulationConfig& config, TaskRunner& runner) = 0;
   /// Sizes the arrays of a frame for the configured simulation.
   virtual void allocate(Frame& frame) const = 0;
-  /// Computes the frame at `time_s`. Foam accumulates over the time since the previous step.
+  /// Computes the frame at `time_s`, every cascade as BandRole::both (the Simulator applies the
+  /// roles). Foam accumulates over the time since the previous step.
   virtual void step(double time_s, Frame& out) = 0;
 };
 
@@ -225,7 +276,10 @@ class Simulator {
 
   /// Adds a local layer (ocean/waves.hpp: wakes, waveforms) to the surface the queries see, so
   /// that displacement_at and heights_at return sea + layer, the layer taken at the published
-  /// frame's time. nullptr removes it. Call it while no query runs.
+  /// frame's time, and to every frame computed from now on: Frame::local, the layer composited
+  /// with the sea before normals, Jacobian and foam (M.7.9; its foam restarts here). Allocates
+  /// the local surface of both frames; waits for a kicked step. nullptr removes it. Call it
+  /// while no query runs.
   void set_local_layer(std::shared_ptr<const waves::LocalLayer> layer);
   [[nodiscard]] const waves::LocalLayer* local_layer() const { return local_layer_.get(); }
   /// Damps the sea's bands where a mask or a bathymetry says (ocean/waves.hpp, W.12–W.13): the
@@ -249,6 +303,10 @@ class Simulator {
 
  private:
   Simulator() = default;
+  /// Computes the back frame: the backend's step, the band roles, the local surface.
+  void compute(double time_s);
+  /// Frame::local of `back` from its cascades and the layer (local_surface.cpp).
+  void compute_local_surface(Frame& back);
   struct Async;
   SimulationConfig config_;
   std::unique_ptr<Backend> backend_;
@@ -258,6 +316,7 @@ class Simulator {
   std::unique_ptr<Async> async_;
   std::shared_ptr<const waves::LocalLayer> local_layer_;
   std::shared_ptr<const waves::Damping> damping_;
+  bool local_foam_reset_ = true;  ///< the next local surface starts its foam afresh
 };
 
 /// The height queries of Simulator::heights_at on a local layer alone, at time t: the surface of

@@ -101,11 +101,13 @@ struct HeightMap {
 };
 /// Largest side of a height map file.
 inline constexpr int kMaxHeightMapSide = 16384;
-/// Reads a height map: NumPy .npy (2-D, '<f4' or '<f8', C order; values used as they are) or
-/// PNG (8- or 16-bit grayscale, mapped linearly from [0, max] to [−1, 1]).
-/// io_error "cannot read '<path>': <reason>" for a missing or unreadable file;
-/// invalid_argument "cannot read '<path>': <problem>" for a malformed, unsupported (EXR, colour
-/// PNG, 3-D array, ...) or oversized file, or non-finite values. The path is echoed through
+/// Reads a height map: NumPy .npy (2-D, '<f4' or '<f8', C order; values used as they are),
+/// PNG (8- or 16-bit grayscale, mapped linearly from [0, max] to [−1, 1]) or OpenEXR (its only
+/// channel, or its "Y" channel; half or float values used as they are, file row 0 as map row 0).
+/// io_error "cannot read '<path>': <reason>" for a missing, unreadable or corrupt file (an EXR
+/// file's errors are those of io::read_exr); invalid_argument "cannot read '<path>': <problem>"
+/// for a malformed or unsupported file (colour PNG, 3-D array, an EXR with several channels and
+/// no "Y", another extension), an oversized one, or non-finite values. The path is echoed through
 /// ocean::excerpt. Never throws; safe on arbitrary bytes.
 Result<HeightMap> load_height_map(const std::filesystem::path& path);
 

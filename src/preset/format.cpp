@@ -112,18 +112,24 @@ Json to_value(const SimulationConfig& c) {
   Json sea{{"wind_sea", wave_system_json(c.sea.wind_sea)},
            {"swell", c.sea.has_swell ? wave_system_json(c.sea.swell) : Json(nullptr)},
            {"gravity_mps2", c.sea.dispersion.gravity_mps2}};
-  return Json{{"sea", sea},
-              {"resolution", c.resolution},
-              {"cascades_m", c.cascade_patch_sizes_m},
-              {"choppiness", c.choppiness},
-              {"loop_period_s", c.loop_period_s},
-              {"seed", c.seed},
-              {"normals", to_string(c.normals)},
-              {"roughness", c.roughness},
-              {"blue_channel", name_of(kBlueChannelNames, c.blue_channel)},
-              {"foam", Json{{"jacobian_start", c.foam.jacobian_start},
-                            {"jacobian_full", c.foam.jacobian_full},
-                            {"decay_per_s", c.foam.decay_per_s}}}};
+  Json document{{"sea", sea},
+                {"resolution", c.resolution},
+                {"cascades_m", c.cascade_patch_sizes_m},
+                {"choppiness", c.choppiness},
+                {"loop_period_s", c.loop_period_s},
+                {"seed", c.seed},
+                {"normals", to_string(c.normals)},
+                {"roughness", c.roughness},
+                {"blue_channel", name_of(kBlueChannelNames, c.blue_channel)},
+                {"foam", Json{{"jacobian_start", c.foam.jacobian_start},
+                              {"jacobian_full", c.foam.jacobian_full},
+                              {"decay_per_s", c.foam.decay_per_s}}}};
+  if (!c.band_roles.empty()) {  // written only when set: every band both otherwise
+    Json roles = Json::array();
+    for (BandRole role : c.band_roles) roles.push_back(std::string(to_string(role)));
+    document["band_roles"] = roles;
+  }
+  return document;
 }
 
 Result<SimulationConfig> from_value(const Json& document) {
@@ -164,6 +170,20 @@ Result<SimulationConfig> from_value(const Json& document) {
         return invalid_argument("cascades_m: expected numbers, got a " +
                                 std::string(v.type_name()));
       c.cascade_patch_sizes_m.push_back(v.get<double>());
+    }
+  }
+  if (const Json* roles = r.child("band_roles")) {
+    if (!roles->is_array())
+      return invalid_argument(
+          "band_roles: expected an array of \"both\", \"displace\" or "
+          "\"shade\", one per cascade");
+    for (const Json& v : *roles) {
+      std::optional<BandRole> role;
+      if (v.is_string()) role = value_of(kBandRoleNames, v.get<std::string>());
+      if (!role)
+        return invalid_argument("band_roles: '" + excerpt(v.dump()) + "' is unknown: must be " +
+                                name_list(kBandRoleNames, ", ", " or "));
+      c.band_roles.push_back(*role);
     }
   }
   r.number("choppiness", c.choppiness);

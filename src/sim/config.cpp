@@ -21,6 +21,25 @@ Result<NormalMethod> parse_normal_method(std::string_view name) {
                           name_list(kNormalMethodNames, ", ", ", "));
 }
 
+std::string_view to_string(BandRole role) { return name_of(kBandRoleNames, role); }
+
+Result<std::vector<BandRole>> parse_band_roles(std::string_view list) {
+  std::vector<BandRole> roles;
+  std::size_t begin = 0;
+  while (true) {
+    const std::size_t end = std::min(list.find(',', begin), list.size());
+    const std::string_view name = list.substr(begin, end - begin);
+    std::optional<BandRole> role = value_of(kBandRoleNames, name);
+    if (!role)
+      return invalid_argument("band role '" + excerpt(name) + "' in '" + excerpt(list) +
+                              "' is unknown: must be one of " +
+                              name_list(kBandRoleNames, ", ", ", "));
+    roles.push_back(*role);
+    if (end == list.size()) return roles;
+    begin = end + 1;
+  }
+}
+
 Status validate(const SimulationConfig& c) {
   const int n = c.resolution;
   if (n < 16 || n > 2048 || !std::has_single_bit(static_cast<unsigned>(n))) {
@@ -40,6 +59,11 @@ Status validate(const SimulationConfig& c) {
           name + " = " + format_number(size) + " must be smaller than the previous cascade's " +
           format_number(c.cascade_patch_sizes_m[i - 1]) + " (largest patch first)");
     }
+  }
+  if (!c.band_roles.empty() && c.band_roles.size() != c.cascade_patch_sizes_m.size()) {
+    return invalid_argument("band_roles = " + std::to_string(c.band_roles.size()) + " roles for " +
+                            std::to_string(c.cascade_patch_sizes_m.size()) +
+                            " cascades: must be one per cascade (or none: every band both)");
   }
   if (Status s = require_in_range("choppiness", c.choppiness, 0.0, 10.0); !s.ok()) return s;
   if (Status s = require_in_range("loop_period_s", c.loop_period_s, 0.0, 1e6); !s.ok()) return s;

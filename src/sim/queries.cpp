@@ -4,6 +4,7 @@
 // (W.13).
 #include <cmath>
 
+#include "local_surface.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/waves.hpp"
 
@@ -73,27 +74,31 @@ void invert(const Displacement& displacement_at, std::span<const std::array<doub
 
 }  // namespace
 
-void Simulator::set_local_layer(std::shared_ptr<const waves::LocalLayer> layer) {
-  local_layer_ = std::move(layer);
+namespace detail {
+
+std::array<double, 3> surface_displacement(const Frame& frame, const waves::Damping* damping,
+                                           const waves::LocalLayer* layer, double x, double z) {
+  std::array<double, 3> sum{0.0, 0.0, 0.0};
+  std::array<double, waves::kMaxBands> weight;
+  weight.fill(1.0);
+  if (damping != nullptr) damping->band_weights(x, z, weight);  // (W.13)
+  for (std::size_t c = 0; c < frame.cascades.size(); ++c)
+    add_bilinear(frame.cascades[c], x, z, c < weight.size() ? weight[c] : 1.0, sum);
+  if (layer != nullptr) {
+    const std::array<double, 3> local = layer->displacement_at(x, z, frame.time_s);
+    for (std::size_t k = 0; k < 3; ++k) sum[k] += local[k];
+  }
+  return sum;
 }
+
+}  // namespace detail
 
 void Simulator::set_damping(std::shared_ptr<const waves::Damping> damping) {
   damping_ = std::move(damping);
 }
 
 std::array<double, 3> Simulator::displacement_at(double x, double z) const {
-  std::array<double, 3> sum{0.0, 0.0, 0.0};
-  const std::vector<CascadeFrame>& cascades = frame().cascades;
-  std::array<double, waves::kMaxBands> weight;
-  weight.fill(1.0);
-  if (damping_ != nullptr) damping_->band_weights(x, z, weight);  // (W.13)
-  for (std::size_t c = 0; c < cascades.size(); ++c)
-    add_bilinear(cascades[c], x, z, c < weight.size() ? weight[c] : 1.0, sum);
-  if (local_layer_ != nullptr) {
-    const std::array<double, 3> local = local_layer_->displacement_at(x, z, frame().time_s);
-    for (std::size_t k = 0; k < 3; ++k) sum[k] += local[k];
-  }
-  return sum;
+  return detail::surface_displacement(frame(), damping_.get(), local_layer_.get(), x, z);
 }
 
 void Simulator::heights_at(std::span<const std::array<double, 2>> xz,

@@ -10,7 +10,7 @@ struct Simulator::Async {
   struct Job {
     Simulator* sim = nullptr;
     double time_s = 0.0;
-    void operator()() const { sim->backend_->step(time_s, sim->frames_[1 - sim->front_]); }
+    void operator()() const { sim->compute(time_s); }
   };
   std::unique_ptr<AsyncSlot> slot;
   Job job;
@@ -44,12 +44,20 @@ Status Simulator::reconfigure(const SimulationConfig& config) {
     backend_->allocate(f);
   }
   front_ = 0;
+  set_local_layer(std::move(local_layer_));
   return {};
+}
+
+void Simulator::compute(double time_s) {
+  Frame& back = frames_[1 - front_];
+  backend_->step(time_s, back);
+  apply_band_roles(config_, back);
+  compute_local_surface(back);
 }
 
 void Simulator::step(double time_s) {
   wait();
-  backend_->step(time_s, frames_[1 - front_]);
+  compute(time_s);
   front_ = 1 - front_;
 }
 

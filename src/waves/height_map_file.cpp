@@ -1,5 +1,6 @@
 // src/waves/height_map_file.cpp — reading pre-authored height maps: NumPy .npy (2-D float32 or
-// float64, C order) and grayscale PNG (8 or 16 bits, mapped to [−1, 1]). Every failure is one
+// float64, C order), grayscale PNG (8 or 16 bits, mapped to [−1, 1]) and OpenEXR (one channel,
+// or Y, values as they are). Every failure is one
 // line naming the file (through ocean::excerpt) and what is wrong; memory is bounded by the file
 // size and kMaxHeightMapSide, so a hostile header cannot make it allocate more.
 //
@@ -7,6 +8,7 @@
 // C++ object with a destructor (as in the project's PNG writer).
 #include <png.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <csetjmp>
@@ -104,6 +106,32 @@ Result<HeightMap> read_npy(const std::filesystem::path& path, const std::string&
   return map;
 }
 
+// The height channel of an EXR image: its only channel, else "Y" (luminance, the gray channel of
+// an OpenEXR file), else refused; every value finite. Row 0 of the file is row 0 of the map.
+Result<HeightMap> read_exr_map(const std::filesystem::path& path) {
+  Result<io::ExrImage> image = io::read_exr(path);
+  if (!image.ok()) return image.status();
+  const io::ExrImage& exr = image.value();
+  std::size_t channel = 0;
+  if (exr.planes.size() != 1) {
+    const auto y = std::find(exr.channel_names.begin(), exr.channel_names.end(), "Y");
+    if (y == exr.channel_names.end())
+      return bad(path, "an EXR height map needs one channel or a \"Y\" channel, not " +
+                           std::to_string(exr.planes.size()) + " without \"Y\"");
+    channel = static_cast<std::size_t>(y - exr.channel_names.begin());
+  }
+  if (Status st = check_size(path, static_cast<std::uint64_t>(exr.height),
+                             static_cast<std::uint64_t>(exr.width));
+      !st.ok())
+    return st;
+  HeightMap map{.rows = exr.height, .cols = exr.width, .values = exr.planes[channel]};
+  for (std::size_t i = 0; i < map.values.size(); ++i) {
+    if (!std::isfinite(map.values[i]) || std::abs(map.values[i]) > 1e30f)
+      return bad(path, "value " + std::to_string(i) + " is not a finite height");
+  }
+  return map;
+}
+
 bool read_header(png_structp png, png_infop info) {
   if (setjmp(png_jmpbuf(png)) != 0) return false;
   png_read_info(png, info);
@@ -160,12 +188,11 @@ Result<HeightMap> load_height_map(const std::filesystem::path& path) {
   try {
     std::string ext = path.extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext != ".npy" && ext != ".png") {
-      return bad(path, "height maps must be .npy or .png files" +
-                           std::string(ext == ".exr" ? " (EXR is not read)" : ""));
-    }
+    if (ext != ".npy" && ext != ".png" && ext != ".exr")
+      return bad(path, "height maps must be .npy, .png or .exr files");
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) return bad(path, "it is a directory");
+    if (ext == ".exr") return read_exr_map(path);
     if (ext == ".png") {
       io::detail::PngIo io;
       io.file = std::fopen(path.c_str(), "rb");

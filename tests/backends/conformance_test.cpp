@@ -26,6 +26,7 @@
 #include "ocean/backends.hpp"
 #include "ocean/cpu_backend.hpp"
 #include "ocean/half.hpp"
+#include "ocean/waves.hpp"
 #include "support/require_devices.hpp"
 #ifdef OCEAN_HAS_VULKAN
 #include "ocean/vk/simulation.hpp"
@@ -203,6 +204,94 @@ TEST_P(Conformance, OptionalOutputsAreLeftOutAndTheRestUnchanged) {
       expect_backend_ok(*part.value());
     }
   }
+}
+
+// The local surface (docs/math.md M.7.9) is the cascades sampled and summed with the layer, so
+// the backend's errors reach it through the sum: |ΔD| ≤ C·ε_D·Hs (plus the float rounding of the
+// stored sum), gradients within e_g = 2·|ΔD|max/Δ, |ΔJ| ≤ e_g·(2 + 2·Σ|∂D|) + 2·e_g², and the
+// first frame's foam, a ramp of J, within |ΔJ|/(J_start − J_full).
+TEST_P(Conformance, LocalSurfaceConformsAsItsCascadesDo) {
+  const ocean::conformance::Bounds& bounds = ocean::conformance::bounds_for(GetParam());
+  ocean::SimulationConfig config;
+  config.resolution = 64;
+  config.cascade_patch_sizes_m = {300.0, 71.0};
+  config.sea.wind_sea.spectrum.wind_speed_mps = 14.0;
+  config.choppiness = 1.5;
+  ocean::waves::LayerParams params;
+  params.area = {.origin_m = {-40.0, -40.0}, .size_m = 80.0, .resolution = 64};
+  params.wakes.push_back({.x_m = 20.0,
+                          .heading_deg = 200.0,
+                          .speed_mps = 4.0,
+                          .hull_length_m = 10.0,
+                          .peak_height_m = 0.8});
+  auto layer = ocean::waves::LocalLayer::make(params);
+  ASSERT_TRUE(layer.ok()) << layer.status().message();
+  const std::shared_ptr<const ocean::waves::LocalLayer> shared = std::move(layer).value();
+  std::shared_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  auto backend = make(GetParam());
+  ASSERT_TRUE(backend.ok()) << backend.status().message();
+  auto reference = ocean::Simulator::make(
+      config, ocean::cpu::make_cpu_backend({.pipeline = ocean::cpu::CpuPipeline::scalar_reference}),
+      runner);
+  auto tested = ocean::Simulator::make(config, std::move(backend).value(), runner);
+  ASSERT_TRUE(reference.ok() && tested.ok());
+  for (auto* sim : {reference.value().get(), tested.value().get()}) {
+    sim->set_local_layer(shared);
+    sim->step(2.0);
+  }
+  const ocean::LocalSurfaceFrame& a = reference.value()->frame().local;
+  const ocean::LocalSurfaceFrame& b = tested.value()->frame().local;
+  ASSERT_EQ(a.displacement.size(), b.displacement.size());
+  double variance = 0.0, largest = 0.0;
+  for (const ocean::CascadeFrame& c : reference.value()->frame().cascades) {
+    double sum = 0.0;
+    for (std::size_t i = 1; i < c.displacement.size(); i += 3)
+      sum += c.displacement[i] * c.displacement[i];
+    variance += sum / static_cast<double>(c.displacement.size() / 3);
+  }
+  for (const float d : a.displacement)
+    largest = std::max(largest, std::abs(static_cast<double>(d)));
+  const double hs = 4.0 * std::sqrt(variance);
+  const double e_d = 2.0 * bounds.displacement_rel_hs * hs + 0x1p-23 * largest;
+  double worst_d = 0.0;
+  for (std::size_t i = 0; i < a.displacement.size(); ++i)
+    worst_d =
+        std::max(worst_d, std::abs(static_cast<double>(a.displacement[i]) - b.displacement[i]));
+  EXPECT_LE(worst_d, e_d);
+  EXPECT_GT(worst_d, 0.0);  // two different computations: equal bits would prove nothing
+  const int n = a.resolution;
+  const double e_g = 2.0 * e_d / (a.size_m / n);
+  const ocean::FoamParams& foam = config.foam;
+  double worst_j = 0.0, worst_j_share = 0.0;
+  for (int row = 0; row < n; ++row) {
+    for (int col = 0; col < n; ++col) {
+      const auto at = [&](int c, int r, int k) {
+        c = std::clamp(c, 0, n - 1), r = std::clamp(r, 0, n - 1);
+        return static_cast<double>(
+            a.displacement[3 * static_cast<std::size_t>(r * n + c) + static_cast<std::size_t>(k)]);
+      };
+      const double spacing = a.size_m / n;
+      double gradients = 0.0;
+      for (const int k : {0, 2}) {
+        gradients += std::abs(at(col + 1, row, k) - at(col - 1, row, k)) / spacing;
+        gradients += std::abs(at(col, row + 1, k) - at(col, row - 1, k)) / spacing;
+      }
+      const auto i = static_cast<std::size_t>(row * n + col);
+      const double e_j =
+          e_g * (2.0 + 2.0 * gradients) + 2.0 * e_g * e_g + 1e-6 * (1.0 + std::abs(a.jacobian[i]));
+      const double dj = std::abs(a.jacobian[i] - b.jacobian[i]);
+      worst_j = std::max(worst_j, dj);
+      worst_j_share = std::max(worst_j_share, dj / e_j);
+      ASSERT_LE(dj, e_j) << col << ", " << row;
+      ASSERT_LE(std::abs(a.foam[i] - b.foam[i]),
+                e_j / (foam.jacobian_start - foam.jacobian_full) + 1e-6)
+          << col << ", " << row;
+    }
+  }
+  std::printf(
+      "[%s] local surface: |dD| %.3g m (%.3g of its bound), |dJ| %.3g (%.3g of its bound)\n",
+      GetParam().c_str(), worst_d, worst_d / e_d, worst_j, worst_j_share);
+  expect_backend_ok(tested.value()->backend());
 }
 
 #ifdef OCEAN_HAS_VULKAN

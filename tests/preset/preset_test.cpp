@@ -155,4 +155,20 @@ TEST(PresetDocument, ReadsFiles) {
   fs::remove_all(dir);
 }
 
+TEST(Preset, BandRolesRoundTripAndBadOnesAreNamed) {
+  SimulationConfig c;
+  EXPECT_EQ(preset::to_json(c).find("band_roles"), std::string::npos);  // unset: not written
+  c.band_roles = {ocean::BandRole::displace, ocean::BandRole::both, ocean::BandRole::shade};
+  auto back = preset::from_json(preset::to_json(c));
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_EQ(back.value().band_roles, c.band_roles);
+  auto unknown = preset::from_json(R"({"band_roles": ["both", "glow", "shade"]})");
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.status().message().find("glow"), std::string::npos);
+  auto count = preset::from_json(R"({"band_roles": ["both"]})");
+  ASSERT_FALSE(count.ok());
+  EXPECT_NE(count.status().message().find("one per cascade"), std::string::npos);
+  EXPECT_FALSE(preset::from_json(R"({"band_roles": "shade"})").ok());
+}
+
 }  // namespace

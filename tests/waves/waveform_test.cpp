@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <vector>
 
 #include "ocean/io.hpp"
 #include "ocean/waves.hpp"
@@ -105,8 +107,43 @@ TEST(HeightMapFile, HostileFilesGiveOneLine) {
   const std::uint8_t rgb[12] = {};
   ASSERT_TRUE(ocean::io::write_png8(s.dir / "rgb.png", 2, 2, 3, rgb).ok());
   fails(s.dir / "rgb.png", "grayscale");
-  fails(s.dir / "map.exr", "EXR");
+  fails(s.dir / "map.exr", "No such file");
+  fails(s.dir / "map.tiff", ".npy, .png or .exr");
+  std::ofstream(s.dir / "fake.exr") << "not an exr";
+  fails(s.dir / "fake.exr", "cannot read");
+  const float rg[8] = {};
+  const ocean::io::ExrChannel two[] = {{"R", rg}, {"G", rg + 4}};
+  ASSERT_TRUE(
+      ocean::io::write_exr(s.dir / "rg.exr", 2, 2, two, ocean::io::ExrPixelType::float32).ok());
+  fails(s.dir / "rg.exr", "\"Y\"");
+  const float bad[4] = {0.0f, std::numeric_limits<float>::infinity(), 0.0f, 0.0f};
+  const ocean::io::ExrChannel inf[] = {{"Y", bad}};
+  ASSERT_TRUE(
+      ocean::io::write_exr(s.dir / "inf.exr", 2, 2, inf, ocean::io::ExrPixelType::float32).ok());
+  fails(s.dir / "inf.exr", "value 1 is not a finite height");
   fails(s.dir, "cannot read");
+}
+
+TEST(HeightMapFile, ExrHeightsAreReadAsStoredFromTheirYOrOnlyChannel) {
+  Scratch s;
+  // 2 rows × 3 columns, row 0 on top of the file = map row 0.
+  const float heights[6] = {0.25f, -1.5f, 3.0f, 0.0f, 7.75f, -0.125f};
+  const float other[6] = {9, 9, 9, 9, 9, 9};
+  const ocean::io::ExrChannel only[] = {{"height", heights}};
+  ASSERT_TRUE(
+      ocean::io::write_exr(s.dir / "only.exr", 3, 2, only, ocean::io::ExrPixelType::float32).ok());
+  const ocean::io::ExrChannel with_y[] = {{"A", other}, {"Y", heights}};
+  ASSERT_TRUE(
+      ocean::io::write_exr(s.dir / "y.exr", 3, 2, with_y, ocean::io::ExrPixelType::half).ok());
+  for (const char* name : {"only.exr", "y.exr"}) {
+    SCOPED_TRACE(name);
+    const auto m = ocean::waves::load_height_map(s.dir / name);
+    ASSERT_TRUE(m.ok()) << m.status().message();
+    EXPECT_EQ(m.value().rows, 2);
+    EXPECT_EQ(m.value().cols, 3);
+    // Every value is exact in half as well (few significant bits).
+    EXPECT_EQ(m.value().values, std::vector<float>(heights, heights + 6));
+  }
 }
 
 }  // namespace

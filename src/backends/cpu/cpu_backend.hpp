@@ -12,6 +12,7 @@
 #include "ocean/cpu_backend.hpp"
 #include "ocean/fft.hpp"
 #include "ocean/sim.hpp"
+#include "sim/packing.hpp"
 
 namespace ocean::cpu {
 
@@ -83,12 +84,11 @@ void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, 
 /// Box-filtered mip chain with normal-length smoothness (Aebi, VR Ocean, eqs. 52–55).
 void build_mips(CascadeState& state, CascadeFrame& out, TaskRunner& runner);
 
-/// RGBA8 packing of Aebi, VR Ocean, eqs. 50–51, from a unit normal, blue value and smoothness.
-std::uint32_t pack_rgba8(float nx, float nz, float blue, float smoothness);
-/// Roughness → normal length (Aebi, VR Ocean, eq. 49).
-float normal_length_from_roughness(float roughness);
-/// Normal length → smoothness (Aebi, VR Ocean, eq. 53).
-float smoothness_from_normal_length(float length);
+// RGBA8 packing and the roughness encoding (Aebi, VR Ocean, eqs. 49–53), shared with the
+// simulation front end.
+using packing::normal_length_from_roughness;
+using packing::pack_rgba8;
+using packing::smoothness_from_normal_length;
 
 /// The CPU backend (ocean/cpu_backend.hpp): configuration and the three pipelines' frames.
 class CpuBackendImpl final : public CpuBackend {

@@ -17,31 +17,9 @@
 
 namespace ocean::cpu {
 
-float normal_length_from_roughness(float r) {
-  return 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));  // Aebi, VR Ocean, eq. 49
-}
-
-float smoothness_from_normal_length(float length) {
-  const float t = std::clamp(3.0f * length - 2.0f, 0.0f, 1.0f);  // eq. 53: (|n| − 2/3)/(1/3)
-  // r = 1 − t·(0.85 + 0.15·t), factored as (1 − t)(1 + 0.15·t) so that r(1) is exactly 0.
-  const float r = (1.0f - t) * (1.0f + 0.15f * t);
-  return 1.0f - std::sqrt(r);
-}
-
-std::uint32_t pack_rgba8(float nx, float nz, float blue, float smoothness) {
-  const auto quantise = [](float v) {  // ⌊saturate(v)·255 + 0.5⌋   (eq. 50)
-    return static_cast<std::uint32_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);
-  };
-  return quantise(nx * 0.5f + 0.5f) | (quantise(nz * 0.5f + 0.5f) << 8) | (quantise(blue) << 16) |
-         (quantise(smoothness) << 24);  // eq. 51
-}
-
 namespace {
 
-struct Gradients {
-  // ∂/∂x and ∂/∂z of (Dx, h, Dz), world units.
-  float dx_dx, h_dx, dz_dx, dx_dz, h_dz, dz_dz;
-};
+using packing::Gradients;
 
 enum class Stencil { central, sobel };
 
@@ -104,27 +82,13 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
               g = stencil_gradients<Stencil::central>(out.displacement.data(), n, col, row,
                                                       inv_spacing);
             }
-            // Jacobian of the horizontal map x → x + D (eq. 48).
-            const float jxx = 1.0f + g.dx_dx, jzz = 1.0f + g.dz_dz;
-            const float jacobian = jxx * jzz - g.dx_dz * g.dz_dx;
-            // Normal of the displaced surface: ∂p/∂z × ∂p/∂x (M.7.5; eq. 47 when λ = 0).
-            float nx = g.h_dz * g.dz_dx - jzz * g.h_dx;
-            float ny = jacobian;
-            float nz = g.dx_dz * g.h_dx - g.h_dz * jxx;
-            const float length = std::sqrt(nx * nx + ny * ny + nz * nz);
-            if (length > 0.0f) {
-              nx /= length, ny /= length, nz /= length;
-            } else {
-              nx = 0.0f, ny = 1.0f, nz = 0.0f;
-            }
+            const packing::SurfacePoint p = packing::surface_point(g);
+            const float jacobian = p.jacobian;
+            const float nx = p.normal[0], ny = p.normal[1], nz = p.normal[2];
             // Foam: a ramp on J, accumulated with the decay of Vincevičius 2024, §2.4.2
             // (M.7.4).
-            const float now = std::clamp((j_start - jacobian) / j_range, 0.0f, 1.0f);
-            float foam = now;
-            if (!reset_foam) {
-              const float accumulated = state.foam[i] - decay / std::max(now, 0.5f);
-              foam = std::clamp(std::max(accumulated, now), 0.0f, 1.0f);
-            }
+            const float foam = packing::accumulate_foam(jacobian, state.foam[i], reset_foam,
+                                                        j_start, j_range, decay);
             state.foam[i] = foam;
             if (want.jacobian) out.jacobian[i] = jacobian;
             if (want.foam) out.foam[i] = foam;

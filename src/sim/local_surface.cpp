@@ -1,0 +1,120 @@
+// The local surface (docs/math.md M.7.9): the sea's cascades sampled on the local layer's grid
+// and added to the layer before the normal, Jacobian and foam are computed, so a wake folds and
+// foams where it meets the sea's crests as the sea itself does (Mitchell 2005, §3.4: composited
+// waveforms go through the same normal and foam pass as the synthesised sea).
+//
+// The cascades are periodic and the layer is not, so the sum lives on the layer's world grid and
+// is computed here, from the published frame's arrays, rather than in each backend: every
+// backend (CPU, Vulkan, CUDA) then gets the same local surface from its frame, and the local
+// surface conforms as its cascades do (docs/vulkan.md, "Conformance bounds").
+#include "local_surface.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "packing.hpp"
+
+namespace ocean {
+
+namespace detail {
+
+void allocate_local_surface(const waves::LocalArea& area, LocalSurfaceFrame& local) {
+  const auto cells = static_cast<std::size_t>(area.resolution) * area.resolution;
+  local.origin_m = area.origin_m;
+  local.size_m = area.size_m;
+  local.resolution = area.resolution;
+  local.displacement.assign(3 * cells, 0.0f);
+  local.normal.assign(3 * cells, 0.0f);
+  local.jacobian.assign(cells, 1.0f);
+  local.foam.assign(cells, 0.0f);
+}
+
+namespace {
+
+// ∂/∂x and ∂/∂z of (Dx, h, Dz) at cell (col, row): central differences inside, one-sided at the
+// edges of the non-periodic grid.
+packing::Gradients cell_gradients(const std::vector<float>& d, int n, int col, int row,
+                                  double spacing_m) {
+  const auto at = [&](int c, int r, int comp) {
+    return d[3 * (static_cast<std::size_t>(r) * static_cast<std::size_t>(n) +
+                  static_cast<std::size_t>(c)) +
+             static_cast<std::size_t>(comp)];
+  };
+  const int c0 = std::max(col - 1, 0), c1 = std::min(col + 1, n - 1);
+  const int r0 = std::max(row - 1, 0), r1 = std::min(row + 1, n - 1);
+  const auto inv_x = static_cast<float>(1.0 / ((c1 - c0) * spacing_m));
+  const auto inv_z = static_cast<float>(1.0 / ((r1 - r0) * spacing_m));
+  float gx[3], gz[3];
+  for (int comp = 0; comp < 3; ++comp) {
+    gx[comp] = (at(c1, row, comp) - at(c0, row, comp)) * inv_x;
+    gz[comp] = (at(col, r1, comp) - at(col, r0, comp)) * inv_z;
+  }
+  return {gx[0], gx[1], gx[2], gz[0], gz[1], gz[2]};
+}
+
+}  // namespace
+
+void composite_local_surface(const SimulationConfig& config, const waves::Damping* damping,
+                             const waves::LocalLayer& layer,
+                             const std::vector<float>& previous_foam, double dt_s, bool reset_foam,
+                             Frame& frame, TaskRunner& runner) {
+  LocalSurfaceFrame& local = frame.local;
+  const int n = local.resolution;
+  if (n <= 0) return;
+  const waves::LocalArea& area = layer.params().area;
+  const auto rows = static_cast<std::size_t>(n);
+  runner.parallel_for(rows, 4, [&](std::size_t row_begin, std::size_t row_end) {
+    for (auto row = static_cast<int>(row_begin); row < static_cast<int>(row_end); ++row) {
+      for (int col = 0; col < n; ++col) {
+        const std::array<double, 2> p = waves::cell_centre(area, col, row);
+        const std::array<double, 3> d = surface_displacement(frame, damping, &layer, p[0], p[1]);
+        const std::size_t i = static_cast<std::size_t>(row) * rows + static_cast<std::size_t>(col);
+        for (std::size_t k = 0; k < 3; ++k)
+          local.displacement[3 * i + k] = static_cast<float>(d[k]);
+      }
+    }
+  });
+  const double spacing_m = area.size_m / n;
+  const auto j_start = static_cast<float>(config.foam.jacobian_start);
+  const auto j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
+  const auto decay = static_cast<float>(config.foam.decay_per_s * dt_s);
+  const bool reset = reset_foam || previous_foam.size() != local.foam.size();
+  runner.parallel_for(rows, 8, [&](std::size_t row_begin, std::size_t row_end) {
+    for (auto row = static_cast<int>(row_begin); row < static_cast<int>(row_end); ++row) {
+      for (int col = 0; col < n; ++col) {
+        const std::size_t i = static_cast<std::size_t>(row) * rows + static_cast<std::size_t>(col);
+        const packing::SurfacePoint s =
+            packing::surface_point(cell_gradients(local.displacement, n, col, row, spacing_m));
+        local.jacobian[i] = s.jacobian;
+        for (std::size_t k = 0; k < 3; ++k) local.normal[3 * i + k] = s.normal[k];
+        local.foam[i] = packing::accumulate_foam(s.jacobian, reset ? 0.0f : previous_foam[i], reset,
+                                                 j_start, j_range, decay);
+      }
+    }
+  });
+}
+
+}  // namespace detail
+
+void Simulator::set_local_layer(std::shared_ptr<const waves::LocalLayer> layer) {
+  wait();
+  local_layer_ = std::move(layer);
+  local_foam_reset_ = true;
+  for (Frame& f : frames_) {
+    if (local_layer_ != nullptr)
+      detail::allocate_local_surface(local_layer_->params().area, f.local);
+    else
+      f.local = LocalSurfaceFrame{};
+  }
+}
+
+void Simulator::compute_local_surface(Frame& back) {
+  if (local_layer_ == nullptr) return;
+  const Frame& front = frames_[front_];
+  const bool reset = local_foam_reset_ || !(back.time_s > front.time_s);
+  detail::composite_local_surface(config_, damping_.get(), *local_layer_, front.local.foam,
+                                  back.time_s - front.time_s, reset, back, *runner_);
+  local_foam_reset_ = false;
+}
+
+}  // namespace ocean
