@@ -114,6 +114,9 @@ struct View {
   /// Meshes placed in the world (indices into Renderer::set_meshes), drawn after the water and
   /// depth-tested with it (R.20). Each model matrix must be finite.
   std::vector<ObjectInstance> objects;
+  /// Whether the water mirrors the objects (planar reflection, R.53). The stereo pass draws none
+  /// (its reflection target is one view's); a mono picture to compare with it turns this off.
+  bool object_reflections = true;
   /// A seabed seen through the water (R.22–R.23); off by default.
   Seabed seabed;
   /// The sea on a sphere of radius planet_radius_m (R.30–R.38); off by default.

@@ -71,7 +71,8 @@ void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& vie
   const VkRect2D scissor{{0, 0}, {w, h}};
   vkCmdSetViewport(cmd, 0, 1, &flipped);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  if (!st.objects.meshes.empty()) record_objects(st, cmd, view, stats, VK_NULL_HANDLE, true);
+  if (!st.objects.meshes.empty() && view.object_reflections)
+    record_objects(st, cmd, view, stats, VK_NULL_HANDLE, true);
   vkCmdEndRendering(cmd);
   vk::image_barrier(cmd, st.reflection.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,

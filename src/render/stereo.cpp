@@ -155,8 +155,11 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
 
   begin_frame(st, cmd);
-  // The objects mirrored in the sea (R.53) from the head's pose, shared by both eyes.
-  record_reflection(st, cmd, view, stats_);
+  // The planar reflection (R.53) is one view's: in stereo the water mirrors no object (the target
+  // is cleared and the water shows the sky's reflection).
+  View unmirrored = view;
+  unmirrored.object_reflections = false;
+  record_reflection(st, cmd, unmirrored, stats_);
   const StereoPass& sp = st.stereo;
   begin_scene(st, cmd, sp.hdr, sp.depth, kBothEyes);
   record_scene(st, cmd, view,

@@ -28,8 +28,9 @@ TEST(SphereCli, BadInputIsOneLine) {
   ocean_test::expect_usage_error("render --sphere --altitude -5", "--altitude");
   ocean_test::expect_usage_error("render --latitude 30", "need --sphere");
   ocean_test::expect_usage_error("render --sphere --view wireframe", "wireframe");
-  // --planet-radius alone still bends the flat sea (R.15): a camera below y = 0 is refused there.
-  ocean_test::expect_usage_error("render --planet-radius 5000 --camera 0,-3,0", "above the sea");
+  // --planet-radius alone still bends the flat sea (R.15), where a camera may dive (R.50) but
+  // not below 1000 m.
+  ocean_test::expect_usage_error("render --planet-radius 5000 --camera 0,-3000,0", "1000 m below");
 }
 
 TEST(SphereCli, ASmallPlanetFromOrbit) {

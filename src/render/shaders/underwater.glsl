@@ -65,6 +65,7 @@ float eye_above_surface() { return u.camera_pos_m.y - surface_height(u.camera_po
 // agrees with the drawn mesh wherever the mesh strays from the exact surface, so the waterline
 // shows neither a gap to the sky nor a bar of water.
 bool ray_stays_in_water(vec3 v) {
+  if (u.sphere.enabled > 0.5) return false;  // the sphere's camera is above its sea (R.30–R.38)
   // An eye deeper than the mesh strays sees the sky only through the hairline cracks where the
   // skirt meets the patches.
   float eye = eye_above_surface();
