@@ -64,15 +64,7 @@ std::array<double, 3> ray(const ocean::lod::Camera& c, double nx, double ny) {
           nx * tx * s[2] + ny * ty * u[2] + f[2]};
 }
 
-struct Rig {
-  std::shared_ptr<ocean::vk::Context> ctx;
-  std::unique_ptr<Renderer> renderer;
-  ~Rig() {
-    if (ctx != nullptr) {
-      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
-    }
-  }
-};
+using Rig = ocean::render::testing::ValidatedRig;
 
 std::unique_ptr<Rig> make_rig(const ocean::SimulationConfig& config) {
   auto rig = std::make_unique<Rig>();

@@ -19,15 +19,7 @@ namespace helpers = ocean::render::testing;
 constexpr int kW = 120, kH = 80;
 constexpr double kIor = 1.333, kHeight = 8.0;
 
-struct Rig {
-  std::shared_ptr<ocean::vk::Context> ctx;
-  std::unique_ptr<Renderer> renderer;
-  ~Rig() {
-    if (ctx != nullptr) {
-      EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
-    }
-  }
-};
+using Rig = ocean::render::testing::ValidatedRig;
 
 // Calm water: a 1 m/s breeze over 1 km, whose waves the 47 m cascade barely resolves (slopes
 // below 1e-2 rad: a refraction offset under 1 cm at these depths).
