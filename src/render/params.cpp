@@ -39,6 +39,12 @@ Result<DebugView> parse_debug_view(std::string_view name) {
                           name_list(kDebugViewNames, ", ", " or "));
 }
 
+// The water seen from below (R.50–R.51); here, not in underwater.cpp, so that the view's checks
+// link without the renderer's device code.
+Status validate(const Underwater& underwater) {
+  return require_in_range("underwater scattering_per_m", underwater.scattering_per_m, 0.0, 10.0);
+}
+
 Status validate(const View& view) {
   if (Status s = lod::validate(view.camera); !s.ok()) return s;
   if (Status s = lod::validate(view.quality); !s.ok()) return s;

@@ -1,17 +1,13 @@
 // The view from below the surface (ocean/underwater.hpp; docs/rendering.md R.50–R.52): the
-// water's optics checked and handed to the shaders (FrameUniforms::underwater). The work is in
-// shaders/underwater.glsl: the sky pass fills the pixels whose near-plane point lies under the
-// surface with the water's own light, the ocean pass shades the surface seen from below, the
-// object pass fogs what lies under water with the camera.
+// water's optics (checked in params.cpp with the rest of the view) handed to the shaders
+// (FrameUniforms::underwater). The work is in shaders/underwater.glsl: the sky pass fills the
+// pixels whose near-plane point lies under the surface with the water's own light, the ocean pass
+// shades the surface seen from below, the object pass fogs what lies under water with the camera.
 #include "ocean/underwater.hpp"
 
 #include "state.hpp"
 
 namespace ocean::render {
-
-Status validate(const Underwater& underwater) {
-  return require_in_range("underwater scattering_per_m", underwater.scattering_per_m, 0.0, 10.0);
-}
 
 void fill_underwater_uniforms(const Renderer::State& st, const View& view,
                               shader::FrameUniforms& u) {

@@ -19,7 +19,7 @@ namespace ocean {
 namespace detail {
 
 void allocate_local_surface(const waves::LocalArea& area, LocalSurfaceFrame& local) {
-  const auto cells = static_cast<std::size_t>(area.resolution) * area.resolution;
+  const auto cells = static_cast<std::size_t>(area.resolution) * static_cast<std::size_t>(area.resolution);
   local.origin_m = area.origin_m;
   local.size_m = area.size_m;
   local.resolution = area.resolution;
