@@ -4,11 +4,28 @@
 // (frame_steps.hpp) serve the stereo frame of stereo.cpp as well.
 #include <chrono>
 #include <cstring>
+#include <span>
 #include <string>
 
 #include "frame_steps.hpp"
 
 namespace ocean::render {
+
+Status check_view(const Renderer::State& st, const View& view) {
+  if (Status s = validate(view); !s.ok()) return s;
+  if (Status s = validate_objects(st, view); !s.ok()) return s;
+  if (view.debug == DebugView::wireframe && !st.ctx->wireframe)
+    return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
+  return {};
+}
+
+void fill_frame_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
+                         shader::FrameUniforms& u) {
+  fill_uniforms(st, view, vp, u);
+  fill_origin_uniforms(st, view, u);
+  fill_environment_uniforms(st, view, u);
+  fill_underwater_uniforms(st, view, u);
+}
 
 Result<std::uint32_t> select_frame(Renderer::State& st, const View& view, lod::Vec3 lod_position,
                                    const lod::Frustum& frustum, RenderStats& stats) {
@@ -138,8 +155,9 @@ void record_patches(Renderer::State& st, VkCommandBuffer cmd, std::uint32_t skir
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
   vkCmdBindVertexBuffers(cmd, 1, 1, &st.instances.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
-  for (const lod::Batch& b : st.selection.batches) {  // ≤ 16 instanced draws (Aebi, eq. 70)
-    if (!quadtree) break;
+  const std::span<const lod::Batch> batches =
+      quadtree ? std::span<const lod::Batch>(st.selection.batches) : std::span<const lod::Batch>();
+  for (const lod::Batch& b : batches) {  // ≤ 16 instanced draws (Aebi, eq. 70)
     vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
     if (stats == nullptr) continue;
     ++stats->draw_calls;
@@ -198,11 +216,8 @@ void finish_frame(Renderer::State& st, VkCommandBuffer cmd, double exposure,
 }
 
 Status Renderer::record(VkCommandBuffer cmd, const View& view) {
-  if (Status s = validate(view); !s.ok()) return s;
   State& st = *state_;
-  if (Status s = validate_objects(st, view); !s.ok()) return s;
-  if (view.debug == DebugView::wireframe && st.wire == VK_NULL_HANDLE)
-    return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
+  if (Status s = check_view(st, view); !s.ok()) return s;
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
   if (Status s = check_tessellation(*st.ctx, view.tessellation); !s.ok()) return s;
   const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
@@ -219,10 +234,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   // The GPU draws relative to the grid centre (R.16).
   lod::Mat4 vp = lod::view_projection(relative_camera(view.camera, st.selection));
   shader::FrameUniforms u{};
-  fill_uniforms(st, view, vp, u);
-  fill_origin_uniforms(st, view, u);
-  fill_environment_uniforms(st, view, u);
-  fill_underwater_uniforms(st, view, u);
+  fill_frame_uniforms(st, view, vp, u);
   if (view.sphere.enabled)  // the sea on a sphere (R.30–R.38): its selection, uniforms and vp
     if (Status s = prepare_sphere(st, view, vp, u); !s.ok()) return s;
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));

@@ -13,6 +13,13 @@ struct ScenePipelines {
   std::uint32_t sky_vertices = 3;  // the fullscreen triangle; the multiview sky's quad: 6
 };
 
+// The checks every recorded frame makes first: the view (validate), its objects' meshes and, for
+// a wireframe view, a device that draws one.
+Status check_view(const Renderer::State& st, const View& view);
+// The frame's uniforms for the view-projection `vp` (relative to the grid centre, R.16): the
+// shading, the cascades' origins, the environment and the water seen from below.
+void fill_frame_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
+                         shader::FrameUniforms& u);
 // LOD selection from `lod_position` culled by `frustum` (Aebi, VR Ocean, §5) with boxes that
 // include the waves' reach; writes the instances (relative to the grid centre, R.16) and the
 // skirt's vertices; returns the skirt's instance index. Sets stats.cpu_select_ms.

@@ -119,13 +119,10 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
   if (st.hdr.width % 2 != 0)
     return invalid_argument("stereo: the image width " + std::to_string(st.hdr.width) +
                             " must be even (two eyes side by side)");
-  if (Status s = validate(view); !s.ok()) return s;
+  if (Status s = check_view(st, view); !s.ok()) return s;
   if (view.sphere.enabled) return unsupported("stereo: not drawn for the sea on a sphere");
   if (view.tessellation.mesh == MeshMode::tessellation)
     return unsupported("stereo: not drawn with the tessellated mesh");
-  if (Status s = validate_objects(st, view); !s.ok()) return s;
-  if (view.debug == DebugView::wireframe && !st.ctx->wireframe)
-    return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
   if (Status s = create_stereo_pipelines(st); !s.ok()) return s;
   if (Status s = create_stereo_targets(st); !s.ok()) return s;
   if (Status s = prepare(view); !s.ok()) return s;
@@ -139,10 +136,7 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
   if (!skirt_instance.ok()) return skirt_instance.status();
   const lod::LodSelection& sel = st.selection;
   shader::FrameUniforms u{};
-  fill_uniforms(st, view, lod::view_projection(relative_camera(view.camera, sel)), u);
-  fill_origin_uniforms(st, view, u);
-  fill_environment_uniforms(st, view, u);
-  fill_underwater_uniforms(st, view, u);
+  fill_frame_uniforms(st, view, lod::view_projection(relative_camera(view.camera, sel)), u);
   for (std::size_t e = 0; e < 2; ++e) {
     const lod::Camera eye = relative_camera(eyes.value()[e], sel);
     const lod::Mat4 vp = lod::view_projection(eye);
