@@ -72,8 +72,8 @@ Result<std::unique_ptr<waves::LocalLayer>> circling_boat_layer(const BoatControl
   waves::KelvinWake wake{.speed_mps = boat.speed_mps,
                          .hull_length_m = kBoatHullLength_m,
                          .peak_height_m = kBoatWakePeak_m};
-  const int steps = static_cast<int>(std::ceil(kBoatLaps * 2.0 * std::numbers::pi /
-                                               kWaypointStep_rad));
+  const int steps =
+      static_cast<int>(std::ceil(kBoatLaps * 2.0 * std::numbers::pi / kWaypointStep_rad));
   const double dt = (circling_boat_end(boat, t0_s) - t0_s) / steps;
   wake.path.reserve(static_cast<std::size_t>(steps) + 1);
   for (int i = 0; i <= steps; ++i) {
@@ -112,12 +112,11 @@ Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
   waves::DampingParams params{.band_wavenumbers_radpm = band_wavenumbers(config),
                               .gravity_mps2 = config.sea.dispersion.gravity_mps2};
   if (scene == Shallows::lily_pads) {
-    params.mask = radial_map(centre_m, 200.0, 256,
-                             [](double r) { return smoothstep(40.0, 60.0, r); });
+    params.mask =
+        radial_map(centre_m, 200.0, 256, [](double r) { return smoothstep(40.0, 60.0, r); });
   } else {
-    params.bathymetry = radial_map(centre_m, 400.0, 256, [](double r) {
-      return std::clamp((r - 50.0) / 5.0, 0.0, 40.0);
-    });
+    params.bathymetry = radial_map(
+        centre_m, 400.0, 256, [](double r) { return std::clamp((r - 50.0) / 5.0, 0.0, 40.0); });
   }
   Result<waves::Damping> made = waves::Damping::make(std::move(params));
   if (!made.ok()) return made.status();
@@ -140,8 +139,7 @@ Status InteractionScene::set_boat(const BoatControls& boat, double time_s,
   layer_.reset();
   boat_ = boat;
   if (!boat.on) return renderer.set_local_layer({});
-  Result<std::unique_ptr<waves::LocalLayer>> layer =
-      circling_boat_layer(boat, time_s, choppiness_);
+  Result<std::unique_ptr<waves::LocalLayer>> layer = circling_boat_layer(boat, time_s, choppiness_);
   if (!layer.ok()) return layer.status();
   layer_ = std::move(layer).value();
   t0_s_ = time_s;
@@ -149,8 +147,7 @@ Status InteractionScene::set_boat(const BoatControls& boat, double time_s,
 }
 
 Status InteractionScene::set_shallows(Shallows scene, std::array<double, 2> centre_m,
-                                      const SimulationConfig& config,
-                                      render::Renderer& renderer) {
+                                      const SimulationConfig& config, render::Renderer& renderer) {
   Result<std::optional<waves::Damping>> damping = shallows_damping(scene, centre_m, config);
   if (!damping.ok()) return damping.status();
   if (!damping.value().has_value()) return renderer.set_damping({});
