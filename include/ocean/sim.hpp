@@ -204,6 +204,15 @@ struct LocalSurfaceFrame {
   std::vector<float> normal;    ///< float3 unit normal of the summed surface (M.7.5)
   std::vector<float> jacobian;  ///< J of the summed horizontal map (eq. 48)
   std::vector<float> foam;      ///< accumulated foam coverage [0, 1] from J (M.7.4)
+  /// float3 (Dx, h, Dz) of the layer alone per cell, m (LocalLayer::displacement_at at the cell
+  /// centre): what a consumer that draws the sea at its own resolution adds to it (R.19).
+  std::vector<float> layer_displacement;
+  /// The normal and the accumulated foam of the sea alone on the same grid, by the same
+  /// differences and the same accumulation as `normal` and `foam` (M.7.10): where the layer is 0
+  /// in a cell and its neighbours (and has been since the foam restarted) they equal `normal` and
+  /// `foam` exactly, so `normal − sea_normal` and `foam − sea_foam` are what the layer changes.
+  std::vector<float> sea_normal;
+  std::vector<float> sea_foam;
 };
 
 struct Frame {

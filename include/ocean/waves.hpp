@@ -21,9 +21,11 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "ocean/core.hpp"
+#include "ocean/names.hpp"
 
 namespace ocean::waves {
 
@@ -111,20 +113,66 @@ inline constexpr int kMaxHeightMapSide = 16384;
 /// ocean::excerpt. Never throws; safe on arbitrary bytes.
 Result<HeightMap> load_height_map(const std::filesystem::path& path);
 
-/// A pre-authored waveform placed in the world.
+/// The placeholder of the frame number in a sequence's file pattern: "{frame}" (the number in
+/// decimal, as many digits as it has) or "{frame:W}" (zero-padded to W digits, W in 1..9).
+inline constexpr std::string_view kFramePlaceholder = "{frame";
+/// Most frames in a height map sequence, and most samples all its frames hold together (256 MiB
+/// of float).
+inline constexpr int kMaxSequenceFrames = 10000;
+inline constexpr std::size_t kMaxSequenceSamples = std::size_t{1} << 26;
+/// True when `pattern` names a numbered sequence (holds kFramePlaceholder).
+bool is_sequence_pattern(std::string_view pattern);
+/// Reads a numbered sequence of height maps (W.16): the files of `pattern`'s folder whose names
+/// are the pattern with the placeholder replaced by a frame number, in the order of their numbers,
+/// which must run without a gap from the smallest (0, 1 or any other). Each file is read with
+/// load_height_map. invalid_argument, one line naming the pattern: a malformed placeholder, no
+/// matching file, a gap ("frame 12 missing between 11 and 13"), two files of one number ("7" and
+/// "007"), frames of different sizes ("frame 3 is 64x32, frame 0 64x64"), more than
+/// kMaxSequenceFrames frames or kMaxSequenceSamples samples; a frame's own errors name its file.
+Result<std::vector<std::shared_ptr<const HeightMap>>> load_height_map_sequence(
+    const std::filesystem::path& pattern);
+
+/// What an animated waveform does after its last frame (W.16).
+enum class Playback {
+  loop,  ///< starts again: the last frame blends into the first, period = frames / fps
+  hold,  ///< stays on the last frame (and on the first before time 0)
+};
+/// The names of the playbacks in flags and messages.
+inline constexpr std::array<EnumName<Playback>, 2> kPlaybackNames{{
+    {Playback::loop, "loop"},
+    {Playback::hold, "hold"},
+}};
+
+/// A pre-authored waveform placed in the world: one still height map, or an animated sequence.
 struct Waveform {
-  std::shared_ptr<const HeightMap> map;
-  double x_m = 0.0;           ///< centre, m
-  double z_m = 0.0;           ///< centre, m
+  std::shared_ptr<const HeightMap> map;  ///< a still map (used when `frames` is empty)
+  /// An animated waveform (W.16): maps of one size, frame i shown at time i / fps_hz, linearly
+  /// interpolated between frames; empty for a still map.
+  std::vector<std::shared_ptr<const HeightMap>> frames;
+  double fps_hz = 24.0;                ///< frames per second of `frames`, finite, in (0, 1000]
+  Playback playback = Playback::loop;  ///< after the last frame
+  double x_m = 0.0;                    ///< centre, m
+  double z_m = 0.0;                    ///< centre, m
   double size_m = 10.0;       ///< extent along the map's columns, m (> 0); rows scale alike
   double amplitude_m = 1.0;   ///< height = amplitude·value, m (finite)
   double rotation_deg = 0.0;  ///< from +x towards +z
 };
-/// invalid_argument for a missing map or a bad size, amplitude or rotation.
+/// invalid_argument for a missing map (no map and no frames), frames of different sizes or
+/// missing, a bad fps, size, amplitude or rotation.
 Status validate(const Waveform& waveform);
-/// Height of the waveform at world (x, z): amplitude times the bilinear sample of its map (clamped
-/// at the map's edge cells), 0 outside its rectangle (W.10).
-double waveform_height(const Waveform& waveform, double x, double z);
+/// Which frames an animated waveform shows at time t and how much of the second (W.16): frame
+/// `first` weighted 1 − `blend` and frame `second` weighted `blend`, blend in [0, 1). A still map:
+/// {0, 0, 0}.
+struct FramePair {
+  std::size_t first = 0;
+  std::size_t second = 0;
+  double blend = 0.0;
+};
+FramePair frame_pair(const Waveform& waveform, double time_s);
+/// Height of the waveform at world (x, z) at time t: amplitude times the bilinear sample of its
+/// map (clamped at the map's edge cells), 0 outside its rectangle (W.10); for a sequence the two
+/// frames of frame_pair(t) sampled alike and blended (W.16). Never allocates.
+double waveform_height(const Waveform& waveform, double x, double z, double time_s = 0.0);
 
 /// A 2-D map placed in the world by its corner: sample (row r, col c) lies at world
 /// x = x0 + (c + ½)·cell, z = z0 + (r + ½)·cell, cell = size_m / cols, so the map covers

@@ -19,7 +19,8 @@ namespace ocean {
 namespace detail {
 
 void allocate_local_surface(const waves::LocalArea& area, LocalSurfaceFrame& local) {
-  const auto cells = static_cast<std::size_t>(area.resolution) * static_cast<std::size_t>(area.resolution);
+  const auto cells =
+      static_cast<std::size_t>(area.resolution) * static_cast<std::size_t>(area.resolution);
   local.origin_m = area.origin_m;
   local.size_m = area.size_m;
   local.resolution = area.resolution;
@@ -27,6 +28,9 @@ void allocate_local_surface(const waves::LocalArea& area, LocalSurfaceFrame& loc
   local.normal.assign(3 * cells, 0.0f);
   local.jacobian.assign(cells, 1.0f);
   local.foam.assign(cells, 0.0f);
+  local.layer_displacement.assign(3 * cells, 0.0f);
+  local.sea_normal.assign(3 * cells, 0.0f);
+  local.sea_foam.assign(cells, 0.0f);
 }
 
 namespace {
@@ -55,9 +59,8 @@ packing::Gradients cell_gradients(const std::vector<float>& d, int n, int col, i
 }  // namespace
 
 void composite_local_surface(const SimulationConfig& config, const waves::Damping* damping,
-                             const waves::LocalLayer& layer,
-                             const std::vector<float>& previous_foam, double dt_s, bool reset_foam,
-                             Frame& frame, TaskRunner& runner) {
+                             const waves::LocalLayer& layer, const LocalSurfaceFrame& previous,
+                             double dt_s, bool reset_foam, Frame& frame, TaskRunner& runner) {
   LocalSurfaceFrame& local = frame.local;
   const int n = local.resolution;
   if (n <= 0) return;
@@ -67,10 +70,13 @@ void composite_local_surface(const SimulationConfig& config, const waves::Dampin
     for (auto row = static_cast<int>(row_begin); row < static_cast<int>(row_end); ++row) {
       for (int col = 0; col < n; ++col) {
         const std::array<double, 2> p = waves::cell_centre(area, col, row);
-        const std::array<double, 3> d = surface_displacement(frame, damping, &layer, p[0], p[1]);
+        const std::array<double, 3> sea = surface_displacement(frame, damping, nullptr, p[0], p[1]);
+        const std::array<double, 3> own = layer.displacement_at(p[0], p[1], frame.time_s);
         const std::size_t i = static_cast<std::size_t>(row) * rows + static_cast<std::size_t>(col);
-        for (std::size_t k = 0; k < 3; ++k)
-          local.displacement[3 * i + k] = static_cast<float>(d[k]);
+        for (std::size_t k = 0; k < 3; ++k) {
+          local.displacement[3 * i + k] = static_cast<float>(sea[k] + own[k]);
+          local.layer_displacement[3 * i + k] = static_cast<float>(own[k]);
+        }
       }
     }
   });
@@ -78,17 +84,28 @@ void composite_local_surface(const SimulationConfig& config, const waves::Dampin
   const auto j_start = static_cast<float>(config.foam.jacobian_start);
   const auto j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
   const auto decay = static_cast<float>(config.foam.decay_per_s * dt_s);
-  const bool reset = reset_foam || previous_foam.size() != local.foam.size();
+  const bool reset = reset_foam || previous.foam.size() != local.foam.size() ||
+                     previous.sea_foam.size() != local.sea_foam.size();
   runner.parallel_for(rows, 8, [&](std::size_t row_begin, std::size_t row_end) {
     for (auto row = static_cast<int>(row_begin); row < static_cast<int>(row_end); ++row) {
       for (int col = 0; col < n; ++col) {
         const std::size_t i = static_cast<std::size_t>(row) * rows + static_cast<std::size_t>(col);
-        const packing::SurfacePoint s =
-            packing::surface_point(cell_gradients(local.displacement, n, col, row, spacing_m));
+        const packing::Gradients sum = cell_gradients(local.displacement, n, col, row, spacing_m);
+        const packing::SurfacePoint s = packing::surface_point(sum);
         local.jacobian[i] = s.jacobian;
         for (std::size_t k = 0; k < 3; ++k) local.normal[3 * i + k] = s.normal[k];
-        local.foam[i] = packing::accumulate_foam(s.jacobian, reset ? 0.0f : previous_foam[i], reset,
+        local.foam[i] = packing::accumulate_foam(s.jacobian, reset ? 0.0f : previous.foam[i], reset,
                                                  j_start, j_range, decay);
+        // The sea alone (M.7.10): the sum's gradients less the layer's, exactly the sum's where
+        // the layer's differences are 0.
+        const packing::Gradients own =
+            cell_gradients(local.layer_displacement, n, col, row, spacing_m);
+        const packing::SurfacePoint sea = packing::surface_point(
+            {sum.dx_dx - own.dx_dx, sum.h_dx - own.h_dx, sum.dz_dx - own.dz_dx,
+             sum.dx_dz - own.dx_dz, sum.h_dz - own.h_dz, sum.dz_dz - own.dz_dz});
+        for (std::size_t k = 0; k < 3; ++k) local.sea_normal[3 * i + k] = sea.normal[k];
+        local.sea_foam[i] = packing::accumulate_foam(
+            sea.jacobian, reset ? 0.0f : previous.sea_foam[i], reset, j_start, j_range, decay);
       }
     }
   });
@@ -112,7 +129,7 @@ void Simulator::compute_local_surface(Frame& back) {
   if (local_layer_ == nullptr) return;
   const Frame& front = frames_[front_];
   const bool reset = local_foam_reset_ || !(back.time_s > front.time_s);
-  detail::composite_local_surface(config_, damping_.get(), *local_layer_, front.local.foam,
+  detail::composite_local_surface(config_, damping_.get(), *local_layer_, front.local,
                                   back.time_s - front.time_s, reset, back, *runner_);
   local_foam_reset_ = false;
 }

@@ -20,11 +20,10 @@ void allocate_local_surface(const waves::LocalArea& area, LocalSurfaceFrame& loc
 
 /// Computes frame.local (sized by allocate_local_surface) from the frame's cascades, the damping
 /// and the layer (M.7.9): displacement at the cell centres, then normal, Jacobian and foam of the
-/// sum, the foam accumulated from `previous_foam` over dt_s (restarted when `reset_foam`).
-/// Never allocates.
+/// sum, the foam accumulated from `previous`'s over dt_s (restarted when `reset_foam`); the
+/// layer alone and the sea's normal and foam beside them (M.7.10). Never allocates.
 void composite_local_surface(const SimulationConfig& config, const waves::Damping* damping,
-                             const waves::LocalLayer& layer,
-                             const std::vector<float>& previous_foam, double dt_s, bool reset_foam,
-                             Frame& frame, TaskRunner& runner);
+                             const waves::LocalLayer& layer, const LocalSurfaceFrame& previous,
+                             double dt_s, bool reset_foam, Frame& frame, TaskRunner& runner);
 
 }  // namespace ocean::detail

@@ -130,7 +130,7 @@ std::array<double, 3> LocalLayer::displacement_at(double x, double z, double tim
     add_wake(place(params_.wakes[i], impl_->wake_tables[i], impl_->tables, time_s),
              params_.choppiness, x, z, d);
   }
-  for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z);
+  for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z, time_s);
   for (double& v : d) v *= weight;
   return d;
 }
@@ -151,7 +151,7 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
       if (weight == 0.0) continue;
       std::array<double, 3> d{0.0, 0.0, 0.0};
       for (const Placed& p : placed) add_wake(p, params_.choppiness, x, z, d);
-      for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z);
+      for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z, time_s);
       float* cell = out.displacement.data() + 3 * (row * n + col);
       for (std::size_t k = 0; k < 3; ++k) cell[k] = static_cast<float>(weight * d[k]);
     }

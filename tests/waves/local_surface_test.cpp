@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "ocean/backends.hpp"
@@ -142,6 +143,52 @@ TEST(LocalSurface, IsEmptyWithoutALayerAndFollowsTheLayerAcrossReconfigure) {
   sim->set_local_layer(nullptr);
   sim->step(0.2);
   EXPECT_TRUE(sim->frame().local.displacement.empty());
+}
+
+// The sea alone beside the sum (M.7.10): a wake's layer carried beside the sum, and the sea's
+// normal and foam equal to those of a simulator whose layer is the same wake at zero height
+// (its sum is the sea alone, computed independently), over several accumulating steps.
+TEST(LocalSurface, CarriesTheLayerAndTheSeaAloneBesideTheSum) {
+  auto with = sea(), without = sea();
+  LayerParams p;
+  p.area = {.origin_m = {-40.0, -40.0}, .size_m = 80.0, .resolution = 64};
+  p.wakes.push_back({.x_m = 20.0,
+                     .heading_deg = 200.0,
+                     .speed_mps = 4.0,
+                     .hull_length_m = 10.0,
+                     .peak_height_m = 1.2});
+  const auto wake = layer(p);
+  with->set_local_layer(wake);
+  p.wakes[0].peak_height_m = 0.0;
+  without->set_local_layer(layer(p));
+  for (const double t : {1.0, 1.1, 1.2, 1.3}) with->step(t), without->step(t);
+  const ocean::LocalSurfaceFrame& a = with->frame().local;
+  const ocean::LocalSurfaceFrame& b = without->frame().local;
+  const std::size_t cells = static_cast<std::size_t>(a.resolution) * a.resolution;
+  ASSERT_EQ(a.layer_displacement.size(), 3 * cells);
+  ASSERT_EQ(a.sea_normal.size(), 3 * cells);
+  ASSERT_EQ(a.sea_foam.size(), cells);
+  double worst_layer = 0.0, worst_normal = 0.0, worst_foam = 0.0, layer_tilt = 0.0;
+  for (std::size_t i = 0; i < cells; ++i) {
+    const auto [x, z] = ocean::waves::cell_centre(p.area, static_cast<int>(i % a.resolution),
+                                                  static_cast<int>(i / a.resolution));
+    const std::array<double, 3> d = wake->displacement_at(x, z, 1.3);
+    for (std::size_t k = 0; k < 3; ++k) {
+      worst_layer = std::max(worst_layer, std::abs(a.layer_displacement[3 * i + k] - d[k]));
+      worst_normal = std::max(worst_normal, std::abs(static_cast<double>(a.sea_normal[3 * i + k]) -
+                                                     b.normal[3 * i + k]));
+      layer_tilt = std::max(
+          layer_tilt, std::abs(static_cast<double>(a.normal[3 * i + k]) - a.sea_normal[3 * i + k]));
+    }
+    worst_foam = std::max(worst_foam, std::abs(static_cast<double>(a.sea_foam[i]) - b.foam[i]));
+    EXPECT_EQ(b.sea_normal[3 * i + 1], b.normal[3 * i + 1]);  // no layer: the sum is the sea
+    EXPECT_EQ(b.sea_foam[i], b.foam[i]);
+  }
+  // Float rounding of the sum less the layer (heights of order 1 m, cells 1.25 m apart).
+  EXPECT_LE(worst_layer, 1e-6);
+  EXPECT_LE(worst_normal, 1e-4);
+  EXPECT_LE(worst_foam, 1e-3);
+  EXPECT_GT(layer_tilt, 0.05);  // the wake does tilt the sum's normal away from the sea's
 }
 
 }  // namespace

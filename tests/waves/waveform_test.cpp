@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <array>
 #include <cstdint>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -144,6 +146,105 @@ TEST(HeightMapFile, ExrHeightsAreReadAsStoredFromTheirYOrOnlyChannel) {
     // Every value is exact in half as well (few significant bits).
     EXPECT_EQ(m.value().values, std::vector<float>(heights, heights + 6));
   }
+}
+
+namespace sequence {
+
+// Frame f of a 3 × 4 sequence: every sample = 10·f + column (rows alike).
+void write_frame(const fs::path& path, int f, std::size_t rows = 3) {
+  std::vector<float> v;
+  for (std::size_t r = 0; r < rows; ++r)
+    for (int c = 0; c < 4; ++c) v.push_back(static_cast<float>(10 * f + c));
+  const std::array<std::size_t, 2> shape{rows, 4};
+  ASSERT_TRUE(ocean::io::write_npy(path, v.data(), shape).ok());
+}
+
+ocean::Status refusal(const fs::path& pattern) {
+  auto frames = ocean::waves::load_height_map_sequence(pattern);
+  if (frames.ok()) return {};
+  EXPECT_EQ(frames.status().message().find('\n'), std::string::npos);
+  return frames.status();
+}
+
+}  // namespace sequence
+
+// Frames 1..4 of wave_{frame:03}.npy, played at 2 frames/s: at t the height at a cell centre is
+// frame ⌊2t⌋ blended linearly towards the next (W.16), looping (frame 4 → frame 1) or holding.
+TEST(WaveformSequence, HeightAtTimeTIsTheFramesBlendedInTime) {
+  Scratch s;
+  for (int f = 1; f <= 4; ++f) {
+    char name[32];
+    std::snprintf(name, sizeof name, "wave_%03d.npy", f);
+    sequence::write_frame(s.dir / name, f);
+  }
+  sequence::write_frame(s.dir / "wave_7.npy", 7);  // other width: not of the sequence
+  auto frames = ocean::waves::load_height_map_sequence(s.dir / "wave_{frame:3}.npy");
+  ASSERT_TRUE(frames.ok()) << frames.status().message();
+  ASSERT_EQ(frames.value().size(), 4u);  // 001..004
+  Waveform w{.frames = frames.value(), .fps_hz = 2.0, .size_m = 4.0, .amplitude_m = 1.0};
+  ASSERT_TRUE(ocean::waves::validate(w).ok());
+  // Column 1 sits at x = −0.5 (4 columns over 4 m centred at 0); the value there is 10·f + 1 for
+  // file number f, i.e. 10·(i + 1) + 1 for frame index i.
+  const auto value = [](double index) { return 10.0 * (index + 1.0) + 1.0; };
+  EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, -0.5, 0.0, 0.0), value(0));
+  EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, -0.5, 0.0, 1.0), value(2));  // frame 2 at 1 s
+  EXPECT_NEAR(ocean::waves::waveform_height(w, -0.5, 0.0, 0.75), value(1.5), 1e-12);
+  // Looping: period 4 frames / 2 fps = 2 s; between the last frame and the first at 1.75 s.
+  EXPECT_NEAR(ocean::waves::waveform_height(w, -0.5, 0.0, 1.75), 0.5 * (value(3) + value(0)),
+              1e-12);
+  EXPECT_NEAR(ocean::waves::waveform_height(w, -0.5, 0.0, 2.0 + 1.0), value(2), 1e-12);
+  EXPECT_NEAR(ocean::waves::waveform_height(w, -0.5, 0.0, -0.5), value(3), 1e-12);
+  w.playback = ocean::waves::Playback::hold;
+  EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, -0.5, 0.0, 1.75), value(3));
+  EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, -0.5, 0.0, 100.0), value(3));
+  EXPECT_DOUBLE_EQ(ocean::waves::waveform_height(w, -0.5, 0.0, -3.0), value(0));
+  EXPECT_EQ(ocean::waves::waveform_height(w, 2.5, 0.0, 1.0), 0.0);  // outside
+  // Through the layer: the frame's height at the layer's time.
+  ocean::waves::LayerParams p;
+  p.area = {.origin_m = {-8.0, -8.0}, .size_m = 16.0, .resolution = 16, .edge_fraction = 0.0};
+  p.waveforms.push_back(w);
+  auto layer = ocean::waves::LocalLayer::make(p);
+  ASSERT_TRUE(layer.ok()) << layer.status().message();
+  EXPECT_NEAR(layer.value()->displacement_at(-0.5, 0.0, 0.25)[1], value(0.5), 1e-12);
+}
+
+TEST(WaveformSequence, BadSequencesAreRefusedWithOneLine) {
+  Scratch s;
+  sequence::write_frame(s.dir / "a_0.npy", 0);
+  sequence::write_frame(s.dir / "a_1.npy", 1);
+  sequence::write_frame(s.dir / "a_3.npy", 3);  // 2 missing
+  EXPECT_NE(sequence::refusal(s.dir / "a_{frame}.npy").message().find("frame 2 missing"),
+            std::string::npos);
+  sequence::write_frame(s.dir / "b_0.npy", 0);
+  sequence::write_frame(s.dir / "b_1.npy", 1, 5);  // another size
+  EXPECT_NE(sequence::refusal(s.dir / "b_{frame}.npy").message().find("one size"),
+            std::string::npos);
+  sequence::write_frame(s.dir / "c_7.npy", 7);
+  sequence::write_frame(s.dir / "c_007.npy", 7);  // two files of one number
+  EXPECT_NE(sequence::refusal(s.dir / "c_{frame}.npy").message().find("two files"),
+            std::string::npos);
+  std::ofstream(s.dir / "d_0.npy") << "not a numpy file";
+  sequence::write_frame(s.dir / "d_1.npy", 1);
+  EXPECT_NE(sequence::refusal(s.dir / "d_{frame}.npy").message().find("d_0.npy"),
+            std::string::npos);
+  EXPECT_NE(sequence::refusal(s.dir / "e_{frame}.npy").message().find("no file matches"),
+            std::string::npos);
+  EXPECT_FALSE(sequence::refusal(s.dir / "a_{frame:0}.npy").ok());
+  EXPECT_FALSE(sequence::refusal(s.dir / "a_{frame.npy").ok());
+  EXPECT_FALSE(sequence::refusal(s.dir / "a_{frame}_{frame}.npy").ok());
+  EXPECT_FALSE(sequence::refusal(s.dir / "nofolder" / "a_{frame}.npy").ok());
+  // Frames of different sizes handed to the library directly, and a bad frame rate.
+  const auto map = [](int rows) {
+    auto m = std::make_shared<HeightMap>();
+    m->rows = rows, m->cols = 2, m->values.assign(static_cast<std::size_t>(2 * rows), 0.0f);
+    return std::shared_ptr<const HeightMap>(m);
+  };
+  Waveform w{.frames = {map(2), map(3)}};
+  EXPECT_FALSE(ocean::waves::validate(w).ok());
+  w.frames = {map(2), map(2)};
+  EXPECT_TRUE(ocean::waves::validate(w).ok());
+  w.fps_hz = 0.0;
+  EXPECT_FALSE(ocean::waves::validate(w).ok());
 }
 
 }  // namespace
