@@ -61,18 +61,54 @@ Result<FileAndNumbers> parse_file_and_numbers(const std::string& flag, const std
   return FileAndNumbers{std::move(map).value(), std::move(v).value()};
 }
 
+// FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG] for a still map, or
+// PATTERN,X,Z,SIZE_M,AMPLITUDE_M,ROTATION_DEG,FPS[,loop|hold] for a sequence whose file names hold
+// {frame} or {frame:W} (W.16).
 Result<waves::Waveform> parse_waveform(const std::string& text) {
   const std::string flag = "--waveform";
-  Result<FileAndNumbers> f =
-      parse_file_and_numbers(flag, text, 4, 5, "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]");
-  if (!f.ok()) return f.status();
-  const std::vector<double>& n = f.value().numbers;
-  const waves::Waveform w{.map = std::make_shared<const waves::HeightMap>(std::move(f.value().map)),
+  const char* still = "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]";
+  const char* animated = "PATTERN,X,Z,SIZE_M,AMPLITUDE_M,ROTATION_DEG,FPS[,loop|hold]";
+  const std::size_t comma = text.find(',');
+  if (comma == std::string::npos || comma == 0 ||
+      !waves::is_sequence_pattern(text.substr(0, comma))) {
+    Result<FileAndNumbers> f = parse_file_and_numbers(flag, text, 4, 5, still);
+    if (!f.ok() && std::count(text.begin(), text.end(), ',') > 5)  // a sequence without {frame}
+      return invalid_argument(flag + " = '" + excerpt(text) + "' must be " + still +
+                              " (an animated sequence's file name holds {frame})");
+    if (!f.ok()) return f.status();
+    const std::vector<double>& n = f.value().numbers;
+    const waves::Waveform w{
+        .map = std::make_shared<const waves::HeightMap>(std::move(f.value().map)),
+        .x_m = n[0],
+        .z_m = n[1],
+        .size_m = n[2],
+        .amplitude_m = n[3],
+        .rotation_deg = n.size() > 4 ? n[4] : 0.0};
+    if (Status s = waves::validate(w); !s.ok()) return flagged(flag, text, s);
+    return w;
+  }
+  std::string rest = text.substr(comma + 1);
+  waves::Playback playback = waves::Playback::loop;
+  const std::size_t last = rest.rfind(',');
+  const std::string word = last == std::string::npos ? rest : rest.substr(last + 1);
+  if (std::optional<waves::Playback> named = value_of(waves::kPlaybackNames, word)) {
+    playback = *named;
+    rest = last == std::string::npos ? std::string() : rest.substr(0, last);
+  }
+  Result<std::vector<double>> v = numbers(flag, rest, 6, 6, animated);
+  if (!v.ok()) return v.status();
+  Result<std::vector<std::shared_ptr<const waves::HeightMap>>> frames =
+      waves::load_height_map_sequence(text.substr(0, comma));
+  if (!frames.ok()) return Status{frames.status().code(), flag + ": " + frames.status().message()};
+  const std::vector<double>& n = v.value();
+  const waves::Waveform w{.frames = std::move(frames).value(),
+                          .fps_hz = n[5],
+                          .playback = playback,
                           .x_m = n[0],
                           .z_m = n[1],
                           .size_m = n[2],
                           .amplitude_m = n[3],
-                          .rotation_deg = n.size() > 4 ? n[4] : 0.0};
+                          .rotation_deg = n[4]};
   if (Status s = waves::validate(w); !s.ok()) return flagged(flag, text, s);
   return w;
 }
@@ -102,9 +138,13 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
   command.add_option("--kelvin-wake", f.wakes,
                      "X,Z,HEADING_DEG,SPEED_MPS,LENGTH_M: an object at (X, Z) at t = 0 moving "
                      "along HEADING (0 = +x, 90 = +z); repeatable");
-  command.add_option("--waveform", f.waveforms,
-                     "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]: a .npy, gray PNG or EXR height map "
-                     "centred at (X, Z); repeatable");
+  command.add_option(
+      "--waveform", f.waveforms,
+      "FILE,X,Z,SIZE_M,AMPLITUDE_M[,ROTATION_DEG]: a .npy, gray PNG or EXR height map "
+      "centred at (X, Z); or PATTERN,X,Z,SIZE_M,AMPLITUDE_M,ROTATION_DEG,FPS"
+      "[,loop|hold]: an animated sequence, the files whose names are PATTERN with "
+      "{frame} (or {frame:W}, W digits) replaced by consecutive numbers, played at "
+      "FPS, blended between frames; repeatable");
   command.add_option("--local-area", f.local_area, "X0,Z0,SIZE_M: the local layer's square");
   add_option(command, kResolution, f.local_resolution, "cells per side of the local layer")
       ->capture_default_str();

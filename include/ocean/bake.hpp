@@ -16,7 +16,10 @@
 //   exr: displacement_c<k>_f<f>.exr R,G,B float32; maps_c<k>_f<f>.exr normal.X/Y/Z, jacobian, foam
 //        half; nfs_c<k>_f<f>_mip<l>.exr R,G,B,A half
 //   with a local layer (any format): local_height_f<f>.npy [N][N] float32 heights of the layer,
-//        row i at z = z0 + (i + ½)·size/N, column j at x = x0 + (j + ½)·size/N
+//        row i at z = z0 + (i + ½)·size/N, column j at x = x0 + (j + ½)·size/N; unless calm, the
+//        layer composited with the sea (Frame::local, M.7.9) on the same grid:
+//        local_displacement_f<f>.npy [N][N][3] (Dx, h, Dz) m, local_normal_f<f>.npy [N][N][3],
+//        local_jacobian_f<f>.npy [N][N], local_foam_f<f>.npy [N][N] (accumulated)
 // Rows are row-major [row][col]; texel (col,row) starts at world (col,row)·L/N.
 #pragma once
 
@@ -93,8 +96,10 @@ struct BakeParams {
   /// async-signal-safe). Not owned; must outlive the call.
   const std::atomic<bool>* cancel = nullptr;
   /// When set, every frame also writes the layer's heights at the frame's time
-  /// (local_height_f<f>.npy) and the manifest gains "local_area": {"origin_m": [x0, z0],
-  /// "size_m", "resolution"}.
+  /// (local_height_f<f>.npy) and, unless calm, the composited local surface (local_displacement_,
+  /// local_normal_, local_jacobian_, local_foam_f<f>.npy: the layer is set on the simulator,
+  /// Simulator::set_local_layer, so its foam accumulates from the first frame stepped); the
+  /// manifest gains "local_area": {"origin_m": [x0, z0], "size_m", "resolution"}.
   std::shared_ptr<const waves::LocalLayer> local_layer;
   /// A calm sea: no wind sea, so no cascade files (the simulator is not stepped; the manifest
   /// says "calm": true). Needs local_layer.

@@ -26,8 +26,8 @@
 #include "ocean/lod.hpp"
 #include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
-#include "ocean/underwater.hpp"
 #include "ocean/tessellation.hpp"
+#include "ocean/underwater.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
 
@@ -64,12 +64,16 @@ enum class DebugView : std::uint8_t {
   shaded,       ///< the water as it looks
   lod_colours,  ///< shading tinted by quadtree level
   wireframe,    ///< the LOD mesh's edges only (needs fillModeNonSolid)
+  /// The water's shading normal N as linear colour 0.5·N + 0.5 (no fog; the HDR image holds it
+  /// as computed, read_hdr) and its foam coverage in the HDR image's alpha.
+  normals,
 };
 /// The names of the debug views in flags and messages.
-inline constexpr std::array<EnumName<DebugView>, 3> kDebugViewNames{{
+inline constexpr std::array<EnumName<DebugView>, 4> kDebugViewNames{{
     {DebugView::shaded, "shaded"},
     {DebugView::lod_colours, "lod"},
     {DebugView::wireframe, "wireframe"},
+    {DebugView::normals, "normals"},
 }};
 /// The view's name in kDebugViewNames ("shaded" for a value outside the enum).
 std::string_view to_string(DebugView view);
@@ -220,14 +224,24 @@ class Renderer {
   /// GPU path: samples these images (a VulkanBackend's on the same context) from now on, until
   /// upload() or configure() is called. The images must stay alive while they are in use.
   void use_simulation_images(const vk::SimulationImages& images);
-  /// The local layer (ocean/waves.hpp: wakes and waveforms; docs/rendering.md R.19) to add to
-  /// the cascades from the next draw on, until called again: `grid` is a LocalFrame's area and
-  /// displacement (float3 (Dx, h, Dz) per cell, row-major, rows along +z). Displacement,
-  /// normals and foam (from the layer's own Jacobian) join the sea's where the area covers the
-  /// surface. An empty displacement removes the layer. Copies the data (staging); reallocates
-  /// only when the side changes. invalid_argument for a bad area, a side outside [1, 4096] or an
-  /// array of the wrong size.
+  /// The local layer alone (ocean/waves.hpp: wakes and waveforms; docs/rendering.md R.19) to add
+  /// to the cascades from the next draw on, until this or set_local_surface is called again:
+  /// `grid` is a LocalFrame's area and displacement (float3 (Dx, h, Dz) per cell, row-major, rows
+  /// along +z). Its displacement adds to the sea's; its own slope and instantaneous foam (the
+  /// ramp on its own Jacobian) add to the sea's shading: for callers without a simulator (a calm
+  /// sea, a layer drawn over images from elsewhere). An empty displacement removes the layer.
+  /// Copies the data (staging); reallocates only when the side changes. invalid_argument for a
+  /// bad area, a side outside [1, 4096] or an array of the wrong size.
   Status set_local_layer(const LocalLayerGrid& grid);
+  /// The composited local surface (Frame::local, ocean/sim.hpp; docs/math.md M.7.9–M.7.10) to
+  /// draw from the next draw on, until this or set_local_layer is called again (R.19): the
+  /// layer's displacement adds to the cascades', and what the layer changes in the composited
+  /// surface's slope and accumulated foam (`normal` against `sea_normal`, `foam` against
+  /// `sea_foam`) adds to the cascades' shading, so wakes fold and foam with the sea's crests and
+  /// the sea is drawn unchanged wherever the layer changes nothing. What Scene::step hands over
+  /// when its simulator has a local layer. resolution 0 removes the layer. Same copying and
+  /// errors as set_local_layer (every array sized for its resolution: 3·N² or N² floats).
+  Status set_local_surface(const LocalSurfaceFrame& local);
   /// The damping of the cascades by a mask and a bathymetry (docs/waves.md W.12–W.13;
   /// docs/rendering.md R.24) from the next draw on: each cascade's displacement, slope and foam
   /// scaled by its weight, and shallow water tinted by the seabed seen through it (pure water's

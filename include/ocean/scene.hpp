@@ -53,7 +53,9 @@ class Scene {
   Scene(const Scene&) = delete;
   Scene& operator=(const Scene&) = delete;
 
-  /// Simulates time_s and hands the result to the renderer; the next draw shows it.
+  /// Simulates time_s and hands the result to the renderer; the next draw shows it. While the
+  /// simulator has a local layer (Simulator::set_local_layer), the frame's composited local
+  /// surface goes to Renderer::set_local_surface too (docs/rendering.md R.19).
   Status step(double time_s);
   /// Steps from time_s − warmup_s to time_s at `rate_hz` (ceil(warmup_s·rate_hz) frames), then
   /// step(time_s), so foam has accumulated as it would have in a running simulation.
@@ -71,6 +73,7 @@ class Scene {
   std::unique_ptr<Simulator> simulator_;
   vk::VulkanBackend* gpu_ = nullptr;  // owned by simulator_ when the backend is vulkan
   std::unique_ptr<Renderer> renderer_;
+  bool local_surface_ = false;  // the renderer draws the simulator's local surface
 };
 
 }  // namespace ocean::render

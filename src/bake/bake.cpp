@@ -136,6 +136,30 @@ Status write_local_frame(const waves::LocalLayer& layer, double t, const char* i
                               gray.data());
 }
 
+// Writes the composited local surface of the frame (Frame::local, M.7.9): local_displacement
+// [N][N][3], local_normal [N][N][3], local_jacobian [N][N] and local_foam [N][N], .npy.
+Status write_local_surface(const LocalSurfaceFrame& local, const char* index, const BakeParams& p,
+                           std::vector<std::string>& names) {
+  const auto n = static_cast<std::size_t>(local.resolution);
+  const std::array<std::size_t, 3> vectors{n, n, 3};
+  const std::array<std::size_t, 2> scalars{n, n};
+  const struct {
+    const char* stem;
+    const std::vector<float>& values;
+    std::span<const std::size_t> shape;
+  } files[] = {{"local_displacement_f", local.displacement, vectors},
+               {"local_normal_f", local.normal, vectors},
+               {"local_jacobian_f", local.jacobian, scalars},
+               {"local_foam_f", local.foam, scalars}};
+  for (const auto& f : files) {
+    if (cancelled(p)) return {ErrorCode::cancelled, "cancelled"};
+    names.push_back(std::string(f.stem) + index + ".npy");
+    if (Status s = io::write_npy(p.output_dir / names.back(), f.values.data(), f.shape); !s.ok())
+      return s;
+  }
+  return {};
+}
+
 // Writes every frame's files, calling `on_frame` after each; returns the Status that stopped the
 // bake (ok when all frames were written), with the frames written whole in `manifest`. The files
 // of a frame left unfinished are removed.
@@ -166,7 +190,9 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
     }
     Json entry{{"index", f}, {"time_s", t}};
     if (p.local_layer != nullptr) {
-      if (Status s = write_local_frame(*p.local_layer, t, index, p, local, names, entry); !s.ok()) {
+      Status s = write_local_frame(*p.local_layer, t, index, p, local, names, entry);
+      if (s.ok() && !p.calm) s = write_local_surface(frame.local, index, p, names);
+      if (!s.ok()) {
         folder.remove(names);
         return s;
       }
@@ -193,6 +219,9 @@ Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
     return {ErrorCode::cancelled, "bake cancelled before its first frame; nothing written"};
   }
   if (Status s = folder.begin(); !s.ok()) return s;
+  // The layer composited with the sea (M.7.9), its foam accumulated from the first frame.
+  if (!p.calm && p.local_layer != nullptr && sim.local_layer() != p.local_layer.get())
+    sim.set_local_layer(p.local_layer);
   const double range_m = height_png_range_m(sim.config());
   Json manifest = manifest_head(sim, backend, p, range_m);
   const Status stop = write_frames(sim, p, on_frame, range_m, folder, manifest);

@@ -21,13 +21,13 @@
 #include <optional>
 #include <vector>
 
+#include "motion_pass.hpp"
 #include "object_pass.hpp"
 #include "ocean/render.hpp"
 #include "ocean/sphere.hpp"
 #include "shaders/render_shared.h"
-#include "motion_pass.hpp"
-#include "stereo_pass.hpp"
 #include "shaders/tessellation.h"
+#include "stereo_pass.hpp"
 
 namespace ocean::render {
 
@@ -91,9 +91,9 @@ struct Renderer::State {
   FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
-  // The local layer (R.19): an RGBA16F image of (Dx, h, Dz, 0), 1×1 of zeros until
-  // set_local_layer(); its staging buffer and placement.
-  vk::Image2D local_image;
+  // The local layer (R.19): an RGBA16F array of two layers, (Dx, h, Dz, 0) and (Δs, Δf, 0), 1×1
+  // of zeros until set_local_layer() or set_local_surface(); its staging buffer and placement.
+  vk::Image local_image;
   vk::Buffer local_staging;
   VkSampler local_sampler = VK_NULL_HANDLE;
   bool local_pending = false;
@@ -114,8 +114,8 @@ struct Renderer::State {
   VkPipeline sphere_pipeline = VK_NULL_HANDLE;
   vk::Buffer sphere_instances;  // host-visible, kMaxSphereInstances
   sphere::SphereSelection sphere_selection;
-  StereoPass stereo;   // layered targets and multiview pipelines (stereo.cpp), once used
-  MotionPass motion;   // motion vectors (motion.cpp), once enabled
+  StereoPass stereo;  // layered targets and multiview pipelines (stereo.cpp), once used
+  MotionPass motion;  // motion vectors (motion.cpp), once enabled
   // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
   // coverage) and depth while there are meshes, 1×1 otherwise.
   vk::Image2D reflection, reflection_depth;

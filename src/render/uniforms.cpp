@@ -59,6 +59,7 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.vertices = static_cast<float>(view.quality.vertices);
   u.debug_view =
       static_cast<float>(view.debug == DebugView::lod_colours ? OCEAN_RENDER_DEBUG_LOD_COLOURS
+                         : view.debug == DebugView::normals   ? OCEAN_RENDER_DEBUG_NORMALS
                                                               : OCEAN_RENDER_DEBUG_SHADED);
   u.cascade_count = static_cast<float>(st.displacement_view != VK_NULL_HANDLE ? st.cascades : 0);
   u.hs_m = static_cast<float>(st.hs_m);
@@ -78,8 +79,6 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.local = st.local;  // its origin relative to the frame's origin O, as every position (R.16)
   u.local.origin_m = {f(st.local_origin_m[0] - sel.grid_centre_x_m),
                       f(st.local_origin_m[1] - sel.grid_centre_z_m)};
-  u.local.foam_j_start = f(st.foam_ramp[0]);
-  u.local.foam_j_full = f(st.foam_ramp[1]);
   u.damping = st.damping;
   u.damping.origin_m = {f(st.damping_origin_m[0] - sel.grid_centre_x_m),
                         f(st.damping_origin_m[1] - sel.grid_centre_z_m)};

@@ -10,6 +10,7 @@
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <cstring>
@@ -20,6 +21,7 @@
 #include <string>
 
 #include "ocean/backends.hpp"
+#include "ocean/waves.hpp"
 #include "support/npy_reader.hpp"
 #include "support/png_reader.hpp"
 #include "support/temp_dir.hpp"
@@ -106,6 +108,60 @@ TEST(BakeLibrary, FilesMatchTheSimulatorAndTheManifestListsThem) {
   }
   EXPECT_DOUBLE_EQ(manifest["height_png_range_m"].get<double>(),
                    ocean::bake::height_png_range_m(c));
+}
+
+// With a local layer the bake writes the composited local surface (Frame::local, M.7.9) of each
+// frame: read back, it is bit for bit that of a simulator carrying the same layer stepped through
+// the same times (the foam accumulated over the frames before), and the wake does foam.
+TEST(BakeLibrary, WritesTheCompositedLocalSurface) {
+  TempDir dir("bake_lib_local_");
+  const ocean::SimulationConfig c = small_config();
+  ocean::waves::LayerParams lp;
+  lp.area = {.origin_m = {-40.0, -40.0}, .size_m = 80.0, .resolution = 32};
+  lp.wakes.push_back({.x_m = 20.0,
+                      .heading_deg = 180.0,
+                      .speed_mps = 4.0,
+                      .hull_length_m = 10.0,
+                      .peak_height_m = 1.5});
+  auto made = ocean::waves::LocalLayer::make(lp);
+  ASSERT_TRUE(made.ok()) << made.status().message();
+  const std::shared_ptr<const ocean::waves::LocalLayer> layer = std::move(made).value();
+  ASSERT_TRUE(ocean::bake::bake(c, "cpu",
+                                {.output_dir = dir.path,
+                                 .frame_count = 3,
+                                 .fps = 10,
+                                 .start_time_s = 1.0,
+                                 .local_layer = layer})
+                  .ok());
+  auto sim = ocean::make_simulator(c).value();
+  sim->set_local_layer(layer);
+  for (const double t : {1.0, 1.1, 1.2}) sim->step(t);
+  const ocean::LocalSurfaceFrame& expected = sim->frame().local;
+  const std::size_t cells = 32 * 32;
+  const struct {
+    const char* name;
+    const std::vector<float>& values;
+    std::size_t per_cell;
+  } files[] = {{"local_displacement_f00002.npy", expected.displacement, 3},
+               {"local_normal_f00002.npy", expected.normal, 3},
+               {"local_jacobian_f00002.npy", expected.jacobian, 1},
+               {"local_foam_f00002.npy", expected.foam, 1}};
+  for (const auto& f : files) {
+    const auto read = ocean::io::read_npy(dir.path / f.name);
+    ASSERT_TRUE(read.ok()) << read.status().message();
+    ASSERT_EQ(read.value().data.size(), f.per_cell * cells) << f.name;
+    EXPECT_EQ(read.value().shape[0], 32u);
+    EXPECT_EQ(std::memcmp(read.value().data.data(), f.values.data(), f.values.size() * 4), 0)
+        << f.name;
+  }
+  float most_foam = 0.0f;
+  for (const float v : expected.foam) most_foam = std::max(most_foam, v);
+  EXPECT_GT(most_foam, 0.5f);  // the wake folds the sum somewhere
+  const nlohmann::json manifest = read_manifest(dir.path);
+  for (const auto& f : files) {
+    const auto& names = manifest["frames"][2]["files"];
+    EXPECT_NE(std::find(names.begin(), names.end(), f.name), names.end()) << f.name;
+  }
 }
 
 TEST(BakeLibrary, SimulatorOverloadRecordsItsBackend) {

@@ -8,6 +8,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
+#include <string>
+#include <vector>
 
 #include "cli/cli_run.hpp"
 #include "ocean/io.hpp"
@@ -158,6 +160,39 @@ TEST(WavesCli, QueryFindsAWaveformOnTopOfTheSea) {
       (dir.path / "bump.npy").string() + ",0,5,60,0.25");
   ASSERT_EQ(calm.exit_code, 0) << calm.err;
   EXPECT_EQ(nlohmann::json::parse(calm.out)["height_m"][0].get<double>(), 0.25);
+}
+
+// An animated waveform on the command line (docs/waves.md W.16): frames seq_0..2 hold 1, 2 and 3
+// everywhere; at 2 fps the height at t = 0.75 s is halfway between frames 1 and 2, and held on
+// the last frame after the end; a gap in the numbers is one line.
+TEST(WavesCli, QueryPlaysAnAnimatedWaveform) {
+  ocean_test::ScratchDir dir("waves_cli_sequence_");
+  const std::size_t shape[2] = {4, 4};
+  for (int f = 0; f < 3; ++f) {
+    std::vector<float> v(16, static_cast<float>(f + 1));
+    ASSERT_TRUE(
+        ocean::io::write_npy(dir.path / ("seq_" + std::to_string(f) + ".npy"), v.data(), shape)
+            .ok());
+  }
+  const std::string pattern = (dir.path / "seq_{frame}.npy").string();
+  const auto height = [&](const std::string& time, const std::string& playback) {
+    const auto r = ocean_test::run_cli(
+        "query --calm --json --at 3,4 --local-area -50,-50,100 "
+        "--time " +
+        time + " --waveform '" + pattern + ",0,5,60,0.1,0,2" + playback + "'");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.exit_code == 0 ? nlohmann::json::parse(r.out)["height_m"][0].get<double>() : -1.0;
+  };
+  EXPECT_NEAR(height("0.75", ""), 0.25, 1e-9);
+  EXPECT_NEAR(height("5", ",hold"), 0.3, 1e-9);
+  EXPECT_NEAR(height("1.25", ",loop"), 0.2, 1e-9);  // frame 2.5: between the last and the first
+  fs::remove(dir.path / "seq_1.npy");
+  ocean_test::expect_usage_error(
+      "query --calm --at 1,1 --local-area 0,0,100 --waveform '" + pattern + ",0,5,60,0.1,0,2'",
+      "frame 1 missing");
+  ocean_test::expect_usage_error(
+      "query --calm --at 1,1 --local-area 0,0,100 --waveform '" + pattern + ",0,5,60,0.1,0'",
+      "FPS");
 }
 
 TEST(WavesCli, WritingTheLayerLeavesTheSeaBitForBit) {

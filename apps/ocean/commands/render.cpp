@@ -324,7 +324,10 @@ int run_render(const RenderOptions& o) {
                                              .depth_m = d.depth_m});
     if (!set.ok()) return report(set);
   }
-  waves::LocalFrame local;
+  // The layer composited with the sea by the simulator; each step hands the frame's local
+  // surface to the renderer (Scene::step, R.19), its foam accumulated through the warm-up.
+  scene.simulator().set_damping(in.damping);
+  scene.simulator().set_local_layer(in.layer);
   if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
@@ -338,14 +341,6 @@ int run_render(const RenderOptions& o) {
       stepped = scene.step(t);
     }
     if (!stepped.ok()) return report(stepped);
-    if (in.layer != nullptr) {
-      in.layer->evaluate(t, local);
-      const Status set = renderer.set_local_layer({.origin_m = local.area.origin_m,
-                                                   .size_m = local.area.size_m,
-                                                   .resolution = local.area.resolution,
-                                                   .displacement = local.displacement});
-      if (!set.ok()) return report(set);
-    }
     if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
     const Status drawn =
         in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);

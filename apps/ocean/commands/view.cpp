@@ -204,7 +204,7 @@ int run_view(const ViewOptions& o) {
   std::uint64_t generation = 0;  // the presenter's swapchain the renderer is sized for
   double t = kStartTime_s;
   if (Status s = scene.warm_up(t, kWarmup_s); !s.ok()) return report(s);
-  if (Status s = interaction.set_boat(panel.boat, t, renderer); !s.ok()) return report(s);
+  if (Status s = interaction.set_boat(panel.boat, t, scene.simulator()); !s.ok()) return report(s);
   if (Status s = interaction.set_shallows(in.shallows, scene_centre, config, renderer); !s.ok())
     return report(s);
   long long frame = 0;
@@ -263,7 +263,8 @@ int run_view(const ViewOptions& o) {
     }
 
     if (actions.boat_changed) {
-      if (Status s = interaction.set_boat(panel.boat, t, renderer); !s.ok()) return report(s);
+      if (Status s = interaction.set_boat(panel.boat, t, scene.simulator()); !s.ok())
+        return report(s);
     }
     if (actions.shallows_changed || (actions.sea_changed && panel.error.empty())) {
       // The damping's bands follow the cascades: a new sea needs them again.
@@ -274,7 +275,7 @@ int run_view(const ViewOptions& o) {
 
     if (!panel.paused) t += (in.frames > 0 ? kFixedStep_s : dt) * panel.time_scale;
     if (Status s = scene.step(t); !s.ok()) return report(s);
-    if (Status s = interaction.update(t, renderer, in.view); !s.ok()) return report(s);
+    if (Status s = interaction.update(t, scene.simulator(), in.view); !s.ok()) return report(s);
     // A new mesh density uploads through the renderer's own command buffer: before ours.
     if (actions.quality_changed) {
       if (Status s = renderer.prepare(in.view); !s.ok()) return report(s);

@@ -134,14 +134,17 @@ Result<std::unique_ptr<InteractionScene>> InteractionScene::make(render::Rendere
   return scene;
 }
 
-Status InteractionScene::set_boat(const BoatControls& boat, double time_s,
-                                  render::Renderer& renderer) {
+Status InteractionScene::set_boat(const BoatControls& boat, double time_s, Simulator& simulator) {
   layer_.reset();
   boat_ = boat;
-  if (!boat.on) return renderer.set_local_layer({});
+  if (!boat.on) {
+    simulator.set_local_layer(nullptr);
+    return Status{};
+  }
   Result<std::unique_ptr<waves::LocalLayer>> layer = circling_boat_layer(boat, time_s, choppiness_);
   if (!layer.ok()) return layer.status();
   layer_ = std::move(layer).value();
+  simulator.set_local_layer(layer_);
   t0_s_ = time_s;
   return Status{};
 }
@@ -159,7 +162,7 @@ Status InteractionScene::set_shallows(Shallows scene, std::array<double, 2> cent
                                .depth_m = d.depth_m});
 }
 
-Status InteractionScene::update(double time_s, render::Renderer& renderer, render::View& view) {
+Status InteractionScene::update(double time_s, Simulator& simulator, render::View& view) {
   view.objects.clear();
   if (!boat_.on) return Status{};
   // Past the path's end (or before its start: time ran backwards): a new path from the start of
@@ -167,15 +170,8 @@ Status InteractionScene::update(double time_s, render::Renderer& renderer, rende
   if (time_s > circling_boat_end(boat_, t0_s_) || time_s < t0_s_) {
     const double lap_s = 2.0 * std::numbers::pi * boat_.radius_m / boat_.speed_mps;
     const double t0 = t0_s_ + std::floor((time_s - t0_s_) / lap_s) * lap_s;
-    if (Status s = set_boat(boat_, t0, renderer); !s.ok()) return s;
+    if (Status s = set_boat(boat_, t0, simulator); !s.ok()) return s;
   }
-  layer_->evaluate(time_s, frame_);
-  if (Status s = renderer.set_local_layer({.origin_m = frame_.area.origin_m,
-                                           .size_m = frame_.area.size_m,
-                                           .resolution = frame_.area.resolution,
-                                           .displacement = frame_.displacement});
-      !s.ok())
-    return s;
   view.objects.push_back(boat_instance(0, circling_pose(boat_, t0_s_, time_s)));
   return Status{};
 }

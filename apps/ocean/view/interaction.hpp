@@ -81,22 +81,22 @@ class InteractionScene {
   /// Uploads the built-in boat's mesh with renderer.set_meshes (the view's only mesh).
   static Result<std::unique_ptr<InteractionScene>> make(render::Renderer& renderer,
                                                         const SimulationConfig& config);
-  /// The boat from time_s on (its layer made now, about 0.1 s), or no boat and no layer.
-  Status set_boat(const BoatControls& boat, double time_s, render::Renderer& renderer);
+  /// The boat from time_s on (its layer made now, about 0.1 s, and set on the simulator, whose
+  /// composited local surface Scene::step hands to the renderer), or no boat and no layer.
+  Status set_boat(const BoatControls& boat, double time_s, Simulator& simulator);
   /// A shallows scene centred at `centre` for the cascades of `config` (none removes it).
   Status set_shallows(Shallows scene, std::array<double, 2> centre_m,
                       const SimulationConfig& config, render::Renderer& renderer);
-  /// Before each draw: the layer evaluated at time_s and handed to the renderer, the boat's
-  /// instance in view.objects (cleared without a boat).
-  Status update(double time_s, render::Renderer& renderer, render::View& view);
+  /// Before each draw: the boat's instance in view.objects (cleared without a boat), its layer
+  /// made again on the simulator past the end of its laps.
+  Status update(double time_s, Simulator& simulator, render::View& view);
 
  private:
   InteractionScene() = default;
   double choppiness_ = 1.0;
   BoatControls boat_;
   double t0_s_ = 0.0;
-  std::unique_ptr<waves::LocalLayer> layer_;
-  waves::LocalFrame frame_;
+  std::shared_ptr<const waves::LocalLayer> layer_;
 };
 
 }  // namespace ocean::cli::view

@@ -64,9 +64,15 @@ Status Scene::step(double time_s) {
   if (gpu_ != nullptr) {
     if (!gpu_->status().ok()) return gpu_->status();
     renderer_->use_simulation_images(gpu_->images());
-    return {};
+  } else if (Status s = renderer_->upload(simulator_->frame()); !s.ok()) {
+    return s;
   }
-  return renderer_->upload(simulator_->frame());
+  // The composited local surface (R.19), while the simulator has a layer; once removed, the
+  // renderer's layer goes with it (a layer the caller set on the renderer itself stays).
+  const bool local = simulator_->local_layer() != nullptr;
+  if (!local && !local_surface_) return {};
+  local_surface_ = local;
+  return renderer_->set_local_surface(simulator_->frame().local);
 }
 
 Status Scene::warm_up(double time_s, double warmup_s, double rate_hz) {

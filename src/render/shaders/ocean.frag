@@ -127,7 +127,7 @@ void main() {
     // so it reads as streaks and speckle rather than snow (R.11).
     no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
   }
-  vec2 local_slope;  // wakes and waveforms (R.19): their gradient adds, their foam joins
+  vec2 local_slope;  // wakes and waveforms (R.19): what they change in slope and foam adds
   float local_foam;
   local_shade(world_xz, local_slope, local_foam);
   slope += local_slope;
@@ -199,6 +199,10 @@ void main() {
     c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
   }
 
+  if (u.debug_view == OCEAN_RENDER_DEBUG_NORMALS) {  // the shading normal and foam, unfogged
+    colour = vec4(0.5 * N_up + 0.5, clamp(foam, 0.0, 1.0));
+    return;
+  }
   if (u.debug_view == OCEAN_RENDER_DEBUG_LOD_COLOURS) {
     vec3 lc = level < 9u ? kLevelColours[level] : vec3(0.5);
     c = mix(c, lc * (0.4 + 0.6 * max(dot(N, L), 0.0)) * 0.5, 0.6);

@@ -35,6 +35,7 @@ struct mat4 {
 // FrameUniforms::debug_view
 #define OCEAN_RENDER_DEBUG_SHADED 0.0
 #define OCEAN_RENDER_DEBUG_LOD_COLOURS 1.0
+#define OCEAN_RENDER_DEBUG_NORMALS 2.0
 
 // Set 0 of the scene pipelines (sky, ocean, wireframe).
 #define OCEAN_RENDER_BINDING_FRAME 0         // FrameUniforms, std140, host-written each frame
@@ -42,7 +43,7 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_NORMAL 2        // sampler2DArray RGBA8 (n_x, n_z, foam, smoothness)
 #define OCEAN_RENDER_BINDING_SKY_LUT 3       // sampler2D sky radiance, u azimuth, v √elevation
 #define OCEAN_RENDER_BINDING_ENVIRONMENT 4   // sampler2D RGBA32F equirectangular radiance (R.17)
-#define OCEAN_RENDER_BINDING_LOCAL 5         // sampler2D RGBA16F (Dx, h, Dz, 0): the local layer
+#define OCEAN_RENDER_BINDING_LOCAL 5         // sampler2DArray RGBA16F: (Dx, h, Dz); (Δs, Δf)
 #define OCEAN_RENDER_BINDING_DAMPING 6       // sampler2DArray RGBA16F: band weights 0-3, 4-7; depth
 #define OCEAN_RENDER_BINDING_REFLECTION 7    // sampler2D RGBA16F: objects mirrored in y = 0 (R.53)
 #define OCEAN_RENDER_SCENE_BINDINGS 8
@@ -90,15 +91,14 @@ struct EnvironmentUniforms {
 };
 
 // The local layer (ocean/waves.hpp, docs/rendering.md R.19): wakes and waveforms over a square
-// world area, added to the cascades; its texture holds (Dx, h, Dz) at the cells' centres.
+// world area, added to the cascades; its texture array holds, at the cells' centres, the layer's
+// (Dx, h, Dz) (layer 0) and its change to the shading, (Δs_x, Δs_z, Δf) (layer 1).
 struct LocalLayerUniforms {
-  vec2 origin_m;       // (x0, z0): the area's corner of smallest x and z
-  float size_m;        // side of the area
-  float resolution;    // N cells per side; 0: no layer
-  float foam_j_start;  // the foam ramp of the cascades (M.7.4): foam begins below this J
-  float foam_j_full;   // and is full at this J
-  float calm;          // 1: the cascades are not drawn, only the layer (a calm sea)
-  float local_pad1;
+  vec2 origin_m;     // (x0, z0): the area's corner of smallest x and z
+  float size_m;      // side of the area
+  float resolution;  // N cells per side; 0: no layer
+  float calm;        // 1: the cascades are not drawn, only the layer (a calm sea)
+  float local_pad0, local_pad1, local_pad2;
 };
 
 // The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.24): per-band weights
