@@ -50,7 +50,9 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
   command.add_option("--environment", f.environment,
                      "equirectangular HDR OpenEXR (R, G, B; twice as wide as high) for the sky, "
                      "its reflections and the fog, scaled by the sky's brightness");
-  command.add_option("--view", f.view, "shaded, lod (colours by level) or wireframe");
+  command.add_option(
+      "--view", f.view,
+      "shaded, lod (colours by level), wireframe or normals (the shading normal as colour)");
   command.add_option("--mesh", f.mesh,
                      "the sea's mesh: quadtree, or tessellation (a base grid subdivided by the "
                      "GPU's tessellation shaders; default " +

@@ -162,7 +162,7 @@ TEST(CliMessages, RenderFlags) {
       {"render --ocean-size 100", "--ocean-size = 100 is out of range: must be in [256, 8192]"},
       {"render --sky foggy", "--sky = foggy is not a sky: must be clear, hazy, overcast or sunset"},
       {"render --quality x", "--quality = x is not a quality: must be low, medium, high or ultra"},
-      {"render --view x", "--view = x is not a view: must be shaded, lod or wireframe"},
+      {"render --view x", "--view = x is not a view: must be shaded, lod, wireframe or normals"},
   });
 }
 #endif

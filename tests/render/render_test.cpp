@@ -378,7 +378,7 @@ TEST(Renderer, BadInputIsRefusedWithAMessage) {
 
 TEST(RenderNames, UnknownNamesAreEchoedOnOneLine) {
   EXPECT_EQ(ocean::render::parse_debug_view("x\nray").status().message(),
-            "view = x\\nray is not a view: must be shaded, lod or wireframe");
+            "view = x\\nray is not a view: must be shaded, lod, wireframe or normals");
   EXPECT_EQ(ocean::render::sky_preset("fog\ngy").status().message(),
             "sky = fog\\ngy is not a sky: must be clear, hazy, overcast or sunset");
 }
