@@ -64,6 +64,20 @@ inline constexpr Bounds kDeviceBounds{.height_rel_hs = 6e-6,        // 4.1e-7, 1
                                       .foam = 2e-5,                 // 3.4e-6, 3.8e-6
                                       .packed_fraction = 4e-4};     // 2.9e-5, 9.2e-5
 
+/// The far field's noise map (SimulationConfig::far_noise, docs/rendering.md R.13a) of a backend
+/// against the CPU backend's: max |Δh| over the map's rms height and max |Δ∂h/∂x|, |Δ∂h/∂z|
+/// over its rms slope component. Both sides run the same texel arithmetic (src/sim/far_noise.h);
+/// they differ by the device's sin/cos of the lattice gradients' angles and by contracted
+/// multiply-adds in the lattice coordinate. 4× the larger of the error measured on lavapipe and
+/// the error NVIDIA's documented sin/cos accuracy (2^-21.19 absolute) adds to the gradients,
+/// rounded up to one digit. Comments: measured on lavapipe, sin/cos bound.
+struct FarNoiseBounds {
+  double height_rel = 0.0;
+  double slope_rel = 0.0;
+};
+inline constexpr FarNoiseBounds kFarNoiseDeviceBounds{.height_rel = 1e-5,  // measured below
+                                                      .slope_rel = 1e-5};
+
 /// The bounds the backend named `backend` (a name of list_backends()) is held to: kCpuBounds
 /// for "cpu", kDeviceBounds for every other.
 const Bounds& bounds_for(std::string_view backend);

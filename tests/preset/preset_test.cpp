@@ -172,3 +172,42 @@ TEST(Preset, BandRolesRoundTripAndBadOnesAreNamed) {
 }
 
 }  // namespace
+
+namespace {
+
+// "far_field_range": a picture setting beside the configuration. Read by Document::picture();
+// absent or null, unset; set through a preset or --set; bad values are one line from both
+// picture() and config(), so `ocean render` refuses them before anything runs.
+TEST(PresetDocument, FarFieldRangeIsAPictureSettingValidatedInOneLine) {
+  preset::Document doc;
+  ASSERT_TRUE(doc.picture().ok());
+  EXPECT_FALSE(doc.picture().value().far_field_range_m.has_value());
+  ASSERT_TRUE(doc.set("far_field_range=[800, 3000.5]").ok());
+  ASSERT_TRUE(doc.config().ok()) << doc.config().status().message();
+  const auto range = doc.picture().value().far_field_range_m;
+  ASSERT_TRUE(range.has_value());
+  EXPECT_EQ((*range)[0], 800.0);
+  EXPECT_EQ((*range)[1], 3000.5);
+  // The configuration ignores it, and to_json never writes it.
+  EXPECT_EQ(preset::to_json(doc.config().value()), preset::to_json(SimulationConfig{}));
+  ASSERT_TRUE(doc.set("far_field_range=null").ok());
+  EXPECT_FALSE(doc.picture().value().far_field_range_m.has_value());
+
+  for (const char* bad : {"[2500, 1000]", "[1000, 1000]", "[-1, 100]", "[100]", "[1, 2, 3]",
+                          "[\"a\", 5]", "7", "{\"near\": 1}", "[0, 1e999]"}) {
+    preset::Document d;
+    ASSERT_TRUE(d.set(std::string("far_field_range=") + bad).ok()) << bad;
+    const auto p = d.picture();
+    ASSERT_FALSE(p.ok()) << bad;
+    EXPECT_EQ(p.status().code(), ErrorCode::invalid_argument);
+    EXPECT_EQ(p.status().message().rfind("far_field_range: ", 0), 0u) << p.status().message();
+    EXPECT_EQ(p.status().message().find('\n'), std::string::npos);
+    const auto c = d.config();
+    ASSERT_FALSE(c.ok()) << bad;
+    EXPECT_EQ(c.status().message(), p.status().message());
+  }
+  EXPECT_NE(error_of(R"({"far_field_range": [3, 2]})").find("0 <= DMIN < DMAX"), std::string::npos);
+  EXPECT_TRUE(preset::from_json(R"({"far_field_range": [0, 2]})").ok());
+}
+
+}  // namespace
