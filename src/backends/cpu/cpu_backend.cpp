@@ -152,7 +152,9 @@ void CpuBackendImpl::step_chained(TaskRunner& stages, double time_s, double dt_s
   runner_->parallel_for(tasks, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t g = begin; g < end; ++g) {
       if (g == groups_.size()) {
-        far_noise_task(stages, time_s, out);
+        // Its rows on the frame's runner even when each chain keeps to one thread: the map
+        // shares no data with the chains, and a thread done with its chain helps with it.
+        far_noise_task(*runner_, time_s, out);
         continue;
       }
       const CascadeGroup& group = groups_[g];
