@@ -103,7 +103,7 @@ double overlap_of(double cascades_ms, double noise_ms, double both_ms) {
 }
 
 int run_overlap(const OverlapOptions& o) {
-  std::shared_ptr<TaskRunner> runner = make_tbb_runner();
+  std::shared_ptr<TaskRunner> runner = make_tbb_runner(o.threads);
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   std::string device, vulkan_note;
   Progress progress("bench", static_cast<long long>(o.resolutions.size() * o.cascades.size()));

@@ -14,6 +14,7 @@ struct OverlapOptions {
   std::vector<int> resolutions;  ///< cascade grid sizes N
   std::vector<int> cascades;     ///< cascade counts
   int noise_resolution = 256;    ///< the noise map's texels per side
+  int threads = 0;               ///< the CPU backend's threads (0: all)
   double min_time = 0.2;         ///< seconds of timed frames per measurement
   bool json = false;
 };

@@ -82,6 +82,7 @@ struct BenchOptions {
   std::string far_noise_resolution = "256";
   bool resolution_given = false;
   bool cascades_given = false;
+  bool threads_given = false;
 };
 
 int run_bench(const BenchOptions& o) {
@@ -141,6 +142,8 @@ int run_bench(const BenchOptions& o) {
         {.resolutions = o.resolution_given ? resolutions.value() : std::vector<int>{256},
          .cascades = o.cascades_given ? cascades.value() : std::vector<int>{4},
          .noise_resolution = noise.value(),
+         .threads =
+             !o.threads_given || threads.value().front() == 0 ? hardware : threads.value().front(),
          .min_time = min_time.value(),
          .json = o.json});
   }
@@ -287,12 +290,14 @@ Command add_bench_command(CLI::App& app) {
                 "(t_cascades + t_noise - t_both) / min(t_cascades, t_noise); the first "
                 "--resolution and --cascades default to 256 and 4");
   add_option(*cmd, kFarNoiseResolution, options->far_noise_resolution,
-             "--overlap: texels per side of the noise map (16…4096)")
+             "--overlap: texels per side of the noise map (16…4096); the CPU runs on the first "
+             "--threads count (default all)")
       ->capture_default_str();
   return {cmd, [options, cmd] {
             BenchOptions o = *options;
             o.resolution_given = cmd->get_option("--resolution")->count() > 0;
             o.cascades_given = cmd->get_option("--cascades")->count() > 0;
+            o.threads_given = cmd->get_option("--threads")->count() > 0;
             return run_bench(o);
           }};
 }
