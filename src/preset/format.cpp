@@ -129,6 +129,11 @@ Json to_value(const SimulationConfig& c) {
     for (BandRole role : c.band_roles) roles.push_back(std::string(to_string(role)));
     document["band_roles"] = roles;
   }
+  if (c.far_noise.resolution > 0) {  // written only when on: no map otherwise
+    document["far_noise"] = Json{{"resolution", c.far_noise.resolution},
+                                 {"origin_m", c.far_noise.origin_m},
+                                 {"size_m", c.far_noise.size_m}};
+  }
   return document;
 }
 
@@ -198,6 +203,21 @@ Result<SimulationConfig> from_value(const Json& document) {
     fr.number("jacobian_full", c.foam.jacobian_full);
     fr.number("decay_per_s", c.foam.decay_per_s);
     r.adopt(fr.finish());
+  }
+  if (const Json* noise = r.child("far_noise"); noise != nullptr && !noise->is_null()) {
+    ObjectReader nr(*noise, "far_noise");
+    long long n = c.far_noise.resolution;
+    nr.integer("resolution", n);
+    c.far_noise.resolution = n < 0 || n > 1 << 20 ? -1 : static_cast<int>(n);
+    nr.number("size_m", c.far_noise.size_m);
+    if (const Json* origin = nr.child("origin_m")) {
+      if (!origin->is_array() || origin->size() != 2 || !(*origin)[0].is_number() ||
+          !(*origin)[1].is_number())
+        nr.fail("origin_m", "expected [x, z] in metres");
+      else
+        c.far_noise.origin_m = {(*origin)[0].get<double>(), (*origin)[1].get<double>()};
+    }
+    r.adopt(nr.finish());
   }
   r.child("far_field_range");  // a picture setting: picture_from_value reads it
   if (Status s = r.finish(); !s.ok()) return s;

@@ -171,6 +171,29 @@ TEST(Preset, BandRolesRoundTripAndBadOnesAreNamed) {
   EXPECT_FALSE(preset::from_json(R"({"band_roles": "shade"})").ok());
 }
 
+// The far field's noise map (SimulationConfig::far_noise): written only when on, exact round trip,
+// bad values named by their path or by validate().
+TEST(Preset, FarNoiseMapRoundTripsAndBadOnesAreNamed) {
+  SimulationConfig c;
+  EXPECT_EQ(preset::to_json(c).find("far_noise"), std::string::npos);  // off: not written
+  c.far_noise = {.resolution = 256, .origin_m = {-1234.5, 0.1}, .size_m = 7777.25};
+  auto back = preset::from_json(preset::to_json(c));
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_EQ(back.value().far_noise.resolution, 256);
+  EXPECT_EQ(back.value().far_noise.origin_m, c.far_noise.origin_m);
+  EXPECT_EQ(back.value().far_noise.size_m, c.far_noise.size_m);
+  EXPECT_NE(error_of(R"({"far_noise": {"resolution": 8}})").find("far_noise.resolution"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"far_noise": {"origin_m": [1]}})").find("far_noise.origin_m"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"far_noise": {"colour": 1}})").find("far_noise.colour: unknown key"),
+            std::string::npos);
+  preset::Document doc;
+  ASSERT_TRUE(doc.set("far_noise.resolution=64").ok());
+  ASSERT_TRUE(doc.config().ok()) << doc.config().status().message();
+  EXPECT_EQ(doc.config().value().far_noise.resolution, 64);
+}
+
 }  // namespace
 
 namespace {
