@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include "ocean/cpu_backend.hpp"
@@ -36,8 +37,8 @@ struct Stepped {
   std::unique_ptr<ocean::TaskRunner> runner;
   ocean::Frame frame;
 };
-Stepped configure(const SimulationConfig& config) {
-  Stepped s{ocean::cpu::make_cpu_backend(), ocean::make_tbb_runner(2), {}};
+Stepped configure(const SimulationConfig& config, ocean::cpu::CpuOptions options = {}) {
+  Stepped s{ocean::cpu::make_cpu_backend(options), ocean::make_tbb_runner(2), {}};
   const ocean::Status status = s.backend->configure(config, *s.runner);
   EXPECT_TRUE(status.ok()) << status.message();
   s.backend->allocate(s.frame);
@@ -200,15 +201,30 @@ TEST(FarNoiseMap, MomentsEqualTheBandsAtEveryTime) {
   }
 }
 
-TEST(FarNoiseMap, ChangesNothingElseInTheFrame) {
+// The map is a task of its own in each shape of the frame: beside the cascade groups' chains
+// (central differences), beside the whole cascade stages (analytic normals), and after them on
+// the scalar reference pipeline; none changes a bit of the cascades.
+class FarNoiseFrame
+    : public ::testing::TestWithParam<std::pair<ocean::NormalMethod, ocean::cpu::CpuPipeline>> {};
+
+TEST_P(FarNoiseFrame, ChangesNothingElseInTheFrame) {
   SimulationConfig with = small_config();
+  with.normals = GetParam().first;
   SimulationConfig without = with;
   without.far_noise.resolution = 0;
-  Stepped a = configure(with), b = configure(without);
+  const ocean::cpu::CpuOptions options{.pipeline = GetParam().second};
+  Stepped a = configure(with, options), b = configure(without, options);
   for (double t : {0.0, 0.5}) {
     a.backend->step(t, a.frame);
     b.backend->step(t, b.frame);
   }
+  Stepped fused = configure(with);
+  fused.backend->step(0.5, fused.frame);
+  EXPECT_EQ(
+      std::memcmp(fused.frame.far_noise.height_slope.data(), a.frame.far_noise.height_slope.data(),
+                  a.frame.far_noise.height_slope.size() * sizeof(float)),
+      0)
+      << "the map depends on nothing but its parameters and the time";
   EXPECT_TRUE(b.frame.far_noise.height_slope.empty());
   ASSERT_EQ(a.frame.cascades.size(), b.frame.cascades.size());
   for (std::size_t c = 0; c < a.frame.cascades.size(); ++c) {
@@ -230,6 +246,14 @@ TEST(FarNoiseMap, ChangesNothingElseInTheFrame) {
                         alone.far_noise.height_slope.size() * sizeof(float)),
             0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Shapes, FarNoiseFrame,
+                         ::testing::Values(std::pair{ocean::NormalMethod::central_difference,
+                                                     ocean::cpu::CpuPipeline::fused_simd},
+                                           std::pair{ocean::NormalMethod::analytic,
+                                                     ocean::cpu::CpuPipeline::fused_simd},
+                                           std::pair{ocean::NormalMethod::central_difference,
+                                                     ocean::cpu::CpuPipeline::scalar_reference}));
 
 TEST(FarNoiseMap, BadMapsAreRefused) {
   SimulationConfig c = small_config();

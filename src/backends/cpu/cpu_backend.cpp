@@ -143,8 +143,8 @@ void CpuBackendImpl::step_chained(TaskRunner& stages, double time_s, double dt_s
   // runner for the stages, a worker that ends its chain helps with the other chains' loops
   // instead of waiting at a barrier per stage; with a serial one, each chain stays on one
   // thread.
-  // The far field's noise map, when on, is one more chain: a task of its own beside the
-  // cascades', sharing nothing with them.
+  // The far field's noise map, when on, is one more task beside the chains, sharing nothing
+  // with them.
   prepare_evolution(time_s);
   prepare_surface(dt_s, reset_foam, out);
   const bool with_noise = config_.far_noise.resolution > 0;
@@ -195,8 +195,9 @@ void CpuBackendImpl::step(double time_s, Frame& out) {
         static_cast<std::size_t>(runner_->concurrency()) <= groups_.size() &&
         config_.resolution <= 256;
     step_chained(chain_per_thread ? *serial_ : *runner_, time_s, dt, reset_foam, out);
-  } else if (config_.far_noise.resolution > 0) {
-    // Two tasks side by side: the cascades' stages and the far field's noise map.
+  } else if (config_.far_noise.resolution > 0 && options_.pipeline != CpuPipeline::external_fft) {
+    // Two tasks side by side: the cascades' stages and the far field's noise map. (An external
+    // FFT engine is called on the thread that calls step(): then the two run in turn, below.)
     double far_noise_s = 0.0;
     runner_->parallel_for(2, 1, [&](std::size_t begin, std::size_t end) {
       for (std::size_t task = begin; task < end; ++task) {
@@ -212,6 +213,7 @@ void CpuBackendImpl::step(double time_s, Frame& out) {
   } else {
     step_stages(time_s, dt, reset_foam, out);
     times_.far_noise_s = 0.0;
+    if (config_.far_noise.resolution > 0) far_noise_task(*runner_, time_s, out);
   }
   out.time_s = time_s;
   ++out.index;
