@@ -2,6 +2,7 @@
 #include "bench/overlap.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -20,10 +21,9 @@ namespace ocean::cli::bench {
 
 namespace {
 
-// The three measurements, interleaved in rounds so that all see the same minutes of a machine
-// shared with other work; medians over every round's frames.
-constexpr int kRounds = 4;
-
+// The three measurements alternate frame by frame (cascades, noise, both, cascades, ...), so that
+// all three see the same moments of a machine shared with other work: 2 warm-up frames each, then
+// at least 5 and about min_time seconds in all (at most 500 each); medians.
 struct Timed {
   Stats cascades, noise, both;
 };
@@ -33,24 +33,25 @@ struct Timed {
 template <typename Alone, typename Noise, typename Both>
 Timed time_three(double min_time, Alone alone, Noise noise, Both both) {
   std::vector<double> a, n, b;
-  double ta = 0.0, tn = 0.0, tb = 0.0;
-  const double round = min_time / kRounds;
-  const auto add = [](std::vector<double>& to, const std::vector<double>& from) {
-    to.insert(to.end(), from.begin(), from.end());
+  double ta = 0.0, tn = 0.0, tb = 0.0, total = 0.0;
+  const auto timed = [&total](auto&& step, double& t, std::vector<double>* into) {
+    const Clock::time_point start = Clock::now();
+    step(t);
+    const double s = std::chrono::duration<double>(Clock::now() - start).count();
+    t += 1.0 / 90.0;
+    if (into == nullptr) return;
+    into->push_back(s);
+    total += s;
   };
-  for (int r = 0; r < kRounds; ++r) {
-    add(a, time_runs(round, [&] {
-          alone(ta);
-          ta += 1.0 / 90.0;
-        }));
-    add(n, time_runs(round, [&] {
-          noise(tn);
-          tn += 1.0 / 90.0;
-        }));
-    add(b, time_runs(round, [&] {
-          both(tb);
-          tb += 1.0 / 90.0;
-        }));
+  for (int i = 0; i < 2; ++i) {
+    timed(alone, ta, nullptr);
+    timed(noise, tn, nullptr);
+    timed(both, tb, nullptr);
+  }
+  while ((a.size() < 5 || total < min_time) && a.size() < 500) {
+    timed(alone, ta, &a);
+    timed(noise, tn, &n);
+    timed(both, tb, &b);
   }
   return {stats_of(a), stats_of(n), stats_of(b)};
 }
