@@ -51,7 +51,9 @@ void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
                      "(moves the surface, flat shading) | shade (normals and foam, no motion)");
 }
 
-Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
+namespace {
+// The preset file and the --set overrides, in that order.
+Result<preset::Document> resolve_document(const SimulationFlags& f) {
   preset::Document doc;
   if (!f.preset_path.empty()) {
     if (Status s = doc.merge_preset(f.preset_path, "--preset"); !s.ok()) return s;
@@ -59,7 +61,20 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
   for (const std::string& assignment : f.set) {
     if (Status s = doc.set(assignment, "--set"); !s.ok()) return s;
   }
-  Result<SimulationConfig> parsed = doc.config();
+  return doc;
+}
+}  // namespace
+
+Result<preset::PictureSettings> resolve_picture(const SimulationFlags& f) {
+  Result<preset::Document> doc = resolve_document(f);
+  if (!doc.ok()) return doc.status();
+  return doc.value().picture();
+}
+
+Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
+  Result<preset::Document> doc = resolve_document(f);
+  if (!doc.ok()) return doc.status();
+  Result<SimulationConfig> parsed = doc.value().config();
   if (!parsed.ok()) return parsed.status();
   SimulationConfig c = std::move(parsed).value();
   // Explicit sea-state flags replace the preset's wind sea.

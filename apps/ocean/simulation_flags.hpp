@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli_common.hpp"
+#include "ocean/preset.hpp"
 #include "ocean/sim.hpp"
 
 namespace ocean::cli {
@@ -26,5 +27,8 @@ struct SimulationFlags {
 void add_simulation_flags(CLI::App& command, SimulationFlags& flags);
 /// Default config ← preset file ← --set overrides ← explicit flags; then validated.
 Result<SimulationConfig> resolve_config(const SimulationFlags& flags);
+/// The picture settings of the preset file and the --set overrides (ocean/preset.hpp), for
+/// `ocean render` and `ocean view`; their flags override them.
+Result<preset::PictureSettings> resolve_picture(const SimulationFlags& flags);
 
 }  // namespace ocean::cli

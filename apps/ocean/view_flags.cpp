@@ -41,8 +41,8 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
       "side of the LOD square around the camera, m (256..8192, default " + f.ocean_size + ")");
   command.add_option("--far-field-range", f.far_field_range,
                      "DMIN,DMAX: distances, m, over which the simulated sea blends into the "
-                     "far field's noise and hex-tiled cascades (default " +
-                         f.far_field_range + ")");
+                     "far field's noise and hex-tiled cascades (default: the preset's "
+                     "far_field_range, else 1000,2500)");
   add_option(command, kPlanetRadius, f.planet_radius,
              "radius of the planet whose curvature bends the sea and sets the horizon, m; inf: "
              "a flat sea (default " +
@@ -118,15 +118,19 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
   Result<double> size = parse(kOceanSize, f.ocean_size);
   if (!size.ok()) return size.status();
   v.ocean_size_m = size.value();
-  Result<std::vector<double>> range = parse_list(kFarFieldRange, f.far_field_range);
-  if (!range.ok()) return range.status();
-  if (range.value().size() != 2)
-    return invalid_argument("--far-field-range = " + excerpt(f.far_field_range) +
-                            " must be two distances DMIN,DMAX in metres");
-  v.far_field = {.near_m = range.value()[0], .far_m = range.value()[1]};
-  if (range.value()[0] >= range.value()[1])
-    return invalid_argument("--far-field-range = " + excerpt(f.far_field_range) +
-                            ": DMIN must be below DMAX");
+  if (f.far_field_range.empty()) {
+    v.far_field = f.preset_far_field.value_or(render::FarFieldRange{});
+  } else {
+    Result<std::vector<double>> range = parse_list(kFarFieldRange, f.far_field_range);
+    if (!range.ok()) return range.status();
+    if (range.value().size() != 2)
+      return invalid_argument("--far-field-range = " + excerpt(f.far_field_range) +
+                              " must be two distances DMIN,DMAX in metres");
+    v.far_field = {.near_m = range.value()[0], .far_m = range.value()[1]};
+    if (range.value()[0] >= range.value()[1])
+      return invalid_argument("--far-field-range = " + excerpt(f.far_field_range) +
+                              ": DMIN must be below DMAX");
+  }
   Result<render::DebugView> debug = render::parse_debug_view(f.view);
   if (!debug.ok())
     return invalid_argument("--view = " + excerpt(f.view) + " is not a view: must be " +

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <optional>
 #include <string>
 
 #include "ocean/render.hpp"
@@ -16,17 +17,20 @@ struct ViewFlags {
   std::string camera = "0,6,0", target = "300,-2,60", fov = "55";
   std::string quality = "high", ocean_size = "4096", view = "shaded";
   std::string backend = "cpu";
-  std::string far_field_range = "1000,2500";  // D_min,D_max of the far field (R.13), m
-  std::string planet_radius = "6371000";      // R of the sea's curvature (R.15), m; inf: flat
-  std::string environment;                    // equirectangular HDR OpenEXR sky (R.17); empty: none
-  std::string mesh = "quadtree";              // quadtree or tessellation (R.40–R.42)
+  // D_min,D_max of the far field (R.13), m; empty: the preset's far_field_range, else 1000,2500.
+  std::string far_field_range;
+  std::optional<render::FarFieldRange> preset_far_field;  // the preset's far_field_range
+  std::string planet_radius = "6371000";  // R of the sea's curvature (R.15), m; inf: flat
+  std::string environment;                // equirectangular HDR OpenEXR sky (R.17); empty: none
+  std::string mesh = "quadtree";          // quadtree or tessellation (R.40–R.42)
   bool validation = false;
   SphereFlags sphere;  // --sphere, --latitude, --longitude, --altitude
 };
 /// Registers the flags; `what` names the image ("image" or "window") in the help.
 void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what);
 
-/// Size, backend and validation into `scene`; camera, quality, ocean size, far-field range and
+/// Size, backend and validation into `scene`; camera, quality, ocean size, far-field range
+/// (--far-field-range, else flags.preset_far_field, else render::FarFieldRange's default) and
 /// debug view into `view` (its shading is left alone). `min_size` is the smallest width/height
 /// accepted.
 Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,

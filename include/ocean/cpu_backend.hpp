@@ -41,6 +41,9 @@ struct StageTimes {
   double synthesis_s = 0.0;  ///< evolution + FFT + displacement assembly
   double finalize_s = 0.0;   ///< gradients, normals, Jacobian, foam, base-level packing
   double mips_s = 0.0;       ///< mip chain
+  /// The far field's noise map (SimulationConfig::far_noise), a task beside the cascades': its
+  /// own wall time, which overlaps theirs; 0 when the map is off.
+  double far_noise_s = 0.0;
 };
 
 /// The CPU backend as a Backend with its measurements.
@@ -52,6 +55,10 @@ class CpuBackend : public Backend {
   /// Bytes of the state kept for one cascade (spectra, kernel inputs, planes, foam, mip work),
   /// not counting the frame the caller owns. Valid after configure().
   [[nodiscard]] virtual std::size_t state_bytes_per_cascade() const = 0;
+  /// The far field's noise map alone: Frame::far_noise at time_s, on the configured runner, the
+  /// cascades untouched (what `ocean bench --overlap` times against the whole step). No-op when
+  /// SimulationConfig::far_noise is off. Allocates nothing.
+  virtual void step_far_noise(double time_s, Frame& out) = 0;
 };
 
 /// A CPU backend running `options.pipeline`. Allocates the backend only; configure() does the

@@ -6,6 +6,9 @@
 // "sea.swell" null is no swell. Every key is optional (absent keys keep SimulationConfig's
 // defaults); unknown keys and wrong types are errors that name the key's path in the document
 // ("sea.wind_sea.fetch_m: expected a number, got a string"). presets/*.json are examples.
+// Besides the simulation a preset may carry settings of the picture (PictureSettings), which
+// `ocean render` and `ocean view` use unless their flags say otherwise:
+//   "far_field_range": [D_min, D_max]   where the far field takes over, m (docs/rendering.md R.13)
 //
 // Bounds: a preset holds at most kMaxPresetBytes bytes and nests objects and arrays at most
 // kMaxPresetDepth deep; both are checked before a document is built, so neither a huge file
@@ -16,8 +19,10 @@
 // A user's text echoed in a message is shortened and escaped by ocean::excerpt.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,6 +43,12 @@ inline constexpr std::size_t kMaxValueBytes = std::size_t{64} << 10;
 /// How long a preset that is a FIFO may stay without a writer before reading it fails, in
 /// milliseconds (a named pipe nothing writes to would otherwise block forever).
 inline constexpr int kFifoWaitMs = 5000;
+
+/// Settings of the picture a preset may carry besides the simulation; absent keys stay unset.
+struct PictureSettings {
+  /// "far_field_range": [D_min, D_max], m: finite, 0 ≤ D_min < D_max (render::FarFieldRange).
+  std::optional<std::array<double, 2>> far_field_range_m;
+};
 
 /// The preset document of `config`: every key, in a fixed order. `indent` < 0 writes one line,
 /// otherwise that many spaces per level. Numbers round-trip exactly through from_json.
@@ -98,6 +109,10 @@ class Document {
 
   /// The configuration the document describes (as from_json).
   [[nodiscard]] Result<SimulationConfig> config() const;
+  /// The picture settings the document carries. Errors (invalid_argument), one line:
+  ///   "far_field_range: expected [DMIN, DMAX], two distances in metres, got <value>",
+  ///   "far_field_range: [<a>, <b>] must be finite distances with 0 <= DMIN < DMAX".
+  [[nodiscard]] Result<PictureSettings> picture() const;
 
  private:
   struct Impl;

@@ -123,6 +123,19 @@ inline SeaStateParams default_sea_state() {
   return p;
 }
 
+/// Seed 003's noise maps (docs/rendering.md R.13a): the far field's noise (R.13, fitted to cascade
+/// 0 by fit_far_field_noise, ocean/far_noise.hpp) as per-frame data, height and surface gradient
+/// on a square window of the world, each octave advected at the mean phase velocity of the waves
+/// it stands for. Computed by the backend beside the cascades: on the CPU as a task of the frame
+/// graph next to the cascades' chains, on Vulkan as a dispatch in the frame's submission with no
+/// barrier between it and the FFT. Off by default (resolution 0): no map, no work.
+struct FarNoiseConfig {
+  int resolution = 0;  ///< N texels per side: 0 (off) or in [16, 4096]
+  /// World (x, z) of texel (0, 0), m; texel (col, row) is the point origin + (col, row)·size/N.
+  std::array<double, 2> origin_m{-4096.0, -4096.0};
+  double size_m = 8192.0;  ///< side of the window, m, in [1, 1e6]
+};
+
 struct SimulationConfig {
   SeaStateParams sea = default_sea_state();  ///< wave systems and dispersion
   int resolution = 256;                      ///< N per cascade, a power of two in [16, 2048]
@@ -145,6 +158,7 @@ struct SimulationConfig {
   /// The role of each cascade, band_roles[c] for cascade c: empty = every cascade BandRole::both;
   /// otherwise exactly one per cascade.
   std::vector<BandRole> band_roles;
+  FarNoiseConfig far_noise;  ///< the far field's noise map (off by default)
 };
 
 /// Validates a configuration (and, when it loops, its sea state); the message names the field,
@@ -215,6 +229,17 @@ struct LocalSurfaceFrame {
   std::vector<float> sea_foam;
 };
 
+/// The far field's noise map of one frame (FarNoiseConfig, docs/rendering.md R.13a).
+struct FarNoiseFrame {
+  std::array<double, 2> origin_m{};  ///< world (x, z) of texel (0, 0), m
+  double size_m = 0.0;               ///< side of the window, m
+  int resolution = 0;                ///< N texels per side; 0: no map, array empty
+  /// float3 (h, ∂h/∂x, ∂h/∂z) per texel, index row·N + col: the height, m, and the surface
+  /// gradient of the noise at texel (col, row)'s world point at the frame's time (the normal is
+  /// (−∂h/∂x, 1, −∂h/∂z) normalised).
+  LargeVector<float> height_slope;
+};
+
 struct Frame {
   double time_s = 0.0;
   std::uint64_t index = 0;  ///< frames computed since configuration
@@ -222,10 +247,14 @@ struct Frame {
   /// The local surface, computed by the Simulator after the backend's step when a local layer
   /// is set (Simulator::set_local_layer); empty otherwise.
   LocalSurfaceFrame local;
+  /// The far field's noise map, computed by the backend when SimulationConfig::far_noise is on;
+  /// empty otherwise.
+  FarNoiseFrame far_noise;
 };
 
 /// Sizes every array of `frame` for `config` (one CascadeFrame per cascade, mips included; the
-/// arrays config.outputs does not request empty) and resets the values: displacement, normal
+/// arrays config.outputs does not request empty; the far-field noise map when config.far_noise
+/// is on) and resets the values: displacement, normal
 /// and foam 0, Jacobian 1. What Backend::allocate does.
 void allocate_frame(const SimulationConfig& config, Frame& frame);
 

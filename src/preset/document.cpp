@@ -204,4 +204,8 @@ Status Document::set(std::string_view assignment, std::string_view label_text) {
 
 Result<SimulationConfig> Document::config() const { return detail::from_value(impl_->document); }
 
+Result<PictureSettings> Document::picture() const {
+  return detail::picture_from_value(impl_->document);
+}
+
 }  // namespace ocean::preset

@@ -129,6 +129,11 @@ Json to_value(const SimulationConfig& c) {
     for (BandRole role : c.band_roles) roles.push_back(std::string(to_string(role)));
     document["band_roles"] = roles;
   }
+  if (c.far_noise.resolution > 0) {  // written only when on: no map otherwise
+    document["far_noise"] = Json{{"resolution", c.far_noise.resolution},
+                                 {"origin_m", c.far_noise.origin_m},
+                                 {"size_m", c.far_noise.size_m}};
+  }
   return document;
 }
 
@@ -199,7 +204,25 @@ Result<SimulationConfig> from_value(const Json& document) {
     fr.number("decay_per_s", c.foam.decay_per_s);
     r.adopt(fr.finish());
   }
+  if (const Json* noise = r.child("far_noise"); noise != nullptr && !noise->is_null()) {
+    ObjectReader nr(*noise, "far_noise");
+    long long n = c.far_noise.resolution;
+    nr.integer("resolution", n);
+    c.far_noise.resolution = n < 0 || n > 1 << 20 ? -1 : static_cast<int>(n);
+    nr.number("size_m", c.far_noise.size_m);
+    if (const Json* origin = nr.child("origin_m")) {
+      if (!origin->is_array() || origin->size() != 2 || !(*origin)[0].is_number() ||
+          !(*origin)[1].is_number())
+        nr.fail("origin_m", "expected [x, z] in metres");
+      else
+        c.far_noise.origin_m = {(*origin)[0].get<double>(), (*origin)[1].get<double>()};
+    }
+    r.adopt(nr.finish());
+  }
+  r.child("far_field_range");  // a picture setting: picture_from_value reads it
   if (Status s = r.finish(); !s.ok()) return s;
+  if (Result<PictureSettings> picture = picture_from_value(document); !picture.ok())
+    return picture.status();
   Result<NormalMethod> method = parse_normal_method(normals);
   if (!method.ok()) return method.status();
   c.normals = method.value();
@@ -211,6 +234,24 @@ Result<SimulationConfig> from_value(const Json& document) {
   if (Status s = validate(c); !s.ok()) return s;
   if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
   return c;
+}
+
+Result<PictureSettings> picture_from_value(const Json& document) {
+  PictureSettings p;
+  if (!document.is_object()) return p;
+  const auto it = document.find("far_field_range");
+  if (it == document.end() || it->is_null()) return p;
+  const Json& range = *it;
+  if (!range.is_array() || range.size() != 2 || !range[0].is_number() || !range[1].is_number())
+    return invalid_argument(
+        "far_field_range: expected [DMIN, DMAX], two distances in metres, got " +
+        excerpt(range.dump()));
+  const double near = range[0].get<double>(), far = range[1].get<double>();
+  if (!std::isfinite(near) || !std::isfinite(far) || near < 0.0 || !(near < far))
+    return invalid_argument("far_field_range: [" + format_number(near) + ", " + format_number(far) +
+                            "] must be finite distances with 0 <= DMIN < DMAX");
+  p.far_field_range_m = std::array<double, 2>{near, far};
+  return p;
 }
 
 Parsed parse_bounded(std::string_view text, int max_depth) {

@@ -40,6 +40,23 @@ Result<std::vector<BandRole>> parse_band_roles(std::string_view list) {
   }
 }
 
+namespace {
+Status validate_far_noise(const FarNoiseConfig& f) {
+  if (f.resolution != 0 && (f.resolution < 16 || f.resolution > 4096)) {
+    return invalid_argument("far_noise.resolution = " + std::to_string(f.resolution) +
+                            " is out of range: must be 0 (off) or in [16, 4096]");
+  }
+  if (Status s = require_in_range("far_noise.size_m", f.size_m, 1.0, 1e6); !s.ok()) return s;
+  for (int i = 0; i < 2; ++i) {
+    const std::string name = std::string("far_noise.origin_m[") + (i == 0 ? "0]" : "1]");
+    if (Status s = require_in_range(name, f.origin_m[static_cast<std::size_t>(i)], -1e9, 1e9);
+        !s.ok())
+      return s;
+  }
+  return {};
+}
+}  // namespace
+
 Status validate(const SimulationConfig& c) {
   const int n = c.resolution;
   if (n < 16 || n > 2048 || !std::has_single_bit(static_cast<unsigned>(n))) {
@@ -80,6 +97,7 @@ Status validate(const SimulationConfig& c) {
   if (Status s = require_in_range("foam.decay_per_s", c.foam.decay_per_s, 0.0, 1e6); !s.ok()) {
     return s;
   }
+  if (Status s = validate_far_noise(c.far_noise); !s.ok()) return s;
   if (c.loop_period_s == 0.0) return {};
   Result<double> shortest = shortest_loop_period_s(c);
   if (!shortest.ok()) return shortest.status();
@@ -195,6 +213,16 @@ void allocate_frame(const SimulationConfig& config, Frame& frame) {
     optional(f.jacobian, config.outputs.jacobian, texels, 1.0f);
     optional(f.foam, config.outputs.foam, texels, 0.0f);
     f.packed_mips.assign(mip_chain_texels(config.resolution), 0u);
+  }
+  const FarNoiseConfig& noise = config.far_noise;
+  frame.far_noise.origin_m = noise.origin_m;
+  frame.far_noise.size_m = noise.size_m;
+  frame.far_noise.resolution = noise.resolution;
+  if (noise.resolution > 0) {
+    const auto n = static_cast<std::size_t>(noise.resolution);
+    frame.far_noise.height_slope.assign(3 * n * n, 0.0f);
+  } else {
+    LargeVector<float>().swap(frame.far_noise.height_slope);
   }
 }
 

@@ -206,6 +206,69 @@ TEST_P(Conformance, OptionalOutputsAreLeftOutAndTheRestUnchanged) {
   }
 }
 
+// The far field's noise map (docs/rendering.md R.13a) against the CPU backend's, texel by texel,
+// at the start, after a second and three days in (the octaves thousands of cells away), within
+// kFarNoiseDeviceBounds; and the map changes nothing else: the cascades' arrays keep the bits of
+// the same backend without it.
+TEST_P(Conformance, FarNoiseMapMatchesTheCpuMapAndChangesNothingElse) {
+  if (GetParam().starts_with("cuda"))
+    GTEST_SKIP() << "the CUDA backend computes no noise map (it refuses far_noise)";
+  std::unique_ptr<ocean::TaskRunner> runner = ocean::make_serial_runner();
+  ocean::SimulationConfig config;
+  config.resolution = 32;
+  config.cascade_patch_sizes_m = {300.0, 71.0};
+  ocean::SimulationConfig plain = config;
+  config.far_noise = {.resolution = 96, .origin_m = {-2000.0, 1000.0}, .size_m = 4000.0};
+  auto reference = ocean::cpu::make_cpu_backend();
+  auto backend = make(GetParam());
+  auto without = make(GetParam());
+  ASSERT_TRUE(backend.ok() && without.ok());
+  ASSERT_TRUE(reference->configure(config, *runner).ok());
+  ASSERT_TRUE(backend.value()->configure(config, *runner).ok());
+  ASSERT_TRUE(without.value()->configure(plain, *runner).ok());
+  ocean::Frame r, b, w;
+  reference->allocate(r);
+  backend.value()->allocate(b);
+  without.value()->allocate(w);
+  double worst_h = 0.0, worst_s = 0.0;
+  for (const double t : {0.0, 1.0, 259200.0}) {
+    reference->step(t, r);
+    backend.value()->step(t, b);
+    without.value()->step(t, w);
+    const auto& x = r.far_noise.height_slope;
+    const auto& y = b.far_noise.height_slope;
+    ASSERT_EQ(x.size(), y.size());
+    double h2 = 0.0, s2 = 0.0, dh = 0.0, ds = 0.0;
+    for (std::size_t i = 0; i < x.size(); i += 3) {
+      h2 += double(x[i]) * x[i];
+      s2 += 0.5 * (double(x[i + 1]) * x[i + 1] + double(x[i + 2]) * x[i + 2]);
+      dh = std::max(dh, double(std::abs(x[i] - y[i])));
+      ds = std::max(
+          {ds, double(std::abs(x[i + 1] - y[i + 1])), double(std::abs(x[i + 2] - y[i + 2]))});
+    }
+    const double texels = static_cast<double>(x.size() / 3);
+    ASSERT_GT(h2, 0.0);
+    worst_h = std::max(worst_h, dh / std::sqrt(h2 / texels));
+    worst_s = std::max(worst_s, ds / std::sqrt(s2 / texels));
+    for (std::size_t c = 0; c < b.cascades.size(); ++c) {
+      const ocean::CascadeFrame &p = b.cascades[c], &q = w.cascades[c];
+      EXPECT_EQ(std::memcmp(p.displacement.data(), q.displacement.data(),
+                            p.displacement.size() * sizeof(float)),
+                0)
+          << "cascade " << c << ", t = " << t;
+      EXPECT_EQ(std::memcmp(p.packed_mips.data(), q.packed_mips.data(),
+                            p.packed_mips.size() * sizeof(std::uint32_t)),
+                0)
+          << "cascade " << c << ", t = " << t;
+    }
+  }
+  std::printf("[%s] far-field noise map: height %.3g of its rms, slope %.3g of its rms\n",
+              GetParam().c_str(), worst_h, worst_s);
+  EXPECT_LE(worst_h, ocean::conformance::kFarNoiseDeviceBounds.height_rel);
+  EXPECT_LE(worst_s, ocean::conformance::kFarNoiseDeviceBounds.slope_rel);
+  expect_backend_ok(*backend.value());
+}
+
 // The local surface (docs/math.md M.7.9) is the cascades sampled and summed with the layer, so
 // the backend's errors reach it through the sum: |ΔD| ≤ C·ε_D·Hs (plus the float rounding of the
 // stored sum), gradients within e_g = 2·|ΔD|max/Δ, |ΔJ| ≤ e_g·(2 + 2·Σ|∂D|) + 2·e_g², and the

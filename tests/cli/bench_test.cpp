@@ -2,6 +2,7 @@
 // selection flags select, and bad input is one clear line with exit 2.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 
@@ -101,6 +102,31 @@ TEST(BenchCli, TableForPeople) {
   EXPECT_NE(r.out.find("FMA peak"), std::string::npos) << r.out;
 }
 
+// --overlap: the cascades alone, the noise map alone and both, per backend (the CPU always; Vulkan
+// where a device exists), and the overlap is the stated formula of the three medians.
+TEST(BenchCli, OverlapRowsFollowTheirDefinition) {
+  const ocean_test::CliRun r = ocean_test::run_cli(
+      "bench --overlap --json --resolution 16 --cascades 1 --far-noise-resolution 16 --min-time 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_NE(j["definition"].get<std::string>().find("min(cascades_ms, noise_ms)"),
+            std::string::npos);
+  const auto& rows = j["rows"];
+  ASSERT_GE(rows.size(), 1u);
+  EXPECT_EQ(rows[0]["backend"].get<std::string>(), "cpu");
+  for (const auto& row : rows) {
+    EXPECT_EQ(row["resolution"].get<int>(), 16);
+    EXPECT_EQ(row["noise_resolution"].get<int>(), 16);
+    const double c = row["cascades_ms"].get<double>(), n = row["noise_ms"].get<double>(),
+                 b = row["both_ms"].get<double>();
+    EXPECT_GT(c, 0.0);
+    EXPECT_GT(n, 0.0);
+    EXPECT_GT(b, 0.0);
+    EXPECT_DOUBLE_EQ(row["sum_ms"].get<double>(), c + n);
+    EXPECT_DOUBLE_EQ(row["overlap"].get<double>(), (c + n - b) / std::min(c, n));
+  }
+}
+
 TEST(BenchCli, BadInputIsOneLineAndExitTwo) {
   ocean_test::expect_usage_error("bench --resolution 100", "not a power of two");
   ocean_test::expect_usage_error("bench --resolution 4096", "--resolution");
@@ -115,6 +141,10 @@ TEST(BenchCli, BadInputIsOneLineAndExitTwo) {
   ocean_test::expect_usage_error("bench --frame-interval nan", "--frame-interval");
   ocean_test::expect_usage_error("bench --frame-interval 5000", "--frame-interval");
   ocean_test::expect_usage_error("bench --backend vulkan --frame-interval 2", "--frame-interval");
+  ocean_test::expect_usage_error("bench --overlap --far-noise-resolution 8",
+                                 "--far-noise-resolution");
+  ocean_test::expect_usage_error("bench --overlap --backend vulkan", "--overlap");
+  ocean_test::expect_usage_error("bench --overlap --table-one", "--overlap");
 }
 
 }  // namespace

@@ -57,6 +57,30 @@ TEST(RenderCli, WritesAPngOfTheRequestedSize) {
   EXPECT_GT(blue(5, 2), blue(5, 43));
 }
 
+// A preset's far_field_range (docs/rendering.md R.13) is the picture's unless --far-field-range
+// says otherwise: with [0, 1] the whole sea beyond a metre is the far field and the picture
+// changes; the flag with the default range gives back the default picture bit for bit.
+TEST(RenderCli, PresetFarFieldRangeAppliesUnlessTheFlagOverrides) {
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const std::string small = " --width 64 --height 36 --quality low --resolution 32 --warmup 0";
+  const auto render = [&](const std::string& name, const std::string& extra) {
+    const fs::path out = scratch(name);
+    const ocean_test::CliRun r =
+        ocean_test::run_cli("render --out " + out.string() + small + extra);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    auto png = ocean::io::read_png(out);
+    EXPECT_TRUE(png.ok());
+    return png.ok() ? png.value().samples : decltype(png.value().samples){};
+  };
+  const auto plain = render("ff_plain.png", "");
+  const auto preset = render("ff_preset.png", " --set 'far_field_range=[0,1]'");
+  const auto flag =
+      render("ff_flag.png", " --set 'far_field_range=[0,1]' --far-field-range 1000,2500");
+  ASSERT_FALSE(plain.empty());
+  EXPECT_NE(plain, preset);
+  EXPECT_EQ(plain, flag);
+}
+
 TEST(RenderCli, WritesLinearHdrExrAndSequences) {
   if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const fs::path exr = scratch("b.exr");
@@ -102,6 +126,12 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --far-field-range -5,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range nan,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range 100", "two distances DMIN,DMAX");
+  // ... and in a preset ("far_field_range"), refused before anything runs, by render and view.
+  ocean_test::expect_usage_error("render --set 'far_field_range=[2000,1000]'",
+                                 "far_field_range: [2000, 1000] must be finite distances with 0 "
+                                 "<= DMIN < DMAX");
+  ocean_test::expect_usage_error("render --set 'far_field_range=[5]'", "far_field_range: expected");
+  ocean_test::expect_usage_error("view --set 'far_field_range=[-1,10]'", "far_field_range:");
   // The local layer's flags (docs/waves.md), as ocean bake and ocean query read them.
   ocean_test::expect_usage_error("render --kelvin-wake 0,0,0,6,40", "--local-area");
   ocean_test::expect_usage_error("render --kelvin-wake 0,0,0,nan,40 --local-area -100,-100,200",

@@ -171,4 +171,66 @@ TEST(Preset, BandRolesRoundTripAndBadOnesAreNamed) {
   EXPECT_FALSE(preset::from_json(R"({"band_roles": "shade"})").ok());
 }
 
+// The far field's noise map (SimulationConfig::far_noise): written only when on, exact round trip,
+// bad values named by their path or by validate().
+TEST(Preset, FarNoiseMapRoundTripsAndBadOnesAreNamed) {
+  SimulationConfig c;
+  EXPECT_EQ(preset::to_json(c).find("far_noise"), std::string::npos);  // off: not written
+  c.far_noise = {.resolution = 256, .origin_m = {-1234.5, 0.1}, .size_m = 7777.25};
+  auto back = preset::from_json(preset::to_json(c));
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_EQ(back.value().far_noise.resolution, 256);
+  EXPECT_EQ(back.value().far_noise.origin_m, c.far_noise.origin_m);
+  EXPECT_EQ(back.value().far_noise.size_m, c.far_noise.size_m);
+  EXPECT_NE(error_of(R"({"far_noise": {"resolution": 8}})").find("far_noise.resolution"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"far_noise": {"origin_m": [1]}})").find("far_noise.origin_m"),
+            std::string::npos);
+  EXPECT_NE(error_of(R"({"far_noise": {"colour": 1}})").find("far_noise.colour: unknown key"),
+            std::string::npos);
+  preset::Document doc;
+  ASSERT_TRUE(doc.set("far_noise.resolution=64").ok());
+  ASSERT_TRUE(doc.config().ok()) << doc.config().status().message();
+  EXPECT_EQ(doc.config().value().far_noise.resolution, 64);
+}
+
+}  // namespace
+
+namespace {
+
+// "far_field_range": a picture setting beside the configuration. Read by Document::picture();
+// absent or null, unset; set through a preset or --set; bad values are one line from both
+// picture() and config(), so `ocean render` refuses them before anything runs.
+TEST(PresetDocument, FarFieldRangeIsAPictureSettingValidatedInOneLine) {
+  preset::Document doc;
+  ASSERT_TRUE(doc.picture().ok());
+  EXPECT_FALSE(doc.picture().value().far_field_range_m.has_value());
+  ASSERT_TRUE(doc.set("far_field_range=[800, 3000.5]").ok());
+  ASSERT_TRUE(doc.config().ok()) << doc.config().status().message();
+  const auto range = doc.picture().value().far_field_range_m;
+  ASSERT_TRUE(range.has_value());
+  EXPECT_EQ((*range)[0], 800.0);
+  EXPECT_EQ((*range)[1], 3000.5);
+  // The configuration ignores it, and to_json never writes it.
+  EXPECT_EQ(preset::to_json(doc.config().value()), preset::to_json(SimulationConfig{}));
+  ASSERT_TRUE(doc.set("far_field_range=null").ok());
+  EXPECT_FALSE(doc.picture().value().far_field_range_m.has_value());
+
+  for (const char* bad : {"[2500, 1000]", "[1000, 1000]", "[-1, 100]", "[100]", "[1, 2, 3]",
+                          "[\"a\", 5]", "7", "{\"near\": 1}", "[0, 1e999]"}) {
+    preset::Document d;
+    ASSERT_TRUE(d.set(std::string("far_field_range=") + bad).ok()) << bad;
+    const auto p = d.picture();
+    ASSERT_FALSE(p.ok()) << bad;
+    EXPECT_EQ(p.status().code(), ErrorCode::invalid_argument);
+    EXPECT_EQ(p.status().message().rfind("far_field_range: ", 0), 0u) << p.status().message();
+    EXPECT_EQ(p.status().message().find('\n'), std::string::npos);
+    const auto c = d.config();
+    ASSERT_FALSE(c.ok()) << bad;
+    EXPECT_EQ(c.status().message(), p.status().message());
+  }
+  EXPECT_NE(error_of(R"({"far_field_range": [3, 2]})").find("0 <= DMIN < DMAX"), std::string::npos);
+  EXPECT_TRUE(preset::from_json(R"({"far_field_range": [0, 2]})").ok());
+}
+
 }  // namespace

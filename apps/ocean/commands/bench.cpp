@@ -16,6 +16,7 @@
 #include "bench/cuda_rows.hpp"
 #include "bench/fftw_engine.hpp"
 #include "bench/harness.hpp"
+#include "bench/overlap.hpp"
 #include "bench/parse.hpp"
 #include "bench/report.hpp"
 #include "bench/table_one.hpp"
@@ -57,6 +58,8 @@ constexpr NumberOption<double> kFrameInterval{.flag = "--frame-interval",
                                               .hi = 1000.0,
                                               .echo = Echo::text,
                                               .unit = "ms"};
+constexpr NumberOption<int> kFarNoiseResolution{
+    .flag = "--far-noise-resolution", .accept = Accept::integer_in_range, .lo = 16, .hi = 4096};
 constexpr NumberOption<double> kMinTime{.flag = "--min-time",
                                         .accept = Accept::in_range,
                                         .lo = 0.0,
@@ -75,7 +78,11 @@ struct BenchOptions {
   std::string runners = "tbb";
   bool json = false;
   bool table_one = false;
+  bool overlap = false;
+  std::string far_noise_resolution = "256";
   bool resolution_given = false;
+  bool cascades_given = false;
+  bool threads_given = false;
 };
 
 int run_bench(const BenchOptions& o) {
@@ -105,6 +112,10 @@ int run_bench(const BenchOptions& o) {
   Result<double> interval_ms = parse(kFrameInterval, o.frame_interval);
   if (!interval_ms.ok()) return report(interval_ms.status());
   const double interval = interval_ms.value() * 1e-3;
+  if (o.overlap && (o.backend != "cpu" || interval > 0.0))
+    return report(
+        invalid_argument("--overlap times the CPU and the Vulkan backend: leave out --backend and "
+                         "--frame-interval"));
   if (o.table_one && (o.backend != "cpu" || interval > 0.0))
     return report(invalid_argument(
         "--table-one times the CPU and the Vulkan backend back to back: leave out --backend and "
@@ -121,6 +132,21 @@ int run_bench(const BenchOptions& o) {
   }
   Result<double> min_time = parse(kMinTime, o.min_time);
   if (!min_time.ok()) return report(min_time.status());
+  if (o.overlap) {
+    if (o.table_one)
+      return report(
+          invalid_argument("--overlap and --table-one are separate benchmarks: give one"));
+    Result<int> noise = parse(kFarNoiseResolution, o.far_noise_resolution);
+    if (!noise.ok()) return report(noise.status());
+    return bench::run_overlap(
+        {.resolutions = o.resolution_given ? resolutions.value() : std::vector<int>{256},
+         .cascades = o.cascades_given ? cascades.value() : std::vector<int>{4},
+         .noise_resolution = noise.value(),
+         .threads =
+             !o.threads_given || threads.value().front() == 0 ? hardware : threads.value().front(),
+         .min_time = min_time.value(),
+         .json = o.json});
+  }
   if (o.table_one) {
     const std::vector<int> seed_sizes = {128, 512, 1024, 2048};
     return bench::run_table_one(o.resolution_given ? resolutions.value() : seed_sizes,
@@ -258,9 +284,20 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_flag("--table-one", options->table_one,
                 "VR-GIS FFT+Perlin's Table I: CPU and Vulkan ms per frame and their ratio at "
                 "128, 512, 1024 and 2048 (or --resolution), the first --cascades count");
+  cmd->add_flag("--overlap", options->overlap,
+                "Seed 003's concurrent kernels: the cascades alone, the far field's noise map "
+                "alone and both in one frame, on the CPU and the Vulkan backend, and the overlap "
+                "(t_cascades + t_noise - t_both) / min(t_cascades, t_noise); the first "
+                "--resolution and --cascades default to 256 and 4");
+  add_option(*cmd, kFarNoiseResolution, options->far_noise_resolution,
+             "--overlap: texels per side of the noise map (16…4096); the CPU runs on the first "
+             "--threads count (default all)")
+      ->capture_default_str();
   return {cmd, [options, cmd] {
             BenchOptions o = *options;
             o.resolution_given = cmd->get_option("--resolution")->count() > 0;
+            o.cascades_given = cmd->get_option("--cascades")->count() > 0;
+            o.threads_given = cmd->get_option("--threads")->count() > 0;
             return run_bench(o);
           }};
 }

@@ -15,6 +15,7 @@
 
 #include <memory>
 
+#include "ocean/far_noise.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/images.hpp"
@@ -57,6 +58,12 @@ class VulkanBackend final : public Backend {
   Status submit(double time_s);
   Status read(Frame& out);
 
+  /// The far field's noise map alone (SimulationConfig::far_noise, docs/rendering.md R.13a):
+  /// Frame::far_noise at time_s from its own pre-recorded command buffer, the cascades untouched
+  /// (what `ocean bench --overlap` times against the whole frame). No-op when the map is off;
+  /// returns status() while a submitted frame is pending. Allocates nothing.
+  Status step_far_noise(double time_s, Frame& out);
+
   /// The first failure of a frame since configure(); ok while everything works.
   [[nodiscard]] const Status& status() const { return status_; }
   /// Stage times of the last completed frame (zeros when the device has no timestamps).
@@ -65,9 +72,12 @@ class VulkanBackend final : public Backend {
   [[nodiscard]] const Context& context() const { return *context_; }
 
  private:
+  void write_far_noise_params(double time_s);
+  void read_far_noise(Frame& out) const;
   std::shared_ptr<Context> context_;
   std::unique_ptr<detail::GpuState> gpu_;
   SimulationConfig config_;
+  FarFieldNoise far_noise_;  ///< fitted at configure when config_.far_noise is on
   Status status_;
   StageTimings timings_;
   double last_time_s_ = 0.0;

@@ -31,6 +31,12 @@ Status CpuBackendImpl::configure(const SimulationConfig& config, TaskRunner& run
   if (!plan.ok()) return plan.status();
   Result<fft::LanePlan2D> simd_plan = fft::LanePlan2D::make(config.resolution);
   if (!simd_plan.ok()) return simd_plan.status();
+  FarFieldNoise far_noise;
+  if (config.far_noise.resolution > 0) {
+    Result<FarFieldNoise> fitted = fit_far_field_noise(config);
+    if (!fitted.ok()) return fitted.status();
+    far_noise = fitted.value();
+  }
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
   const auto texels =
       static_cast<std::size_t>(config.resolution) * static_cast<std::size_t>(config.resolution);
@@ -85,6 +91,7 @@ Status CpuBackendImpl::configure(const SimulationConfig& config, TaskRunner& run
   simd_plan_ = std::move(simd_plan).value();
   cascades_ = std::move(cascades);
   groups_ = std::move(groups);
+  far_noise_ = far_noise;
   surface_args_.assign(cascades_.size(), SurfaceArgs{});
   chain_times_.assign(groups_.size(), StageTimes{});
   // Streaming stores for the maps that would leave the caches before anything reads them: the
@@ -136,10 +143,20 @@ void CpuBackendImpl::step_chained(TaskRunner& stages, double time_s, double dt_s
   // runner for the stages, a worker that ends its chain helps with the other chains' loops
   // instead of waiting at a barrier per stage; with a serial one, each chain stays on one
   // thread.
+  // The far field's noise map, when on, is one more task beside the chains, sharing nothing
+  // with them.
   prepare_evolution(time_s);
   prepare_surface(dt_s, reset_foam, out);
-  runner_->parallel_for(groups_.size(), 1, [&](std::size_t begin, std::size_t end) {
+  const bool with_noise = config_.far_noise.resolution > 0;
+  const std::size_t tasks = groups_.size() + (with_noise ? 1 : 0);
+  runner_->parallel_for(tasks, 1, [&](std::size_t begin, std::size_t end) {
     for (std::size_t g = begin; g < end; ++g) {
+      if (g == groups_.size()) {
+        // Its rows on the frame's runner even when each chain keeps to one thread: the map
+        // shares no data with the chains, and a thread done with its chain helps with it.
+        far_noise_task(*runner_, time_s, out);
+        continue;
+      }
       const CascadeGroup& group = groups_[g];
       const Clock::time_point start = Clock::now();
       synthesise_fused(stages, g, 1, out);
@@ -151,7 +168,8 @@ void CpuBackendImpl::step_chained(TaskRunner& stages, double time_s, double dt_s
                          seconds(Clock::now() - finalized)};
     }
   });
-  times_ = {};  // the chains overlap in time: the longest chain's stages
+  // The chains overlap in time: the longest chain's stages.
+  times_ = {.far_noise_s = with_noise ? times_.far_noise_s : 0.0};
   for (const StageTimes& t : chain_times_) {
     times_.synthesis_s = std::max(times_.synthesis_s, t.synthesis_s);
     times_.finalize_s = std::max(times_.finalize_s, t.finalize_s);
@@ -177,31 +195,72 @@ void CpuBackendImpl::step(double time_s, Frame& out) {
         static_cast<std::size_t>(runner_->concurrency()) <= groups_.size() &&
         config_.resolution <= 256;
     step_chained(chain_per_thread ? *serial_ : *runner_, time_s, dt, reset_foam, out);
+  } else if (config_.far_noise.resolution > 0 && options_.pipeline != CpuPipeline::external_fft) {
+    // Two tasks side by side: the cascades' stages and the far field's noise map. (An external
+    // FFT engine is called on the thread that calls step(): then the two run in turn, below.)
+    double far_noise_s = 0.0;
+    runner_->parallel_for(2, 1, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t task = begin; task < end; ++task) {
+        if (task == 0) {
+          step_stages(time_s, dt, reset_foam, out);
+        } else {
+          far_noise_task(*runner_, time_s, out);
+          far_noise_s = times_.far_noise_s;
+        }
+      }
+    });
+    times_.far_noise_s = far_noise_s;
   } else {
-    const Clock::time_point start = Clock::now();
-    if (fused) {
-      prepare_evolution(time_s);
-      synthesise_fused(*runner_, 0, groups_.size(), out);
-    } else {
-      synthesise_unfused(time_s, out);
-    }
-    const Clock::time_point synthesised = Clock::now();
-    for (std::size_t c = 0; c < cascades_.size(); ++c)
-      finalize(cascades_[c], config_, dt, reset_foam, out.cascades[c], *runner_);
-    const Clock::time_point finalized = Clock::now();
-    if (fused) {
-      mips_fused(*runner_, 1, 0, cascades_.size(), out);
-    } else {
-      for (std::size_t c = 0; c < cascades_.size(); ++c)
-        build_mips(cascades_[c], out.cascades[c], *runner_);
-    }
-    times_ = {seconds(synthesised - start), seconds(finalized - synthesised),
-              seconds(Clock::now() - finalized)};
+    step_stages(time_s, dt, reset_foam, out);
+    times_.far_noise_s = 0.0;
+    if (config_.far_noise.resolution > 0) far_noise_task(*runner_, time_s, out);
   }
   out.time_s = time_s;
   ++out.index;
   last_time_s_ = time_s;
   has_stepped_ = true;
+}
+
+void CpuBackendImpl::step_stages(double time_s, double dt_s, bool reset_foam, Frame& out) {
+  const bool fused = options_.pipeline == CpuPipeline::fused_simd;
+  const Clock::time_point start = Clock::now();
+  if (fused) {
+    prepare_evolution(time_s);
+    synthesise_fused(*runner_, 0, groups_.size(), out);
+  } else {
+    synthesise_unfused(time_s, out);
+  }
+  const Clock::time_point synthesised = Clock::now();
+  for (std::size_t c = 0; c < cascades_.size(); ++c)
+    finalize(cascades_[c], config_, dt_s, reset_foam, out.cascades[c], *runner_);
+  const Clock::time_point finalized = Clock::now();
+  if (fused) {
+    mips_fused(*runner_, 1, 0, cascades_.size(), out);
+  } else {
+    for (std::size_t c = 0; c < cascades_.size(); ++c)
+      build_mips(cascades_[c], out.cascades[c], *runner_);
+  }
+  times_.synthesis_s = seconds(synthesised - start);
+  times_.finalize_s = seconds(finalized - synthesised);
+  times_.mips_s = seconds(Clock::now() - finalized);
+}
+
+void CpuBackendImpl::far_noise_task(TaskRunner& rows, double time_s, Frame& out) {
+  const Clock::time_point start = Clock::now();
+  const noise::FarNoiseMapParams p = far_noise_map::params(far_noise_, config_.far_noise, time_s);
+  float* map = out.far_noise.height_slope.data();
+  // Rows in chunks of about 2 K texels (0.2–0.4 ms of work): enough to share even a 64² map
+  // between threads, few enough to schedule.
+  const std::size_t grain = std::max<std::size_t>(1, 2048 / p.resolution);
+  rows.parallel_for(p.resolution, grain, [&](std::size_t begin, std::size_t end) {
+    far_noise_map::fill_rows(p, begin, end, map);
+  });
+  times_.far_noise_s = seconds(Clock::now() - start);
+}
+
+void CpuBackendImpl::step_far_noise(double time_s, Frame& out) {
+  if (config_.far_noise.resolution == 0) return;
+  far_noise_task(*runner_, time_s, out);
 }
 
 std::unique_ptr<CpuBackend> make_cpu_backend(CpuOptions options) {

@@ -12,6 +12,7 @@
 #include "ocean/cpu_backend.hpp"
 #include "ocean/fft.hpp"
 #include "ocean/sim.hpp"
+#include "sim/far_noise_map.hpp"
 #include "sim/packing.hpp"
 
 namespace ocean::cpu {
@@ -100,6 +101,7 @@ class CpuBackendImpl final : public CpuBackend {
   void step(double time_s, Frame& out) override;
   [[nodiscard]] const StageTimes& last_stage_times() const override { return times_; }
   [[nodiscard]] std::size_t state_bytes_per_cascade() const override;
+  void step_far_noise(double time_s, Frame& out) override;
 
  private:
   struct CascadeGroup;
@@ -122,6 +124,10 @@ class CpuBackendImpl final : public CpuBackend {
   /// side by side; each chain's stage loops run on `stages`: the frame's runner, or a serial
   /// runner that keeps each chain on one thread.
   void step_chained(TaskRunner& stages, double time_s, double dt_s, bool reset_foam, Frame& out);
+  /// Every cascade's stages when they do not run as chains (step_chained).
+  void step_stages(double time_s, double dt_s, bool reset_foam, Frame& out);
+  /// The far field's noise map (R.13a) at time_s, its rows a loop on `rows`; times it.
+  void far_noise_task(TaskRunner& rows, double time_s, Frame& out);
 
   CpuOptions options_;
   SimulationConfig config_;
@@ -142,6 +148,7 @@ class CpuBackendImpl final : public CpuBackend {
   std::vector<EvolveArgs> evolve_args_;
   std::vector<StageTimes> chain_times_;  ///< per cascade group, fused central-difference path
   StageTimes times_;
+  FarFieldNoise far_noise_;  ///< fitted at configure when config_.far_noise is on
   double last_time_s_ = 0.0;
   bool has_stepped_ = false;
 };

@@ -65,6 +65,10 @@ CudaBackend::~CudaBackend() {
 }
 
 Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runner*/) {
+  if (config.far_noise.resolution > 0)
+    return unsupported(
+        "unsupported on the CUDA backend: the far-field noise map (far_noise.resolution > 0); "
+        "use the cpu or vulkan backend");
   Result<detail::Layout> layout = detail::make_layout(config);
   if (!layout.ok()) return layout.status();
   const detail::Layout& l = layout.value();

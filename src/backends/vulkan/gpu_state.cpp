@@ -141,6 +141,16 @@ void record_frame(const GpuState& gpu, VkCommandBuffer cmd) {
   // The previous frame's copies read the outputs this frame overwrites.
   barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT);
+  if (gpu.far_noise.resolution > 0) {
+    // The far field's noise map shares nothing with the cascades: its dispatch goes beside the
+    // evolution and row FFT with no barrier between them, so the device may run both at once
+    // (seed 003's concurrent kernels). The barrier after the rows, their dependency for the
+    // columns, also waits for it (a pipeline barrier's first scope is every earlier command of
+    // the queue); the copies at the end read it.
+    record_far_noise(gpu.far_noise, cmd);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gpu.pipeline_layout, 0, 1,
+                            &gpu.set, 0, nullptr);
+  }
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gpu.rows.pipeline);
   vkCmdDispatch(cmd, n, gpu.planes, gpu.cascades);
   barrier(cmd);
@@ -169,6 +179,7 @@ void record_frame(const GpuState& gpu, VkCommandBuffer cmd) {
     vkCmdCopyBuffer(cmd, gpu.device[static_cast<std::size_t>(o)].buffer,
                     gpu.host[static_cast<std::size_t>(o)].buffer, 1, &region);
   }
+  if (gpu.far_noise.resolution > 0) record_far_noise_copy(gpu.far_noise, cmd);
   const VkMemoryBarrier to_host{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
                                 .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
                                 .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
@@ -223,7 +234,8 @@ GpuState::~GpuState() {
 Status create_gpu_state(GpuState& gpu, const Context& ctx, std::uint32_t resolution,
                         std::uint32_t cascades, std::uint32_t planes, const Uploads& data,
                         const shader::SimParams& params,
-                        const std::array<bool, kOutputs>& read_back) {
+                        const std::array<bool, kOutputs>& read_back,
+                        std::uint32_t far_noise_resolution) {
   gpu.ctx = &ctx;
   gpu.read_back = read_back;
   gpu.resolution = resolution;
@@ -306,6 +318,7 @@ Status create_gpu_state(GpuState& gpu, const Context& ctx, std::uint32_t resolut
     if (!r.ok()) return r.status();
     *pipeline = r.value();
   }
+  if (Status s = create_far_noise_pass(gpu.far_noise, ctx, far_noise_resolution); !s.ok()) return s;
   if (ctx.timestamps) {
     Result<Timestamps> t = create_timestamps(ctx, kStamps);
     if (!t.ok()) return t.status();

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <span>
 
+#include "far_noise_pass.hpp"
 #include "ocean/vk.hpp"
 #include "ocean/vk/simulation.hpp"
 #include "shaders/ocean_shared.h"
@@ -35,6 +36,7 @@ struct GpuState {
   ComputePipeline rows, columns, finalize, mips;
   Commands frame;  // pre-recorded once, resubmitted every frame
   Timestamps stamps;
+  FarNoisePass far_noise;  // the far field's noise map (resolution 0: none)
 
   GpuState() = default;
   GpuState(const GpuState&) = delete;
@@ -52,10 +54,12 @@ struct Uploads {
 /// Allocates every buffer, image, pipeline and descriptor, uploads `data`, transitions the images
 /// and records the frame's command buffer. `params` is the initial SimParams. Outputs not in
 /// `read_back` are computed on the device (foam is also the accumulation state) but neither
-/// copied nor given a host buffer.
+/// copied nor given a host buffer. A far-noise resolution above 0 adds the noise map's dispatch
+/// to the frame, beside the cascades' first stage (R.13a).
 Status create_gpu_state(GpuState& gpu, const Context& ctx, std::uint32_t resolution,
                         std::uint32_t cascades, std::uint32_t planes, const Uploads& data,
                         const shader::SimParams& params,
-                        const std::array<bool, kOutputs>& read_back);
+                        const std::array<bool, kOutputs>& read_back,
+                        std::uint32_t far_noise_resolution);
 
 }  // namespace ocean::vk::detail

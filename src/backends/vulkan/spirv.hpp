@@ -12,6 +12,8 @@ extern const std::uint32_t ocean_spv_fft_columns[];
 extern const std::size_t ocean_spv_fft_columns_words;
 extern const std::uint32_t ocean_spv_finalize[];
 extern const std::size_t ocean_spv_finalize_words;
+extern const std::uint32_t ocean_spv_far_noise[];
+extern const std::size_t ocean_spv_far_noise_words;
 extern const std::uint32_t ocean_spv_mips[];
 extern const std::size_t ocean_spv_mips_words;
 
@@ -24,6 +26,9 @@ inline std::span<const std::uint32_t> fft_columns() {
 }
 inline std::span<const std::uint32_t> finalize() {
   return {ocean_spv_finalize, ocean_spv_finalize_words};
+}
+inline std::span<const std::uint32_t> far_noise() {
+  return {ocean_spv_far_noise, ocean_spv_far_noise_words};
 }
 inline std::span<const std::uint32_t> mips() { return {ocean_spv_mips, ocean_spv_mips_words}; }
 }  // namespace ocean::vk::spirv

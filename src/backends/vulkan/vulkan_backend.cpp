@@ -14,6 +14,7 @@
 
 #include "gpu_state.hpp"
 #include "ocean/vk/simulation.hpp"
+#include "sim/far_noise_map.hpp"
 
 namespace ocean::vk {
 namespace {
@@ -123,17 +124,26 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
     p.mip_offset[m] = static_cast<std::uint32_t>(mip_offset(config.resolution, m));
   p.mip_offset[levels + 1] = static_cast<std::uint32_t>(mip_chain_texels(config.resolution));
 
+  FarFieldNoise far_noise;
+  if (config.far_noise.resolution > 0) {
+    Result<FarFieldNoise> fitted = fit_far_field_noise(config);
+    if (!fitted.ok()) return fitted.status();
+    far_noise = fitted.value();
+  }
+
   gpu_.reset();  // frees the previous configuration first (lower peak memory)
   auto gpu = std::make_unique<detail::GpuState>();
   const FrameOutputs& want = config.outputs;
   const std::array<bool, detail::kOutputs> read_back = {true,          true,      want.normal,
                                                         want.jacobian, want.foam, true};
   if (Status s = detail::create_gpu_state(*gpu, *context_, n, cascades, planes,
-                                          {spectrum, phase_rate, twiddle}, p, read_back);
+                                          {spectrum, phase_rate, twiddle}, p, read_back,
+                                          static_cast<std::uint32_t>(config.far_noise.resolution));
       !s.ok())
     return s;
   gpu_ = std::move(gpu);
   config_ = config;
+  far_noise_ = far_noise;
   status_ = {};
   timings_ = {};
   has_stepped_ = false;
@@ -157,6 +167,7 @@ Status VulkanBackend::submit(double time_s) {
   }
   p->foam_decay = static_cast<float>(config_.foam.decay_per_s * dt);
   p->reset_foam = reset_foam ? 1u : 0u;
+  write_far_noise_params(time_s);
   if (Status s = vk::submit(*context_, gpu_->frame); !s.ok()) {
     status_ = s;
     return s;
@@ -187,6 +198,7 @@ Status VulkanBackend::read(Frame& out) {
       std::memcpy(dst[o], static_cast<const char*>(gpu_->host[o].mapped) + c * bytes, bytes);
     }
   }
+  read_far_noise(out);
   if (gpu_->stamps.pool != VK_NULL_HANDLE) {
     double ms[detail::kStamps];
     if (Status s = read_timestamps_ms(*context_, gpu_->stamps, ms); !s.ok()) {
@@ -207,6 +219,32 @@ Status VulkanBackend::read(Frame& out) {
 
 void VulkanBackend::step(double time_s, Frame& out) {
   if (submit(time_s).ok()) (void)read(out);
+}
+
+void VulkanBackend::write_far_noise_params(double time_s) {
+  if (gpu_->far_noise.resolution == 0) return;
+  const noise::FarNoiseMapParams p = far_noise_map::params(far_noise_, config_.far_noise, time_s);
+  std::memcpy(gpu_->far_noise.params.mapped, &p, sizeof(p));
+}
+
+void VulkanBackend::read_far_noise(Frame& out) const {
+  if (gpu_->far_noise.resolution == 0 || out.far_noise.height_slope.empty()) return;
+  std::memcpy(out.far_noise.height_slope.data(), gpu_->far_noise.host.mapped,
+              out.far_noise.height_slope.size() * sizeof(float));
+}
+
+Status VulkanBackend::step_far_noise(double time_s, Frame& out) {
+  if (!status_.ok() || pending_) return status_;
+  if (gpu_ == nullptr || gpu_->far_noise.resolution == 0) return {};
+  write_far_noise_params(time_s);
+  Status s = vk::submit(*context_, gpu_->far_noise.alone);
+  if (s.ok()) s = wait(*context_, gpu_->far_noise.alone);
+  if (!s.ok()) {
+    status_ = s;
+    return s;
+  }
+  read_far_noise(out);
+  return {};
 }
 
 SimulationImages VulkanBackend::images() const {

@@ -34,6 +34,10 @@ using uint = std::uint32_t;
 #define OCEAN_BINDING_NORMAL_IMAGE 13 // image2DArray rgba8[OCEAN_MAX_MIPS], one view per mip
 #define OCEAN_BINDING_COUNT 14
 
+// Descriptor bindings of the far-field noise kernel's own set (far_noise.comp, R.13a).
+#define OCEAN_FAR_BINDING_PARAMS 0  // FarNoiseMapParams (src/sim/far_noise.h), written per frame
+#define OCEAN_FAR_BINDING_MAP 1     // float3 per texel (h, ∂h/∂x, ∂h/∂z)
+
 // SimParams::normal_method
 #define OCEAN_NORMALS_CENTRAL 0
 #define OCEAN_NORMALS_SOBEL 1

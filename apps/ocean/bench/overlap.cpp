@@ -1,0 +1,181 @@
+// `ocean bench --overlap` (bench/overlap.hpp): the cascades, the far field's noise map and both.
+#include "bench/overlap.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "bench/harness.hpp"
+#include "bench/report.hpp"
+#include "cli_common.hpp"
+#include "ocean/cpu_backend.hpp"
+#include "progress.hpp"
+#ifdef OCEAN_HAS_VULKAN
+#include "ocean/vk/simulation.hpp"
+#endif
+
+namespace ocean::cli::bench {
+
+namespace {
+
+// The three measurements alternate frame by frame (cascades, noise, both, cascades, ...), so that
+// all three see the same moments of a machine shared with other work: 2 warm-up frames each, then
+// at least 5 and about min_time seconds in all (at most 500 each); medians.
+struct Timed {
+  Stats cascades, noise, both;
+};
+
+// `alone(t)` steps the cascades without the map, `noise(t)` the map alone, `both(t)` the frame
+// with the map; each advances its own clock by 1/90 s per frame.
+template <typename Alone, typename Noise, typename Both>
+Timed time_three(double min_time, Alone alone, Noise noise, Both both) {
+  std::vector<double> a, n, b;
+  double ta = 0.0, tn = 0.0, tb = 0.0, total = 0.0;
+  const auto timed = [&total](auto&& step, double& t, std::vector<double>* into) {
+    const Clock::time_point start = Clock::now();
+    step(t);
+    const double s = std::chrono::duration<double>(Clock::now() - start).count();
+    t += 1.0 / 90.0;
+    if (into == nullptr) return;
+    into->push_back(s);
+    total += s;
+  };
+  for (int i = 0; i < 2; ++i) {
+    timed(alone, ta, nullptr);
+    timed(noise, tn, nullptr);
+    timed(both, tb, nullptr);
+  }
+  while ((a.size() < 5 || total < min_time) && a.size() < 500) {
+    timed(alone, ta, &a);
+    timed(noise, tn, &n);
+    timed(both, tb, &b);
+  }
+  return {stats_of(a), stats_of(n), stats_of(b)};
+}
+
+Result<Timed> time_cpu(const SimulationConfig& with, double min_time, TaskRunner& runner) {
+  SimulationConfig without = with;
+  without.far_noise.resolution = 0;
+  std::unique_ptr<cpu::CpuBackend> plain = cpu::make_cpu_backend();
+  std::unique_ptr<cpu::CpuBackend> noisy = cpu::make_cpu_backend();
+  if (Status s = plain->configure(without, runner); !s.ok()) return s;
+  if (Status s = noisy->configure(with, runner); !s.ok()) return s;
+  Frame a, b;
+  plain->allocate(a);
+  noisy->allocate(b);
+  return time_three(
+      min_time, [&](double t) { plain->step(t, a); },
+      [&](double t) { noisy->step_far_noise(t, b); }, [&](double t) { noisy->step(t, b); });
+}
+
+#ifdef OCEAN_HAS_VULKAN
+// Wall time of whole frames (submit, wait, copy into the Frame): two backends on one device,
+// one without the map and one with it.
+Result<Timed> time_vulkan(const SimulationConfig& with, double min_time, std::string& device) {
+  SimulationConfig without = with;
+  without.far_noise.resolution = 0;
+  Result<std::unique_ptr<vk::Context>> ctx = vk::create_context();
+  if (!ctx.ok()) return ctx.status();
+  std::shared_ptr<vk::Context> context(std::move(ctx).value());
+  device = context->info.name;
+  std::unique_ptr<TaskRunner> serial = make_serial_runner();
+  vk::VulkanBackend plain(context), noisy(context);
+  if (Status s = plain.configure(without, *serial); !s.ok()) return s;
+  if (Status s = noisy.configure(with, *serial); !s.ok()) return s;
+  Frame a, b;
+  plain.allocate(a);
+  noisy.allocate(b);
+  const Timed timed = time_three(
+      min_time, [&](double t) { plain.step(t, a); },
+      [&](double t) { (void)noisy.step_far_noise(t, b); }, [&](double t) { noisy.step(t, b); });
+  if (!plain.status().ok()) return plain.status();
+  if (!noisy.status().ok()) return noisy.status();
+  return timed;
+}
+#endif
+
+}  // namespace
+
+double overlap_of(double cascades_ms, double noise_ms, double both_ms) {
+  return (cascades_ms + noise_ms - both_ms) / std::min(cascades_ms, noise_ms);
+}
+
+int run_overlap(const OverlapOptions& o) {
+  std::shared_ptr<TaskRunner> runner = make_tbb_runner(o.threads);
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  std::string device, vulkan_note;
+  Progress progress("bench", static_cast<long long>(o.resolutions.size() * o.cascades.size()));
+  long long done = 0;
+  for (int n : o.resolutions) {
+    for (int c : o.cascades) {
+      SimulationConfig config = bench_config(n, c, FrameOutputs::all());
+      config.far_noise.resolution = o.noise_resolution;
+      std::vector<std::pair<std::string, Result<Timed>>> measured;
+      measured.emplace_back("cpu", time_cpu(config, o.min_time, *runner));
+#ifdef OCEAN_HAS_VULKAN
+      Result<Timed> gpu = time_vulkan(config, o.min_time, device);
+      if (gpu.ok() || gpu.status().code() != ErrorCode::unsupported)
+        measured.emplace_back("vulkan", gpu);
+      else
+        vulkan_note = gpu.status().message();
+#else
+      vulkan_note = "built without Vulkan";
+#endif
+      for (const auto& [backend, timed] : measured) {
+        if (!timed.ok()) return report(timed.status());
+        const Timed& t = timed.value();
+        const double sum = t.cascades.median_ms + t.noise.median_ms;
+        rows.push_back(
+            {{"backend", backend},
+             {"resolution", n},
+             {"cascades", c},
+             {"noise_resolution", o.noise_resolution},
+             {"threads", backend == "cpu" ? runner->concurrency() : 0},
+             {"cascades_ms", t.cascades.median_ms},
+             {"noise_ms", t.noise.median_ms},
+             {"both_ms", t.both.median_ms},
+             {"sum_ms", sum},
+             {"overlap", overlap_of(t.cascades.median_ms, t.noise.median_ms, t.both.median_ms)},
+             {"both_min_max_ms", {t.both.min_ms, t.both.max_ms}}});
+      }
+      progress.update(++done);
+    }
+  }
+  progress.finish();
+  const std::string definition =
+      "(cascades_ms + noise_ms - both_ms) / min(cascades_ms, noise_ms): 1 = the shorter part "
+      "hidden entirely, 0 = one after the other";
+  if (o.json) {
+    nlohmann::ordered_json out = {{"definition", definition}, {"rows", rows}};
+    if (!device.empty()) out["vulkan_device"] = device;
+    if (!vulkan_note.empty()) out["vulkan_note"] = vulkan_note;
+    print_json(out);
+    return kExitOk;
+  }
+  std::cout << "The cascades and the far field's noise map, alone and together: median wall time "
+               "per frame, ms (CPU: "
+            << runner->concurrency() << " threads, two tasks of the frame graph; Vulkan"
+            << (device.empty() ? std::string() : " on " + device)
+            << ": one submission, no barrier between the noise and the FFT's first stage)\n"
+            << std::setw(8) << "backend" << std::setw(6) << "N" << std::setw(3) << "C"
+            << std::setw(7) << "map" << std::setw(11) << "cascades" << std::setw(9) << "noise"
+            << std::setw(9) << "both" << std::setw(9) << "sum" << std::setw(9) << "overlap\n";
+  for (const auto& r : rows) {
+    std::cout << std::setw(8) << r["backend"].get<std::string>() << std::setw(6)
+              << r["resolution"].get<int>() << std::setw(3) << r["cascades"].get<int>()
+              << std::setw(7) << r["noise_resolution"].get<int>() << std::setw(11)
+              << fixed(r["cascades_ms"].get<double>(), 2) << std::setw(9)
+              << fixed(r["noise_ms"].get<double>(), 2) << std::setw(9)
+              << fixed(r["both_ms"].get<double>(), 2) << std::setw(9)
+              << fixed(r["sum_ms"].get<double>(), 2) << std::setw(9)
+              << fixed(r["overlap"].get<double>(), 2) << "\n";
+  }
+  std::cout << "overlap = " << definition << "\n";
+  if (!vulkan_note.empty()) std::cout << "vulkan: " << vulkan_note << "\n";
+  return kExitOk;
+}
+
+}  // namespace ocean::cli::bench
