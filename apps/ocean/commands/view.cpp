@@ -274,7 +274,8 @@ int run_view(const ViewOptions& o) {
 
     if (!panel.paused) t += (in.frames > 0 ? kFixedStep_s : dt) * panel.time_scale;
     if (Status s = scene.step(t); !s.ok()) return report(s);
-    if (Status s = interaction.update(t, renderer, in.view); !s.ok()) return report(s);
+    if (Status s = interaction.update(t, scene.simulator(), renderer, in.view); !s.ok())
+      return report(s);
     // A new mesh density uploads through the renderer's own command buffer: before ours.
     if (actions.quality_changed) {
       if (Status s = renderer.prepare(in.view); !s.ok()) return report(s);
@@ -334,7 +335,8 @@ Command add_view_command(CLI::App& app) {
   command->add_option("--screenshot", o->screenshot,
                       "after the last frame, save the 3D view (without the panel) as this PNG");
   command->add_flag("--boat", o->boat,
-                    "start with a boat circling the --target point, leaving its Kelvin wake "
+                    "start with a floating boat driven round the --target point by its "
+                    "propulsion, leaving a Kelvin wake from its track "
                     "(panel: Boat and shallows)");
   command->add_option("--shallows", o->shallows,
                       "none, lily-pads (a damping mask) or lagoon (a bathymetry), about the "
