@@ -94,7 +94,7 @@ bodies::PropulsionParams propulsion_for(const bodies::BodyParams& body, double g
   const double i_yaw = body.inertia_kgm2[4];
   return {.max_thrust_n = 0.5 * body.mass_kg * gravity_mps2,
           .thrust_point_m = {0.9 * x_min, 0.0, 0.0},
-          .speed_time_s = 4.0,
+          .speed_time_s = 2.5,
           .max_yaw_moment_nm = 0.5 * i_yaw,
           .heading_time_s = 2.0};
 }

@@ -38,7 +38,8 @@ inline constexpr double kWakePeakPerLength = 0.05;
 /// The propulsion of a driven object (B.8–B.10), sized from its body: a thrust of up to half its
 /// weight (a fast motor boat's: 200 kW at 7 m/s for the built-in boat) acting at 0.9 of the
 /// hull's aft extent, at the height of the centre of mass (the drag alone trims it), the speed
-/// loop's τ_u = 4 s, a steering moment of up to I_ψ·0.5 rad/s² with τ_ψ = 2 s.
+/// loop's τ_u = 2.5 s (98 % of a new speed in 6τ_u = 15 s), a steering moment of up to I_ψ·0.5
+/// rad/s² with τ_ψ = 2 s.
 bodies::PropulsionParams propulsion_for(const bodies::BodyParams& body, double gravity_mps2 = 9.81);
 /// The track of a driven object (W.16): its hull's length along x as L, a peak of
 /// kWakePeakPerLength·L, a waypoint every 0.5 s, 8 kept.

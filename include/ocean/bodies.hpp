@@ -217,8 +217,10 @@ class Propulsion {
   /// The steering moment of the last control about the vertical (turning +x towards +z), N·m.
   [[nodiscard]] double yaw_moment_nm() const { return yaw_moment_nm_; }
   [[nodiscard]] const PropulsionParams& params() const { return params_; }
-  /// Forgets the loops' integrals.
-  void reset() { integral_mps_s_ = heading_integral_rad_s_ = 0.0; }
+  /// The loops as if the body had been going steadily at speed_mps (forward) on its course: the
+  /// speed loop's integral 2τ_u·speed_mps, the heading loop's 0. Start a body that is already
+  /// moving with it; a body at rest starts from reset(0), as made.
+  void reset(double speed_mps = 0.0);
 
  private:
   Propulsion() = default;

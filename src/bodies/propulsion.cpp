@@ -48,6 +48,11 @@ Status validate(const HelmCommand& c) {
   return require_finite("helm turn_rate_degps", c.turn_rate_degps);
 }
 
+void Propulsion::reset(double speed_mps) {
+  integral_mps_s_ = 2.0 * params_.speed_time_s * speed_mps;
+  heading_integral_rad_s_ = 0.0;
+}
+
 Result<Propulsion> Propulsion::make(const PropulsionParams& params) {
   if (Status s = validate(params); !s.ok()) return s;
   Propulsion p;
@@ -71,15 +76,17 @@ Result<Wrench> Propulsion::control(const FloatingBody& body, const HelmCommand& 
   const Vec3 along{forward[0] / horizontal, 0.0, forward[2] / horizontal};
 
   // (B.9) Speed loop: the drag of the last step along the heading compensated, then PI with
-  // gains m·2/τ and m/τ², which leaves a critically damped pair of poles at −1/τ whatever the
-  // hull's resistance; the integral takes the rest (the pressure's surge force in waves). Thrust
-  // in [0, T_max]; the integral is frozen while the thrust saturates in the direction the error
-  // pushes (conditional integration).
+  // gains m·2/τ and m/τ², the proportional part on the speed alone (set-point weight 0), which
+  // leaves a critically damped pair of poles at −1/τ whatever the hull's resistance and follows a
+  // new command without overshoot; the integral takes the rest (the pressure's surge force in
+  // waves). Thrust in [0, T_max]; the integral is frozen while the thrust saturates in the
+  // direction the error pushes (conditional integration).
   const double m = body.params().mass_kg, tau = params_.speed_time_s;
   const double resistance = -dot(body.forces().drag_n, along);
-  const double error = command.speed_mps - dot(state.velocity_mps, along);
+  const double u = dot(state.velocity_mps, along);
+  const double error = command.speed_mps - u;
   const double integral = integral_mps_s_ + error * dt_s;
-  const double wanted = resistance + m * (2.0 * error / tau + integral / (tau * tau));
+  const double wanted = resistance + m * (-2.0 * u / tau + integral / (tau * tau));
   const bool winding =
       (wanted > params_.max_thrust_n && error > 0.0) || (wanted < 0.0 && error < 0.0);
   if (!winding) integral_mps_s_ = integral;

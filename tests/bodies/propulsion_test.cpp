@@ -121,7 +121,9 @@ Boat boat(double heading, double speed) {
                                   .orientation = orientation_from_heading(heading),
                                   .velocity_mps = {speed * std::cos(h), 0.0, speed * std::sin(h)}});
   EXPECT_TRUE(body.ok()) << body.status().message();
-  return {std::move(body).value(), Propulsion::make(p).value()};
+  Propulsion propulsion = Propulsion::make(p).value();
+  propulsion.reset(speed);  // going steadily at `speed`
+  return {std::move(body).value(), propulsion};
 }
 
 TEST(Propulsion, SteersToACommandedHeadingTheShortWayRound) {

@@ -136,7 +136,7 @@ void CirclingBoat::restart(double time_s) {
       {.position_m = {p.x_m, y, p.z_m},
        .orientation = turned,
        .velocity_mps = {u * std::cos(p.heading_rad), 0.0, u * std::sin(p.heading_rad)}});
-  propulsion_->reset();
+  propulsion_->reset(u);
   track_->clear();
   track_->record(time_s, p.x_m, p.z_m);
   layer_.reset();
