@@ -1,6 +1,7 @@
 // ocean/bodies.hpp — rigid bodies floating on the simulated sea: a closed triangle hull moved by
 // gravity, the hydrostatic pressure of the water over its submerged part (Archimedes, integrated
-// exactly over the hull clipped at the surface) and drag, integrated at a fixed step. The water
+// exactly over the hull clipped at the surface), drag and, for a driven body, a propeller's thrust
+// and a steering moment (Propulsion, B.8–B.10), integrated at a fixed step. The water
 // surface comes from batched height queries (Simulator::heights_at: the displaced surface the
 // renderer draws, found by inverting the horizontal displacement), on the CPU: no GPU read-back.
 //
