@@ -2,6 +2,7 @@
 // and glTF files' meshes, and the floating-body simulation that places them on the waves.
 #include "object_flags.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -20,6 +21,8 @@ constexpr NumberOption<double> kObjectZ{
     .flag = "--object z", .accept = Accept::in_range, .lo = -1e5, .hi = 1e5, .unit = "m"};
 constexpr NumberOption<double> kObjectHeading{
     .flag = "--object heading", .accept = Accept::in_range, .lo = -360.0, .hi = 360.0};
+constexpr NumberOption<double> kObjectSpeed{
+    .flag = "--object speed", .accept = Accept::in_range, .lo = 0.0, .hi = 30.0, .unit = "m/s"};
 
 bool is_mesh_file(const std::string& kind) {
   const auto ends = [&](const std::string& ext) {
@@ -81,24 +84,51 @@ bodies::Hull welded(const std::vector<render::Mesh>& meshes, std::size_t first) 
 
 }  // namespace
 
+bodies::PropulsionParams propulsion_for(const bodies::BodyParams& body, double gravity_mps2) {
+  double x_min = 0.0, y_min = 0.0;
+  for (const auto& v : body.hull.vertices) {
+    x_min = std::min(x_min, v[0]);
+    y_min = std::min(y_min, v[1]);
+  }
+  // The yaw inertia of the level body: about its vertical (body y) axis.
+  const double i_yaw = body.inertia_kgm2[4];
+  return {.max_thrust_n = 0.5 * body.mass_kg * gravity_mps2,
+          .thrust_point_m = {0.9 * x_min, 0.0, 0.0},
+          .speed_time_s = 2.5,
+          .max_yaw_moment_nm = 0.5 * i_yaw,
+          .heading_time_s = 2.0};
+}
+
+waves::WakeTrackParams wake_track_for(const bodies::Hull& hull) {
+  double x_min = 0.0, x_max = 0.0;
+  for (const auto& v : hull.vertices) {
+    x_min = std::min(x_min, v[0]);
+    x_max = std::max(x_max, v[0]);
+  }
+  const double length = std::clamp(x_max - x_min, 0.01, 1000.0);
+  return {.hull_length_m = length, .peak_height_m = kWakePeakPerLength * length};
+}
+
 Result<ObjectSpec> parse_object_spec(const std::string& text) {
   std::vector<std::string> parts;
   std::size_t start = 0;
   for (std::size_t comma; (comma = text.find(',', start)) != std::string::npos; start = comma + 1)
     parts.push_back(text.substr(start, comma - start));
   parts.push_back(text.substr(start));
-  if (parts.size() < 4 || parts.size() > 5)
+  if (parts.size() < 4 || parts.size() > 6)
     return invalid_argument("--object = '" + excerpt(text) +
-                            "' must be KIND,X,Y,Z or KIND,X,Y,Z,HEADING_DEG (KIND: box, buoy, boat "
-                            "or a .glb/.gltf file)");
+                            "' must be KIND,X,Y,Z, KIND,X,Y,Z,HEADING_DEG or "
+                            "KIND,X,Y,Z,HEADING_DEG,SPEED_MPS (KIND: box, buoy, boat or a "
+                            ".glb/.gltf file)");
   ObjectSpec spec;
   spec.kind = parts[0];
   if (spec.kind != "box" && spec.kind != "buoy" && spec.kind != "boat" && !is_mesh_file(spec.kind))
     return invalid_argument("--object = '" + excerpt(text) + "': '" + excerpt(spec.kind) +
                             "' is not box, buoy, boat or a .glb/.gltf file");
-  const NumberOption<double>* options[] = {&kObjectX, &kObjectY, &kObjectZ, &kObjectHeading};
+  const NumberOption<double>* options[] = {&kObjectX, &kObjectY, &kObjectZ, &kObjectHeading,
+                                           &kObjectSpeed};
   double* values[] = {&spec.position_m[0], &spec.position_m[1], &spec.position_m[2],
-                      &spec.heading_deg};
+                      &spec.heading_deg, &spec.speed_mps};
   for (std::size_t i = 1; i < parts.size(); ++i) {
     Result<double> v = parse(*options[i - 1], parts[i]);
     if (!v.ok()) return v.status();
@@ -146,6 +176,20 @@ Result<std::unique_ptr<SceneObjects>> SceneObjects::make(const std::vector<Objec
       Result<bodies::FloatingBody> body = bodies::FloatingBody::make(params.value(), start);
       if (!body.ok()) return body.status();
       o.body = std::make_unique<bodies::FloatingBody>(std::move(body).value());
+      if (spec.speed_mps > 0.0) {
+        Result<bodies::Propulsion> propulsion = bodies::Propulsion::make(
+            propulsion_for(params.value(), config.sea.dispersion.gravity_mps2));
+        if (!propulsion.ok()) return propulsion.status();
+        o.propulsion = propulsion.value();
+        o.helm = {.speed_mps = spec.speed_mps, .heading_deg = spec.heading_deg};
+        Result<waves::WakeTrack> track =
+            waves::WakeTrack::make(wake_track_for(params.value().hull));
+        if (!track.ok()) return track.status();
+        o.track = std::move(track).value();
+      }
+    } else if (spec.speed_mps > 0.0) {
+      return invalid_argument("--object " + excerpt(spec.kind) +
+                              ": a speed drives a floating object; add --float");
     }
     objects->objects_.push_back(std::move(o));
   }
@@ -166,8 +210,19 @@ Status SceneObjects::place(double time_s, std::vector<render::ObjectInstance>& o
     const bodies::SurfaceQuery surface = bodies::surface_of(*surface_);
     for (long long i = 0; time_s_ + 0.5 * kDt < time_s; ++i) {
       if (i % 2 == 0) surface_->step(time_s_);
-      for (Object& o : objects_)
-        if (Status s = o.body->step(surface, kDt); !s.ok()) return s;
+      for (Object& o : objects_) {
+        bodies::Wrench thrust;
+        if (o.propulsion) {
+          Result<bodies::Wrench> w = o.propulsion->control(*o.body, o.helm, kDt);
+          if (!w.ok()) return w.status();
+          thrust = w.value();
+        }
+        if (Status s = o.body->step(surface, kDt, thrust); !s.ok()) return s;
+        if (o.track) {
+          const auto& x = o.body->state().position_m;
+          o.track->record(time_s_ + kDt, x[0], x[2]);
+        }
+      }
       time_s_ += kDt;
     }
   }
@@ -186,6 +241,23 @@ Status SceneObjects::place(double time_s, std::vector<render::ObjectInstance>& o
       out.push_back({.mesh = m, .model = render::model_matrix(position, orientation)});
   }
   return {};
+}
+
+void SceneObjects::wakes(std::vector<waves::KelvinWake>& out) const {
+  for (const Object& o : objects_) {
+    if (!o.track) continue;
+    waves::KelvinWake wake;
+    if (o.track->wake(wake)) out.push_back(std::move(wake));
+  }
+}
+
+std::optional<std::array<double, 3>> SceneObjects::first_driven() const {
+  for (const Object& o : objects_) {
+    if (!o.propulsion) continue;
+    const auto& x = o.body->state().position_m;
+    return std::array<double, 3>{x[0], x[2], bodies::heading_deg(o.body->state())};
+  }
+  return std::nullopt;
 }
 
 }  // namespace ocean::cli

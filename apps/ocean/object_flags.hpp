@@ -1,15 +1,18 @@
-// `--object FILE.glb|box|buoy|boat,X,Y,Z[,HEADING_DEG]` (repeatable) and `--float` of
-// `ocean render`: the objects' meshes for the renderer, their placement, and with --float the
+// `--object FILE.glb|box|buoy|boat,X,Y,Z[,HEADING_DEG[,SPEED_MPS]]` (repeatable) and `--float`
+// of `ocean render`: the objects' meshes for the renderer, their placement, and with --float the
 // floating-body simulation (ocean/bodies.hpp) on a CPU simulator of the same sea from t = 0, so
-// that each object sits on the waves at the time of each frame.
+// that each object sits on the waves at the time of each frame; an object given a speed is driven
+// by its propulsion (B.8–B.10) along its heading and leaves a Kelvin wake from its track (W.17).
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ocean/bodies.hpp"
 #include "ocean/render.hpp"
+#include "ocean/waves.hpp"
 
 namespace ocean::cli {
 
@@ -18,15 +21,29 @@ struct ObjectSpec {
   std::string kind;  ///< box, buoy, boat or a .glb/.gltf path
   std::array<double, 3> position_m{};
   double heading_deg = 0.0;
+  double speed_mps = 0.0;  ///< commanded speed with --float; 0: drifts
 };
-/// "KIND,X,Y,Z[,HEADING_DEG]": X, Z in [-1e5, 1e5] m, Y in [-1e4, 1e4] m, heading in
-/// [-360, 360]; a file name ends in .glb or .gltf and holds no comma. invalid_argument naming
-/// --object and the part at fault (ocean::excerpt of the text).
+/// "KIND,X,Y,Z[,HEADING_DEG[,SPEED_MPS]]": X, Z in [-1e5, 1e5] m, Y in [-1e4, 1e4] m, heading in
+/// [-360, 360], speed in [0, 30] m/s; a file name ends in .glb or .gltf and holds no comma.
+/// invalid_argument naming --object and the part at fault (ocean::excerpt of the text).
 Result<ObjectSpec> parse_object_spec(const std::string& text);
 
 /// Densities of the built-in objects and of glTF meshes when they float, kg/m³.
 inline constexpr double kBoxDensity = 500.0, kBuoyDensity = 400.0, kBoatDensity = 350.0,
                         kMeshDensity = 500.0;
+/// The wake's peak height per hull length of a driven object: a fast motor boat's 0.05·L (above
+/// the library's 0.02·L for displacement hulls), so the wake shows in a moderate sea.
+inline constexpr double kWakePeakPerLength = 0.05;
+
+/// The propulsion of a driven object (B.8–B.10), sized from its body: a thrust of up to half its
+/// weight (a fast motor boat's: 200 kW at 7 m/s for the built-in boat) acting at 0.9 of the
+/// hull's aft extent, at the height of the centre of mass (the drag alone trims it), the speed
+/// loop's τ_u = 2.5 s (98 % of a new speed in 6τ_u = 15 s), a steering moment of up to I_ψ·0.5
+/// rad/s² with τ_ψ = 2 s.
+bodies::PropulsionParams propulsion_for(const bodies::BodyParams& body, double gravity_mps2 = 9.81);
+/// The track of a driven object (W.17): its hull's length along x as L, a peak of
+/// kWakePeakPerLength·L, a waypoint every 0.5 s, 8 kept.
+waves::WakeTrackParams wake_track_for(const bodies::Hull& hull);
 
 /// The objects of a render: meshes for Renderer::set_meshes and, per object, its instances.
 class SceneObjects {
@@ -41,6 +58,10 @@ class SceneObjects {
   /// call) at a fixed step of 1/60 s, the surface simulated every second step, then writes the
   /// instances of every object at their poses into `out`.
   Status place(double time_s, std::vector<render::ObjectInstance>& out);
+  /// Appends the Kelvin wake of every driven object that moves fast enough (W.17) to `out`.
+  void wakes(std::vector<waves::KelvinWake>& out) const;
+  /// Where the first driven object is (x, z) and which way it heads (degrees), or nullopt.
+  [[nodiscard]] std::optional<std::array<double, 3>> first_driven() const;
 
  private:
   struct Object {
@@ -49,6 +70,9 @@ class SceneObjects {
     std::array<double, 4> orientation{1, 0, 0, 0};
     std::array<double, 3> centre_m{};  // the mesh frame's point that is the body's centre
     std::unique_ptr<bodies::FloatingBody> body;
+    std::optional<bodies::Propulsion> propulsion;  // a driven object
+    bodies::HelmCommand helm;
+    std::optional<waves::WakeTrack> track;
   };
   std::vector<render::Mesh> meshes_;
   std::vector<Object> objects_;

@@ -1,6 +1,7 @@
 // ocean/bodies.hpp — rigid bodies floating on the simulated sea: a closed triangle hull moved by
 // gravity, the hydrostatic pressure of the water over its submerged part (Archimedes, integrated
-// exactly over the hull clipped at the surface) and drag, integrated at a fixed step. The water
+// exactly over the hull clipped at the surface), drag and, for a driven body, a propeller's thrust
+// and a steering moment (Propulsion, B.8–B.10), integrated at a fixed step. The water
 // surface comes from batched height queries (Simulator::heights_at: the displaced surface the
 // renderer draws, found by inverting the horizontal displacement), on the CPU: no GPU read-back.
 //
@@ -112,11 +113,19 @@ SurfaceQuery surface_of(const Simulator& simulator);
 /// Calm water: height 0 everywhere.
 SurfaceQuery calm_surface();
 
+/// A force and a moment applied to a body besides the water and gravity (propulsion, a tow),
+/// world frame, the moment about the centre of mass.
+struct Wrench {
+  Vec3 force_n{};
+  Vec3 torque_nm{};
+};
+
 /// The forces of one evaluation.
 struct Forces {
   Vec3 force_n{};                    ///< total: gravity + pressure + drag, world
   Vec3 torque_nm{};                  ///< about the centre of mass, world
   Vec3 buoyancy_n{};                 ///< the pressure force alone
+  Vec3 drag_n{};                     ///< the drag force alone (B.4)
   double submerged_volume_m3 = 0.0;  ///< buoyancy_n.y/(ρg): the volume Archimedes weighs
   double wetted_area_m2 = 0.0;       ///< area of the hull below the surface
 };
@@ -136,9 +145,12 @@ class FloatingBody {
   /// forces of the present state, then positions and orientation from the new velocities. The
   /// surface should be the one at the present time. dt must be finite and positive
   /// (invalid_argument), and a few times shorter than the body's heave period 2π·√(m/(ρgA_w)).
-  Status step(const SurfaceQuery& surface, double dt_s);
+  /// `external` is added to the forces of the present state (B.8–B.10's propulsion).
+  Status step(const SurfaceQuery& surface, double dt_s, const Wrench& external = {});
 
   [[nodiscard]] const BodyState& state() const { return state_; }
+  /// Puts the body at a new pose and motion (validate(BodyState): invalid_argument).
+  Status set_state(const BodyState& state);
   [[nodiscard]] const BodyParams& params() const { return params_; }
   [[nodiscard]] const Water& water() const { return water_; }
   /// The forces of the last step (or evaluate).
@@ -158,6 +170,65 @@ class FloatingBody {
   std::vector<Vec3> world_;
   std::vector<std::array<double, 2>> xz_;
   std::vector<HeightSample> heights_;
+};
+
+/// The body's heading: its +x axis (the bow of the built-in boat) projected on the horizontal,
+/// degrees from +x towards +z in (−180, 180]; 0 for a body standing on its bow.
+double heading_deg(const BodyState& state);
+
+/// A propeller and a steering moment that drive a floating body (B.8–B.10). The thrust pushes
+/// along the body's heading, horizontally, at thrust_point_m; the steering moment turns it about
+/// the vertical. Gains scale with the body's mass and yaw inertia, so the time constants hold
+/// for any size.
+struct PropulsionParams {
+  double max_thrust_n = 1e4;  ///< T_max > 0: the largest forward thrust (the thrust is ≥ 0)
+  /// Where the thrust acts, body frame, m (finite): e.g. the propeller, aft and below the
+  /// waterline; the centre of mass (0, 0, 0) gives no pitching moment.
+  Vec3 thrust_point_m{};
+  double speed_time_s = 4.0;       ///< τ_u > 0: the speed loop's time constant (B.9)
+  double max_yaw_moment_nm = 1e4;  ///< N_max > 0: the largest steering moment
+  double heading_time_s = 2.0;     ///< τ_ψ > 0: the heading loop's time constant (B.10)
+};
+/// invalid_argument naming the field ("propulsion max_thrust_n = -1 ...").
+Status validate(const PropulsionParams& params);
+
+/// What the helm asks for.
+struct HelmCommand {
+  double speed_mps = 0.0;    ///< U_c ≥ 0, forward speed over the ground, finite
+  double heading_deg = 0.0;  ///< ψ_c, degrees from +x towards +z, finite
+  /// ψ̇_c, degrees per second (finite): the rate ψ_c itself turns at, 0 on a straight course;
+  /// on a turn it spares the heading loop the error a pure damping of ψ̇ would need.
+  double turn_rate_degps = 0.0;
+};
+/// invalid_argument naming the field.
+Status validate(const HelmCommand& command);
+
+/// The speed and heading loops of one body (B.9, B.10): plain state (the loops' integrals), no
+/// allocation, one thread.
+class Propulsion {
+ public:
+  static Result<Propulsion> make(const PropulsionParams& params);
+  /// The thrust and steering moment for the body's present state and the command, advancing the
+  /// speed loop's integral by dt_s (call once per body step, before FloatingBody::step). The
+  /// thrust compensates the drag of the body's last step (FloatingBody::forces).
+  /// invalid_argument for a bad command or dt.
+  Result<Wrench> control(const FloatingBody& body, const HelmCommand& command, double dt_s);
+  /// The thrust of the last control, N (≥ 0).
+  [[nodiscard]] double thrust_n() const { return thrust_n_; }
+  /// The steering moment of the last control about the vertical (turning +x towards +z), N·m.
+  [[nodiscard]] double yaw_moment_nm() const { return yaw_moment_nm_; }
+  [[nodiscard]] const PropulsionParams& params() const { return params_; }
+  /// The loops as if the body had been going steadily at speed_mps (forward) on its course: the
+  /// speed loop's integral 2τ_u·speed_mps, the heading loop's 0. Start a body that is already
+  /// moving with it; a body at rest starts from reset(0), as made.
+  void reset(double speed_mps = 0.0);
+
+ private:
+  Propulsion() = default;
+  PropulsionParams params_;
+  double integral_mps_s_ = 0.0;          // ∫(U_c − u) dt
+  double heading_integral_rad_s_ = 0.0;  // ∫(ψ_c − ψ) dt
+  double thrust_n_ = 0.0, yaw_moment_nm_ = 0.0;
 };
 
 }  // namespace ocean::bodies

@@ -94,6 +94,65 @@ struct WakePose {
 };
 WakePose pose_at(const KelvinWake& wake, double time_s);
 
+/// What a WakeTrack records and the wake it makes (W.17).
+struct WakeTrackParams {
+  double hull_length_m = 10.0;  ///< L of the wake, [0.01, 1000]
+  /// The wake's largest |height|, m (≥ 0); unset: 0.02·L (as KelvinWake).
+  std::optional<double> peak_height_m;
+  double fade_length_m = 0.0;  ///< as KelvinWake, m ≥ 0
+  double interval_s = 0.5;     ///< time between recorded waypoints, (0, 60]
+  int waypoints = 8;           ///< how many of the newest are kept, [2, 4096]
+  /// Below this speed over the kept track (m/s, [0, 100)) the object makes no wake.
+  double min_speed_mps = 0.5;
+  /// The wake's speed moves in steps of this relative size, (0, 0.1]: a new pattern (a table,
+  /// W.7) is needed only when the speed leaves its step, not whenever it wobbles.
+  double speed_step = 0.01;
+  /// The wake's speed changes at most once per this many seconds, ≥ 0 (a boat speeding up
+  /// computes a few tables, not one per step).
+  double retune_s = 2.0;
+};
+/// invalid_argument naming the field.
+Status validate(const WakeTrackParams& params);
+
+/// The horizontal track of a moving object (a floating body, a vehicle) recorded at a fixed
+/// interval, and the Kelvin wake that follows it (W.17): the newest waypoints are the wake's
+/// path, its speed the mean speed along them, quantised, so that a layer remade with the new
+/// path (LocalLayer::make with tables_from) shares its table while the speed holds. Heave, pitch
+/// and roll play no part: only (x, z) is recorded.
+class WakeTrack {
+ public:
+  /// Allocates the waypoints once. invalid_argument naming the field.
+  static Result<WakeTrack> make(const WakeTrackParams& params);
+  /// The object is at (x, z) at time t: recorded when interval_s has passed since the last
+  /// waypoint (the first call always records); a time before the last waypoint starts the track
+  /// afresh. Never allocates.
+  void record(double time_s, double x_m, double z_m);
+  /// Forgets the track.
+  void clear();
+  /// The mean speed along the kept waypoints, m/s; 0 with fewer than two.
+  [[nodiscard]] double track_speed_mps() const;
+  /// The wake's speed: track_speed_mps quantised to speed_step, held for retune_s; 0 while the
+  /// track is slower than min_speed_mps (or faster than 100 m/s, KelvinWake's limit).
+  [[nodiscard]] double wake_speed_mps() const { return wake_speed_mps_; }
+  /// The waypoints kept, oldest first.
+  [[nodiscard]] std::size_t size() const { return count_; }
+  [[nodiscard]] const Waypoint& waypoint(std::size_t i) const;
+  /// Writes the wake into `out` and returns true, or returns false (no wake: wake_speed_mps is
+  /// 0). The path is the kept waypoints, the newest at its recorded time and each earlier one
+  /// timed back from it along the track at the wake's speed, so every segment shares one table
+  /// and the object moves on from the newest waypoint along the last segment's heading
+  /// (pose_at). Reuses out.path's storage: no allocation once it has held `waypoints` points.
+  bool wake(KelvinWake& out) const;
+
+ private:
+  WakeTrack() = default;
+  WakeTrackParams params_;
+  std::vector<Waypoint> ring_;  // capacity params_.waypoints
+  std::size_t first_ = 0, count_ = 0;
+  double wake_speed_mps_ = 0.0;
+  double retuned_s_ = 0.0;  // when wake_speed_mps_ last changed
+};
+
 /// A 2-D height map: rows × cols samples, row-major, row r along +z and column c along +x before
 /// rotation.
 struct HeightMap {
@@ -247,7 +306,11 @@ class LocalLayer {
   /// Validates the parameters and computes each distinct (U, L) wake pattern once, on a table in
   /// the object's frame (W.5–W.7; about 0.1–1 s for N = 512–1024). invalid_argument names the
   /// offending wake or waveform ("wakes[1].speed_mps = -3 ...").
-  static Result<std::unique_ptr<LocalLayer>> make(LayerParams params);
+  /// With `tables_from`, a pattern that layer holds for the same (U, L), g and area size and
+  /// resolution is shared instead of computed (W.17): a layer remade with a moving object's new
+  /// path costs the copy of its parameters, not a table. `tables_from` may be destroyed after.
+  static Result<std::unique_ptr<LocalLayer>> make(LayerParams params,
+                                                  const LocalLayer* tables_from = nullptr);
   ~LocalLayer();
   LocalLayer(const LocalLayer&) = delete;
   LocalLayer& operator=(const LocalLayer&) = delete;
@@ -256,6 +319,8 @@ class LocalLayer {
   /// How many wake tables make() computed: one per distinct (U, L), speeds equal to a relative
   /// 1e-6 counting as one (a path at constant speed needs one table, whatever its segments).
   [[nodiscard]] std::size_t table_count() const;
+  /// How many of them make() computed (the rest were shared from `tables_from`).
+  [[nodiscard]] std::size_t tables_computed() const;
   /// (Dx, h, Dz) of the layer at the undisplaced world point (x, z) at time t, m: the sum of the
   /// wakes (their tables moved and turned to each object's pose, bilinear) and the waveforms,
   /// times the soft-edge weight. Never allocates.

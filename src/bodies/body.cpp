@@ -116,9 +116,25 @@ double FloatingBody::kinetic_energy_j() const {
          0.5 * dot(w, mul(inertia_world, w));
 }
 
-Status FloatingBody::step(const SurfaceQuery& surface, double dt_s) {
+Status FloatingBody::set_state(const BodyState& state) {
+  if (Status s = validate(state); !s.ok()) return s;
+  state_ = state;
+  return {};
+}
+
+double heading_deg(const BodyState& state) {
+  const Vec3 forward = rotate(state.orientation, {1.0, 0.0, 0.0});
+  if (forward[0] == 0.0 && forward[2] == 0.0) return 0.0;
+  return std::atan2(forward[2], forward[0]) * 180.0 / std::numbers::pi;
+}
+
+Status FloatingBody::step(const SurfaceQuery& surface, double dt_s, const Wrench& external) {
   if (Status s = require_positive("dt_s", dt_s); !s.ok()) return s;
-  const Forces f = evaluate(surface);
+  if (Status s = finite3("external force_n", external.force_n); !s.ok()) return s;
+  if (Status s = finite3("external torque_nm", external.torque_nm); !s.ok()) return s;
+  Forces f = evaluate(surface);
+  f.force_n = add(f.force_n, external.force_n);
+  f.torque_nm = add(f.torque_nm, external.torque_nm);
   // (B.5) Symplectic Euler: v' = v + dt·F/m, ω' = ω + dt·I_w⁻¹(τ − ω × I_w ω); then
   // x' = x + dt·v', q' = normalize(q + dt/2·(0, ω')·q).
   BodyState& s = state_;

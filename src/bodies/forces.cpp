@@ -100,6 +100,7 @@ Forces FloatingBody::evaluate(const SurfaceQuery& surface) {
   }
   Forces f;
   f.buoyancy_n = acc.pressure;
+  f.drag_n = acc.drag;
   f.submerged_volume_m3 = acc.pressure[1] / (water_.density_kgpm3 * water_.gravity_mps2);
   f.wetted_area_m2 = acc.wetted_area;
   const Vec3 gravity{0.0, -params_.mass_kg * water_.gravity_mps2, 0.0};

@@ -28,6 +28,10 @@ class KelvinTable {
 
   [[nodiscard]] double speed_mps() const { return spec_.speed_mps; }
   [[nodiscard]] double hull_length_m() const { return spec_.hull_length_m; }
+  [[nodiscard]] double gravity_mps2() const { return spec_.gravity_mps2; }
+  [[nodiscard]] double length_m() const { return spec_.length_m; }
+  /// The spacing the spec asked for (spacing_m() may be larger).
+  [[nodiscard]] double requested_spacing_m() const { return spec_.spacing_m; }
   [[nodiscard]] double spacing_m() const { return spacing_m_; }
   /// 2πU²/g, the wavelength of the transverse waves.
   [[nodiscard]] double transverse_wavelength_m() const;

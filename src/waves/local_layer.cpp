@@ -1,7 +1,9 @@
 // src/waves/local_layer.cpp — the local layer: validation, one Kelvin table per distinct (U, L)
-// made up front, and the per-frame composition of wakes (tables moved and turned to each
-// object's pose) and waveforms under the soft edge (W.7–W.10).
+// made up front (or shared with an earlier layer that has it, W.17), and the per-frame
+// composition of wakes (tables moved and turned to each object's pose) and waveforms under the
+// soft edge (W.7–W.10).
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "kelvin_table.hpp"
@@ -10,7 +12,9 @@
 namespace ocean::waves {
 
 struct LocalLayer::Impl {
-  std::vector<detail::KelvinTable> tables;
+  /// Immutable once made, so layers share them (make's tables_from).
+  std::vector<std::shared_ptr<const detail::KelvinTable>> tables;
+  std::size_t computed = 0;  ///< how many of them make() computed
   /// Per wake: the tables of its speeds (one, or one per path segment speed).
   std::vector<std::vector<std::size_t>> wake_tables;
 };
@@ -42,7 +46,22 @@ LocalLayer::~LocalLayer() = default;
 
 std::size_t LocalLayer::table_count() const { return impl_->tables.size(); }
 
-Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params) {
+std::size_t LocalLayer::tables_computed() const { return impl_->computed; }
+
+namespace {
+
+// Speeds equal to 1e-6 share a table: a path at constant speed gives segment speeds that differ
+// in their last bits (a circle of 5° chords, 400 of them, made 400 tables).
+bool same_table(const detail::KelvinTable& t, const detail::KelvinTableSpec& want) {
+  return std::abs(t.speed_mps() - want.speed_mps) <= 1e-6 * want.speed_mps &&
+         t.hull_length_m() == want.hull_length_m && t.gravity_mps2() == want.gravity_mps2 &&
+         t.requested_spacing_m() == want.spacing_m && t.length_m() == want.length_m;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
+                                                     const LocalLayer* tables_from) {
   if (Status s = validate(params.area); !s.ok()) return s;
   if (Status s = require_finite("choppiness", params.choppiness); !s.ok()) return s;
   if (Status s = require_non_negative("choppiness", params.choppiness); !s.ok()) return s;
@@ -61,21 +80,26 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params) {
   for (const KelvinWake& w : params.wakes) {
     std::vector<std::size_t> mine;
     for (double speed : speeds_of(w)) {
+      const detail::KelvinTableSpec spec{.speed_mps = speed,
+                                         .hull_length_m = w.hull_length_m,
+                                         .gravity_mps2 = params.gravity_mps2,
+                                         .spacing_m = params.area.size_m / params.area.resolution,
+                                         .length_m = 2.0 * params.area.size_m};
       std::size_t found = impl.tables.size();
-      // Speeds equal to 1e-6 share a table: a path at constant speed gives segment speeds that
-      // differ in their last bits (a circle of 5° chords, 400 of them, made 400 tables).
       for (std::size_t t = 0; t < impl.tables.size(); ++t) {
-        if (std::abs(impl.tables[t].speed_mps() - speed) <= 1e-6 * speed &&
-            impl.tables[t].hull_length_m() == w.hull_length_m)
-          found = t;
+        if (same_table(*impl.tables[t], spec)) found = t;
       }
       if (found == impl.tables.size()) {
-        impl.tables.push_back(
-            detail::KelvinTable::make({.speed_mps = speed,
-                                       .hull_length_m = w.hull_length_m,
-                                       .gravity_mps2 = params.gravity_mps2,
-                                       .spacing_m = params.area.size_m / params.area.resolution,
-                                       .length_m = 2.0 * params.area.size_m}));
+        std::shared_ptr<const detail::KelvinTable> table;
+        if (tables_from != nullptr) {
+          for (const auto& t : tables_from->impl_->tables)
+            if (same_table(*t, spec)) table = t;
+        }
+        if (table == nullptr) {
+          table = std::make_shared<const detail::KelvinTable>(detail::KelvinTable::make(spec));
+          ++impl.computed;
+        }
+        impl.tables.push_back(std::move(table));
       }
       mine.push_back(found);
     }
@@ -88,7 +112,7 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params) {
 namespace {
 
 Placed place(const KelvinWake& w, const std::vector<std::size_t>& tables,
-             const std::vector<detail::KelvinTable>& all, double t) {
+             const std::vector<std::shared_ptr<const detail::KelvinTable>>& all, double t) {
   const WakePose pose = pose_at(w, t);
   Placed p{.x = pose.x_m,
            .z = pose.z_m,
@@ -96,11 +120,11 @@ Placed place(const KelvinWake& w, const std::vector<std::size_t>& tables,
            .sin_h = std::sin(pose.heading_rad),
            .amplitude_m = w.peak_height_m.value_or(kDefaultPeakHeightPerLength * w.hull_length_m),
            .fade_m = w.fade_length_m};
-  p.table = &all[tables.front()];
+  p.table = all[tables.front()].get();
   for (std::size_t i : tables) {
-    if (std::abs(all[i].speed_mps() - pose.speed_mps) <
+    if (std::abs(all[i]->speed_mps() - pose.speed_mps) <
         std::abs(p.table->speed_mps() - pose.speed_mps))
-      p.table = &all[i];
+      p.table = all[i].get();
   }
   return p;
 }
@@ -179,7 +203,7 @@ std::vector<std::string> LocalLayer::warnings(double time_s) const {
                     " s; only what trails into the area shows");
     }
     for (std::size_t t : impl_->wake_tables[i]) {
-      const detail::KelvinTable& table = impl_->tables[t];
+      const detail::KelvinTable& table = *impl_->tables[t];
       if (table.unresolved()) {
         out.push_back(name + ": its waves (" + format_number(table.transverse_wavelength_m()) +
                       " m) are shorter than the local grid resolves (3 cells of " +

@@ -1,6 +1,7 @@
 // `ocean render --object ... [--float]`: built-in shapes and a glTF file in the picture, floating
-// on the waves; bad input — a NaN or out-of-range coordinate, an unknown kind, a missing,
-// malformed or (with --float) open glTF mesh, --float without an object — is one line and a
+// on the waves; bad input — a NaN or out-of-range coordinate or speed, an unknown kind, a missing,
+// malformed or (with --float) open glTF mesh, --float without an object, a speed without
+// --float — is one line and a
 // non-zero exit with nothing written; so is a seabed depth that is not a positive number. Skips the
 // rendering cases where no Vulkan device exists (fails them with OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>
@@ -42,6 +43,10 @@ TEST(ObjectsCli, RefusesBadObjectsWithOneLine) {
       {"--object " + garbage.string() + ",0,0,0", "cannot read"},
       {"--object " + open.string() + ",0,0,0 --float", "cannot float"},
       {"--float", "--float needs"},
+      {"--object boat,0,0,0,0,-1 --float", "--object speed"},
+      {"--object boat,0,0,0,0,40 --float", "--object speed"},
+      {"--object boat,0,0,0,0,5", "add --float"},
+      {"--object boat,0,0,0,0,5,1 --float", "KIND,X,Y,Z"},
       {"--seabed -2", "--seabed"},
       {"--seabed nan", "--seabed"},
   };

@@ -178,6 +178,11 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   }
   if (o.floating && o.objects.empty())
     return invalid_argument("--float needs at least one --object");
+  for (const ObjectSpec& spec : in.objects) {
+    if (spec.speed_mps > 0.0 && !o.floating)
+      return invalid_argument("--object " + excerpt(spec.kind) +
+                              ": a speed drives a floating object; add --float");
+  }
   Result<OutputPattern> out = parse_output_pattern(o.out, "--out");
   if (!out.ok()) return out.status();
   in.out = std::move(out).value();
@@ -197,6 +202,41 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
                             "': an MP4 is one file, its name takes no frame-number field (%d "
                             "numbers the files of a PNG or EXR sequence)");
   return in;
+}
+
+// The side and grid of the local area laid round a driven object when --local-area is not
+// given: 0.3 m cells, 12 transverse wavelengths of a boat at 5 m/s behind it.
+constexpr double kDrivenArea_m = 320.0;
+constexpr int kDrivenAreaResolution = 1024;
+
+// The layer of a frame with driven objects: `given` (--local-area and its wakes and waveforms) or,
+// without it, the square of `previous` or one laid round the first driven object (its centre a
+// third of the side behind it, so the wake trails into it); plus the wakes of the objects'
+// tracks. Null when no object makes a wake. Tables shared with `previous`.
+Result<std::shared_ptr<const waves::LocalLayer>> layer_with_wakes(
+    const std::shared_ptr<const waves::LocalLayer>& given, const SceneObjects& objects,
+    const waves::LocalLayer* previous, double choppiness) {
+  std::vector<waves::KelvinWake> wakes;
+  objects.wakes(wakes);
+  if (wakes.empty()) return std::shared_ptr<const waves::LocalLayer>();
+  waves::LayerParams p;
+  p.choppiness = choppiness;
+  if (given != nullptr) {
+    p = given->params();
+  } else if (previous != nullptr) {  // a driven layer of an earlier frame
+    p.area = previous->params().area;
+  } else {
+    const std::array<double, 3> at = objects.first_driven().value_or(std::array<double, 3>{});
+    const double back = kDrivenArea_m / 3.0, heading = at[2] * std::numbers::pi / 180.0;
+    p.area = {.origin_m = {at[0] - back * std::cos(heading) - 0.5 * kDrivenArea_m,
+                           at[1] - back * std::sin(heading) - 0.5 * kDrivenArea_m},
+              .size_m = kDrivenArea_m,
+              .resolution = kDrivenAreaResolution};
+  }
+  for (waves::KelvinWake& w : wakes) p.wakes.push_back(std::move(w));
+  Result<std::unique_ptr<waves::LocalLayer>> made = waves::LocalLayer::make(std::move(p), previous);
+  if (!made.ok()) return made.status();
+  return std::shared_ptr<const waves::LocalLayer>(std::move(made).value());
 }
 
 // Frame f's file: a single frame is written under the name, a sequence's frames are numbered.
@@ -335,6 +375,7 @@ int run_render(const RenderOptions& o) {
   // surface to the renderer (Scene::step, R.19), its foam accumulated through the warm-up.
   scene.simulator().set_damping(in.damping);
   scene.simulator().set_local_layer(in.layer);
+  std::shared_ptr<const waves::LocalLayer> driven_layer;  // in.layer plus the driven wakes
   if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
@@ -349,6 +390,18 @@ int run_render(const RenderOptions& o) {
     }
     if (!stepped.ok()) return report(stepped);
     if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
+    // Driven objects' wakes from their tracks (W.17): the layer remade each frame with their
+    // new paths, sharing the previous one's tables while the speeds hold. A new layer goes to the
+    // simulator, and the frame is simulated again so that its composited surface holds it.
+    Result<std::shared_ptr<const waves::LocalLayer>> with_wakes = layer_with_wakes(
+        in.layer, *objects.value(), driven_layer != nullptr ? driven_layer.get() : in.layer.get(),
+        in.scene.config.choppiness);
+    if (!with_wakes.ok()) return report(with_wakes.status());
+    if (with_wakes.value() != nullptr && with_wakes.value() != driven_layer) {
+      driven_layer = with_wakes.value();
+      scene.simulator().set_local_layer(driven_layer);
+      if (Status s = scene.step(t); !s.ok()) return report(s);
+    }
     const Status drawn =
         in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
     if (!drawn.ok()) return report(drawn);
@@ -433,9 +486,11 @@ Command add_render_command(CLI::App& app) {
                       "default 480x270)");
   command
       ->add_option("--object", o->objects,
-                   "KIND,X,Y,Z[,HEADING_DEG]: an object in the picture, KIND box, buoy, boat "
-                   "or a glTF 2.0 file (.glb/.gltf); X,Y,Z place its origin (m), the heading "
-                   "turns it from +x towards +z. Repeatable")
+                   "KIND,X,Y,Z[,HEADING_DEG[,SPEED_MPS]]: an object in the picture, KIND box, "
+                   "buoy, boat or a glTF 2.0 file (.glb/.gltf); X,Y,Z place its origin (m), the "
+                   "heading turns it from +x towards +z; with --float a speed (0-30 m/s) drives "
+                   "it from t = 0 along that heading by its propulsion, leaving a Kelvin wake "
+                   "(in --local-area, or a 320 m square round it). Repeatable")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   command->add_flag("--float", o->floating,

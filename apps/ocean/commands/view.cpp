@@ -342,7 +342,8 @@ Command add_view_command(CLI::App& app) {
   command->add_option("--screenshot", o->screenshot,
                       "after the last frame, save the 3D view (without the panel) as this PNG");
   command->add_flag("--boat", o->boat,
-                    "start with a boat circling the --target point, leaving its Kelvin wake "
+                    "start with a floating boat driven round the --target point by its "
+                    "propulsion, leaving a Kelvin wake from its track "
                     "(panel: Boat and shallows)");
   command->add_option("--shallows", o->shallows,
                       "none, lily-pads (a damping mask) or lagoon (a bathymetry), about the "

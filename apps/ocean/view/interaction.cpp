@@ -13,7 +13,9 @@
 namespace ocean::cli::view {
 namespace {
 
-constexpr double kWaypointStep_rad = 5.0 * std::numbers::pi / 180.0;
+constexpr double kDegree = std::numbers::pi / 180.0;
+constexpr double kSettle_s = 4.0;    // calm-water settling before the boat starts
+constexpr double kMaxJump_s = 10.0;  // a longer jump in time restarts the boat on the circle
 
 // A square map of side `size` and `n` samples per side, centred on `centre`, whose value is
 // f(distance from the centre).
@@ -40,6 +42,14 @@ double smoothstep(double e0, double e1, double x) {
   return t * t * (3.0 - 2.0 * t);
 }
 
+// The square the boat's wake is drawn in: centred on the circle, kBoatWakeMargin_m beyond it.
+waves::LocalArea wake_area(const BoatControls& boat) {
+  const double side = 2.0 * (boat.radius_m + kBoatWakeMargin_m);
+  return {.origin_m = {boat.centre_m[0] - 0.5 * side, boat.centre_m[1] - 0.5 * side},
+          .size_m = side,
+          .resolution = kBoatLayerResolution};
+}
+
 }  // namespace
 
 Status validate(const BoatControls& boat) {
@@ -62,40 +72,121 @@ waves::WakePose circling_pose(const BoatControls& boat, double t0_s, double time
           .speed_mps = boat.speed_mps};
 }
 
-double circling_boat_end(const BoatControls& boat, double t0_s) {
-  return t0_s + kBoatLaps * 2.0 * std::numbers::pi * boat.radius_m / boat.speed_mps;
+double circle_heading_deg(const BoatControls& boat, double x_m, double z_m) {
+  // (B.11) Line-of-sight guidance onto the circle: the tangent at the boat's angle φ about the
+  // centre (motion from +x towards +z), turned inwards when the boat is outside the circle.
+  const double dx = x_m - boat.centre_m[0], dz = z_m - boat.centre_m[1];
+  const double phi = std::atan2(dz, dx), rho = std::hypot(dx, dz);
+  return (phi + 0.5 * std::numbers::pi + std::atan((rho - boat.radius_m) / kBoatLookAhead_m)) /
+         kDegree;
 }
 
-Result<std::unique_ptr<waves::LocalLayer>> circling_boat_layer(const BoatControls& boat,
-                                                               double t0_s, double choppiness) {
+Result<std::unique_ptr<CirclingBoat>> CirclingBoat::make(const BoatControls& boat, double time_s,
+                                                         double choppiness) {
   if (Status s = validate(boat); !s.ok()) return s;
-  waves::KelvinWake wake{.speed_mps = boat.speed_mps,
-                         .hull_length_m = kBoatHullLength_m,
-                         .peak_height_m = kBoatWakePeak_m};
-  const int steps =
-      static_cast<int>(std::ceil(kBoatLaps * 2.0 * std::numbers::pi / kWaypointStep_rad));
-  const double dt = (circling_boat_end(boat, t0_s) - t0_s) / steps;
-  wake.path.reserve(static_cast<std::size_t>(steps) + 1);
-  for (int i = 0; i <= steps; ++i) {
-    const double t = t0_s + i * dt;
-    const waves::WakePose p = circling_pose(boat, t0_s, t);
-    wake.path.push_back({.time_s = t, .x_m = p.x_m, .z_m = p.z_m});
+  Result<bodies::Hull> hull = bodies::boat_hull(8.0, 3.0, 1.2);
+  if (!hull.ok()) return hull.status();
+  Result<bodies::BodyParams> params = bodies::solid_body(hull.value(), kBoatDensity);
+  if (!params.ok()) return params.status();
+  std::unique_ptr<CirclingBoat> b(new CirclingBoat());
+  b->controls_ = boat;
+  b->choppiness_ = choppiness;
+  b->centre_m_ = bodies::mass_properties(hull.value()).centroid_m;
+  Result<bodies::Propulsion> propulsion = bodies::Propulsion::make(propulsion_for(params.value()));
+  if (!propulsion.ok()) return propulsion.status();
+  b->propulsion_ = propulsion.value();
+  Result<waves::WakeTrack> track = waves::WakeTrack::make(wake_track_for(params.value().hull));
+  if (!track.ok()) return track.status();
+  b->track_ = std::move(track).value();
+  // Settled once in calm water, at rest: the draught and trim it starts each lap from.
+  Result<bodies::FloatingBody> body = bodies::FloatingBody::make(params.value(), {});
+  if (!body.ok()) return body.status();
+  b->body_ = std::make_unique<bodies::FloatingBody>(std::move(body).value());
+  for (double t = 0.0; t < kSettle_s; t += kBoatStep_s) {
+    if (Status s = b->body_->step(bodies::calm_surface(), kBoatStep_s); !s.ok()) return s;
   }
-  const double side = 2.0 * (boat.radius_m + kBoatWakeMargin_m);
-  waves::LayerParams params{
-      .area = {.origin_m = {boat.centre_m[0] - 0.5 * side, boat.centre_m[1] - 0.5 * side},
-               .size_m = side,
-               .resolution = kBoatLayerResolution},
-      .wakes = {std::move(wake)},
-      .choppiness = choppiness};
-  return waves::LocalLayer::make(std::move(params));
+  b->settled_ = b->body_->state();
+  b->params_ = {.area = wake_area(boat), .choppiness = choppiness};
+  b->restart(time_s);
+  return b;
 }
 
-render::ObjectInstance boat_instance(std::uint32_t mesh, const waves::WakePose& pose) {
-  return {.mesh = mesh,
-          .model = render::model_matrix(
-              {pose.x_m, kBoatCentreHeight_m, pose.z_m},
-              bodies::orientation_from_heading(pose.heading_rad * 180.0 / std::numbers::pi))};
+Status CirclingBoat::set_controls(const BoatControls& boat) {
+  if (Status s = validate(boat); !s.ok()) return s;
+  controls_ = boat;
+  const waves::LocalArea area = wake_area(boat);
+  if (area.origin_m != params_.area.origin_m || area.size_m != params_.area.size_m) {
+    params_.area = area;
+    layer_.reset();  // its tables were made for the old square's cells
+  }
+  return Status{};
+}
+
+void CirclingBoat::restart(double time_s) {
+  const waves::WakePose p = circling_pose(controls_, time_s, time_s);
+  const double y = settled_.position_m[1];
+  // The settled trim (a rotation about z) turned to the course's heading.
+  const bodies::Quat h = bodies::orientation_from_heading(p.heading_rad / kDegree);
+  const bodies::Quat& q = settled_.orientation;
+  const bodies::Quat turned{h[0] * q[0] - h[2] * q[2], h[0] * q[1] + h[2] * q[3],
+                            h[0] * q[2] + h[2] * q[0], h[0] * q[3] - h[2] * q[1]};
+  const double u = controls_.speed_mps;
+  // A valid state: the settled one, moved and turned.
+  (void)body_->set_state(
+      {.position_m = {p.x_m, y, p.z_m},
+       .orientation = turned,
+       .velocity_mps = {u * std::cos(p.heading_rad), 0.0, u * std::sin(p.heading_rad)}});
+  propulsion_->reset(u);
+  track_->clear();
+  track_->record(time_s, p.x_m, p.z_m);
+  layer_.reset();
+  time_s_ = time_s;
+}
+
+Status CirclingBoat::advance(double time_s, const bodies::SurfaceQuery& surface) {
+  if (time_s < time_s_ || time_s > time_s_ + kMaxJump_s) {
+    restart(time_s);
+    return Status{};
+  }
+  const double newest = track_->size() == 0 ? -1.0 : track_->waypoint(track_->size() - 1).time_s;
+  while (time_s_ + 0.5 * kBoatStep_s < time_s) {
+    const auto& x = body_->state().position_m;
+    const bodies::HelmCommand helm{
+        .speed_mps = controls_.speed_mps,
+        .heading_deg = circle_heading_deg(controls_, x[0], x[2]),
+        .turn_rate_degps = controls_.speed_mps / controls_.radius_m / kDegree};
+    Result<bodies::Wrench> thrust = propulsion_->control(*body_, helm, kBoatStep_s);
+    if (!thrust.ok()) return thrust.status();
+    if (Status s = body_->step(surface, kBoatStep_s, thrust.value()); !s.ok()) return s;
+    time_s_ += kBoatStep_s;
+    const auto& moved = body_->state().position_m;
+    track_->record(time_s_, moved[0], moved[2]);
+  }
+  if (track_->size() == 0 || track_->waypoint(track_->size() - 1).time_s == newest) return {};
+  // A new waypoint: the layer remade with the new path, sharing the previous one's table.
+  waves::KelvinWake wake;
+  if (!track_->wake(wake)) {
+    layer_.reset();
+    return Status{};
+  }
+  waves::LayerParams params = params_;
+  params.wakes.push_back(std::move(wake));
+  Result<std::unique_ptr<waves::LocalLayer>> layer =
+      waves::LocalLayer::make(std::move(params), layer_.get());
+  if (!layer.ok()) return layer.status();
+  layer_ = std::move(layer).value();
+  tables_computed_ += layer_->tables_computed();
+  return Status{};
+}
+
+render::ObjectInstance CirclingBoat::instance(std::uint32_t mesh) const {
+  // The body's centre is the mesh frame's point centre_m: origin = x − R·c.
+  const bodies::BodyState& s = body_->state();
+  const std::array<double, 3> c = bodies::rotate(s.orientation, centre_m_);
+  return {
+      .mesh = mesh,
+      .model = render::model_matrix(
+          {s.position_m[0] - c[0], s.position_m[1] - c[1], s.position_m[2] - c[2]}, s.orientation)};
 }
 
 std::optional<Shallows> parse_shallows(std::string_view name) {
@@ -135,17 +226,13 @@ Result<std::unique_ptr<InteractionScene>> InteractionScene::make(render::Rendere
 }
 
 Status InteractionScene::set_boat(const BoatControls& boat, double time_s, Simulator& simulator) {
-  layer_.reset();
-  boat_ = boat;
-  if (!boat.on) {
-    simulator.set_local_layer(nullptr);
-    return Status{};
-  }
-  Result<std::unique_ptr<waves::LocalLayer>> layer = circling_boat_layer(boat, time_s, choppiness_);
-  if (!layer.ok()) return layer.status();
-  layer_ = std::move(layer).value();
-  simulator.set_local_layer(layer_);
-  t0_s_ = time_s;
+  if (boat.on && boat_ != nullptr) return boat_->set_controls(boat);
+  boat_.reset();
+  simulator.set_local_layer(nullptr);
+  if (!boat.on) return Status{};
+  Result<std::unique_ptr<CirclingBoat>> made = CirclingBoat::make(boat, time_s, choppiness_);
+  if (!made.ok()) return made.status();
+  boat_ = std::move(made).value();
   return Status{};
 }
 
@@ -164,15 +251,10 @@ Status InteractionScene::set_shallows(Shallows scene, std::array<double, 2> cent
 
 Status InteractionScene::update(double time_s, Simulator& simulator, render::View& view) {
   view.objects.clear();
-  if (!boat_.on) return Status{};
-  // Past the path's end (or before its start: time ran backwards): a new path from the start of
-  // the current lap, where the boat is at angle 0 again, so it drives on without a jump.
-  if (time_s > circling_boat_end(boat_, t0_s_) || time_s < t0_s_) {
-    const double lap_s = 2.0 * std::numbers::pi * boat_.radius_m / boat_.speed_mps;
-    const double t0 = t0_s_ + std::floor((time_s - t0_s_) / lap_s) * lap_s;
-    if (Status s = set_boat(boat_, t0, simulator); !s.ok()) return s;
-  }
-  view.objects.push_back(boat_instance(0, circling_pose(boat_, t0_s_, time_s)));
+  if (boat_ == nullptr) return Status{};
+  if (Status s = boat_->advance(time_s, bodies::surface_of(simulator)); !s.ok()) return s;
+  view.objects.push_back(boat_->instance(0));
+  if (boat_->layer().get() != simulator.local_layer()) simulator.set_local_layer(boat_->layer());
   return Status{};
 }
 
