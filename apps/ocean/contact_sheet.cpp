@@ -15,7 +15,7 @@ namespace {
 using plot::Rgb;
 
 constexpr Rgb kPaper{250, 250, 250};
-constexpr Rgb kInk{30, 30, 30};
+constexpr Rgb kSheetInk{30, 30, 30};
 constexpr plot::Font kLabelFont{.size_px = 15.0};
 constexpr plot::Font kTitleFont{.size_px = 21.0, .bold = true};
 constexpr int kMargin = 16;  // around and between tiles
@@ -70,13 +70,13 @@ Result<SheetSize> write_contact_sheet(const ContactSheet& sheet,
   Result<plot::Canvas> made = plot::Canvas::make(size.width, size.height, kPaper);
   if (!made.ok()) return made.status();
   plot::Canvas& canvas = made.value();
-  canvas.text({kMargin, kTitle - 0.6 * kMargin}, sheet.title, kTitleFont, kInk);
+  canvas.text({kMargin, kTitle - 0.6 * kMargin}, sheet.title, kTitleFont, kSheetInk);
   for (std::size_t i = 0; i < sheet.tiles.size(); ++i) {
     const int r = static_cast<int>(i) / cols, c = static_cast<int>(i) % cols;
     const int x0 = kMargin + c * (tw + kMargin);
     const int y0 = kTitle + r * (kLabel + th + kMargin) + kLabel;
     canvas.text({static_cast<double>(x0), y0 - 0.45 * kLabel}, sheet.tiles[i].label, kLabelFont,
-                kInk);
+                kSheetInk);
     canvas.image(x0, y0, sheet.tiles[i].image);
   }
   if (Status s = canvas.write_png(path); !s.ok()) return s;

@@ -12,10 +12,10 @@ namespace {
 // number of the right kind.
 constexpr NumberOption<double> kChoppiness{.flag = "--choppiness"};
 constexpr NumberOption<double> kLoopPeriod{.flag = "--loop-period"};
-constexpr NumberOption<double> kCascades{.flag = "--cascades"};
+constexpr NumberOption<double> kCascadeSizes{.flag = "--cascades"};
 // The power-of-two range is ocean::validate's ("resolution = 100 is out of range ..."); here only
 // a whole number small enough for an int.
-constexpr NumberOption<int> kResolution{.flag = "--resolution",
+constexpr NumberOption<int> kGridResolution{.flag = "--resolution",
                                         .accept = Accept::integer_in_range,
                                         .lo = -1e6,
                                         .hi = 1e6,
@@ -40,10 +40,10 @@ void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
       name_list(preset::builtin_names(), ", ", ", ") + " or a preset JSON file (see presets/)");
   command.add_option("--set", f.set, "override a preset key: --set sea.wind_sea.fetch_m=5e4");
   add_spectrum_flags(command, f.sea);
-  add_option(command, kResolution, f.resolution, "grid size N per cascade (power of two, 16-2048)");
+  add_option(command, kGridResolution, f.resolution, "grid size N per cascade (power of two, 16-2048)");
   add_option(command, kSeed, f.seed, "random seed (integer)");
   add_option(command, kChoppiness, f.choppiness, "horizontal displacement lambda >= 0");
-  add_option(command, kCascades, f.cascades, "patch sizes L1,L2,... in metres, largest first");
+  add_option(command, kCascadeSizes, f.cascades, "patch sizes L1,L2,... in metres, largest first");
   command.add_option("--normals", f.normals, name_list(kNormalMethodNames, " | ", " | "));
   add_option(command, kLoopPeriod, f.loop_period, "loop period T, s (0 = no loop)");
   command.add_option("--band-roles", f.band_roles,
@@ -100,7 +100,7 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
     c.loop_period_s = v.value();
   }
   if (!f.resolution.empty()) {
-    Result<int> v = parse(kResolution, f.resolution);
+    Result<int> v = parse(kGridResolution, f.resolution);
     if (!v.ok()) return v.status();
     c.resolution = v.value();
   }
@@ -110,7 +110,7 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
     c.seed = v.value();
   }
   if (!f.cascades.empty()) {
-    Result<std::vector<double>> sizes = parse_list(kCascades, f.cascades);
+    Result<std::vector<double>> sizes = parse_list(kCascadeSizes, f.cascades);
     if (!sizes.ok()) return sizes.status();
     c.cascade_patch_sizes_m = sizes.value();
   }

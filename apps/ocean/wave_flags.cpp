@@ -14,7 +14,7 @@
 namespace ocean::cli {
 namespace {
 
-constexpr NumberOption<int> kResolution{.flag = "--local-resolution",
+constexpr NumberOption<int> kLocalResolution{.flag = "--local-resolution",
                                         .accept = Accept::integer_in_range,
                                         .lo = waves::kMinLocalResolution,
                                         .hi = waves::kMaxLocalResolution,
@@ -146,7 +146,7 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
       "{frame} (or {frame:W}, W digits) replaced by consecutive numbers, played at "
       "FPS, blended between frames; repeatable");
   command.add_option("--local-area", f.local_area, "X0,Z0,SIZE_M: the local layer's square");
-  add_option(command, kResolution, f.local_resolution, "cells per side of the local layer")
+  add_option(command, kLocalResolution, f.local_resolution, "cells per side of the local layer")
       ->capture_default_str();
   command.add_option("--damping-mask", f.damping_mask,
                      "FILE,X0,Z0,SIZE_M: .npy (or gray PNG) in [0, 1] from corner (X0, Z0); 0 = "
@@ -229,7 +229,7 @@ Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, 
   p.choppiness = choppiness;
   Result<std::vector<double>> area = numbers("--local-area", f.local_area, 3, 3, "X0,Z0,SIZE_M");
   if (!area.ok()) return area.status();
-  Result<int> n = parse(kResolution, f.local_resolution);
+  Result<int> n = parse(kLocalResolution, f.local_resolution);
   if (!n.ok()) return n.status();
   p.area = {.origin_m = {area.value()[0], area.value()[1]},
             .size_m = area.value()[2],

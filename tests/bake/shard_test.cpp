@@ -46,7 +46,7 @@ std::map<std::string, std::string> contents(const fs::path& dir) {
   return files;
 }
 
-ocean::SimulationConfig small_config(std::uint64_t seed = 5) {
+ocean::SimulationConfig shard_small_config(std::uint64_t seed = 5) {
   ocean::SimulationConfig c;
   c.resolution = 16;
   c.cascade_patch_sizes_m = {200};
@@ -71,14 +71,14 @@ bake::BakeParams params(const fs::path& dir, std::optional<bake::Shard> shard = 
           .shard = shard};
 }
 
-// Bakes shards 0..count−1 of small_config() into root/s<i>; returns their folders.
+// Bakes shards 0..count−1 of shard_small_config() into root/s<i>; returns their folders.
 std::vector<fs::path> bake_shards(const fs::path& root, long long count,
                                   bake::Formats formats = {.npy = true}) {
   std::vector<fs::path> dirs;
   for (long long i = 0; i < count; ++i) {
     dirs.push_back(root / numbered("s", i));
     const ocean::Status s =
-        bake::bake(small_config(), "cpu", params(dirs.back(), bake::Shard{i, count}, formats));
+        bake::bake(shard_small_config(), "cpu", params(dirs.back(), bake::Shard{i, count}, formats));
     EXPECT_TRUE(s.ok()) << s.message();
   }
   return dirs;
@@ -118,7 +118,7 @@ TEST(BakeShards, ParseShardReadsIndexSlashCount) {
 TEST(BakeShards, AShardWritesItsBlockOnlyWithAManifestSayingSo) {
   TempDir root("bake_shard_");
   const fs::path dir = root.path / "s1";
-  ASSERT_TRUE(bake::bake(small_config(), "cpu", params(dir, bake::Shard{1, 3})).ok());
+  ASSERT_TRUE(bake::bake(shard_small_config(), "cpu", params(dir, bake::Shard{1, 3})).ok());
   const nlohmann::json m = nlohmann::json::parse(read_bytes(dir / "manifest.json"));
   EXPECT_EQ(m["shard"],
             (nlohmann::json{{"index", 1}, {"count", 3}, {"first_frame", 1}, {"last_frame", 2}}));
@@ -133,7 +133,7 @@ TEST(BakeShards, AShardWritesItsBlockOnlyWithAManifestSayingSo) {
   EXPECT_FALSE(fs::exists(dir / "displacement_c0_f00003.npy"));
   // A shard beyond the frames is refused before anything is made.
   const ocean::Status s =
-      bake::bake(small_config(), "cpu", params(root.path / "x", bake::Shard{0, 8}));
+      bake::bake(shard_small_config(), "cpu", params(root.path / "x", bake::Shard{0, 8}));
   EXPECT_EQ(s.code(), ocean::ErrorCode::invalid_argument);
   EXPECT_FALSE(fs::exists(root.path / "x"));
 }
@@ -141,13 +141,13 @@ TEST(BakeShards, AShardWritesItsBlockOnlyWithAManifestSayingSo) {
 TEST(BakeShards, TheMergeOfAllShardsIsByteForByteTheOneMachineBake) {
   TempDir root("bake_merge_");
   const bake::Formats all{.npy = true, .png = true, .exr = true};
-  ASSERT_TRUE(bake::bake(small_config(), "cpu", params(root.path / "one", {}, all)).ok());
+  ASSERT_TRUE(bake::bake(shard_small_config(), "cpu", params(root.path / "one", {}, all)).ok());
   // The sea's foam carries history: frame 3 baked on its own is not frame 3 of the whole bake,
   // so a shard must step through the frames before its own.
   bake::BakeParams alone = params(root.path / "alone");
   alone.frame_count = 1;
   alone.start_time_s += 3 / alone.fps;
-  ASSERT_TRUE(bake::bake(small_config(), "cpu", alone).ok());
+  ASSERT_TRUE(bake::bake(shard_small_config(), "cpu", alone).ok());
   ASSERT_NE(read_bytes(root.path / "alone" / "foam_c0_f00000.npy"),
             read_bytes(root.path / "one" / "foam_c0_f00003.npy"));
   for (long long count : {1LL, 3LL}) {
@@ -181,16 +181,16 @@ TEST(BakeShards, TheMergeRefusesShardsThatAreNotOneWholeBake) {
   refused({dirs[0], dirs[1], dirs[1], dirs[2]}, "shard 1 of 3 is given twice");
   // Another configuration's shard.
   const fs::path other = root.path / "other";
-  ASSERT_TRUE(bake::bake(small_config(6), "cpu", params(other, bake::Shard{1, 3})).ok());
+  ASSERT_TRUE(bake::bake(shard_small_config(6), "cpu", params(other, bake::Shard{1, 3})).ok());
   refused({dirs[0], other, dirs[2]}, "is not a shard of the same bake as");
   refused({dirs[0], other, dirs[2]}, "\"config\" differs");
   // Another shard count.
   const fs::path half = root.path / "half";
-  ASSERT_TRUE(bake::bake(small_config(), "cpu", params(half, bake::Shard{1, 2})).ok());
+  ASSERT_TRUE(bake::bake(shard_small_config(), "cpu", params(half, bake::Shard{1, 2})).ok());
   refused({dirs[0], half, dirs[2]}, "is shard 1 of 2 but");
   // A one-machine bake is no shard.
   const fs::path whole = root.path / "whole";
-  ASSERT_TRUE(bake::bake(small_config(), "cpu", params(whole)).ok());
+  ASSERT_TRUE(bake::bake(shard_small_config(), "cpu", params(whole)).ok());
   refused({whole}, "it has no \"shard\" entry");
   // An incomplete shard, a missing file, a manifest naming a file outside its folder, no manifest.
   const std::string manifest = read_bytes(dirs[1] / "manifest.json");
@@ -224,7 +224,7 @@ TEST(BakeShards, TheMergeHoldsItsFolderAsABakeDoes) {
   const std::vector<fs::path> dirs = bake_shards(root.path, 2);
   const fs::path out = root.path / "out";
   // An old bake in the folder: a locked folder fails at once and leaves it alone.
-  ASSERT_TRUE(bake::bake(small_config(9), "cpu", params(out)).ok());
+  ASSERT_TRUE(bake::bake(shard_small_config(9), "cpu", params(out)).ok());
   const std::string old_manifest = read_bytes(out / "manifest.json");
   const fs::path lock = out / bake::kLockFileName;
   const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);

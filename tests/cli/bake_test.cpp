@@ -24,7 +24,7 @@ using ocean_test::line_count;
 
 namespace fs = std::filesystem;
 
-int run(const std::string& args, std::string* err = nullptr) {
+int bake_run(const std::string& args, std::string* err = nullptr) {
   const ocean_test::CliRun r = ocean_test::run_cli("bake " + args);
   if (err != nullptr) *err = r.err;
   return r.exit_code;
@@ -43,7 +43,7 @@ TEST(Bake, NpyMatchesTheSimulatorBitForBit) {
   TempDir dir("bake_npy_");
   const std::string flags =
       "--wind-speed 12 --fetch 40000 --resolution 32 --cascades 200,47 --seed 3 --choppiness 0.7";
-  ASSERT_EQ(run(flags + " --out " + dir.path.string() + " --frames 2 --fps 10 --time 1.5"), 0);
+  ASSERT_EQ(bake_run(flags + " --out " + dir.path.string() + " --frames 2 --fps 10 --time 1.5"), 0);
   ocean::SimulationConfig c;
   c.sea.wind_sea.spectrum = {
       .model = ocean::SpectrumModel::jonswap, .wind_speed_mps = 12, .fetch_m = 4e4};
@@ -79,7 +79,7 @@ TEST(Bake, NpyMatchesTheSimulatorBitForBit) {
 TEST(Bake, LoopWritesOnePeriodAndEveryFormatReadsBack) {
   TempDir dir("bake_loop_");
   ASSERT_EQ(
-      run("--resolution 16 --cascades 50 --loop-period 6 --loop --fps 1 --format png --format exr "
+      bake_run("--resolution 16 --cascades 50 --loop-period 6 --loop --fps 1 --format png --format exr "
           "--out " +
           dir.path.string()),
       0);
@@ -100,7 +100,7 @@ TEST(Bake, LoopWritesOnePeriodAndEveryFormatReadsBack) {
 TEST(Bake, ContactSheetShowsEachCascadesMapsUnderLabels) {
   TempDir dir("bake_sheet_");
   const fs::path sheet = dir.path / "sheet.png";
-  ASSERT_EQ(run("--resolution 64 --cascades 100,30 --out " + (dir.path / "maps").string() +
+  ASSERT_EQ(bake_run("--resolution 64 --cascades 100,30 --out " + (dir.path / "maps").string() +
                 " --contact-sheet " + sheet.string()),
             0);
   const auto png = ocean::io::read_png(sheet);
@@ -126,7 +126,7 @@ TEST(Bake, ContactSheetShowsEachCascadesMapsUnderLabels) {
   // An unwritable sheet: exit 1 with one line, nothing left at that path.
   std::string err;
   const fs::path missing = dir.path / "missing" / "sheet.png";
-  EXPECT_EQ(run("--resolution 16 --cascades 50 --out " + (dir.path / "maps2").string() +
+  EXPECT_EQ(bake_run("--resolution 16 --cascades 50 --out " + (dir.path / "maps2").string() +
                     " --contact-sheet " + missing.string(),
                 &err),
             1);
@@ -142,7 +142,7 @@ TEST(Bake, PresetAndOverrides) {
   const fs::path preset = dir.path / "p.json";
   std::ofstream(preset)
       << R"({"resolution": 16, "cascades_m": [40.0], "sea": {"wind_sea": {"wind_speed_mps": 7}}})";
-  ASSERT_EQ(run("--preset " + preset.string() +
+  ASSERT_EQ(bake_run("--preset " + preset.string() +
                 " --set choppiness=0.5 --set normals=analytic --out " + (dir.path / "o").string()),
             0);
   std::ifstream manifest(dir.path / "o" / "manifest.json");
@@ -189,7 +189,7 @@ TEST(Bake, BadInputFailsCleanly) {
   };
   for (const Case& c : cases) {
     std::string err;
-    EXPECT_EQ(run(c.args, &err), c.code) << c.args << ": " << err;
+    EXPECT_EQ(bake_run(c.args, &err), c.code) << c.args << ": " << err;
     EXPECT_NE(err.find(c.says), std::string::npos) << c.args << " said: " << err;
     EXPECT_FALSE(fs::exists(out)) << c.args;  // nothing written, not even a folder
   }

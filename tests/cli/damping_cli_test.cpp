@@ -21,11 +21,11 @@ fs::path constant_npy(const fs::path& dir, const std::string& name, float value)
   return dir / name;
 }
 
-constexpr const char* kSea =
+constexpr const char* kDampedSea =
     "query --resolution 32 --cascades 200,47 --seed 4 --time 2 --json --at '1,2;10,-20;-30,40'";
 
-std::vector<double> heights(const std::string& extra) {
-  const auto r = ocean_test::run_cli(std::string(kSea) + extra);
+std::vector<double> damped_heights(const std::string& extra) {
+  const auto r = ocean_test::run_cli(std::string(kDampedSea) + extra);
   EXPECT_EQ(r.exit_code, 0) << r.err;
   if (r.exit_code != 0) return {};
   return nlohmann::json::parse(r.out)["height_m"].get<std::vector<double>>();
@@ -34,24 +34,24 @@ std::vector<double> heights(const std::string& extra) {
 TEST(DampingCli, MaskAndBathymetryActWhereTheySay) {
   ocean_test::ScratchDir dir("damping_cli_");
   const auto at = [](const fs::path& file) { return " " + file.string() + ",-50,-50,100"; };
-  const std::vector<double> bare = heights("");
+  const std::vector<double> bare = damped_heights("");
   ASSERT_EQ(bare.size(), 3u);
-  EXPECT_EQ(heights(" --damping-mask" + at(constant_npy(dir.path, "one.npy", 1.0f))), bare);
-  EXPECT_EQ(heights(" --bathymetry" + at(constant_npy(dir.path, "deep.npy", 1e5f))), bare);
+  EXPECT_EQ(damped_heights(" --damping-mask" + at(constant_npy(dir.path, "one.npy", 1.0f))), bare);
+  EXPECT_EQ(damped_heights(" --bathymetry" + at(constant_npy(dir.path, "deep.npy", 1e5f))), bare);
   const std::vector<double> low =
-      heights(" --damping-mask" + at(constant_npy(dir.path, "zero.npy", 0.0f)));
+      damped_heights(" --damping-mask" + at(constant_npy(dir.path, "zero.npy", 0.0f)));
   ASSERT_EQ(low.size(), 3u);
   for (std::size_t i = 0; i < 3; ++i) EXPECT_NE(low[i], bare[i]) << i;
   // Depth 0: every band has weight 0 (Φ = 0), the surface is flat.
-  EXPECT_EQ(heights(" --bathymetry" + at(constant_npy(dir.path, "dry.npy", 0.0f))),
+  EXPECT_EQ(damped_heights(" --bathymetry" + at(constant_npy(dir.path, "dry.npy", 0.0f))),
             (std::vector<double>{0.0, 0.0, 0.0}));
   // Outside the maps nothing changes.
-  EXPECT_EQ(heights(" --damping-mask " + (dir.path / "zero.npy").string() + ",500,500,10"), bare);
+  EXPECT_EQ(damped_heights(" --damping-mask " + (dir.path / "zero.npy").string() + ",500,500,10"), bare);
 }
 
 TEST(DampingCli, BadInputIsOneLine) {
   ocean_test::ScratchDir dir("damping_cli_bad_");
-  const std::string sea = kSea;
+  const std::string sea = kDampedSea;
   const auto missing = ocean_test::run_cli(sea + " --bathymetry /nonexistent/d.npy,0,0,10");
   EXPECT_EQ(missing.exit_code, 1);  // an unreadable file is a runtime failure
   EXPECT_TRUE(missing.out.empty());

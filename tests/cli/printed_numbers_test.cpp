@@ -13,7 +13,7 @@ namespace {
 
 using ocean_test::CliRun;
 using ocean_test::expect_usage_error;
-const auto run = ocean_test::run_cli;
+const auto run_printed = ocean_test::run_cli;
 
 // Every number in a JSON document is finite, and nothing is null (how JSON writes nan and inf).
 void expect_finite(const nlohmann::json& j, const std::string& where) {
@@ -44,10 +44,10 @@ const char* const kDispersionRuns[] = {
 
 TEST(CliPrintedNumbers, DispersionAtTheEndsOfItsDomainPrintsFiniteNumbers) {
   for (const char* args : kDispersionRuns) {
-    const CliRun json = run(std::string("dispersion --json ") + args);
+    const CliRun json = run_printed(std::string("dispersion --json ") + args);
     ASSERT_EQ(json.exit_code, 0) << args << ": " << json.err;
     expect_finite(nlohmann::json::parse(json.out), args);
-    const CliRun table = run(std::string("dispersion ") + args);
+    const CliRun table = run_printed(std::string("dispersion ") + args);
     ASSERT_EQ(table.exit_code, 0) << args << ": " << table.err;
     expect_no_nan_or_inf(table.out, args);
   }
@@ -55,7 +55,7 @@ TEST(CliPrintedNumbers, DispersionAtTheEndsOfItsDomainPrintsFiniteNumbers) {
 
 // ω = 1e20 rad/s in sea water is a capillary wave, ω² = T·k³ to 1e-25 (Lamb 1932, §267).
 TEST(CliPrintedNumbers, CapillaryInverseIsConvergedFarOut) {
-  const CliRun r = run("dispersion --capillary --omega 1e20 --json");
+  const CliRun r = run_printed("dispersion --capillary --omega 1e20 --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const double k = std::cbrt(1e40 / (0.0728 / 1025.0));
@@ -82,12 +82,12 @@ TEST(CliPrintedNumbers, SpectrumAtExtremeFrequenciesIsZeroNotNan) {
         "--model tma --hs 2 --tp 8 --depth 1e300 --depth-factor thompson-vincent",
         "--model phillips --wind-speed 100 --phillips-amplitude 1e6",
         "--model phillips --wind-speed 10 --cutoff-length 0.5"}) {
-    const CliRun json = run(std::string("spectrum --json ") + sea + omega);
+    const CliRun json = run_printed(std::string("spectrum --json ") + sea + omega);
     ASSERT_EQ(json.exit_code, 0) << sea << ": " << json.err;
     const auto j = nlohmann::json::parse(json.out);
     expect_finite(j, sea);
     for (const auto& s : j["S"]) EXPECT_EQ(s.get<double>(), 0.0) << sea;
-    const CliRun table = run(std::string("spectrum ") + sea + omega);
+    const CliRun table = run_printed(std::string("spectrum ") + sea + omega);
     ASSERT_EQ(table.exit_code, 0) << sea << ": " << table.err;
     expect_no_nan_or_inf(table.out, sea);
   }

@@ -32,14 +32,14 @@ fs::path scratch(const std::string& name) {
   return dir / name;
 }
 
-const std::string kSmall =
+const std::string kRenderSmall =
     " --width 80 --height 45 --quality low --resolution 64 --warmup 0 --validation";
 
 TEST(RenderCli, WritesAPngOfTheRequestedSize) {
   if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const fs::path out = scratch("a.png");
   const ocean_test::CliRun r =
-      ocean_test::run_cli("render --out " + out.string() + kSmall + " --json");
+      ocean_test::run_cli("render --out " + out.string() + kRenderSmall + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["patches"].get<int>(), 0);
@@ -84,7 +84,7 @@ TEST(RenderCli, PresetFarFieldRangeAppliesUnlessTheFlagOverrides) {
 TEST(RenderCli, WritesLinearHdrExrAndSequences) {
   if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const fs::path exr = scratch("b.exr");
-  ocean_test::CliRun r = ocean_test::run_cli("render --out " + exr.string() + kSmall);
+  ocean_test::CliRun r = ocean_test::run_cli("render --out " + exr.string() + kRenderSmall);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto image = ocean::io::read_exr(exr);
   ASSERT_TRUE(image.ok()) << image.status().message();
@@ -99,7 +99,7 @@ TEST(RenderCli, WritesLinearHdrExrAndSequences) {
   EXPECT_GT(max_value, 0.0f);
 
   const fs::path seq = scratch("seq.png");
-  r = ocean_test::run_cli("render --out " + seq.string() + kSmall + " --frames 3 --fps 10");
+  r = ocean_test::run_cli("render --out " + seq.string() + kRenderSmall + " --frames 3 --fps 10");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   for (int f = 0; f < 3; ++f) {
     char name[32];
@@ -210,7 +210,7 @@ TEST(RenderCli, Mp4NeedsFfmpegOrIsWritten) {
   const fs::path out = scratch("c.mp4");
   const bool ffmpeg = std::system("command -v ffmpeg >/dev/null 2>&1") == 0;
   const ocean_test::CliRun r =
-      ocean_test::run_cli("render --out " + out.string() + kSmall + " --frames 2");
+      ocean_test::run_cli("render --out " + out.string() + kRenderSmall + " --frames 2");
   if (!ffmpeg) {
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_NE(r.err.find("ffmpeg"), std::string::npos) << r.err;
@@ -246,7 +246,7 @@ TEST(RenderCli, TessellatedMeshRendersOrIsRefusedInOneLine) {
   if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const fs::path out = scratch("tessellated.png");
   const ocean_test::CliRun r =
-      ocean_test::run_cli("render --mesh tessellation --out " + out.string() + kSmall + " --json");
+      ocean_test::run_cli("render --mesh tessellation --out " + out.string() + kRenderSmall + " --json");
   if (r.exit_code != 0) {
     EXPECT_NE(r.err.find("lacks tessellation shaders"), std::string::npos) << r.err;
     EXPECT_EQ(line_count(r.err), 1) << r.err;

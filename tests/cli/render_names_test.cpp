@@ -24,7 +24,7 @@ using ocean_test::line_count;
 
 namespace fs = std::filesystem;
 
-bool have_vulkan() { return ocean::vk::list_devices().ok(); }
+bool names_have_vulkan() { return ocean::vk::list_devices().ok(); }
 
 // `ocean render` of a small picture (64x48 unless told) in `dir`, with `more` flags.
 ocean_test::CliRun render_in(const fs::path& dir, const std::vector<std::string>& more,
@@ -44,7 +44,7 @@ struct Written {
 };
 
 TEST(RenderNames, NamesAreWrittenExactly) {
-  if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
+  if (!names_have_vulkan()) GTEST_SKIP() << "no Vulkan device";
   for (const Written& c : std::vector<Written>{
            {"it's.png", "2", {"it's_00000.png", "it's_00001.png"}},
            {"say \"hi\".png", "1", {"say \"hi\".png"}},
@@ -92,7 +92,7 @@ bool starts_with_ftyp(const fs::path& file) {
 }
 
 TEST(RenderNames, Mp4IsWrittenUnderItsNameThroughFfmpegWithNoShell) {
-  if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
+  if (!names_have_vulkan()) GTEST_SKIP() << "no Vulkan device";
   if (!ffmpeg_installed()) GTEST_SKIP() << "ffmpeg is not installed (./dev installs it)";
   ocean_test::ScratchDir dir("ocean_render_names_mp4_");
   const std::string name = "it's $(touch injected) \"q\" `touch b`; a:b 100%%.mp4";
@@ -131,7 +131,7 @@ void fake_ffmpeg(const fs::path& bin, const std::string& body) {
 }
 
 TEST(RenderNames, FailingFfmpegIsOneLineAndLeavesNothing) {
-  if (!have_vulkan()) GTEST_SKIP() << "no Vulkan device";
+  if (!names_have_vulkan()) GTEST_SKIP() << "no Vulkan device";
   // It exits at once, unread: the tool's writes meet a closed pipe (EPIPE, not SIGPIPE: a frame of
   // 160x120 RGBA is more than a pipe holds). Then one that reads everything and fails.
   for (const std::string body :

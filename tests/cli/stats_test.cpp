@@ -14,11 +14,11 @@ constexpr double kG = 9.81;
 // --- The command line --------------------------------------------------------------------------
 
 using ocean_test::CliRun;
-const auto run = ocean_test::run_cli;
+const auto run_stats = ocean_test::run_cli;
 
 TEST(CliStats, JsonHasEveryKey) {
   const CliRun r =
-      run("stats --json --model pierson-moskowitz --wind-speed 8 --patch-size 800 --resolution 64 "
+      run_stats("stats --json --model pierson-moskowitz --wind-speed 8 --patch-size 800 --resolution 64 "
           "--seeds 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -57,7 +57,7 @@ TEST(CliStats, JsonHasEveryKey) {
 TEST(CliStats, NullsAndDefaults) {
   // Hs/Tp sea: no wind speed, no Cox–Munk; no loop: no loop error. Default patch 1000 m.
   const CliRun r =
-      run("stats --json --model jonswap --hs 2 --tp 8 --resolution 32 --seeds 1 --loop-period 0 "
+      run_stats("stats --json --model jonswap --hs 2 --tp 8 --resolution 32 --seeds 1 --loop-period 0 "
           "--time 2.5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
@@ -66,22 +66,22 @@ TEST(CliStats, NullsAndDefaults) {
   EXPECT_EQ(j["patch_size_m"].get<double>(), 1000.0);
   EXPECT_EQ(j["time_s"].get<double>(), 2.5);
   // --cascades are used when --patch-size is not given; stats describe cascade 0.
-  const CliRun cascades = run("stats --json --cascades 300,70 --resolution 32 --seeds 1");
+  const CliRun cascades = run_stats("stats --json --cascades 300,70 --resolution 32 --seeds 1");
   ASSERT_EQ(cascades.exit_code, 0) << cascades.err;
   EXPECT_EQ(nlohmann::json::parse(cascades.out)["patch_size_m"].get<double>(), 300.0);
   // Without --json: a table with a header and one row per key.
-  const CliRun table = run("stats --resolution 32 --seeds 1");
+  const CliRun table = run_stats("stats --resolution 32 --seeds 1");
   ASSERT_EQ(table.exit_code, 0) << table.err;
   EXPECT_NE(table.out.find("hs_measured_m"), std::string::npos);
   EXPECT_NE(table.out.find("unit"), std::string::npos);
 }
 
 TEST(CliStats, BadInputExitsTwoWithOneLineAndNoStdout) {
-  struct Case {
+  struct StatsCase {
     const char* args;
     const char* mentions;
   };
-  const Case cases[] = {
+  const StatsCase cases[] = {
       {"stats --seeds 0", "--seeds = 0"},
       {"stats --seeds=-3", "--seeds = -3"},
       {"stats --seeds 2.5", "--seeds = 2.5"},
@@ -95,7 +95,7 @@ TEST(CliStats, BadInputExitsTwoWithOneLineAndNoStdout) {
       {"stats --model pierson-moskowitz --wind-speed=-3", "--wind-speed = -3"},
       {"stats --no-such-flag", "no-such-flag"},
   };
-  for (const Case& c : cases) ocean_test::expect_usage_error(c.args, c.mentions);
+  for (const StatsCase& c : cases) ocean_test::expect_usage_error(c.args, c.mentions);
 }
 
 }  // namespace

@@ -20,23 +20,23 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
+fs::path stereo_scratch(const std::string& name) {
   const fs::path dir = fs::temp_directory_path() / ("ocean_stereo_cli_" + std::to_string(getpid()));
   fs::create_directories(dir);
   return dir / name;
 }
 
-const std::string kSmall =
+const std::string kStereoSmall =
     " --width 64 --height 40 --quality low --resolution 64 --warmup 0 --validation";
 
 TEST(StereoCli, WritesBothEyesSideBySide) {
   if (!ocean::vk::list_devices().ok()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
-  const fs::path out = scratch("stereo.png");
+  const fs::path out = stereo_scratch("stereo.png");
   // Looking down at the water 3 m below, the eyes 0.5 m apart see it shifted.
   const ocean_test::CliRun r = ocean_test::run_cli(
       "render --stereo --ipd 0.5 --camera 0,3,0 "
       "--target 10,-1,0 --out " +
-      out.string() + kSmall);
+      out.string() + kStereoSmall);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto png = ocean::io::read_png(out);
   ASSERT_TRUE(png.ok()) << png.status().message();
@@ -54,9 +54,9 @@ TEST(StereoCli, WritesBothEyesSideBySide) {
 
 TEST(StereoCli, WritesMotionVectors) {
   if (!ocean::vk::list_devices().ok()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
-  const fs::path out = scratch("colour.png"), motion = scratch("motion.png");
+  const fs::path out = stereo_scratch("colour.png"), motion = stereo_scratch("motion.png");
   const ocean_test::CliRun r = ocean_test::run_cli("render --motion-vectors " + motion.string() +
-                                                   " --out " + out.string() + kSmall);
+                                                   " --out " + out.string() + kStereoSmall);
   ASSERT_EQ(r.exit_code, 0) << r.err;
   auto png = ocean::io::read_png(motion);
   ASSERT_TRUE(png.ok()) << png.status().message();
@@ -74,12 +74,12 @@ TEST(StereoCli, WritesMotionVectors) {
 }
 
 TEST(StereoCli, BadInputIsOneLine) {
-  const fs::path out = scratch("bad.png");
+  const fs::path out = stereo_scratch("bad.png");
   for (const char* flags : {"--stereo --ipd -0.064", "--stereo --ipd nan", "--stereo --ipd 2",
                             "--stereo --ipd x", "--ipd 0.064", "--stereo --contact-sheet sheet.png",
                             "--stereo --motion-vectors m.png", "--motion-vectors m.jpg"}) {
     const ocean_test::CliRun r =
-        ocean_test::run_cli(std::string("render ") + flags + " --out " + out.string() + kSmall);
+        ocean_test::run_cli(std::string("render ") + flags + " --out " + out.string() + kStereoSmall);
     EXPECT_NE(r.exit_code, 0) << flags;
     EXPECT_EQ(ocean_test::line_count(r.err), 1) << flags << ": " << r.err;
     EXPECT_EQ(r.err.rfind("ocean: error: ", 0), 0u) << flags << ": " << r.err;

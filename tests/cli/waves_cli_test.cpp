@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 constexpr double kPi = std::numbers::pi;
-constexpr double kG = 9.81;
+constexpr double kWavesG = 9.81;
 
 // A baked layer of one wake heading +x from (x_boat, 0), as heights h[row][col].
 struct Layer {
@@ -87,7 +87,7 @@ double fitted_angle_deg(const std::vector<std::array<double, 2>>& p) {
 // Fr = U/√(gL) = 0.2: Kelvin's cusp half-angle asin(1/3) = 19.47° and transverse waves of
 // wavelength 2πU²/g on the track (Kelvin 1887; Lighthill, Waves in Fluids, §3.10).
 TEST(WavesCli, KelvinCuspAngleAndTransverseWavelengthAtLowFroude) {
-  const double L = 20.0, U = 0.2 * std::sqrt(kG * L), lambda = 2 * kPi * U * U / kG;
+  const double L = 20.0, U = 0.2 * std::sqrt(kWavesG * L), lambda = 2 * kPi * U * U / kWavesG;
   char wake[96];
   std::snprintf(wake, sizeof wake, "180,0,0,%.17g,%g", U, L);
   const Layer l = bake_wake(wake, -10.0, -100.0, 200.0, 1024);
@@ -119,7 +119,7 @@ TEST(WavesCli, KelvinCuspAngleAndTransverseWavelengthAtLowFroude) {
 // measurements about it and the dependence of its prefactor on the pressure profile (Darmon,
 // Benzaquen & Raphaël 2014); the angle must also be clearly below Kelvin's.
 TEST(WavesCli, WakeNarrowsAtHighFroude) {
-  const double L = 20.0, U = std::sqrt(kG * L), lambda = 2 * kPi * U * U / kG;
+  const double L = 20.0, U = std::sqrt(kWavesG * L), lambda = 2 * kPi * U * U / kWavesG;
   char wake[96];
   std::snprintf(wake, sizeof wake, "900,0,0,%.17g,%g", U, L);
   const Layer l = bake_wake(wake, -100.0, -500.0, 1000.0, 1024);

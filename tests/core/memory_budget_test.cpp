@@ -12,14 +12,14 @@
 
 namespace {
 
-constexpr std::uint64_t kMiB = std::uint64_t{1} << 20;
+constexpr std::uint64_t kBudgetMiB = std::uint64_t{1} << 20;
 
 TEST(MemoryBudget, FormatsBytesInBinaryUnits) {
   EXPECT_EQ(ocean::format_bytes(0), "0 bytes");
   EXPECT_EQ(ocean::format_bytes(1023), "1023 bytes");
   EXPECT_EQ(ocean::format_bytes(1024), "1.0 KiB");
-  EXPECT_EQ(ocean::format_bytes(512 * kMiB), "512 MiB");
-  EXPECT_EQ(ocean::format_bytes(3 * 1024 * kMiB + 800 * kMiB), "3.8 GiB");
+  EXPECT_EQ(ocean::format_bytes(512 * kBudgetMiB), "512 MiB");
+  EXPECT_EQ(ocean::format_bytes(3 * 1024 * kBudgetMiB + 800 * kBudgetMiB), "3.8 GiB");
 }
 
 TEST(MemoryBudget, AtMostThePhysicalMemory) {
@@ -49,12 +49,12 @@ int budget_under_a_limit() {
   if (statm == nullptr || std::fscanf(statm, "%llu", &pages) != 1) return 11;
   std::fclose(statm);
   const std::uint64_t mapped = pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGE_SIZE));
-  const rlimit limit{.rlim_cur = mapped + 256 * kMiB, .rlim_max = RLIM_INFINITY};
+  const rlimit limit{.rlim_cur = mapped + 256 * kBudgetMiB, .rlim_max = RLIM_INFINITY};
   if (::setrlimit(RLIMIT_AS, &limit) != 0) return 12;
   const ocean::MemoryBudget budget = ocean::memory_budget();
   if (!budget.address_space_limited) return 13;
-  if (budget.bytes > 256 * kMiB || budget.bytes < 128 * kMiB) return 14;
-  const ocean::Status s = ocean::require_memory("x", 512 * kMiB);
+  if (budget.bytes > 256 * kBudgetMiB || budget.bytes < 128 * kBudgetMiB) return 14;
+  const ocean::Status s = ocean::require_memory("x", 512 * kBudgetMiB);
   if (s.message().find("the address-space limit (ulimit -v) leaves") == std::string::npos)
     return 15;
   return 0;

@@ -25,7 +25,7 @@ using test::TempDir;
 using test::write_file;
 namespace fs = std::filesystem;
 
-void expect_error(const Status& s, ErrorCode code, const std::string& needle) {
+void expect_image_error(const Status& s, ErrorCode code, const std::string& needle) {
   EXPECT_EQ(s.code(), code) << s.message();
   EXPECT_NE(s.message().find(needle), std::string::npos) << s.message();
 }
@@ -98,25 +98,25 @@ TEST(Exr, RejectsBadInputsAndWritesNothing) {
   const fs::path p = dir.path() / "bad.exr";
   const std::vector<float> v(16, 1.0f);
   const ExrChannel one[] = {{"R", v.data()}};
-  expect_error(write_exr(p, 0, 4, one, ExrPixelType::half), ErrorCode::invalid_argument, "0x4");
-  expect_error(write_exr(p, 16385, 1, one, ExrPixelType::half), ErrorCode::invalid_argument,
+  expect_image_error(write_exr(p, 0, 4, one, ExrPixelType::half), ErrorCode::invalid_argument, "0x4");
+  expect_image_error(write_exr(p, 16385, 1, one, ExrPixelType::half), ErrorCode::invalid_argument,
                "16384");
-  expect_error(write_exr(p, 4, 4, {}, ExrPixelType::half), ErrorCode::invalid_argument,
+  expect_image_error(write_exr(p, 4, 4, {}, ExrPixelType::half), ErrorCode::invalid_argument,
                "0 channels");
   const ExrChannel null_data[] = {{"R", nullptr}};
-  expect_error(write_exr(p, 4, 4, null_data, ExrPixelType::half), ErrorCode::invalid_argument,
+  expect_image_error(write_exr(p, 4, 4, null_data, ExrPixelType::half), ErrorCode::invalid_argument,
                "null");
   const ExrChannel dup[] = {{"R", v.data()}, {"R", v.data()}};
-  expect_error(write_exr(p, 4, 4, dup, ExrPixelType::half), ErrorCode::invalid_argument, "twice");
+  expect_image_error(write_exr(p, 4, 4, dup, ExrPixelType::half), ErrorCode::invalid_argument, "twice");
   const ExrChannel unnamed[] = {{"", v.data()}};
-  expect_error(write_exr(p, 4, 4, unnamed, ExrPixelType::half), ErrorCode::invalid_argument,
+  expect_image_error(write_exr(p, 4, 4, unnamed, ExrPixelType::half), ErrorCode::invalid_argument,
                "name");
   const ExrChannel long_name[] = {{std::string(256, 'x'), v.data()}};
-  expect_error(write_exr(p, 4, 4, long_name, ExrPixelType::float32), ErrorCode::invalid_argument,
+  expect_image_error(write_exr(p, 4, 4, long_name, ExrPixelType::float32), ErrorCode::invalid_argument,
                "255");
   EXPECT_TRUE(dir.entries().empty());
   const fs::path missing = dir.path() / "no" / "x.exr";
-  expect_error(write_exr(missing, 4, 4, one, ExrPixelType::half), ErrorCode::io_error,
+  expect_image_error(write_exr(missing, 4, 4, one, ExrPixelType::half), ErrorCode::io_error,
                cat("cannot write '", missing.string(), "': No such file or directory"));
   EXPECT_TRUE(dir.entries().empty());
   // A directory in the way: io_error, no temporary left behind.
@@ -128,12 +128,12 @@ TEST(Exr, RejectsBadInputsAndWritesNothing) {
 
 TEST(Exr, ReaderRejectsNonExrFiles) {
   TempDir dir;
-  expect_error(read_exr(dir.path() / "none.exr").status(), ErrorCode::io_error,
+  expect_image_error(read_exr(dir.path() / "none.exr").status(), ErrorCode::io_error,
                "No such file or directory");
   write_file(dir.path() / "t.exr", "plain text, not an image");
-  expect_error(read_exr(dir.path() / "t.exr").status(), ErrorCode::io_error, "wrong magic");
+  expect_image_error(read_exr(dir.path() / "t.exr").status(), ErrorCode::io_error, "wrong magic");
   write_file(dir.path() / "m.exr", std::string("\x76\x2f\x31\x01\x02\0\0\0", 8));
-  expect_error(read_exr(dir.path() / "m.exr").status(), ErrorCode::io_error, "m.exr");
+  expect_image_error(read_exr(dir.path() / "m.exr").status(), ErrorCode::io_error, "m.exr");
 }
 
 // ---- PNG --------------------------------------------------------------------------------------
@@ -183,21 +183,21 @@ TEST(Png, RejectsBadInputsAndNonPngFiles) {
   TempDir dir;
   const fs::path p = dir.path() / "x.png";
   const std::uint8_t px[64] = {};
-  expect_error(write_png8(p, 4, 4, 0, px), ErrorCode::invalid_argument, "channels = 0");
-  expect_error(write_png8(p, 4, 4, 5, px), ErrorCode::invalid_argument, "channels = 5");
-  expect_error(write_png8(p, 0, 4, 1, px), ErrorCode::invalid_argument, "0x4");
-  expect_error(write_png8(p, 4, 4, 1, nullptr), ErrorCode::invalid_argument, "null");
-  expect_error(write_png16_gray(p, 4, -1, nullptr), ErrorCode::invalid_argument, "4x-1");
+  expect_image_error(write_png8(p, 4, 4, 0, px), ErrorCode::invalid_argument, "channels = 0");
+  expect_image_error(write_png8(p, 4, 4, 5, px), ErrorCode::invalid_argument, "channels = 5");
+  expect_image_error(write_png8(p, 0, 4, 1, px), ErrorCode::invalid_argument, "0x4");
+  expect_image_error(write_png8(p, 4, 4, 1, nullptr), ErrorCode::invalid_argument, "null");
+  expect_image_error(write_png16_gray(p, 4, -1, nullptr), ErrorCode::invalid_argument, "4x-1");
   EXPECT_TRUE(dir.entries().empty());
   const fs::path missing = dir.path() / "no" / "x.png";
-  expect_error(write_png8(missing, 4, 4, 1, px), ErrorCode::io_error,
+  expect_image_error(write_png8(missing, 4, 4, 1, px), ErrorCode::io_error,
                cat("cannot write '", missing.string(), "': No such file or directory"));
   EXPECT_TRUE(dir.entries().empty());
   write_file(p, "GIF89a not a png at all");
-  expect_error(read_png(p).status(), ErrorCode::io_error, cat("cannot read '", p.string(), "'"));
-  expect_error(read_png(dir.path() / "none.png").status(), ErrorCode::io_error,
+  expect_image_error(read_png(p).status(), ErrorCode::io_error, cat("cannot read '", p.string(), "'"));
+  expect_image_error(read_png(dir.path() / "none.png").status(), ErrorCode::io_error,
                "No such file or directory");
-  expect_error(read_png(dir.path()).status(), ErrorCode::io_error, "cannot read");
+  expect_image_error(read_png(dir.path()).status(), ErrorCode::io_error, "cannot read");
 }
 
 // A file size limit makes writes fail with EFBIG midway (including the writes OpenEXR performs
@@ -226,7 +226,7 @@ TEST(WriteErrors, FailingWritesAreReportedAndKeepTheOldFile) {
     ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &small), 0);
     const Status s = write(dir.path() / name);
     ASSERT_EQ(::setrlimit(RLIMIT_FSIZE, &old_limit), 0);
-    expect_error(s, ErrorCode::io_error, cat("cannot write '", (dir.path() / name).string(), "'"));
+    expect_image_error(s, ErrorCode::io_error, cat("cannot write '", (dir.path() / name).string(), "'"));
     EXPECT_NE(s.message().find("File too large"), std::string::npos) << s.message();
     EXPECT_EQ(read_file(dir.path() / name), "old contents");
   }

@@ -239,3 +239,4 @@ TEST(FarFieldRender, WhitecapsSurviveBeyondTheNearField) {
 }
 
 }  // namespace
+#undef REQUIRE_DEVICE

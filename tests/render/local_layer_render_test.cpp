@@ -22,7 +22,7 @@ using ocean::render::View;
 
 TEST(LocalLayerRender, AKelvinWakeShowsInsideItsWedgeOnly) {
   if (ocean::render::testing::graphics_context() == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
-  constexpr int kSide = 256;
+  constexpr int kLayerSide = 256;
   constexpr double kTime = 20.0;
   // A 40 m hull at 6 m/s heading +x, at the origin at t = 20 s; the layer covers 400 m behind.
   ocean::waves::LayerParams p;
@@ -39,7 +39,7 @@ TEST(LocalLayerRender, AKelvinWakeShowsInsideItsWedgeOnly) {
   layer.value()->evaluate(kTime, frame);
 
   auto scene = Scene::make(
-      {.config = ocean::render::testing::small_config(), .width = kSide, .height = kSide});
+      {.config = ocean::render::testing::small_config(), .width = kLayerSide, .height = kLayerSide});
   ASSERT_TRUE(scene.ok()) << scene.status().message();
   ASSERT_TRUE(scene.value()->warm_up(kTime, 2.0).ok());
   ocean::render::Renderer& r = scene.value()->renderer();
@@ -75,10 +75,10 @@ TEST(LocalLayerRender, AKelvinWakeShowsInsideItsWedgeOnly) {
       const auto& m = vp.m;  // column-major: clip_i = Σ_j m[4j + i]·v_j, v = (x, 0, z, 1)
       const double cx = m[0] * x + m[8] * z + m[12], cy = m[1] * x + m[9] * z + m[13];
       const double cw = m[3] * x + m[11] * z + m[15];
-      const int col = static_cast<int>((cx / cw + 1.0) * 0.5 * kSide);
-      const int row = static_cast<int>((1.0 - cy / cw) * 0.5 * kSide);
-      if (col < 0 || col >= kSide || row < 0 || row >= kSide) continue;
-      const std::size_t i = (static_cast<std::size_t>(row) * kSide + col) * 4 + 1;
+      const int col = static_cast<int>((cx / cw + 1.0) * 0.5 * kLayerSide);
+      const int row = static_cast<int>((1.0 - cy / cw) * 0.5 * kLayerSide);
+      if (col < 0 || col >= kLayerSide || row < 0 || row >= kLayerSide) continue;
+      const std::size_t i = (static_cast<std::size_t>(row) * kLayerSide + col) * 4 + 1;
       const double d = std::abs(int(with[i]) - int(without[i]));
       const double angle = std::atan2(std::abs(zeta), s) * 180.0 / std::numbers::pi;
       if (angle < 22.0) inside += d, ++n_in;

@@ -228,3 +228,4 @@ TEST(MotionVectors, SingleGerstnerWaveAndAMovingCamera) {
 }
 
 }  // namespace
+#undef REQUIRE_RIG

@@ -139,3 +139,4 @@ TEST(PlanetRender, TheSameSeaFarFromTheOriginGivesTheSamePicture) {
 }
 
 }  // namespace
+#undef REQUIRE_RIG

@@ -18,7 +18,7 @@ namespace {
 
 using namespace ocean::render;
 namespace helpers = ocean::render::testing;
-constexpr int kW = 128, kH = 96;
+constexpr int kReflW = 128, kReflH = 96;
 constexpr double kHalf = 2.0;                             // the box's half side, m
 constexpr std::array<double, 3> kCentre{25.0, 4.0, 0.0};  // 2 to 6 m above the sea
 
@@ -39,14 +39,14 @@ TEST(Reflection, ABoxAppearsWhereTheMirrorPutsIt) {
   const ocean::SimulationConfig config = helpers::small_config();
   auto sim = ocean::make_simulator(config).value();
   sim->step(1.0);
-  auto renderer = Renderer::make(ctx, {.width = kW, .height = kH}).value();
+  auto renderer = Renderer::make(ctx, {.width = kReflW, .height = kReflH}).value();
   ASSERT_TRUE(renderer->configure(config).ok());
   ASSERT_TRUE(renderer->upload(sim->frame()).ok());
   renderer->set_calm(true);  // no layer either: the sea is the mirror y = 0
   const auto hull = ocean::bodies::box_hull({2 * kHalf, 2 * kHalf, 2 * kHalf}).value();
   const Mesh box = flat_mesh(hull.vertices, hull.triangles, {.base_colour = {0.9, 0.2, 0.02}});
   ASSERT_TRUE(renderer->set_meshes(std::span(&box, 1)).ok());
-  View v = helpers::eye_level_view(kW, kH);
+  View v = helpers::eye_level_view(kReflW, kReflH);
   v.planet_radius_m = std::numeric_limits<double>::infinity();
   v.camera.position_m = {0.0, 3.0, 0.0};
   v.camera.target_m = {25.0, -1.0, 0.0};
@@ -77,13 +77,13 @@ TEST(Reflection, ABoxAppearsWhereTheMirrorPutsIt) {
                                  right[2] * f[0] - right[0] * f[2],
                                  right[0] * f[1] - right[1] * f[0]};
   const double ty = std::tan(0.5 * v.camera.fov_y_rad), tx = ty * v.camera.aspect;
-  std::vector<int> kind(kW * kH, 0);
-  for (int py = 0; py < kH; ++py)
-    for (int px = 0; px < kW; ++px) {
-      const double sx = ((px + 0.5) / kW * 2.0 - 1.0) * tx, sy = (1.0 - (py + 0.5) / kH * 2.0) * ty;
+  std::vector<int> kind(kReflW * kReflH, 0);
+  for (int py = 0; py < kReflH; ++py)
+    for (int px = 0; px < kReflW; ++px) {
+      const double sx = ((px + 0.5) / kReflW * 2.0 - 1.0) * tx, sy = (1.0 - (py + 0.5) / kReflH * 2.0) * ty;
       std::array<double, 3> d{};
       for (std::size_t i = 0; i < 3; ++i) d[i] = f[i] + sx * right[i] + sy * up[i];
-      int& k = kind[static_cast<std::size_t>(py * kW + px)];
+      int& k = kind[static_cast<std::size_t>(py * kReflW + px)];
       if (hits_box(o, d)) {
         k = 2;
       } else if (d[1] < 0.0) {  // to the water, then mirrored
@@ -95,15 +95,15 @@ TEST(Reflection, ABoxAppearsWhereTheMirrorPutsIt) {
   const auto surely = [&](int px, int py, int want) {
     for (int dy = -2; dy <= 2; ++dy)
       for (int dx = -2; dx <= 2; ++dx) {
-        const int x = std::clamp(px + dx, 0, kW - 1), y = std::clamp(py + dy, 0, kH - 1);
-        if (kind[static_cast<std::size_t>(y * kW + x)] != want) return false;
+        const int x = std::clamp(px + dx, 0, kReflW - 1), y = std::clamp(py + dy, 0, kReflH - 1);
+        if (kind[static_cast<std::size_t>(y * kReflW + x)] != want) return false;
       }
     return true;
   };
   int reflected = 0, changed_inside = 0, elsewhere = 0, changed_elsewhere = 0;
-  for (int py = 0; py < kH; ++py)
-    for (int px = 0; px < kW; ++px) {
-      const std::size_t i = static_cast<std::size_t>(4 * (py * kW + px));
+  for (int py = 0; py < kReflH; ++py)
+    for (int px = 0; px < kReflW; ++px) {
+      const std::size_t i = static_cast<std::size_t>(4 * (py * kReflW + px));
       double change = 0.0, level = 0.0;
       for (std::size_t c = 0; c < 3; ++c) {
         change += std::abs(with_box[i + c] - empty[i + c]);
@@ -119,7 +119,7 @@ TEST(Reflection, ABoxAppearsWhereTheMirrorPutsIt) {
     }
   EXPECT_GT(reflected, 50);
   EXPECT_EQ(changed_inside, reflected) << "pixels of the mirror image showing no box";
-  EXPECT_GT(elsewhere, kW * kH / 2);
+  EXPECT_GT(elsewhere, kReflW * kReflH / 2);
   EXPECT_EQ(changed_elsewhere, 0) << "pixels away from the box and its image that changed";
 }
 

@@ -28,9 +28,9 @@ using ocean::render::testing::eye_level_view;
 using ocean::render::testing::graphics_context;
 using ocean::render::testing::small_config;
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kRenderPi = std::numbers::pi;
 
-struct Rig {
+struct BareRig {
   std::shared_ptr<ocean::vk::Context> ctx;
   std::unique_ptr<ocean::Simulator> sim;
   std::unique_ptr<Renderer> renderer;
@@ -46,7 +46,7 @@ struct Rig {
       ASSERT_TRUE(renderer->upload(sim->frame()).ok());
     }
   }
-  ~Rig() {
+  ~BareRig() {
     if (ctx != nullptr) {
       EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
     }
@@ -54,8 +54,8 @@ struct Rig {
 };
 
 // A rig on a validated graphics context; `gpu` selects the Vulkan backend on that context.
-std::unique_ptr<Rig> make_rig(const ocean::SimulationConfig& config, int w, int h, bool gpu) {
-  auto rig = std::make_unique<Rig>();
+std::unique_ptr<BareRig> make_rig(const ocean::SimulationConfig& config, int w, int h, bool gpu) {
+  auto rig = std::make_unique<BareRig>();
   rig->ctx = graphics_context();
   if (rig->ctx == nullptr) return nullptr;
   std::unique_ptr<ocean::Backend> backend;
@@ -92,7 +92,7 @@ struct Image {
   }
 };
 
-Image render_hdr(Rig& rig, const View& view) {
+Image render_hdr(BareRig& rig, const View& view) {
   Image im{rig.renderer->width(), rig.renderer->height(), {}};
   const ocean::Status drawn = rig.renderer->draw(view);
   EXPECT_TRUE(drawn.ok()) << drawn.message();
@@ -157,12 +157,12 @@ TEST(Sky, SkyIrradianceIsTheCosineWeightedIntegral) {
   double fine = 0.0;
   const int n = 200;
   for (int i = 0; i < n; ++i) {
-    const double el = (i + 0.5) / n * kPi / 2.0;
+    const double el = (i + 0.5) / n * kRenderPi / 2.0;
     for (int j = 0; j < 2 * n; ++j) {
-      const double az = (j + 0.5) / (2 * n) * 2.0 * kPi;
+      const double az = (j + 0.5) / (2 * n) * 2.0 * kRenderPi;
       const auto l =
           sky.radiance({std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az)});
-      fine += l[1] * std::sin(el) * std::cos(el) * (kPi / 2.0 / n) * (kPi / n);
+      fine += l[1] * std::sin(el) * std::cos(el) * (kRenderPi / 2.0 / n) * (kRenderPi / n);
     }
   }
   EXPECT_NEAR(e[1], fine, 0.03 * fine);
@@ -384,3 +384,4 @@ TEST(RenderNames, UnknownNamesAreEchoedOnOneLine) {
 }
 
 }  // namespace
+#undef REQUIRE_RIG

@@ -129,3 +129,4 @@ TEST(Scene, BadBackendIsRefusedWithAMessage) {
 }
 
 }  // namespace
+#undef REQUIRE_DEVICE

@@ -16,14 +16,14 @@ namespace {
 
 using namespace ocean::render;
 namespace helpers = ocean::render::testing;
-constexpr int kW = 120, kH = 80;
+constexpr int kBedW = 120, kBedH = 80;
 constexpr double kIor = 1.333, kHeight = 8.0;
 
 using Rig = ocean::render::testing::ValidatedRig;
 
 // Calm water: a 1 m/s breeze over 1 km, whose waves the 47 m cascade barely resolves (slopes
 // below 1e-2 rad: a refraction offset under 1 cm at these depths).
-std::unique_ptr<Rig> make_rig() {
+std::unique_ptr<Rig> make_bed_rig() {
   auto rig = std::make_unique<Rig>();
   rig->ctx = helpers::graphics_context();
   if (rig->ctx == nullptr) return nullptr;
@@ -33,14 +33,14 @@ std::unique_ptr<Rig> make_rig() {
   c.choppiness = 0.0;
   auto sim = ocean::make_simulator(c).value();
   sim->step(1.0);
-  rig->renderer = Renderer::make(rig->ctx, {.width = kW, .height = kH}).value();
+  rig->renderer = Renderer::make(rig->ctx, {.width = kBedW, .height = kBedH}).value();
   EXPECT_TRUE(rig->renderer->configure(c).ok());
   EXPECT_TRUE(rig->renderer->upload(sim->frame()).ok());
   return rig;
 }
 
 View straight_down(double depth_m, double period_m) {
-  View v = helpers::eye_level_view(kW, kH);
+  View v = helpers::eye_level_view(kBedW, kBedH);
   v.camera.position_m = {0.0, kHeight, 0.0};
   v.camera.target_m = {1e-3, 0.0, 0.0};
   v.camera.fov_y_rad = 40.0 * std::numbers::pi / 180.0;
@@ -90,7 +90,7 @@ struct BedHit {
 };
 BedHit bed_point(const View& view, int px, int py, bool refract) {
   const std::array<double, 16> inv = inverse(ocean::lod::view_projection(view.camera).m);
-  const double nx = (px + 0.5) / kW * 2.0 - 1.0, ny = 1.0 - (py + 0.5) / kH * 2.0;
+  const double nx = (px + 0.5) / kBedW * 2.0 - 1.0, ny = 1.0 - (py + 0.5) / kBedH * 2.0;
   double p[2][3];
   for (int k = 0; k < 2; ++k) {
     const double in[4] = {nx, ny, static_cast<double>(k), 1.0};
@@ -126,7 +126,7 @@ int parity(double x, double z, double period, double margin) {
   return static_cast<int>(std::floor(u) + std::floor(v)) & 1;
 }
 
-std::vector<float> draw(Rig& rig, const View& view) {
+std::vector<float> bed_draw(Rig& rig, const View& view) {
   EXPECT_TRUE(rig.renderer->draw(view).ok());
   std::vector<float> hdr;
   EXPECT_TRUE(rig.renderer->read_hdr(hdr).ok());
@@ -134,22 +134,22 @@ std::vector<float> draw(Rig& rig, const View& view) {
 }
 
 TEST(Seabed, ACheckerAppearsWhereRefractionPutsIt) {
-  auto rig = make_rig();
+  auto rig = make_bed_rig();
   if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const View view = straight_down(3.0, 1.0);
-  const std::vector<float> hdr = draw(*rig, view);
+  const std::vector<float> hdr = bed_draw(*rig, view);
   // Luminance threshold between the two squares' levels: the mean of the picture.
   double mean = 0.0;
-  for (int i = 0; i < kW * kH; ++i) mean += hdr[static_cast<std::size_t>(4 * i + 1)];
-  mean /= kW * kH;
+  for (int i = 0; i < kBedW * kBedH; ++i) mean += hdr[static_cast<std::size_t>(4 * i + 1)];
+  mean /= kBedW * kBedH;
   const auto agreement = [&](bool refract) {
     int same[2] = {0, 0}, counted = 0;
-    for (int y = 0; y < kH; ++y)
-      for (int x = 0; x < kW; ++x) {
+    for (int y = 0; y < kBedH; ++y)
+      for (int x = 0; x < kBedW; ++x) {
         const BedHit h = bed_point(view, x, y, refract);
         const int p = parity(h.x, h.z, 1.0, 0.08);  // a pixel spans < 0.04 squares here
         if (p < 0) continue;
-        const int light = hdr[static_cast<std::size_t>(4 * (y * kW + x) + 1)] > mean ? 1 : 0;
+        const int light = hdr[static_cast<std::size_t>(4 * (y * kBedW + x) + 1)] > mean ? 1 : 0;
         ++counted;
         ++same[light == p ? 1 : 0];
       }
@@ -160,24 +160,24 @@ TEST(Seabed, ACheckerAppearsWhereRefractionPutsIt) {
 }
 
 TEST(Seabed, ContrastFadesWithDepthAsBeerLambertStates) {
-  auto rig = make_rig();
+  auto rig = make_bed_rig();
   if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const double period = 4.0, d1 = 2.0, d2 = 6.0;
   // The light minus the dark squares' mean radiance, per channel, near the picture's centre
   // (the camera is above a corner of four squares; the path there is the depth within 0.1 %).
   const auto contrast = [&](double depth) {
     const View view = straight_down(depth, period);
-    const std::vector<float> hdr = draw(*rig, view);
+    const std::vector<float> hdr = bed_draw(*rig, view);
     std::array<double, 3> sum[2]{};
     int n[2] = {0, 0};
-    for (int y = kH / 2 - 8; y < kH / 2 + 8; ++y)
-      for (int x = kW / 2 - 8; x < kW / 2 + 8; ++x) {
+    for (int y = kBedH / 2 - 8; y < kBedH / 2 + 8; ++y)
+      for (int x = kBedW / 2 - 8; x < kBedW / 2 + 8; ++x) {
         const BedHit h = bed_point(view, x, y, true);
         const int p = parity(h.x, h.z, period, 0.12);  // beyond the filter (≈ 2 pixels)
         if (p < 0) continue;
         ++n[p];
         for (std::size_t c = 0; c < 3; ++c)
-          sum[p][c] += hdr[static_cast<std::size_t>(4 * (y * kW + x)) + c];
+          sum[p][c] += hdr[static_cast<std::size_t>(4 * (y * kBedW + x)) + c];
       }
     EXPECT_GT(n[0], 20);
     EXPECT_GT(n[1], 20);
@@ -214,10 +214,10 @@ TEST(Seabed, ContrastFadesWithDepthAsBeerLambertStates) {
 // map's depth — the picture of a 6 m bed under a grid that says 2 m is the picture of a flat 2 m
 // bed, shallow water's tint (R.24) not added twice — and outside the grid at the flat depth.
 TEST(Seabed, TheBathymetrysDepthReplacesTheFlatBeds) {
-  auto rig = make_rig();
+  auto rig = make_bed_rig();
   if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
-  const std::vector<float> flat2 = draw(*rig, straight_down(2.0, 1.0));
-  const std::vector<float> flat6 = draw(*rig, straight_down(6.0, 1.0));
+  const std::vector<float> flat2 = bed_draw(*rig, straight_down(2.0, 1.0));
+  const std::vector<float> flat6 = bed_draw(*rig, straight_down(6.0, 1.0));
   constexpr int kN = 4;
   const std::vector<float> weights(kDampingBands * kN * kN, 1.0f), depth(kN * kN, 2.0f);
   const auto mean_difference = [](const std::vector<float>& a, const std::vector<float>& b) {
@@ -239,7 +239,7 @@ TEST(Seabed, TheBathymetrysDepthReplacesTheFlatBeds) {
                                    .band_weights = weights,
                                    .depth_m = depth})
                     .ok());
-    const std::vector<float> mapped = draw(*rig, straight_down(6.0, 1.0));
+    const std::vector<float> mapped = bed_draw(*rig, straight_down(6.0, 1.0));
     EXPECT_LT(mean_difference(mapped, origin < 0.0 ? flat2 : flat6), 0.01) << origin;
   }
 }

@@ -24,7 +24,7 @@ namespace {
 using ocean::render::View;
 using ocean::render::testing::graphics_context;
 using Rig = ocean::render::testing::ValidatedRig;
-constexpr double kPi = std::numbers::pi;
+constexpr double kSpherePi = std::numbers::pi;
 
 // A renderer of w × h pixels with the CPU backend's frame of a light sea uploaded.
 std::unique_ptr<Rig> make_rig(int w, int h) {
@@ -59,7 +59,7 @@ TEST(SphereRender, ASmallPlanetFillsItsDiscWithoutCracks) {
   auto rig = make_rig(kW, kH);
   REQUIRE_RIG(rig);
   const double radius = 5000.0, altitude = 10000.0, d = radius + altitude;
-  const double fov = 50.0 * kPi / 180.0;
+  const double fov = 50.0 * kSpherePi / 180.0;
   for (const auto& [lat, lon] :
        {std::pair{0.0, 0.0}, std::pair{35.26, 45.0}, std::pair{90.0, 0.0}}) {
     View v;
@@ -108,7 +108,7 @@ TEST(SphereRender, TheSameCalmSeaAtAnyLatitudeAndLongitudeGivesTheSamePicture) {
     v.sphere = {.enabled = true, .latitude_deg = lat, .longitude_deg = lon};
     v.camera = {.position_m = {0.0, 2.0, 0.0},
                 .target_m = {-100.0, -1.0, -70.0},
-                .fov_y_rad = 50.0 * kPi / 180.0,
+                .fov_y_rad = 50.0 * kSpherePi / 180.0,
                 .aspect = double(kW) / kH,
                 .near_m = 0.2,
                 .far_m = 2e5};
@@ -127,7 +127,7 @@ TEST(SphereRender, TheSameCalmSeaAtAnyLatitudeAndLongitudeGivesTheSamePicture) {
 }
 
 // The first row (from the top) of the middle column whose linear radiance is not the black sky.
-int first_sea_row(const std::vector<float>& rgba, int w, int h) {
+int sphere_first_sea_row(const std::vector<float>& rgba, int w, int h) {
   for (int y = 0; y < h; ++y)
     if (lit(rgba, w, w / 2, y)) return y;
   return h;
@@ -145,7 +145,7 @@ TEST(SphereRender, TheHorizonSitsAtTheDipOfAnEyeAboveTheSphere) {
   };
   for (const Case& k :
        {Case{6.371e6, 20.0, 2.4}, Case{6.371e6, 400.0, 2.4}, Case{5000.0, 20.0, 24.0}}) {
-    const double fov = k.fov_deg * kPi / 180.0;
+    const double fov = k.fov_deg * kSpherePi / 180.0;
     View v;
     v.planet_radius_m = k.radius_m;
     v.sphere = {.enabled = true, .latitude_deg = 10.0, .longitude_deg = 20.0};
@@ -166,7 +166,7 @@ TEST(SphereRender, TheHorizonSitsAtTheDipOfAnEyeAboveTheSphere) {
     const int expected =
         static_cast<int>(std::floor((kH * (1.0 + std::tan(dip) / std::tan(fov / 2)) - 1.0) / 2.0)) +
         1;
-    EXPECT_NEAR(first_sea_row(hdr, kW, kH), expected, 2) << "R " << k.radius_m << ", h " << k.h_m;
+    EXPECT_NEAR(sphere_first_sea_row(hdr, kW, kH), expected, 2) << "R " << k.radius_m << ", h " << k.h_m;
   }
 }
 
@@ -191,3 +191,4 @@ TEST(SphereRender, BadViewsAreRefused) {
 }
 
 }  // namespace
+#undef REQUIRE_RIG

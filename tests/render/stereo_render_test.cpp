@@ -33,10 +33,10 @@ using ocean::render::testing::graphics_context;
 
 constexpr int kEyeW = 96, kEyeH = 64;
 
-struct Rig {
+struct StereoRig {
   std::shared_ptr<ocean::vk::Context> ctx;
   std::unique_ptr<ocean::Simulator> sim;
-  ~Rig() {
+  ~StereoRig() {
     if (ctx != nullptr) {
       EXPECT_EQ(ctx->validation_messages.load(), 0u) << ctx->last_validation_message;
     }
@@ -51,8 +51,8 @@ struct Rig {
   }
 };
 
-std::unique_ptr<Rig> make_rig() {
-  auto rig = std::make_unique<Rig>();
+std::unique_ptr<StereoRig> make_rig() {
+  auto rig = std::make_unique<StereoRig>();
   rig->ctx = graphics_context();
   if (rig->ctx == nullptr) return nullptr;
   auto sim = ocean::Simulator::make(ocean::render::testing::small_config(),
@@ -210,3 +210,4 @@ TEST(StereoRender, RefusedWithoutMultiviewOrWithAnOddWidth) {
 }
 
 }  // namespace
+#undef REQUIRE_RIG

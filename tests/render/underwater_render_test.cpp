@@ -73,8 +73,8 @@ TEST(Underwater, SnellsWindowEndsAtTheCriticalAngle) {
 }
 
 TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
-  constexpr int kW = 96, kH = 64;
-  auto rig = make_rig(kW, kH);
+  constexpr int kUnderW = 96, kUnderH = 64;
+  auto rig = make_rig(kUnderW, kUnderH);
   if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   // A green sky over water that scatters blue alone: a pixel with green looks through the air
   // (the sky, or the surface from above reflecting it), one without through the water. No foam
@@ -84,7 +84,7 @@ TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
                                        0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f,
                                        1.0f, 0.0f, 0.0f, 1.0f, 0.0f, 0.0f, 1.0f, 0.0f}};
   ASSERT_TRUE(rig->renderer->set_environment(&green_sky).ok());
-  View v = helpers::eye_level_view(kW, kH);
+  View v = helpers::eye_level_view(kUnderW, kUnderH);
   v.shading.water_colour = {0.0, 0.0, 0.03};
   v.shading.foam_brightness = 0.0;
   // A flat world: on a curved one the skirt meets the patches at T-junctions whose hairline
@@ -109,20 +109,20 @@ TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
     std::vector<float> hdr;
     ASSERT_TRUE(rig->renderer->read_hdr(hdr).ok());
     const auto sees_air = [&](int px, int py) {
-      return hdr[static_cast<std::size_t>(4 * (py * kW + px) + 1)] > 1e-4f;
+      return hdr[static_cast<std::size_t>(4 * (py * kUnderW + px) + 1)] > 1e-4f;
     };
     // Per column, from the bottom up: pixels that look through the water, then pixels that
     // look through the air — at most one change, none back: no sky below the waterline (a gap),
     // no water above it (a bar).
     int wrong = 0, crossed = 0;
-    for (int px = 0; px < kW; ++px) {
+    for (int px = 0; px < kUnderW; ++px) {
       int changes = 0;
-      for (int py = kH - 1; py > 0; --py) changes += sees_air(px, py) != sees_air(px, py - 1);
-      if (changes > 1 || (changes == 1 && (sees_air(px, kH - 1) || !sees_air(px, 0)))) ++wrong;
+      for (int py = kUnderH - 1; py > 0; --py) changes += sees_air(px, py) != sees_air(px, py - 1);
+      if (changes > 1 || (changes == 1 && (sees_air(px, kUnderH - 1) || !sees_air(px, 0)))) ++wrong;
       crossed += changes == 1 ? 1 : 0;
     }
     EXPECT_EQ(wrong, 0) << "columns with a gap or a bar, eye " << 0.1 * step << " m off";
-    straddling += crossed == kW ? 1 : 0;
+    straddling += crossed == kUnderW ? 1 : 0;
   }
   EXPECT_GE(straddling, 1) << "no eye height put the waterline across the whole picture";
 }

@@ -14,14 +14,14 @@ using ocean::waves::KelvinWake;
 using ocean::waves::LayerParams;
 using ocean::waves::LocalLayer;
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kLayerPi = std::numbers::pi;
 
 // A 10 m boat at 4 m/s (Fr = 0.40) heading +x from (60, 0) at t = 0, in a 160 m area of 256².
 LayerParams boat(double heading_deg = 0.0) {
   LayerParams p;
   p.area = {.origin_m = {-80.0, -80.0}, .size_m = 160.0, .resolution = 256};
-  p.wakes.push_back({.x_m = 60.0 * std::cos(heading_deg * kPi / 180),
-                     .z_m = 60.0 * std::sin(heading_deg * kPi / 180),
+  p.wakes.push_back({.x_m = 60.0 * std::cos(heading_deg * kLayerPi / 180),
+                     .z_m = 60.0 * std::sin(heading_deg * kLayerPi / 180),
                      .heading_deg = heading_deg,
                      .speed_mps = 4.0,
                      .hull_length_m = 10.0,
@@ -171,7 +171,7 @@ TEST(KelvinWake, PathGivesPositionHeadingAndSpeed) {
   const auto a = ocean::waves::pose_at(w, 4.0);
   EXPECT_DOUBLE_EQ(a.z_m, 20.0);
   EXPECT_DOUBLE_EQ(a.speed_mps, 5.0);
-  EXPECT_NEAR(a.heading_rad, kPi / 2, 1e-15);
+  EXPECT_NEAR(a.heading_rad, kLayerPi / 2, 1e-15);
   const auto b = ocean::waves::pose_at(w, 25.0);  // extrapolated along the last segment
   EXPECT_DOUBLE_EQ(b.x_m, 45.0);
   EXPECT_DOUBLE_EQ(b.speed_mps, 3.0);

@@ -13,7 +13,7 @@ namespace {
 
 using ocean::waves::LayerParams;
 
-std::unique_ptr<ocean::Simulator> sea() {
+std::unique_ptr<ocean::Simulator> queries_sea() {
   ocean::SimulationConfig c;
   c.sea.wind_sea.spectrum = {
       .model = ocean::SpectrumModel::jonswap, .wind_speed_mps = 9.0, .fetch_m = 8e4};
@@ -26,7 +26,7 @@ std::unique_ptr<ocean::Simulator> sea() {
   return std::move(sim).value();
 }
 
-std::shared_ptr<const ocean::waves::LocalLayer> layer(LayerParams p) {
+std::shared_ptr<const ocean::waves::LocalLayer> queries_layer(LayerParams p) {
   auto made = ocean::waves::LocalLayer::make(std::move(p));
   EXPECT_TRUE(made.ok()) << made.status().message();
   return std::move(made).value();
@@ -46,9 +46,9 @@ LayerParams wake_params() {
 }
 
 TEST(LocalLayerQueries, InverseDisplacementLandsOnSeaPlusLayer) {
-  auto sim = sea();
+  auto sim = queries_sea();
   const auto before = sim->displacement_at(10.0, 2.0);
-  sim->set_local_layer(layer(wake_params()));
+  sim->set_local_layer(queries_layer(wake_params()));
   const auto with = sim->displacement_at(10.0, 2.0);
   const auto local = sim->local_layer()->displacement_at(10.0, 2.0, 3.0);
   for (int k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(with[k], before[k] + local[k]);
@@ -74,7 +74,7 @@ TEST(LocalLayerQueries, InverseDisplacementLandsOnSeaPlusLayer) {
 }
 
 TEST(LocalLayerQueries, WaveformIsFoundAtItsPlaceOnTopOfTheSea) {
-  auto sim = sea();
+  auto sim = queries_sea();
   auto flat = std::make_shared<ocean::waves::HeightMap>();
   flat->rows = flat->cols = 4;
   flat->values.assign(16, 1.0f);
@@ -84,7 +84,7 @@ TEST(LocalLayerQueries, WaveformIsFoundAtItsPlaceOnTopOfTheSea) {
   const std::vector<std::array<double, 2>> at = {{5.0, -8.0}, {12.0, -1.0}, {-3.0, -15.0}};
   std::vector<ocean::HeightSample> bare(at.size()), composited(at.size());
   sim->heights_at(at, bare);
-  sim->set_local_layer(layer(p));
+  sim->set_local_layer(queries_layer(p));
   sim->heights_at(at, composited);
   for (std::size_t q = 0; q < at.size(); ++q) {
     // A waveform has no horizontal displacement: the same source point, 0.3 m higher.
@@ -93,7 +93,7 @@ TEST(LocalLayerQueries, WaveformIsFoundAtItsPlaceOnTopOfTheSea) {
 }
 
 TEST(LocalLayerQueries, CalmSeaSeesTheLayerAlone) {
-  const auto only = layer(wake_params());
+  const auto only = queries_layer(wake_params());
   std::vector<std::array<double, 2>> targets;
   std::vector<double> expected;
   for (double x = -40.0; x <= 25.0; x += 6.1) {

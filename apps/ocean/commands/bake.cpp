@@ -24,10 +24,10 @@ namespace ocean::cli {
 
 namespace {
 
-constexpr NumberOption<double> kFps{
+constexpr NumberOption<double> kBakeFps{
     .flag = "--fps", .accept = Accept::in_range, .lo = 1e-3, .hi = 1e4};
-constexpr NumberOption<double> kTime{.flag = "--time", .accept = Accept::finite};
-constexpr NumberOption<long long> kFrames{.flag = "--frames",
+constexpr NumberOption<double> kBakeTime{.flag = "--time", .accept = Accept::finite};
+constexpr NumberOption<long long> kBakeFrames{.flag = "--frames",
                                           .accept = Accept::integer_in_range,
                                           .lo = 1.0,
                                           .hi = 1e6,
@@ -99,9 +99,9 @@ int run_bake(const BakeOptions& o) {
   Result<SimulationConfig> config = resolve_config(o.sim);
   if (!config.ok()) return report(config.status());
   const SimulationConfig& c = config.value();
-  Result<double> fps = parse(kFps, o.fps);
+  Result<double> fps = parse(kBakeFps, o.fps);
   if (!fps.ok()) return report(fps.status());
-  Result<double> start = parse(kTime, o.time);
+  Result<double> start = parse(kBakeTime, o.time);
   if (!start.ok()) return report(start.status());
   long long frames = 1;
   if (o.loop) {
@@ -113,7 +113,7 @@ int run_bake(const BakeOptions& o) {
       return report(invalid_argument("--loop at --fps " + excerpt(o.fps) + " gives " +
                                      std::to_string(frames) + " frames: must be 1 to 1000000"));
   } else if (!o.frames.empty()) {
-    Result<long long> v = parse(kFrames, o.frames);
+    Result<long long> v = parse(kBakeFrames, o.frames);
     if (!v.ok()) return report(v.status());
     frames = v.value();
   }
@@ -185,10 +185,10 @@ Command add_bake_command(CLI::App& app) {
   add_wave_flags(*command, o->waves);
   command->add_option("--out", o->out, "output directory (created if missing)");
   command->add_option("--format", o->formats, "exr | png | npy (repeatable; default npy)");
-  add_option(*command, kFrames, o->frames, "number of frames (default 1)");
+  add_option(*command, kBakeFrames, o->frames, "number of frames (default 1)");
   command->add_flag("--loop", o->loop, "one whole loop period of frames at --fps");
-  add_option(*command, kFps, o->fps, "frames per second")->capture_default_str();
-  add_option(*command, kTime, o->time, "time of the first frame, s")->capture_default_str();
+  add_option(*command, kBakeFps, o->fps, "frames per second")->capture_default_str();
+  add_option(*command, kBakeTime, o->time, "time of the first frame, s")->capture_default_str();
   command->add_option("--backend", o->backend, "simulation backend (see ocean info)")
       ->capture_default_str();
   command->add_option("--contact-sheet", o->contact_sheet,

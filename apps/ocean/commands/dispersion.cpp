@@ -14,7 +14,7 @@ namespace {
 constexpr NumberOption<double> kDepth{.flag = "--depth"};
 constexpr NumberOption<double> kGravity{.flag = "--gravity"};
 constexpr NumberOption<double> kK{.flag = "--k", .accept = Accept::non_negative};
-constexpr NumberOption<double> kOmega{.flag = "--omega", .accept = Accept::non_negative};
+constexpr NumberOption<double> kDispersionOmega{.flag = "--omega", .accept = Accept::non_negative};
 
 struct DispersionOptions {
   std::string depth, gravity, k, omega;
@@ -42,13 +42,13 @@ int run_dispersion(const DispersionOptions& o) {
   if (!dispersion.ok()) return report(dispersion.status());
   const Dispersion& d = dispersion.value();
   const bool from_k = !o.k.empty();
-  Result<std::vector<double>> input = from_k ? parse_list(kK, o.k) : parse_list(kOmega, o.omega);
+  Result<std::vector<double>> input = from_k ? parse_list(kK, o.k) : parse_list(kDispersionOmega, o.omega);
   if (!input.ok()) return report(input.status());
   // Only values inside the dispersion's domain (docs/math.md M.2.5), where k, ω, both
   // velocities and the wavelength are all finite and positive.
   for (double v : input.value()) {
     const Status s =
-        from_k ? Dispersion::check_wavenumber(kK.flag, v) : d.check_omega(kOmega.flag, v);
+        from_k ? Dispersion::check_wavenumber(kK.flag, v) : d.check_omega(kDispersionOmega.flag, v);
     if (!s.ok()) return report(s);
   }
   std::vector<double> k, omega, cg;
@@ -88,7 +88,7 @@ Command add_dispersion_command(CLI::App& app) {
   add_option(*command, kDepth, o->depth, "water depth, m (default: deep water)");
   add_option(*command, kGravity, o->gravity, "gravitational acceleration, m/s^2 (default 9.81)");
   add_option(*command, kK, o->k, "wavenumbers K1,K2,..., rad/m, each in [1e-200, 1e200]");
-  add_option(*command, kOmega, o->omega,
+  add_option(*command, kDispersionOmega, o->omega,
              "angular frequencies W1,W2,..., rad/s, each in [omega(1e-200), omega(1e200)]");
   command->add_flag("--capillary", o->capillary, "include sea-water surface tension");
   command->add_flag("--json", o->json, "print JSON {\"k\",\"omega\",\"group_velocity\"}");

@@ -26,11 +26,11 @@ namespace ocean::cli {
 
 namespace {
 
-constexpr NumberOption<double> kOceanSize{.flag = "--ocean-size",
+constexpr NumberOption<double> kLodOceanSize{.flag = "--ocean-size",
                                           .accept = Accept::in_range,
                                           .lo = lod::kMinOceanSize_m,
                                           .hi = lod::kMaxOceanSize_m};
-constexpr NumberOption<double> kFov{
+constexpr NumberOption<double> kLodFov{
     .flag = "--fov", .accept = Accept::in_range, .lo = 1.0, .hi = 170.0};
 constexpr NumberOption<double> kAspect{
     .flag = "--aspect", .accept = Accept::in_range, .lo = 0.05, .hi = 20.0};
@@ -49,14 +49,14 @@ Result<lod::Vec3> parse_vec3(std::string_view flag, const std::string& text) {
   return lod::Vec3{v.value()[0], v.value()[1], v.value()[2]};
 }
 
-struct Inputs {
+struct LodInputs {
   lod::Camera camera;
   lod::LodParams params;
   lod::QualityPreset preset = lod::QualityPreset::medium;
 };
 
-Result<Inputs> parse_inputs(const LodOptions& o) {
-  Inputs in;
+Result<LodInputs> parse_inputs(const LodOptions& o) {
+  LodInputs in;
   Result<lod::Vec3> eye = parse_vec3("--camera", o.camera);
   if (!eye.ok()) return eye.status();
   Result<lod::Vec3> target = parse_vec3("--target", o.target);
@@ -66,9 +66,9 @@ Result<Inputs> parse_inputs(const LodOptions& o) {
     return invalid_argument("--preset = " + excerpt(o.preset) + " is not a preset: must be " +
                             name_list(lod::kQualityPresetNames, ", ", " or "));
   in.preset = preset.value();
-  Result<double> size = parse(kOceanSize, o.ocean_size);
+  Result<double> size = parse(kLodOceanSize, o.ocean_size);
   if (!size.ok()) return size.status();
-  Result<double> fov = parse(kFov, o.fov);
+  Result<double> fov = parse(kLodFov, o.fov);
   if (!fov.ok()) return fov.status();
   Result<double> aspect = parse(kAspect, o.aspect);
   if (!aspect.ok()) return aspect.status();
@@ -193,7 +193,7 @@ void draw_key(plot::Canvas& canvas, const lod::LodSelection& sel, double ocean_s
   canvas.text({x + 32.0, y}, "field of view", font, kInk);
 }
 
-Status write_layout_png(const std::string& path, const Inputs& in, const lod::LodSelection& sel) {
+Status write_layout_png(const std::string& path, const LodInputs& in, const lod::LodSelection& sel) {
   // All leaves (grey when culled) from a second, unculled selection.
   lod::LodSelection all;
   lod::LodParams p = in.params;
@@ -251,9 +251,9 @@ Status write_layout_png(const std::string& path, const Inputs& in, const lod::Lo
 }
 
 int run_lod(const LodOptions& o) {
-  Result<Inputs> inputs = parse_inputs(o);
+  Result<LodInputs> inputs = parse_inputs(o);
   if (!inputs.ok()) return report(inputs.status());
-  const Inputs& in = inputs.value();
+  const LodInputs& in = inputs.value();
   lod::LodSelection sel;
   if (Status s = lod::reserve_selection(sel, in.params.ocean_size_m); !s.ok()) return report(s);
   if (Status s = lod::select_patches(in.params, sel); !s.ok()) return report(s);
@@ -339,11 +339,11 @@ Command add_lod_command(CLI::App& app) {
       ->add_option("--preset", options->preset,
                    "quality: " + name_list(lod::kQualityPresetNames, ", ", " or "))
       ->capture_default_str();
-  add_option(*command, kOceanSize, options->ocean_size, "side S of the ocean square, m")
+  add_option(*command, kLodOceanSize, options->ocean_size, "side S of the ocean square, m")
       ->capture_default_str();
   add_option(*command, kCentre, options->centre,
              "fix the grid centre at X,Z, m (default: the camera, snapped)");
-  add_option(*command, kFov, options->fov, "vertical field of view, degrees")
+  add_option(*command, kLodFov, options->fov, "vertical field of view, degrees")
       ->capture_default_str();
   add_option(*command, kAspect, options->aspect, "width/height")->capture_default_str();
   command->add_flag("--no-cull", options->no_cull,

@@ -15,7 +15,7 @@ namespace ocean::cli {
 
 namespace {
 
-constexpr NumberOption<double> kTime{.flag = "--time", .accept = Accept::finite};
+constexpr NumberOption<double> kQueryTime{.flag = "--time", .accept = Accept::finite};
 
 struct QueryOptions {
   SimulationFlags sim;
@@ -47,7 +47,7 @@ Result<std::vector<std::array<double, 2>>> parse_points(const std::string& text)
 int run_query(const QueryOptions& o) {
   Result<std::vector<std::array<double, 2>>> points = parse_points(o.at);
   if (!points.ok()) return report(points.status());
-  Result<double> time = parse(kTime, o.time);
+  Result<double> time = parse(kQueryTime, o.time);
   if (!time.ok()) return report(time.status());
   Result<SimulationConfig> config = resolve_config(o.sim);
   if (!config.ok()) return report(config.status());
@@ -93,7 +93,7 @@ Command add_query_command(CLI::App& app) {
       "query", "Height of the surface (sea + wakes + waveforms) above points (x, z) at a time");
   add_simulation_flags(*command, o->sim);
   add_wave_flags(*command, o->waves);
-  add_option(*command, kTime, o->time, "simulation time, s")->capture_default_str();
+  add_option(*command, kQueryTime, o->time, "simulation time, s")->capture_default_str();
   command->add_option("--at", o->at, "X,Z[;X,Z...]: the points, m");
   command->add_flag("--json", o->json, "print {\"x\": [...], \"z\": [...], \"height_m\": [...]}");
   command->add_option("--backend", o->backend, "simulation backend (see ocean info)")

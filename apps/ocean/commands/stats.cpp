@@ -23,7 +23,7 @@ constexpr NumberOption<int> kSeeds{.flag = "--seeds",
                                    .lo = 1.0,
                                    .hi = 1e5,
                                    .echo = Echo::text};
-constexpr NumberOption<double> kTime{.flag = "--time", .accept = Accept::finite};
+constexpr NumberOption<double> kStatsTime{.flag = "--time", .accept = Accept::finite};
 // The range SimulationConfig accepts for a cascade.
 constexpr NumberOption<double> kPatchSize{
     .flag = "--patch-size", .accept = Accept::in_range, .lo = 0.01, .hi = 1e6};
@@ -34,7 +34,7 @@ struct StatsOptions {
   bool json = false;
 };
 
-struct Row {
+struct StatRow {
   const char* key;
   nlohmann::ordered_json value;
   const char* unit;
@@ -44,7 +44,7 @@ nlohmann::ordered_json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
 }
 
-std::vector<Row> rows(const SurfaceStats& s) {
+std::vector<StatRow> rows(const SurfaceStats& s) {
   return {
       {"model", s.model, ""},
       {"wind_speed_mps", optional_json(s.wind_speed_mps), "m/s"},
@@ -77,18 +77,18 @@ std::vector<Row> rows(const SurfaceStats& s) {
 }
 
 // Flags of this command that resolve_config does not know.
-struct Inputs {
+struct StatsInputs {
   int seeds = 8;
   double time_s = 0.0;
   std::optional<double> patch_size_m;
 };
 
-Result<Inputs> parse_inputs(const StatsOptions& o) {
-  Inputs in;
+Result<StatsInputs> parse_inputs(const StatsOptions& o) {
+  StatsInputs in;
   Result<int> seeds = parse(kSeeds, o.seeds);
   if (!seeds.ok()) return seeds.status();
   in.seeds = seeds.value();
-  Result<double> time = parse(kTime, o.time);
+  Result<double> time = parse(kStatsTime, o.time);
   if (!time.ok()) return time.status();
   in.time_s = time.value();
   if (!o.patch_size.empty()) {
@@ -100,7 +100,7 @@ Result<Inputs> parse_inputs(const StatsOptions& o) {
 }
 
 int run_stats(const StatsOptions& o) {
-  Result<Inputs> inputs = parse_inputs(o);
+  Result<StatsInputs> inputs = parse_inputs(o);
   if (!inputs.ok()) return report(inputs.status());
   Result<SimulationConfig> resolved = resolve_config(o.simulation);
   if (!resolved.ok()) return report(resolved.status());
@@ -117,16 +117,16 @@ int run_stats(const StatsOptions& o) {
   Result<SurfaceStats> stats =
       compute_surface_stats(config, inputs.value().seeds, inputs.value().time_s, *runner);
   if (!stats.ok()) return report(stats.status());
-  const std::vector<Row> table = rows(stats.value());
+  const std::vector<StatRow> table = rows(stats.value());
   if (o.json) {
     nlohmann::ordered_json j = nlohmann::ordered_json::object();
-    for (const Row& r : table) j[r.key] = r.value;
+    for (const StatRow& r : table) j[r.key] = r.value;
     print_json(j);
     return kExitOk;
   }
   std::cout << std::left << std::setw(28) << "key" << std::setw(24) << "value"
             << "unit\n";
-  for (const Row& r : table) {
+  for (const StatRow& r : table) {
     const std::string value = r.value.is_string() ? r.value.get<std::string>() : r.value.dump();
     std::cout << std::setw(28) << r.key << std::setw(24) << value << r.unit << "\n";
   }
@@ -145,7 +145,7 @@ Command add_stats_command(CLI::App& app) {
   add_option(*command, kSeeds, options->seeds,
              "number of realisations: seed, seed+1, ..., seed+N-1")
       ->capture_default_str();
-  add_option(*command, kTime, options->time, "simulation time t, s")->capture_default_str();
+  add_option(*command, kStatsTime, options->time, "simulation time t, s")->capture_default_str();
   command->add_flag("--json", options->json, "print JSON instead of a table");
   return {command, [options] { return run_stats(*options); }};
 }

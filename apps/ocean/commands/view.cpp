@@ -46,7 +46,7 @@ constexpr double kWarmup_s = 4.0;
 // so that screenshots are reproducible.
 constexpr double kFixedStep_s = 1.0 / 30.0;
 
-constexpr NumberOption<long long> kFrames{
+constexpr NumberOption<long long> kViewFrames{
     .flag = "--frames", .accept = Accept::whole_in_range, .lo = 0.0, .hi = 1e9};
 
 struct ViewOptions {
@@ -57,7 +57,7 @@ struct ViewOptions {
   std::string shallows = "none";
 };
 
-struct Inputs {
+struct ViewInputs {
   render::SceneParams scene;
   render::View view;
   int quality = 1;
@@ -65,8 +65,8 @@ struct Inputs {
   view::Shallows shallows = view::Shallows::none;
 };
 
-Result<Inputs> parse_inputs(const ViewOptions& o) {
-  Inputs in;
+Result<ViewInputs> parse_inputs(const ViewOptions& o) {
+  ViewInputs in;
   SimulationFlags sim = o.sim;
   if (sim.preset_path.empty()) sim.preset_path = "moderate";  // as ocean render
   Result<SimulationConfig> config = resolve_config(sim);
@@ -84,7 +84,7 @@ Result<Inputs> parse_inputs(const ViewOptions& o) {
         render::FarFieldRange{.near_m = (*range)[0], .far_m = (*range)[1]};
   if (Status s = parse_view_flags(view_flags, 64, in.scene, in.view); !s.ok()) return s;
   in.quality = static_cast<int>(lod::parse_preset(o.picture.quality).value());
-  Result<long long> frames = parse(kFrames, o.frames);
+  Result<long long> frames = parse(kViewFrames, o.frames);
   if (!frames.ok()) return frames.status();
   in.frames = frames.value();
   const std::optional<view::Shallows> shallows = view::parse_shallows(o.shallows);
@@ -154,9 +154,9 @@ Status write_screenshot(render::Renderer& renderer, const std::filesystem::path&
 }
 
 int run_view(const ViewOptions& o) {
-  Result<Inputs> parsed = parse_inputs(o);
+  Result<ViewInputs> parsed = parse_inputs(o);
   if (!parsed.ok()) return report(parsed.status());
-  Inputs in = std::move(parsed).value();
+  ViewInputs in = std::move(parsed).value();
   if (!o.screenshot.empty()) {
     if (Status s = io::check_parent_writable(o.screenshot); !s.ok()) return report(s);
   }
@@ -336,7 +336,7 @@ Command add_view_command(CLI::App& app) {
       "view", "the ocean in a window: free camera and a panel with every parameter");
   add_simulation_flags(*command, o->sim);
   add_view_flags(*command, o->picture, "window");
-  add_option(*command, kFrames, o->frames,
+  add_option(*command, kViewFrames, o->frames,
              "draw N frames then exit (simulated time advances 1/30 s per frame); "
              "default 0: until the window is closed");
   command->add_option("--screenshot", o->screenshot,

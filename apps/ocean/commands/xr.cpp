@@ -36,7 +36,7 @@ struct XrOptions {
   bool json = false;
 };
 
-constexpr NumberOption<long long> kFrames{
+constexpr NumberOption<long long> kXrFrames{
     .flag = "--frames", .accept = Accept::whole_in_range, .lo = 0.0, .hi = 1e9};
 constexpr NumberOption<double> kEyeHeight{
     .flag = "--eye-height", .accept = Accept::in_range, .lo = 0.5, .hi = 1e4};
@@ -63,7 +63,7 @@ lod::Camera eye_camera(const xr::EyeView& eye, double eye_height_m, double aspec
 }
 
 int run_xr(const XrOptions& o) {
-  Result<long long> frames = parse(kFrames, o.frames);
+  Result<long long> frames = parse(kXrFrames, o.frames);
   if (!frames.ok()) return report(frames.status());
   Result<double> eye_height = parse(kEyeHeight, o.eye_height);
   if (!eye_height.ok()) return report(eye_height.status());
@@ -165,7 +165,7 @@ Command add_xr_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "xr", "Show the sea in a headset through the system's OpenXR runtime (XR_RUNTIME_JSON)");
   add_simulation_flags(*cmd, options->sim);
-  add_option(*cmd, kFrames, options->frames,
+  add_option(*cmd, kXrFrames, options->frames,
              "Frames to show, then end the session (0: until the runtime ends it or Ctrl-C)")
       ->capture_default_str();
   add_option(*cmd, kEyeHeight, options->eye_height,
