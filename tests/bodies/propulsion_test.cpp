@@ -15,29 +15,29 @@
 namespace {
 
 using namespace ocean::bodies;
-constexpr double kPi = std::numbers::pi;
-const Water kWater{};
+constexpr double kPropPi = std::numbers::pi;
+const Water kPropWater{};
 
 // A box of length 4 (x), height 1, beam 2 m and density 500 kg/m³: draught d = (500/1025)·1 m.
-constexpr double kLength = 4.0, kHeight = 1.0, kBeam = 2.0, kDensity = 500.0;
+constexpr double kLength = 4.0, kPropHeight = 1.0, kBeam = 2.0, kPropDensity = 500.0;
 constexpr DragParams kDrag{.linear_mps = 0.5, .quadratic = 1.0};
 
-double draught() { return kDensity / kWater.density_kgpm3 * kHeight; }
+double draught() { return kPropDensity / kPropWater.density_kgpm3 * kPropHeight; }
 
 // (B.9) The resistance of the box moving along x at U in calm water, from B.4: the bow and the
 // stern faces (area B·d each, normals ±x) both meet v_n = ±U, the sides and the bottom none, so
 // R(U) = 2·ρ·B·d·(k_l·U + ½·C_d·U²).
 double box_resistance(double u) {
-  return 2.0 * kWater.density_kgpm3 * kBeam * draught() *
+  return 2.0 * kPropWater.density_kgpm3 * kBeam * draught() *
          (kDrag.linear_mps * u + 0.5 * kDrag.quadratic * u * u);
 }
 
 FloatingBody box_at_rest() {
-  auto params = solid_body(box_hull({kLength, kHeight, kBeam}, 4).value(), kDensity, kDrag);
+  auto params = solid_body(box_hull({kLength, kPropHeight, kBeam}, 4).value(), kPropDensity, kDrag);
   EXPECT_TRUE(params.ok()) << params.status().message();
-  // The box's centre of mass is at its middle: at the draught it lies kHeight/2 − d above the
+  // The box's centre of mass is at its middle: at the draught it lies kPropHeight/2 − d above the
   // surface.
-  auto body = FloatingBody::make(params.value(), {.position_m = {0, kHeight / 2 - draught(), 0}});
+  auto body = FloatingBody::make(params.value(), {.position_m = {0, kPropHeight / 2 - draught(), 0}});
   EXPECT_TRUE(body.ok()) << body.status().message();
   return std::move(body).value();
 }
@@ -59,7 +59,7 @@ Driving drive(FloatingBody& body, Propulsion& propulsion, const HelmCommand& hel
     if (!w.ok()) return mean;
     EXPECT_TRUE(body.step(surface, dt, w.value()).ok()) << i;
     if (i >= steps - averaged) {
-      const double h = heading_deg(body.state()) * kPi / 180;
+      const double h = heading_deg(body.state()) * kPropPi / 180;
       const Vec3& v = body.state().velocity_mps;
       mean.speed_mps += (v[0] * std::cos(h) + v[2] * std::sin(h)) / averaged;
       mean.thrust_n += propulsion.thrust_n() / averaged;
@@ -91,7 +91,7 @@ TEST(Propulsion, ThrustLimitedBodyGoesAtTheSpeedWhereResistanceEqualsTheLimit) {
   const double t_max = 3000.0;
   auto propulsion = Propulsion::make({.max_thrust_n = t_max, .speed_time_s = 3.0}).value();
   ASSERT_LT(t_max, box_resistance(2.0));
-  const double a = 2.0 * kWater.density_kgpm3 * kBeam * draught();
+  const double a = 2.0 * kPropWater.density_kgpm3 * kBeam * draught();
   const double expected =
       (-a * kDrag.linear_mps +
        std::sqrt(a * a * kDrag.linear_mps * kDrag.linear_mps + 2.0 * a * kDrag.quadratic * t_max)) /
@@ -112,10 +112,10 @@ struct Boat {
 };
 Boat boat(double heading, double speed) {
   auto params = solid_body(boat_hull(8.0, 3.0, 1.2).value(), 350.0).value();
-  const PropulsionParams p{.max_thrust_n = params.mass_kg * kWater.gravity_mps2 / 3.0,
+  const PropulsionParams p{.max_thrust_n = params.mass_kg * kPropWater.gravity_mps2 / 3.0,
                            .thrust_point_m = {-3.5, -0.3, 0.0},
                            .max_yaw_moment_nm = 0.5 * params.inertia_kgm2[4]};
-  const double h = heading * kPi / 180;
+  const double h = heading * kPropPi / 180;
   auto body =
       FloatingBody::make(params, {.position_m = {0.0, 0.2, 0.0},
                                   .orientation = orientation_from_heading(heading),
@@ -144,15 +144,15 @@ TEST(Propulsion, SteersToACommandedHeadingTheShortWayRound) {
   EXPECT_GT(smallest, 150.0);  // the long way round would pass 0°
   // The course follows the heading (the hull's sides resist sway).
   const Vec3& v = b.body.state().velocity_mps;
-  EXPECT_NEAR(std::atan2(v[2], v[0]) * 180 / kPi, -170.0, 2.0);
+  EXPECT_NEAR(std::atan2(v[2], v[0]) * 180 / kPropPi, -170.0, 2.0);
   EXPECT_NEAR(std::hypot(v[0], v[2]), 3.0, 0.05);
 }
 
 TEST(Propulsion, DrivenBoatInSteepWavesStaysBoundedAndUpright) {
   // A 2 m, 7 s wave (λ = 76 m, steepness ak = 0.08) from 60° off the boat's course: the boat
   // heaves, pitches and rolls; the speed loop holds the mean speed against the waves' surge.
-  const double a = 1.0, omega = 2 * kPi / 7.0, k = omega * omega / kWater.gravity_mps2;
-  const double dir = 60.0 * kPi / 180;
+  const double a = 1.0, omega = 2 * kPropPi / 7.0, k = omega * omega / kPropWater.gravity_mps2;
+  const double dir = 60.0 * kPropPi / 180;
   double t = 0.0;
   const SurfaceQuery surface = [&](std::span<const std::array<double, 2>> xz,
                                    std::span<ocean::HeightSample> out) {
@@ -188,7 +188,7 @@ TEST(Propulsion, DrivenBoatInSteepWavesStaysBoundedAndUpright) {
   std::printf(
       "mean speed %.3f m/s (commanded %.1f), largest tilt %.1f deg, heave %.2f m, "
       "heading %.2f deg on average, at most %.2f\n",
-      mean_speed, u_c, largest_roll * 180 / kPi, largest_heave, mean_heading, largest_yaw);
+      mean_speed, u_c, largest_roll * 180 / kPropPi, largest_heave, mean_heading, largest_yaw);
   EXPECT_NEAR(mean_speed / u_c, 1.0, 0.05);
   EXPECT_GT(largest_roll, 0.01);  // the waves did move it
   EXPECT_NEAR(mean_heading, 0.0, 5.0);

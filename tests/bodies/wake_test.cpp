@@ -20,7 +20,7 @@ using ocean::waves::KelvinWake;
 using ocean::waves::LayerParams;
 using ocean::waves::LocalLayer;
 using ocean::waves::WakeTrack;
-constexpr double kPi = std::numbers::pi;
+constexpr double kWakePi = std::numbers::pi;
 constexpr double kG = 9.81;
 
 // A box 8 m long (x), 1 m high, 2 m wide, density 500 kg/m³, driven along +x at 3 m/s from rest:
@@ -79,7 +79,7 @@ TEST(DrivenWake, TransverseWavelengthIsThatOfTheBodysSpeed) {
                                                t)[1]);
   }
   const auto waves = ocean_test::transverse_waves(s, h, 10.0, 140.0);
-  const double expected = 2.0 * kPi * u * u / kG;
+  const double expected = 2.0 * kWakePi * u * u / kG;
   std::printf(
       "transverse wavelength %.4f m from %zu crossings (2 pi U^2/g = %.4f m at the "
       "track's U = %.4f m/s), error %.2f %%\n",

@@ -42,9 +42,9 @@ Half measure(const std::vector<std::uint8_t>& rgba, int side, bool left) {
 
 TEST(DampingRender, AMaskedShallowHalfIsCalmAndTintedAndTheOtherHalfUnchanged) {
   if (ocean::render::testing::graphics_context() == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
-  constexpr int kSide = 192;
+  constexpr int kDampSide = 192;
   auto scene = Scene::make(
-      {.config = ocean::render::testing::small_config(), .width = kSide, .height = kSide});
+      {.config = ocean::render::testing::small_config(), .width = kDampSide, .height = kDampSide});
   ASSERT_TRUE(scene.ok()) << scene.status().message();
   ASSERT_TRUE(scene.value()->warm_up(10.0, 2.0).ok());
   ocean::render::Renderer& r = scene.value()->renderer();
@@ -76,8 +76,8 @@ TEST(DampingRender, AMaskedShallowHalfIsCalmAndTintedAndTheOtherHalfUnchanged) {
   ASSERT_TRUE(r.read_srgb(damped).ok());
   // Which side of the picture is x < 0 depends on the camera's up vector: find it from the
   // difference, then check both halves.
-  const Half plain_l = measure(plain, kSide, true), plain_r = measure(plain, kSide, false);
-  const Half damped_l = measure(damped, kSide, true), damped_r = measure(damped, kSide, false);
+  const Half plain_l = measure(plain, kDampSide, true), plain_r = measure(plain, kDampSide, false);
+  const Half damped_l = measure(damped, kDampSide, true), damped_r = measure(damped, kDampSide, false);
   const bool left_is_damped =
       std::abs(damped_l.red - plain_l.red) > std::abs(damped_r.red - plain_r.red);
   const Half& before = left_is_damped ? plain_l : plain_r;

@@ -172,15 +172,15 @@ std::vector<double> straight_down_detail(double height_m,
   return y;
 }
 
-// Straight down from kHeight m: the luminance detail's correlation with itself shifted by
+// Straight down from height_m m: the luminance detail's correlation with itself shifted by
 // cascade 0's 1000 m period is at most 0.35 and no higher than at shifts unrelated to any
 // cascade's period.
-void expect_no_repetition(double kHeight) {
-  const std::vector<double> y = straight_down_detail(kHeight);
+void expect_no_repetition(double height_m) {
+  const std::vector<double> y = straight_down_detail(height_m);
   ASSERT_FALSE(y.empty());
   constexpr double kFovDeg = kStraightDownFovDeg;
   const double metres_per_pixel =
-      2.0 * kHeight * std::tan(0.5 * kFovDeg * std::numbers::pi / 180.0) / kSide;
+      2.0 * height_m * std::tan(0.5 * kFovDeg * std::numbers::pi / 180.0) / kSide;
   const auto correlation = [&](int shift) {  // along image rows, Pearson
     double sa = 0, sb = 0, saa = 0, sbb = 0, sab = 0;
     int n = 0;
@@ -201,10 +201,10 @@ void expect_no_repetition(double kHeight) {
     std::printf("shift %.2f periods: correlation %.3f\n", fraction, c);
     unrelated = std::max(unrelated, c);
   }
-  std::printf("from %.0f m, shift 1 period (%d px): correlation %.3f\n", kHeight, period,
+  std::printf("from %.0f m, shift 1 period (%d px): correlation %.3f\n", height_m, period,
               at_period);
-  EXPECT_LE(at_period, 0.35) << "from " << kHeight << " m";
-  EXPECT_LE(at_period, unrelated) << "from " << kHeight << " m";
+  EXPECT_LE(at_period, 0.35) << "from " << height_m << " m";
+  EXPECT_LE(at_period, unrelated) << "from " << height_m << " m";
 }
 
 // From 3 km a pixel is ≈ 14.5 m and the period 69 pixels; from 10 km, 48 m and 21 pixels.

@@ -24,7 +24,7 @@ namespace {
 
 using ocean::render::Scene;
 using ocean::render::View;
-constexpr int kSide = 192;
+constexpr int kSurfSide = 192;
 
 // Straight down from `height_m` over (x, z), 50° field of view.
 View top_down(double x, double z, double height_m) {
@@ -45,9 +45,9 @@ std::array<int, 2> pixel_of(const View& view, double x, double y, double z) {
   const double cx = m[0] * x + m[4] * y + m[8] * z + m[12];
   const double cy = m[1] * x + m[5] * y + m[9] * z + m[13];
   const double cw = m[3] * x + m[7] * y + m[11] * z + m[15];
-  const int col = static_cast<int>((cx / cw + 1.0) * 0.5 * kSide);
-  const int row = static_cast<int>((1.0 - cy / cw) * 0.5 * kSide);
-  if (col < 0 || col >= kSide || row < 0 || row >= kSide) return {-1, -1};
+  const int col = static_cast<int>((cx / cw + 1.0) * 0.5 * kSurfSide);
+  const int row = static_cast<int>((1.0 - cy / cw) * 0.5 * kSurfSide);
+  if (col < 0 || col >= kSurfSide || row < 0 || row >= kSurfSide) return {-1, -1};
   return {col, row};
 }
 
@@ -78,7 +78,7 @@ std::shared_ptr<const ocean::waves::LocalLayer> make_layer(ocean::waves::LayerPa
 
 TEST(LocalSurfaceRender, PixelsCarryTheCompositedNormalAndAccumulatedFoam) {
   if (ocean::render::testing::graphics_context() == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
-  auto scene = Scene::make({.config = nearly_calm(), .width = kSide, .height = kSide});
+  auto scene = Scene::make({.config = nearly_calm(), .width = kSurfSide, .height = kSurfSide});
   ASSERT_TRUE(scene.ok()) << scene.status().message();
   Scene& s = *scene.value();
   ocean::render::Renderer& r = s.renderer();
@@ -103,7 +103,7 @@ TEST(LocalSurfaceRender, PixelsCarryTheCompositedNormalAndAccumulatedFoam) {
       const std::size_t i = static_cast<std::size_t>(row) * 128 + static_cast<std::size_t>(col);
       const auto [pc, pr] = pixel_of(view, x, local.displacement[3 * i + 1], z);
       ASSERT_GE(pc, 0);
-      const float* px = &hdr[(static_cast<std::size_t>(pr) * kSide + pc) * 4];
+      const float* px = &hdr[(static_cast<std::size_t>(pr) * kSurfSide + pc) * 4];
       for (int k = 0; k < 3; ++k) {
         const double drawn = 2.0 * px[k] - 1.0;
         worst = std::max(worst, std::abs(drawn - local.normal[3 * i + k]));
@@ -144,7 +144,7 @@ TEST(LocalSurfaceRender, PixelsCarryTheCompositedNormalAndAccumulatedFoam) {
     const auto [pc, pr] =
         pixel_of(view, x + wake.layer_displacement[3 * i], wake.displacement[3 * i + 1],
                  z + wake.layer_displacement[3 * i + 2]);
-    return pc < 0 ? -1.0f : hdr[(static_cast<std::size_t>(pr) * kSide + pc) * 4 + 3];
+    return pc < 0 ? -1.0f : hdr[(static_cast<std::size_t>(pr) * kSurfSide + pc) * 4 + 3];
   };
   // The least and most foam the layer adds over the (2r + 1)² cells around (col, row).
   const auto around = [&](int col, int row, int reach) {
@@ -184,7 +184,7 @@ TEST(LocalSurfaceRender, PixelsCarryTheCompositedNormalAndAccumulatedFoam) {
 TEST(LocalSurfaceRender, TheSeaIsUnchangedWhereTheLayerIsZero) {
   if (ocean::render::testing::graphics_context() == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   auto scene = Scene::make(
-      {.config = ocean::render::testing::small_config(), .width = kSide, .height = kSide});
+      {.config = ocean::render::testing::small_config(), .width = kSurfSide, .height = kSurfSide});
   ASSERT_TRUE(scene.ok()) << scene.status().message();
   Scene& s = *scene.value();
   ocean::render::Renderer& r = s.renderer();
@@ -211,7 +211,7 @@ TEST(LocalSurfaceRender, TheSeaIsUnchangedWhereTheLayerIsZero) {
       const auto [col, row] = pixel_of(view, x, 0.0, z);
       if (col < 0) continue;
       const double beyond = std::max(std::abs(x), std::abs(z)) - 12.0;
-      const std::size_t i = (static_cast<std::size_t>(row) * kSide + col) * 4;
+      const std::size_t i = (static_cast<std::size_t>(row) * kSurfSide + col) * 4;
       const bool same =
           with[i] == without[i] && with[i + 1] == without[i + 1] && with[i + 2] == without[i + 2];
       if (beyond > 3.0) ++outside, changed_outside += !same;

@@ -25,7 +25,7 @@ using ocean::FarFieldNoise;
 using ocean::SimulationConfig;
 
 // A small simulation (64² cascades) with a 64² map over a 3 km window off the origin.
-SimulationConfig small_config() {
+SimulationConfig noise_small_config() {
   SimulationConfig c;
   c.resolution = 64;
   c.far_noise = {.resolution = 64, .origin_m = {-1234.5, 777.25}, .size_m = 3000.0};
@@ -69,7 +69,7 @@ Tolerance tolerance(const FarFieldNoise& noise, const ocean::FarNoiseConfig& map
 }
 
 TEST(FarNoiseMap, EveryTexelIsTheAnalyticNoiseAtItsPointAndTime) {
-  const SimulationConfig config = small_config();
+  const SimulationConfig config = noise_small_config();
   Stepped s = configure(config);
   auto noise = ocean::fit_far_field_noise(config);
   ASSERT_TRUE(noise.ok()) << noise.status().message();
@@ -103,7 +103,7 @@ TEST(FarNoiseMap, EveryTexelIsTheAnalyticNoiseAtItsPointAndTime) {
 // far_noise_texel (the per-texel function the Vulkan kernel runs), for steps below and above one
 // cell per texel.
 TEST(FarNoiseMap, CarriedGradientsGiveTheBitsOfThePerTexelFunction) {
-  auto noise = ocean::fit_far_field_noise(small_config());
+  auto noise = ocean::fit_far_field_noise(noise_small_config());
   ASSERT_TRUE(noise.ok());
   for (const double size_m : {3000.0, 40000.0}) {
     const ocean::FarNoiseConfig map{
@@ -122,7 +122,7 @@ TEST(FarNoiseMap, CarriedGradientsGiveTheBitsOfThePerTexelFunction) {
 }
 
 TEST(FarNoiseMap, AtTimeZeroTheNoiseIsTheRenderersStaticNoise) {
-  auto noise = ocean::fit_far_field_noise(small_config());
+  auto noise = ocean::fit_far_field_noise(noise_small_config());
   ASSERT_TRUE(noise.ok());
   const ocean::FarNoiseConfig one_cell{.resolution = 1, .size_m = 1.0};
   const Tolerance tol = tolerance(noise.value(), one_cell);
@@ -139,7 +139,7 @@ TEST(FarNoiseMap, AtTimeZeroTheNoiseIsTheRenderersStaticNoise) {
 }
 
 TEST(FarNoiseMap, EachOctaveTravelsAtTheBandsMeanPhaseVelocity) {
-  const SimulationConfig config = small_config();
+  const SimulationConfig config = noise_small_config();
   auto fitted = ocean::fit_far_field_noise(config);
   ASSERT_TRUE(fitted.ok());
   const FarFieldNoise& noise = fitted.value();
@@ -177,7 +177,7 @@ TEST(FarNoiseMap, EachOctaveTravelsAtTheBandsMeanPhaseVelocity) {
 // 3 % of their expectations (the static field's measurement, tests/render/far_field_test.cpp);
 // translation keeps a field's statistics, so every time must too.
 TEST(FarNoiseMap, MomentsEqualTheBandsAtEveryTime) {
-  SimulationConfig config = small_config();
+  SimulationConfig config = noise_small_config();
   auto fitted = ocean::fit_far_field_noise(config);
   ASSERT_TRUE(fitted.ok());
   const ocean::BandStatistics target = fitted.value().target;
@@ -208,7 +208,7 @@ class FarNoiseFrame
     : public ::testing::TestWithParam<std::pair<ocean::NormalMethod, ocean::cpu::CpuPipeline>> {};
 
 TEST_P(FarNoiseFrame, ChangesNothingElseInTheFrame) {
-  SimulationConfig with = small_config();
+  SimulationConfig with = noise_small_config();
   with.normals = GetParam().first;
   SimulationConfig without = with;
   without.far_noise.resolution = 0;
@@ -256,17 +256,17 @@ INSTANTIATE_TEST_SUITE_P(Shapes, FarNoiseFrame,
                                                      ocean::cpu::CpuPipeline::scalar_reference}));
 
 TEST(FarNoiseMap, BadMapsAreRefused) {
-  SimulationConfig c = small_config();
+  SimulationConfig c = noise_small_config();
   c.far_noise.resolution = 8;
   EXPECT_EQ(ocean::validate(c).code(), ocean::ErrorCode::invalid_argument);
   EXPECT_NE(ocean::validate(c).message().find("far_noise.resolution"), std::string::npos);
-  c = small_config();
+  c = noise_small_config();
   c.far_noise.size_m = 0.0;
   EXPECT_EQ(ocean::validate(c).code(), ocean::ErrorCode::invalid_argument);
-  c = small_config();
+  c = noise_small_config();
   c.far_noise.origin_m[1] = std::nan("");
   EXPECT_FALSE(ocean::validate(c).ok());
-  c = small_config();
+  c = noise_small_config();
   c.far_noise.resolution = 0;  // off: any window
   c.far_noise.size_m = 1e6;
   EXPECT_TRUE(ocean::validate(c).ok());

@@ -14,7 +14,7 @@ using ocean::waves::KelvinWake;
 using ocean::waves::pose_at;
 using ocean::waves::WakeTrack;
 using ocean::waves::WakeTrackParams;
-constexpr double kPi = std::numbers::pi;
+constexpr double kTrackPi = std::numbers::pi;
 
 TEST(WakeTrack, RecordsAtItsIntervalAndKeepsTheNewest) {
   auto track = WakeTrack::make({.interval_s = 0.5, .waypoints = 4}).value();
@@ -61,7 +61,7 @@ TEST(WakeTrack, PathEndsAtTheNewestWaypointAndHasOneSpeed) {
   EXPECT_NEAR(pose.z_m, at(newest)[1], 1e-9);
   EXPECT_NEAR(pose.speed_mps, track.wake_speed_mps(), 1e-9);
   // Heading of the last chord: the tangent 0.025 rad before the newest point.
-  EXPECT_NEAR(pose.heading_rad, 0.1 * newest + kPi / 2 - 0.025, 1e-9);
+  EXPECT_NEAR(pose.heading_rad, 0.1 * newest + kTrackPi / 2 - 0.025, 1e-9);
   for (std::size_t i = 1; i < wake.path.size(); ++i) {
     const auto& a = wake.path[i - 1];
     const auto& b = wake.path[i];
