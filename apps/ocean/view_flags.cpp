@@ -149,6 +149,17 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
   return parse_sphere_flags(f.sphere, v);
 }
 
+Status parse_view_flags(const ViewFlags& flags, const SimulationFlags& sim, int min_size,
+                        render::SceneParams& scene, render::View& view) {
+  Result<preset::PictureSettings> picture = resolve_picture(sim);
+  if (!picture.ok()) return picture.status();
+  ViewFlags with_preset = flags;
+  if (const auto& range = picture.value().far_field_range_m)
+    with_preset.preset_far_field =
+        render::FarFieldRange{.near_m = (*range)[0], .far_m = (*range)[1]};
+  return parse_view_flags(with_preset, min_size, scene, view);
+}
+
 Status check_mesh_support(const render::View& view, const vk::Context& ctx) {
   if (view.tessellation.mesh == render::MeshMode::tessellation && !ctx.tessellation)
     return unsupported("--mesh tessellation: Vulkan device '" + ctx.info.name +

@@ -8,6 +8,7 @@
 
 #include "ocean/render.hpp"
 #include "ocean/scene.hpp"
+#include "simulation_flags.hpp"
 #include "sphere_flags.hpp"
 
 namespace ocean::cli {
@@ -35,6 +36,10 @@ void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what
 /// accepted.
 Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,
                         render::View& view);
+/// The same under the picture settings of the preset `sim` names (resolve_picture): its
+/// far_field_range where --far-field-range is not given.
+Status parse_view_flags(const ViewFlags& flags, const SimulationFlags& sim, int min_size,
+                        render::SceneParams& scene, render::View& view);
 
 /// `unsupported` naming the device when `view` asks for the tessellated mesh (--mesh
 /// tessellation) and the device lacks tessellation shaders; checked before any work is done.

@@ -108,13 +108,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (!layer.ok()) return layer.status();
   in.layer = layer.value();
   // The preset's picture settings, under the flags (--far-field-range wins).
-  Result<preset::PictureSettings> picture = resolve_picture(sim);
-  if (!picture.ok()) return picture.status();
-  ViewFlags view_flags = o.picture;
-  if (const auto& range = picture.value().far_field_range_m)
-    view_flags.preset_far_field =
-        render::FarFieldRange{.near_m = (*range)[0], .far_m = (*range)[1]};
-  if (Status s = parse_view_flags(view_flags, 1, in.scene, in.view); !s.ok()) return s;
+  if (Status s = parse_view_flags(o.picture, sim, 1, in.scene, in.view); !s.ok()) return s;
   Result<std::optional<double>> ipd = parse_stereo_flags(o.stereo);
   if (!ipd.ok()) return ipd.status();
   in.ipd = ipd.value();

@@ -76,13 +76,7 @@ Result<ViewInputs> parse_inputs(const ViewOptions& o) {
   in.scene.config.outputs = FrameOutputs::textures();
   in.scene.swapchain = true;
   // The preset's picture settings, under the flags (--far-field-range wins).
-  Result<preset::PictureSettings> picture = resolve_picture(sim);
-  if (!picture.ok()) return picture.status();
-  ViewFlags view_flags = o.picture;
-  if (const auto& range = picture.value().far_field_range_m)
-    view_flags.preset_far_field =
-        render::FarFieldRange{.near_m = (*range)[0], .far_m = (*range)[1]};
-  if (Status s = parse_view_flags(view_flags, 64, in.scene, in.view); !s.ok()) return s;
+  if (Status s = parse_view_flags(o.picture, sim, 64, in.scene, in.view); !s.ok()) return s;
   in.quality = static_cast<int>(lod::parse_preset(o.picture.quality).value());
   Result<long long> frames = parse(kViewFrames, o.frames);
   if (!frames.ok()) return frames.status();
