@@ -2,6 +2,7 @@
 // ffmpeg program) of a sea state from a camera, headless on any Vulkan device (lavapipe
 // included). With no arguments it writes ocean.png: the moderate sea at eye level towards a
 // low sun. The output name is data (output_name.hpp): never a printf format, never a shell word.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -203,13 +204,30 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
 constexpr double kDrivenArea_m = 320.0;
 constexpr int kDrivenAreaResolution = 1024;
 
+// Whether two lists of wakes are the same objects on the same paths (a driven object's wake
+// changes only when its track gains a waypoint, W.17).
+bool same_wakes(const std::vector<waves::KelvinWake>& a, const std::vector<waves::KelvinWake>& b) {
+  const auto same = [](const waves::KelvinWake& u, const waves::KelvinWake& v) {
+    const auto same_point = [](const waves::Waypoint& p, const waves::Waypoint& q) {
+      return p.time_s == q.time_s && p.x_m == q.x_m && p.z_m == q.z_m;
+    };
+    return u.x_m == v.x_m && u.z_m == v.z_m && u.heading_deg == v.heading_deg &&
+           u.speed_mps == v.speed_mps && u.hull_length_m == v.hull_length_m &&
+           u.peak_height_m == v.peak_height_m && u.fade_length_m == v.fade_length_m &&
+           std::equal(u.path.begin(), u.path.end(), v.path.begin(), v.path.end(), same_point);
+  };
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), same);
+}
+
 // The layer of a frame with driven objects: `given` (--local-area and its wakes and waveforms) or,
-// without it, the square of `previous` or one laid round the first driven object (its centre a
-// third of the side behind it, so the wake trails into it); plus the wakes of the objects'
-// tracks. Null when no object makes a wake. Tables shared with `previous`.
+// without it, the square of the previous frame's `driven` layer or one laid round the first
+// driven object (its centre a third of the side behind it, so the wake trails into it); plus the
+// wakes of the objects' tracks. Null when no object makes a wake; `driven` itself while the
+// wakes are unchanged. Tables shared with the previous layer (`driven`, else `given`).
 Result<std::shared_ptr<const waves::LocalLayer>> layer_with_wakes(
     const std::shared_ptr<const waves::LocalLayer>& given, const SceneObjects& objects,
-    const waves::LocalLayer* previous, double choppiness) {
+    const std::shared_ptr<const waves::LocalLayer>& driven, double choppiness) {
+  const waves::LocalLayer* previous = driven != nullptr ? driven.get() : given.get();
   std::vector<waves::KelvinWake> wakes;
   objects.wakes(wakes);
   if (wakes.empty()) return std::shared_ptr<const waves::LocalLayer>();
@@ -228,6 +246,7 @@ Result<std::shared_ptr<const waves::LocalLayer>> layer_with_wakes(
               .resolution = kDrivenAreaResolution};
   }
   for (waves::KelvinWake& w : wakes) p.wakes.push_back(std::move(w));
+  if (driven != nullptr && same_wakes(driven->params().wakes, p.wakes)) return driven;
   Result<std::unique_ptr<waves::LocalLayer>> made = waves::LocalLayer::make(std::move(p), previous);
   if (!made.ok()) return made.status();
   return std::shared_ptr<const waves::LocalLayer>(std::move(made).value());
@@ -384,12 +403,11 @@ int run_render(const RenderOptions& o) {
     }
     if (!stepped.ok()) return report(stepped);
     if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
-    // Driven objects' wakes from their tracks (W.17): the layer remade each frame with their
-    // new paths, sharing the previous one's tables while the speeds hold. A new layer goes to the
+    // Driven objects' wakes from their tracks (W.17): the layer remade when a track gains a
+    // waypoint, sharing the previous one's tables while the speeds hold. A new layer goes to the
     // simulator, and the frame is simulated again so that its composited surface holds it.
-    Result<std::shared_ptr<const waves::LocalLayer>> with_wakes = layer_with_wakes(
-        in.layer, *objects.value(), driven_layer != nullptr ? driven_layer.get() : in.layer.get(),
-        in.scene.config.choppiness);
+    Result<std::shared_ptr<const waves::LocalLayer>> with_wakes =
+        layer_with_wakes(in.layer, *objects.value(), driven_layer, in.scene.config.choppiness);
     if (!with_wakes.ok()) return report(with_wakes.status());
     if (with_wakes.value() != nullptr && with_wakes.value() != driven_layer) {
       driven_layer = with_wakes.value();
