@@ -41,15 +41,21 @@ float ramp(const ocean::FoamParams& f, float j) {
       1.0f);
 }
 
-TEST(LocalSurface, IsTheQueriedSurfaceWithTheJacobianAndFoamOfTheSum) {
-  auto sim = sea();
+// A wake crossing an 80 m square of 64² cells, its peak height `peak_m`.
+LayerParams surface_wake_params(double peak_m) {
   LayerParams p;
   p.area = {.origin_m = {-40.0, -40.0}, .size_m = 80.0, .resolution = 64};
   p.wakes.push_back({.x_m = 20.0,
                      .heading_deg = 200.0,
                      .speed_mps = 4.0,
                      .hull_length_m = 10.0,
-                     .peak_height_m = 0.8});
+                     .peak_height_m = peak_m});
+  return p;
+}
+
+TEST(LocalSurface, IsTheQueriedSurfaceWithTheJacobianAndFoamOfTheSum) {
+  auto sim = sea();
+  LayerParams p = surface_wake_params(0.8);
   sim->set_local_layer(layer(p));
   sim->step(1.0);
   const ocean::LocalSurfaceFrame& s = sim->frame().local;
@@ -150,13 +156,7 @@ TEST(LocalSurface, IsEmptyWithoutALayerAndFollowsTheLayerAcrossReconfigure) {
 // (its sum is the sea alone, computed independently), over several accumulating steps.
 TEST(LocalSurface, CarriesTheLayerAndTheSeaAloneBesideTheSum) {
   auto with = sea(), without = sea();
-  LayerParams p;
-  p.area = {.origin_m = {-40.0, -40.0}, .size_m = 80.0, .resolution = 64};
-  p.wakes.push_back({.x_m = 20.0,
-                     .heading_deg = 200.0,
-                     .speed_mps = 4.0,
-                     .hull_length_m = 10.0,
-                     .peak_height_m = 1.2});
+  LayerParams p = surface_wake_params(1.2);
   const auto wake = layer(p);
   with->set_local_layer(wake);
   p.wakes[0].peak_height_m = 0.0;
