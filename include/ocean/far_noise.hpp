@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 
 #include "ocean/core.hpp"
 #include "ocean/sim.hpp"
@@ -74,5 +75,16 @@ FarFieldSample far_field_noise(const FarFieldNoise& noise, double x_m, double z_
 /// arithmetic), so that it stays exact however far the octaves have travelled. At t = 0 it equals
 /// the static field up to float rounding.
 FarFieldSample far_field_noise(const FarFieldNoise& noise, double x_m, double z_m, double time_s);
+
+/// Octave `octave`'s (0, 1, 2) lattice coordinate of the world point (x, z) at time t,
+/// ((x, z) − velocity_mps·t)/cell_m, split in double precision into whole cells (wrapped modulo
+/// 2³², as the lattice's indices) and the rest in [0, 1): where the map's texel (0, 0) and the
+/// renderer's frame origin place the lattice (docs/rendering.md R.13a, R.13b).
+struct FarNoiseLattice {
+  std::uint32_t cells_u = 0, cells_v = 0;  ///< whole cells along x and z (two's complement)
+  float rest_u = 0.0f, rest_v = 0.0f;      ///< the rest along x and z
+};
+FarNoiseLattice far_noise_lattice(const FarFieldNoise& noise, int octave, double x_m, double z_m,
+                                  double time_s);
 
 }  // namespace ocean

@@ -278,6 +278,11 @@ class Backend {
   /// Computes the frame at `time_s`, every cascade as BandRole::both (the Simulator applies the
   /// roles). Foam accumulates over the time since the previous step.
   virtual void step(double time_s, Frame& out) = 0;
+  /// Moves the far field's noise map (SimulationConfig::far_noise) to a window whose texel (0, 0)
+  /// lies at world `origin_m` from the next step() on (the size and resolution stay); the frame's
+  /// FarNoiseFrame::origin_m says which window it holds. Allocates nothing. Backends without the
+  /// map (it is off, or they refuse it at configure) ignore it.
+  virtual void set_far_noise_origin(const std::array<double, 2>& origin_m) { (void)origin_m; }
 };
 
 /// The result of a height query at a world position (x, z).
@@ -327,6 +332,11 @@ class Simulator {
   /// runs (and again after reconfigure with a different set of cascades).
   void set_damping(std::shared_ptr<const waves::Damping> damping);
   [[nodiscard]] const waves::Damping* damping() const { return damping_.get(); }
+  /// Moves the far field's noise map to the window whose texel (0, 0) lies at world `origin_m`
+  /// (finite, |x|, |z| ≤ 1e9 m) for the frames computed from now on: a renderer keeps the map
+  /// around its camera this way (ocean/far_field.hpp, far_noise_window; docs/rendering.md
+  /// R.13b). Waits for a kicked step; allocates nothing; a no-op while the map is off.
+  void set_far_noise_origin(const std::array<double, 2>& origin_m);
 
   /// Displacement (Dx, h, Dz) summed over cascades at the undisplaced point (x, z), bilinear
   /// between texels exactly as a GPU samples the maps with wrap addressing (M.7.6), plus the

@@ -199,6 +199,15 @@ FarFieldSample far_field_noise(const FarFieldNoise& noise, double x_m, double z_
   return {.height_m = h, .slope_x = sx, .slope_z = sz};
 }
 
+FarNoiseLattice far_noise_lattice(const FarFieldNoise& noise, int octave, double x_m, double z_m,
+                                  double time_s) {
+  const auto o = static_cast<std::size_t>(octave);
+  const double s = noise.cell_m[o];
+  const Split u = split((x_m - noise.velocity_mps[o][0] * time_s) / s);
+  const Split v = split((z_m - noise.velocity_mps[o][1] * time_s) / s);
+  return {.cells_u = u.cells, .cells_v = v.cells, .rest_u = u.rest, .rest_v = v.rest};
+}
+
 namespace far_noise_map {
 
 noise::FarNoiseMapParams params(const FarFieldNoise& noise, const FarNoiseConfig& map,

@@ -1,5 +1,8 @@
 // Simulator: owns a backend and two frames (front, back); kick/wait overlaps the next frame's
 // computation with reading the current one (Aebi, VR Ocean, §4.3: double buffering).
+#include <cassert>
+#include <cmath>
+
 #include "ocean/sim.hpp"
 
 namespace ocean {
@@ -76,5 +79,14 @@ void Simulator::wait() {
 }
 
 const Frame& Simulator::frame() const { return frames_[front_]; }
+
+void Simulator::set_far_noise_origin(const std::array<double, 2>& origin_m) {
+  assert(std::isfinite(origin_m[0]) && std::isfinite(origin_m[1]) && std::abs(origin_m[0]) <= 1e9 &&
+         std::abs(origin_m[1]) <= 1e9);
+  wait();
+  if (config_.far_noise.resolution == 0) return;
+  config_.far_noise.origin_m = origin_m;
+  backend_->set_far_noise_origin(origin_m);
+}
 
 }  // namespace ocean

@@ -52,6 +52,9 @@ class VulkanBackend final : public Backend {
   void allocate(Frame& frame) const override;
   /// submit(time_s) then read(out).
   void step(double time_s, Frame& out) override;
+  void set_far_noise_origin(const std::array<double, 2>& origin_m) override {
+    config_.far_noise.origin_m = origin_m;
+  }
 
   /// Asynchronous use: submit() starts the frame at time_s and returns; read() waits for it and
   /// copies the outputs into `out`. The GPU images are complete once read() returns.
@@ -84,6 +87,7 @@ class VulkanBackend final : public Backend {
   bool has_stepped_ = false;
   bool pending_ = false;
   double pending_time_s_ = 0.0;
+  std::array<double, 2> pending_far_origin_m_{};  ///< the window the submitted map covers
 };
 
 /// Creates a context (see ContextParams) and a backend on it.

@@ -249,6 +249,7 @@ void CpuBackendImpl::far_noise_task(TaskRunner& rows, double time_s, Frame& out)
   const Clock::time_point start = Clock::now();
   const noise::FarNoiseMapParams p = far_noise_map::params(far_noise_, config_.far_noise, time_s);
   float* map = out.far_noise.height_slope.data();
+  out.far_noise.origin_m = config_.far_noise.origin_m;
   // Rows in chunks of about 2 K texels (0.2–0.4 ms of work): enough to share even a 64² map
   // between threads, few enough to schedule.
   const std::size_t grain = std::max<std::size_t>(1, 2048 / p.resolution);

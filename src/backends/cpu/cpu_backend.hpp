@@ -102,6 +102,9 @@ class CpuBackendImpl final : public CpuBackend {
   [[nodiscard]] const StageTimes& last_stage_times() const override { return times_; }
   [[nodiscard]] std::size_t state_bytes_per_cascade() const override;
   void step_far_noise(double time_s, Frame& out) override;
+  void set_far_noise_origin(const std::array<double, 2>& origin_m) override {
+    config_.far_noise.origin_m = origin_m;
+  }
 
  private:
   struct CascadeGroup;

@@ -225,10 +225,12 @@ void VulkanBackend::write_far_noise_params(double time_s) {
   if (gpu_->far_noise.resolution == 0) return;
   const noise::FarNoiseMapParams p = far_noise_map::params(far_noise_, config_.far_noise, time_s);
   std::memcpy(gpu_->far_noise.params.mapped, &p, sizeof(p));
+  pending_far_origin_m_ = config_.far_noise.origin_m;
 }
 
 void VulkanBackend::read_far_noise(Frame& out) const {
   if (gpu_->far_noise.resolution == 0 || out.far_noise.height_slope.empty()) return;
+  out.far_noise.origin_m = pending_far_origin_m_;
   std::memcpy(out.far_noise.height_slope.data(), gpu_->far_noise.host.mapped,
               out.far_noise.height_slope.size() * sizeof(float));
 }
@@ -255,7 +257,9 @@ SimulationImages VulkanBackend::images() const {
           .normal_foam_view = gpu_->normal_image.view,
           .size = gpu_->resolution,
           .layers = gpu_->cascades,
-          .mips = gpu_->normal_image.mips};
+          .mips = gpu_->normal_image.mips,
+          .far_noise = gpu_->far_noise.map.buffer,
+          .far_noise_resolution = gpu_->far_noise.resolution};
 }
 
 Result<std::unique_ptr<VulkanBackend>> make_vulkan_backend(const ContextParams& params) {
