@@ -20,6 +20,8 @@ constexpr NumberOption<double> kPlanetRadius{.flag = "--planet-radius",
                                              .accept = Accept::in_range,
                                              .lo = 1000.0,
                                              .says = "a radius >= 1000 m, or inf for a flat sea"};
+constexpr NumberOption<int> kFarNoiseResolution{
+    .flag = "--far-noise-resolution", .accept = Accept::integer_in_range, .lo = 0, .hi = 4096};
 constexpr NumberOption<double> kOceanSize{.flag = "--ocean-size",
                                           .accept = Accept::in_range,
                                           .lo = lod::kMinOceanSize_m,
@@ -43,6 +45,11 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
                      "DMIN,DMAX: distances, m, over which the simulated sea blends into the "
                      "far field's noise and hex-tiled cascades (default: the preset's "
                      "far_field_range, else 1000,2500)");
+  add_option(command, kFarNoiseResolution, f.far_noise_resolution,
+             "texels per side of the far field's per-frame noise map around the camera, drawn "
+             "beyond DMIN (0: none, the noise evaluated per pixel; else " +
+                 std::to_string(render::kFarNoiseMinResolution) + "..4096, default " +
+                 f.far_noise_resolution + ")");
   add_option(command, kPlanetRadius, f.planet_radius,
              "radius of the planet whose curvature bends the sea and sets the horizon, m; inf: "
              "a flat sea (default " +
@@ -146,7 +153,16 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
     if (!env.ok()) return invalid_argument("--environment: " + env.status().message());
     scene.environment = std::make_shared<const render::Environment>(std::move(env).value());
   }
-  return parse_sphere_flags(f.sphere, v);
+  if (Status s = parse_sphere_flags(f.sphere, v); !s.ok()) return s;
+  Result<int> far_noise = parse(kFarNoiseResolution, f.far_noise_resolution);
+  if (!far_noise.ok()) return far_noise.status();
+  scene.config.far_noise.resolution = 0;
+  if (far_noise.value() == 0 || v.sphere.enabled) return {};
+  Result<FarNoiseConfig> window = render::far_noise_window(
+      v.far_field, far_noise.value(), v.camera.position_m.x, v.camera.position_m.z);
+  if (!window.ok()) return invalid_argument("--far-noise-resolution: " + window.status().message());
+  scene.config.far_noise = window.value();
+  return {};
 }
 
 Status parse_view_flags(const ViewFlags& flags, const SimulationFlags& sim, int min_size,

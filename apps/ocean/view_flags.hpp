@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 
+#include "ocean/far_field.hpp"
 #include "ocean/render.hpp"
 #include "ocean/scene.hpp"
 #include "simulation_flags.hpp"
@@ -21,6 +22,8 @@ struct ViewFlags {
   // D_min,D_max of the far field (R.13), m; empty: the preset's far_field_range, else 1000,2500.
   std::string far_field_range;
   std::optional<render::FarFieldRange> preset_far_field;  // the preset's far_field_range
+  // Texels per side of the far field's per-frame noise map (R.13b); 0: none, the analytic noise.
+  std::string far_noise_resolution = std::to_string(render::kFarNoiseDefaultResolution);
   std::string planet_radius = "6371000";  // R of the sea's curvature (R.15), m; inf: flat
   std::string environment;                // equirectangular HDR OpenEXR sky (R.17); empty: none
   std::string mesh = "quadtree";          // quadtree or tessellation (R.40–R.42)
@@ -32,8 +35,10 @@ void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what
 
 /// Size, backend and validation into `scene`; camera, quality, ocean size, far-field range
 /// (--far-field-range, else flags.preset_far_field, else render::FarFieldRange's default) and
-/// debug view into `view` (its shading is left alone). `min_size` is the smallest width/height
-/// accepted.
+/// debug view into `view` (its shading is left alone); the far field's noise map
+/// (--far-noise-resolution) into scene.config.far_noise, its window around the camera and sized
+/// for the range (render::far_noise_window; off on a sphere, which draws no far field). `min_size`
+/// is the smallest width/height accepted.
 Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,
                         render::View& view);
 /// The same under the picture settings of the preset `sim` names (resolve_picture): its

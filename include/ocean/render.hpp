@@ -219,11 +219,20 @@ class Renderer {
   /// bands and Hs the shaders need. Call again after the simulation is reconfigured.
   Status configure(const SimulationConfig& config);
   /// CPU path: copies `frame` (configured as above) into a staging buffer; the next draw copies
-  /// it into the images first.
+  /// it into the images first. Its far-field noise map (Frame::far_noise, when the simulation
+  /// computes one) is copied too and drawn inside its window (docs/rendering.md R.13b); the far
+  /// field shows frame.time_s. invalid_argument for a map of the wrong size (the old one stays
+  /// staged).
   Status upload(const Frame& frame);
   /// GPU path: samples these images (a VulkanBackend's on the same context) from now on, until
   /// upload() or configure() is called. The images must stay alive while they are in use.
   void use_simulation_images(const vk::SimulationImages& images);
+  /// GPU path with the far field's noise map: as above, and the map in images.far_noise read where
+  /// it lies, in the window `frame`'s FarNoiseFrame describes, the far field at frame.time_s (the
+  /// frame of the backend the images belong to; its arrays are not read). Allocates the map's
+  /// image when its side changes. invalid_argument when the frame's map and the buffer differ in
+  /// size.
+  Status use_simulation_images(const vk::SimulationImages& images, const Frame& frame);
   /// The local layer alone (ocean/waves.hpp: wakes and waveforms; docs/rendering.md R.19) to add
   /// to the cascades from the next draw on, until this or set_local_surface is called again:
   /// `grid` is a LocalFrame's area and displacement (float3 (Dx, h, Dz) per cell, row-major, rows

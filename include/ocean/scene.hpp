@@ -57,6 +57,11 @@ class Scene {
   /// simulator has a local layer (Simulator::set_local_layer), the frame's composited local
   /// surface goes to Renderer::set_local_surface too (docs/rendering.md R.19).
   Status step(double time_s);
+  /// Keeps the far field's noise map (SimulationConfig::far_noise, when on) around this view's
+  /// camera from the next step on: its window's origin snapped as far_noise_origin
+  /// (ocean/far_field.hpp, docs/rendering.md R.13b) so the map does not swim as the camera moves.
+  /// Allocates nothing; a no-op while the map is off.
+  void follow(const View& view);
   /// Steps from time_s − warmup_s to time_s at `rate_hz` (ceil(warmup_s·rate_hz) frames), then
   /// step(time_s), so foam has accumulated as it would have in a running simulation.
   Status warm_up(double time_s, double warmup_s, double rate_hz = 10.0);

@@ -46,7 +46,15 @@ void write_scene_images(Renderer::State& st) {
   const VkDescriptorImageInfo local{st.local_sampler, st.local_image.view, VK_IMAGE_LAYOUT_GENERAL};
   const VkDescriptorImageInfo damping{st.damping_sampler, st.damping_image.view,
                                       VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet writes[7] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+  const VkDescriptorImageInfo far{st.far_map.sampler, st.far_map.image.view,
+                                  VK_IMAGE_LAYOUT_GENERAL};
+  VkWriteDescriptorSet writes[8] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                                     .dstSet = st.scene_set,
+                                     .dstBinding = OCEAN_RENDER_BINDING_FAR_MAP,
+                                     .descriptorCount = 1,
+                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                     .pImageInfo = &far},
+                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                                      .dstSet = st.scene_set,
                                      .dstBinding = OCEAN_RENDER_BINDING_ENVIRONMENT,
                                      .descriptorCount = 1,
@@ -88,7 +96,7 @@ void write_scene_images(Renderer::State& st) {
                                      .descriptorCount = 1,
                                      .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                      .pImageInfo = &normal}};
-  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 7u : 5u;
+  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 8u : 6u;
   vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
 }
 
@@ -146,7 +154,8 @@ Status create_descriptors(Renderer::State& st) {
       {OCEAN_RENDER_BINDING_LOCAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr},
       {OCEAN_RENDER_BINDING_DAMPING, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr},
       {OCEAN_RENDER_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr}};
+       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
+      {OCEAN_RENDER_BINDING_FAR_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr}};
   const VkDescriptorSetLayoutCreateInfo scene_info{
       .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
       .bindingCount = OCEAN_RENDER_SCENE_BINDINGS,
@@ -169,7 +178,7 @@ Status create_descriptors(Renderer::State& st) {
       !s.ok())
     return s;
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 8}};
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 9}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
                                              .maxSets = 2,
                                              .poolSizeCount = 2,

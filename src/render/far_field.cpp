@@ -29,4 +29,29 @@ double far_field_ratio(const FarFieldRange& range, double distance_m) {
   return t * t * (3.0 - 2.0 * t);  // VR-GIS FFT+Perlin, eq. 6
 }
 
+Result<FarNoiseConfig> far_noise_window(const FarFieldRange& range, int resolution, double x_m,
+                                        double z_m) {
+  if (Status s = validate(range); !s.ok()) return s;
+  if (resolution < kFarNoiseMinResolution || resolution > 4096)
+    return invalid_argument("far-field noise map resolution " + std::to_string(resolution) +
+                            " is out of range: must be 0 (off) or in [" +
+                            std::to_string(kFarNoiseMinResolution) + ", 4096]");
+  // R.13b-1: S/2 = D_max + (snap + fade + 1)·S/N.
+  constexpr int kMargin = 2 * (kFarNoiseSnapTexels + kFarNoiseFadeTexels + 1);
+  const double size = 2.0 * range.far_m / (1.0 - static_cast<double>(kMargin) / resolution);
+  if (!(size <= 1e6))
+    return invalid_argument("far-field noise map: a window of " + std::to_string(size) +
+                            " m for D_max = " + std::to_string(range.far_m) +
+                            " m exceeds the simulation's 1e6 m");
+  FarNoiseConfig window{.resolution = resolution, .size_m = std::max(size, 1.0)};
+  window.origin_m = far_noise_origin(window, x_m, z_m);
+  return window;
+}
+
+std::array<double, 2> far_noise_origin(const FarNoiseConfig& window, double x_m, double z_m) {
+  const double snap = kFarNoiseSnapTexels * window.size_m / window.resolution;
+  const auto corner = [&](double c) { return snap * std::floor((c - 0.5 * window.size_m) / snap); };
+  return {corner(x_m), corner(z_m)};  // R.13b-3
+}
+
 }  // namespace ocean::render

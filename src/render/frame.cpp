@@ -72,6 +72,7 @@ void begin_frame(Renderer::State& st, VkCommandBuffer cmd) {
   }
   if (st.local_pending) record_local_upload(st, cmd);
   if (st.damping_pending) record_damping_upload(st, cmd);
+  record_far_map(st, cmd);
   if (st.upload_pending) {
     record_uploads(st, cmd);
     st.upload_pending = false;

@@ -60,10 +60,7 @@ void fill_origin_uniforms(const Renderer::State& st, const View& view, shader::F
   const double r = view.planet_radius_m;
   u.planet.inv_two_radius_per_m = std::isinf(r) ? 0.0f : static_cast<float>(0.5 / r);
   u.planet.inv_radius_per_m = std::isinf(r) ? 0.0f : static_cast<float>(1.0 / r);
-  // Wrapped to 2^17 m: floats hold it to 8 mm; the noise's pattern jumps once per 131 km (R.16).
   constexpr double kWrap = OCEAN_RENDER_ORIGIN_WRAP_M;
-  u.planet.noise_origin_m = {static_cast<float>(wrap(ox, kWrap)),
-                             static_cast<float>(wrap(oz, kWrap))};
   for (int c = 0; c < kMaxCascades; ++c) {
     const double size = st.patch_size_m[static_cast<std::size_t>(c)];
     if (c >= st.cascades || !(size > 0.0)) {

@@ -36,6 +36,8 @@ OCEAN_RENDER_SPIRV(object_frag_mv)
 OCEAN_RENDER_SPIRV(ocean_vert_motion)
 OCEAN_RENDER_SPIRV(motion_frag)
 OCEAN_RENDER_SPIRV(motion_sky_frag)
+// The far field's map into its image (R.13b).
+OCEAN_RENDER_SPIRV(far_map)
 OCEAN_RENDER_SPIRV(ocean_tess_vert)
 OCEAN_RENDER_SPIRV(ocean_tesc)
 OCEAN_RENDER_SPIRV(ocean_tese)

@@ -21,6 +21,7 @@
 #include <optional>
 #include <vector>
 
+#include "far_map_pass.hpp"
 #include "motion_pass.hpp"
 #include "object_pass.hpp"
 #include "ocean/render.hpp"
@@ -89,6 +90,7 @@ struct Renderer::State {
   std::array<double, kMaxCascades> patch_size_m{};  // L_c in double, for the origin's phase (R.16)
   double hs_m = 1.0;
   FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
+  FarMapPass far_map;       // the per-frame noise map and its window (far_map.cpp, R.13b)
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
   // The local layer (R.19): an RGBA16F array of two layers, (Dx, h, Dz, 0) and (Δs, Δf, 0), 1×1
@@ -193,6 +195,15 @@ void record_local_upload(Renderer::State& st, VkCommandBuffer cmd);
 // damping.cpp: the same for the damping's weights and depth.
 Status create_damping(Renderer::State& st);
 void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd);
+
+// far_map.cpp: the far field's noise map (R.13b). Its sampler, compute pass and a 1×1 image of
+// zeros (at make()); a frame's map staged for the next record() (allocates when N changes); its
+// conversion and mips recorded before the scene; its uniforms (the window, the lattice at O, t).
+Status create_far_map(Renderer::State& st);
+void destroy_far_map(Renderer::State& st);
+Status upload_far_map(Renderer::State& st, const FarNoiseFrame& map, double time_s);
+void record_far_map(Renderer::State& st, VkCommandBuffer cmd);
+void fill_far_uniforms(const Renderer::State& st, shader::FrameUniforms& u);
 
 // tessellation.cpp: the tessellated mesh's pipelines and cell buffer (nothing where the device
 // lacks tessellation shaders), its push range in the scene layout, and its draw: the visible base

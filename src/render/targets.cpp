@@ -19,6 +19,7 @@ Renderer::State::~State() {
   destroy_objects(*this, true);
   destroy_stereo(*this, true);
   destroy_motion(*this, true);
+  destroy_far_map(*this);
   for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline, tessellated, tessellated_wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);

@@ -76,6 +76,7 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
       .far_m = f(view.far_field.far_m),
       .enabled = u.cascade_count > 0.0f ? 1.0f : 0.0f,
       .far_pad = 0.0f};
+  fill_far_uniforms(st, u);
   u.local = st.local;  // its origin relative to the frame's origin O, as every position (R.16)
   u.local.origin_m = {f(st.local_origin_m[0] - sel.grid_centre_x_m),
                       f(st.local_origin_m[1] - sel.grid_centre_z_m)};

@@ -110,6 +110,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   in.layer = layer.value();
   // The preset's picture settings, under the flags (--far-field-range wins).
   if (Status s = parse_view_flags(o.picture, sim, 1, in.scene, in.view); !s.ok()) return s;
+  if (in.calm) in.scene.config.far_noise.resolution = 0;  // no sea, no far field
   Result<std::optional<double>> ipd = parse_stereo_flags(o.stereo);
   if (!ipd.ok()) return ipd.status();
   in.ipd = ipd.value();
@@ -390,6 +391,7 @@ int run_render(const RenderOptions& o) {
   scene.simulator().set_local_layer(in.layer);
   std::shared_ptr<const waves::LocalLayer> driven_layer;  // in.layer plus the driven wakes
   if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
+  scene.follow(view);  // the far field's map around the camera (R.13b)
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
     // With motion vectors the first frame has one before it, 1/fps earlier (R.26).

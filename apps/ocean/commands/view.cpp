@@ -204,6 +204,7 @@ int run_view(const ViewOptions& o) {
   bool show_panel = true;
   std::uint64_t generation = 0;  // the presenter's swapchain the renderer is sized for
   double t = kStartTime_s;
+  scene.follow(in.view);  // the far field's map around the camera (R.13b)
   if (Status s = scene.warm_up(t, kWarmup_s); !s.ok()) return report(s);
   if (Status s = interaction.set_boat(panel.boat, t, scene.simulator()); !s.ok()) return report(s);
   if (Status s = interaction.set_shallows(in.shallows, scene_centre, config, renderer); !s.ok())
@@ -275,6 +276,7 @@ int run_view(const ViewOptions& o) {
     }
 
     if (!panel.paused) t += (in.frames > 0 ? kFixedStep_s : dt) * panel.time_scale;
+    scene.follow(in.view);
     if (Status s = scene.step(t); !s.ok()) return report(s);
     if (Status s = interaction.update(t, scene.simulator(), in.view); !s.ok()) return report(s);
     // A new mesh density uploads through the renderer's own command buffer: before ours.

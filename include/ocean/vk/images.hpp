@@ -4,7 +4,8 @@
 // they are, with no copy. A plain description of the vk layer: neither side depends on the other.
 //
 // Texel formats are those of the CPU Frame's arrays (ocean/sim.hpp): displacement as half floats
-// (Dx, h, Dz, 0), normal/foam as the packed RGBA8 mip chain (n_x, n_z, foam, smoothness).
+// (Dx, h, Dz, 0), normal/foam as the packed RGBA8 mip chain (n_x, n_z, foam, smoothness), the far
+// field's noise map as float3 in a buffer.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +23,11 @@ struct SimulationImages {
   VkImage normal_foam = VK_NULL_HANDLE;  ///< RGBA8 unorm (n_x, n_z, foam, smoothness), all mips
   VkImageView normal_foam_view = VK_NULL_HANDLE;
   std::uint32_t size = 0, layers = 0, mips = 0;  ///< side N, cascades, mip levels (log2 N + 1)
+  /// The far field's noise map (SimulationConfig::far_noise): a storage buffer of float3
+  /// (h, ∂h/∂x, ∂h/∂z) per texel, row-major, as Frame::far_noise's array; written by the frame's
+  /// submission like the images. VK_NULL_HANDLE and 0 while the map is off.
+  VkBuffer far_noise = VK_NULL_HANDLE;
+  std::uint32_t far_noise_resolution = 0;  ///< N texels per side
 };
 
 }  // namespace ocean::vk

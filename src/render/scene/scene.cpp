@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "ocean/backends.hpp"
+#include "ocean/far_field.hpp"
 #include "ocean/vk/simulation.hpp"
 
 namespace ocean::render {
@@ -63,7 +64,8 @@ Status Scene::step(double time_s) {
   simulator_->step(time_s);
   if (gpu_ != nullptr) {
     if (!gpu_->status().ok()) return gpu_->status();
-    renderer_->use_simulation_images(gpu_->images());
+    if (Status s = renderer_->use_simulation_images(gpu_->images(), simulator_->frame()); !s.ok())
+      return s;
   } else if (Status s = renderer_->upload(simulator_->frame()); !s.ok()) {
     return s;
   }
@@ -73,6 +75,13 @@ Status Scene::step(double time_s) {
   if (!local && !local_surface_) return {};
   local_surface_ = local;
   return renderer_->set_local_surface(simulator_->frame().local);
+}
+
+void Scene::follow(const View& view) {
+  const FarNoiseConfig& window = simulator_->config().far_noise;
+  if (window.resolution == 0) return;
+  simulator_->set_far_noise_origin(
+      far_noise_origin(window, view.camera.position_m.x, view.camera.position_m.z));
 }
 
 Status Scene::warm_up(double time_s, double warmup_s, double rate_hz) {

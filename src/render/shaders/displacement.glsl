@@ -39,12 +39,21 @@ vec3 sea_displacement(sampler2DArray map, vec2 xz, float spacing) {
     }
     vec3 sim = w * band_weight(damping, c) * (mixing.x * plain + mixing.y * tiled);
     if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
-      float h, sx, sz;
-      vec3 cell = u.far_field.cell_m.xyz;
-      vec2 p = noise_xz(xz);
-      far_field_noise(u.far_field, p.x, p.y, clamp(2.0 - 4.0 * spacing / cell.x, 0.0, 1.0),
-                      clamp(2.0 - 4.0 * spacing / cell.y, 0.0, 1.0),
-                      clamp(2.0 - 4.0 * spacing / cell.z, 0.0, 1.0), h, sx, sz);
+      // The map where it resolves more than the mesh does, the mean over a vertex spacing
+      // (R.13b); the analytic octaves, each faded as R.9, elsewhere.
+      float from_map = far_map_weight(xz, spacing);
+      float h = 0.0;
+      if (from_map > 0.0) {
+        float texel = u.far_map.size_m / u.far_map.resolution;
+        float lod = clamp(log2(max(spacing / texel, 1.0)), 0.0, u.far_map.coarsest_mip);
+        h = from_map * textureLod(far_map, vec3(far_map_uv(xz), 0.0), lod).x;
+      }
+      if (from_map < 1.0) {
+        float ha, sx, sz;
+        vec3 cell = u.far_field.cell_m.xyz;
+        far_noise_at(xz, clamp(2.0 - 4.0 * spacing / cell, 0.0, 1.0), ha, sx, sz);
+        h += (1.0 - from_map) * ha;
+      }
       sim = blend.x * sim + vec3(0.0, blend.y * h, 0.0);
     }
     displacement += sim;

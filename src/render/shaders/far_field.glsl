@@ -21,6 +21,37 @@ float far_ratio_at(vec2 xz) {
   return far_ratio(u.far_field, length(vec3(xz.x, 0.0, xz.y) - eye_position()));
 }
 
+// The far field's per-frame noise map (R.13b): (h, ∂h/∂x, ∂h/∂z, (∂h/∂x)² + (∂h/∂z)²) per
+// texel with its mip chain, the means over 2^l × 2^l texels (LEAN mapping's first and second
+// moments, Olano & Baker 2010).
+layout(set = 0, binding = OCEAN_RENDER_BINDING_FAR_MAP) uniform sampler2DArray far_map;
+
+// The three octaves (R.13) at xz relative to the origin, at the frame's time (R.13a).
+void far_noise_at(vec2 xz, vec3 weights, out float h, out float sx, out float sz) {
+  far_field_noise(u.far_field, u.far_octaves[0], u.far_octaves[1], u.far_octaves[2], xz.x, xz.y,
+                  weights.x, weights.y, weights.z, h, sx, sz);
+}
+
+// How much of the far field comes from the map at xz for samples `sample_m` apart (R.13b,
+// eq. R.13b-2): 1 inside the window, falling to 0 over its outer fade_texels texels (the
+// analytic noise beyond, the same field), times the share the map resolves: none where the
+// samples are at most a texel apart (the analytic noise, evaluated per sample, is exact there),
+// all from two texels on (the map's mips filter what the samples cannot resolve).
+float far_map_weight(vec2 xz, float sample_m) {
+  if (u.far_map.resolution <= 0.0) return 0.0;
+  float texel = u.far_map.size_m / u.far_map.resolution;
+  vec2 p = (xz - u.far_map.origin_m) / texel;  // texel centres at whole numbers
+  float last = u.far_map.resolution - 1.0;
+  float inside = min(min(p.x, p.y), min(last - p.x, last - p.y));
+  float window = clamp(inside / u.far_map.fade_texels, 0.0, 1.0);
+  return window * clamp(sample_m / texel - 1.0, 0.0, 1.0);
+}
+
+// Where the map is read at xz: texel (col, row)'s centre at origin + (col, row)·S/N.
+vec2 far_map_uv(vec2 xz) {
+  return (xz - u.far_map.origin_m) / u.far_map.size_m + 0.5 / u.far_map.resolution;
+}
+
 // Seed 003's eq. 7 with weights whose squares sum to one: two independent fields of equal
 // variance blend into one of the same variance (the printed (1 − R)·a + R·b has half of it at
 // R = 1/2, a calm band where the blend is). Returns the two weights.

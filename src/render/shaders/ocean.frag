@@ -108,13 +108,26 @@ void main() {
                         mixing.y * (tiled.foam - mean_foam), 0.0, 1.0);
     sh.extra = mixing.x * mixing.x * plain.extra + mixing.y * mixing.y * tiled.extra;
     if (c == 0 && ratio > 0.0) {  // cascade 0 becomes the noise (R.13)
-      vec3 cell = u.far_field.cell_m.xyz;
-      vec3 w = clamp(2.0 - 4.0 * footprint / cell, 0.0, 1.0);  // cells below 4 pixels fade
-      float h, sx, sz;
-      vec2 p = noise_xz(world_xz);
-      far_field_noise(u.far_field, p.x, p.y, w.x, w.y, w.z, h, sx, sz);
-      float unresolved = dot(1.0 - w * w, u.far_field.slope_variance.xyz);
-      sh.slope = blend.x * sh.slope + blend.y * vec2(sx, sz);
+      // From the map where it resolves more than the pixel does (R.13b): the mean slope over
+      // the footprint and, as roughness, the slope variance the averaging removed.
+      float from_map = far_map_weight(world_xz, footprint);
+      vec2 far_slope = vec2(0.0);
+      float unresolved = 0.0;
+      if (from_map > 0.0) {
+        float inv_size = 1.0 / u.far_map.size_m;
+        vec4 m = textureGrad(far_map, vec3(far_map_uv(world_xz), 0.0), dx * inv_size,
+                             dy * inv_size);
+        far_slope = from_map * m.yz;
+        unresolved = from_map * max(m.w - dot(m.yz, m.yz), 0.0);
+      }
+      if (from_map < 1.0) {  // the analytic octaves: cells below 4 pixels fade (R.13)
+        vec3 w = clamp(2.0 - 4.0 * footprint / u.far_field.cell_m.xyz, 0.0, 1.0);
+        float h, sx, sz;
+        far_noise_at(world_xz, w, h, sx, sz);
+        far_slope += (1.0 - from_map) * vec2(sx, sz);
+        unresolved += (1.0 - from_map) * dot(1.0 - w * w, u.far_field.slope_variance.xyz);
+      }
+      sh.slope = blend.x * sh.slope + blend.y * far_slope;
       sh.extra = blend.x * blend.x * sh.extra + blend.y * blend.y * unresolved;
     }
     float damped = band_weight(damping, c);  // amplitude weight: slopes scale, variances by its square

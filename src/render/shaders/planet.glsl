@@ -1,6 +1,6 @@
 // planet.glsl — positions in a large world and on a curved planet (docs/rendering.md R.15,
-// R.16): the cascades' texture coordinates and the far field's noise read from positions
-// relative to the frame's origin, and the curvature that bends the flat sea's far field down
+// R.16): the cascades' texture coordinates read from positions relative to the frame's origin
+// (the far field's noise: far_field.glsl), and the curvature that bends the flat sea's far field down
 // by d²/(2R) so that the horizon sits at the dip of a sphere of radius R.
 //
 // Sources: the geometric dip of the horizon, arccos(R/(R + h)) ≈ √(2h/R), at the distance
@@ -15,11 +15,6 @@
 // O/L_c computed in double on the CPU (R.16), plus the half-texel of the maps' sample grid.
 vec2 cascade_uv(vec2 xz, int c) {
   return xz / u.cascades[c].patch_size_m + u.cascade_origin[c].xy + 0.5 / u.cascades[c].resolution;
-}
-
-// The point at which the far field's noise is read (R.16).
-vec2 noise_xz(vec2 xz) {
-  return xz + u.planet.noise_origin_m;
 }
 
 // How far the sea at xz lies below the camera's tangent plane: d²/(2R), d its horizontal

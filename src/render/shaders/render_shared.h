@@ -10,7 +10,9 @@
 
 #ifdef __cplusplus
 #include <cstddef>
+#include <cstdint>
 namespace ocean::render::shader {
+using uint = std::uint32_t;
 struct vec2 {
   float x, y;
 };
@@ -46,7 +48,12 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_LOCAL 5         // sampler2DArray RGBA16F: (Dx, h, Dz); (Δs, Δf)
 #define OCEAN_RENDER_BINDING_DAMPING 6       // sampler2DArray RGBA16F: band weights 0-3, 4-7; depth
 #define OCEAN_RENDER_BINDING_REFLECTION 7    // sampler2D RGBA16F: objects mirrored in y = 0 (R.53)
-#define OCEAN_RENDER_SCENE_BINDINGS 8
+#define OCEAN_RENDER_BINDING_FAR_MAP 8  // sampler2DArray RGBA16F: (h, sx, sz, sx² + sz²), mips
+#define OCEAN_RENDER_SCENE_BINDINGS 9
+// The far field's map pass (compute, R.13b): the frame's float3 map in, mip 0 of the image out.
+#define OCEAN_RENDER_FAR_BINDING_SOURCE 0  // storage buffer, float3 (h, ∂h/∂x, ∂h/∂z) per texel
+#define OCEAN_RENDER_FAR_BINDING_IMAGE 1  // image2DArray rgba16f, level 0
+#define OCEAN_RENDER_FAR_TILE 8           // workgroup side
 // The deepest water the damping texture holds, m: deeper is deep water for every band.
 #define OCEAN_RENDER_DEEP_M 1000.0
 // Set 0 of the tone-map pipeline.
@@ -73,13 +80,33 @@ struct FarFieldUniforms {
   float far_pad;
 };
 
+// One octave of the far field's noise at the frame's origin O and time t (R.13a, R.13b): the
+// lattice coordinate (O − v_o·t)/s_o split on the CPU in double precision into whole cells
+// (wrapped modulo 2³², as the lattice's indices) and the rest, as the noise map's texels are.
+struct FarOctaveUniforms {
+  float rest_u;  // fractional part along x, [0, 1)
+  float rest_v;  // the same along z
+  uint cells_u;  // whole cells along x (two's complement)
+  uint cells_v;  // the same along z
+};
+
+// The far field's per-frame noise map (R.13b): where its window lies and how it hands over.
+struct FarMapUniforms {
+  vec2 origin_m;       // world (x, z) of texel (0, 0) relative to the frame's origin O
+  float size_m;        // side S of the window: texel (col, row) at origin + (col, row)·S/N
+  float resolution;    // N texels per side; 0: no map (the analytic noise everywhere)
+  float fade_texels;   // the map fades into the analytic noise over this many outer texels
+  float coarsest_mip;  // the last level of the image's mip chain
+  float map_pad0, map_pad1;
+};
+
 // Large worlds and the planet's curvature (docs/rendering.md R.15, R.16). Every position the
 // shaders see is relative to the frame's origin O (the quadtree's centre, chosen in double
 // precision on the CPU), so floats stay small however far the camera is from the world's origin.
 struct PlanetUniforms {
   float inv_two_radius_per_m;  // 1/(2R) of the curvature drop d²/(2R) (R.15); 0: flat
   float inv_radius_per_m;      // 1/R: the tilt of the surface's up vector per metre (R.15)
-  vec2 noise_origin_m;         // O wrapped to [0, 2^17) m: where the far field's noise is read
+  float planet_pad0, planet_pad1;
 };
 // Cascade c's reading of O: O/L_c wrapped to [0, M_c) periods (R.16); xy used, zw unused.
 #define OCEAN_RENDER_ORIGIN_WRAP_M 131072.0
@@ -178,6 +205,8 @@ struct FrameUniforms {
   SphereUniforms sphere;
   EyeUniforms eyes[2];  // stereo (OCEAN_MULTIVIEW shaders) only: eye 0 left, 1 right
   UnderwaterUniforms underwater;
+  FarOctaveUniforms far_octaves[3];  // the noise's lattice at O and t (R.13b)
+  FarMapUniforms far_map;            // the per-frame map (R.13b)
 };
 
 // Push constants of the sky pass (std430).
@@ -218,7 +247,11 @@ static_assert(sizeof(SphereUniforms) == 64);
 static_assert(sizeof(EyeUniforms) == 144);
 static_assert(offsetof(FrameUniforms, eyes) == 448 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, underwater) == 736 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 784 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FarOctaveUniforms) == 16);
+static_assert(offsetof(FrameUniforms, far_octaves) == 784 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FarMapUniforms) == 32);
+static_assert(offsetof(FrameUniforms, far_map) == 832 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 864 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
