@@ -117,9 +117,9 @@ Status create_layouts(FarMapPass& pass, const vk::Context& ctx) {
 
 // Checks a frame's map against what the renderer takes.
 Status check_map(const FarNoiseFrame& map) {
-  const bool side_ok = map.resolution == 0 || (map.resolution >= 16 && map.resolution <= 4096);
-  if (!side_ok || !std::isfinite(map.size_m) || !(map.size_m > 0.0) ||
-      !std::isfinite(map.origin_m[0]) || !std::isfinite(map.origin_m[1]))
+  if (map.resolution == 0) return {};  // no map: the analytic noise everywhere
+  if (map.resolution < 16 || map.resolution > 4096 || !std::isfinite(map.size_m) ||
+      !(map.size_m > 0.0) || !std::isfinite(map.origin_m[0]) || !std::isfinite(map.origin_m[1]))
     return invalid_argument("renderer: far-field noise map of " + std::to_string(map.resolution) +
                             " texels over " + std::to_string(map.size_m) +
                             " m: needs 0 or [16, 4096] texels over a finite positive size");

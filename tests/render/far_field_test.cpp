@@ -6,10 +6,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include "ocean/backends.hpp"
+#include "render/shaders/far_noise.h"
 
 namespace {
 
@@ -131,6 +134,89 @@ TEST(FarField, BadRangesAreRefused) {
     EXPECT_EQ(s.message().find('\n'), std::string::npos);
   }
   EXPECT_TRUE(ocean::render::validate(FarFieldRange{}).ok());
+}
+
+// The map's window (R.13b-1, R.13b-3): for cameras anywhere, the disc of radius D_max about the
+// camera lies inside the part of the window the map draws at full weight (kFarNoiseFadeTexels
+// from the last texel centres), the origin is a whole number of snap steps, and a camera that
+// moves by less than a texel without crossing a snap line keeps the origin exactly.
+TEST(FarField, MapWindowHoldsTheRangeAndSnaps) {
+  const FarFieldRange range{};
+  for (int n : {128, 512, 4096}) {
+    for (const std::array<double, 2> camera :
+         {std::array<double, 2>{0.0, 0.0}, {123.4, -5678.9}, {1e7 + 0.3, -3e6 - 17.0}}) {
+      auto window = ocean::render::far_noise_window(range, n, camera[0], camera[1]);
+      ASSERT_TRUE(window.ok()) << window.status().message();
+      const ocean::FarNoiseConfig& w = window.value();
+      const double texel = w.size_m / n;
+      const double snap = ocean::render::kFarNoiseSnapTexels * texel;
+      for (std::size_t axis = 0; axis < 2; ++axis) {
+        const double low = w.origin_m[axis] + ocean::render::kFarNoiseFadeTexels * texel;
+        const double high = w.origin_m[axis] + (n - 1 - ocean::render::kFarNoiseFadeTexels) * texel;
+        EXPECT_LE(low, camera[axis] - range.far_m) << n;
+        EXPECT_GE(high, camera[axis] + range.far_m) << n;
+        const double steps = w.origin_m[axis] / snap;
+        EXPECT_NEAR(steps, std::round(steps), 1e-6 * std::abs(steps) + 1e-9);
+      }
+      // Less than a texel, away from the snap line the camera sits next to.
+      const double inside = std::fmod(camera[0] - 0.5 * w.size_m - w.origin_m[0], snap);
+      const double step = inside < 0.5 * snap ? 0.4 * texel : -0.4 * texel;
+      EXPECT_EQ(ocean::render::far_noise_origin(w, camera[0] + step, camera[1] + step), w.origin_m);
+    }
+  }
+  for (int bad : {0, 64, 127, 4097}) {
+    auto window = ocean::render::far_noise_window(range, bad, 0.0, 0.0);
+    ASSERT_FALSE(window.ok());
+    EXPECT_EQ(window.status().message().find('\n'), std::string::npos);
+  }
+  EXPECT_FALSE(ocean::render::far_noise_window({.near_m = 1e5, .far_m = 5e5}, 512, 0.0, 0.0).ok());
+}
+
+// The renderer's analytic octaves (src/render/shaders/far_noise.h, the code its shaders run) on
+// the lattice far_noise_lattice places at a frame's origin O and time t (R.13b) are the CPU
+// reference far_field_noise(noise, O + xz, t) (R.13a) within the map's texel tolerance
+// (tests/sim/far_noise_test.cpp: float rounding of the lattice coordinate times the noise's
+// derivative bounds), far from the world's origin and three days into a simulation: the analytic
+// noise moves exactly as the map does.
+TEST(FarField, RendererOctavesAreTheMovingReference) {
+  auto fitted = ocean::render::fit_far_field_noise(moderate_heights());
+  ASSERT_TRUE(fitted.ok());
+  const ocean::render::FarFieldNoise& noise = fitted.value();
+  ocean::render::shader::FarFieldUniforms f{};
+  f.cell_m = {static_cast<float>(noise.cell_m[0]), static_cast<float>(noise.cell_m[1]),
+              static_cast<float>(noise.cell_m[2]), 0.0f};
+  f.amplitude_m = {static_cast<float>(noise.amplitude_m[0]),
+                   static_cast<float>(noise.amplitude_m[1]),
+                   static_cast<float>(noise.amplitude_m[2]), 0.0f};
+  for (const std::array<double, 3> case_ : {std::array<double, 3>{0.0, 0.0, 0.0},
+                                            {4096.0, -8192.0, 37.5},
+                                            {1.5e7, -3.25e6, 259200.0}}) {
+    const double ox = case_[0], oz = case_[1], t = case_[2];
+    std::array<ocean::render::shader::FarOctaveUniforms, 3> o{};
+    for (int i = 0; i < 3; ++i) {
+      const ocean::FarNoiseLattice l = ocean::far_noise_lattice(noise, i, ox, oz, t);
+      o[static_cast<std::size_t>(i)] = {l.rest_u, l.rest_v, l.cells_u, l.cells_v};
+    }
+    double worst_h = 0.0, worst_s = 0.0, tol_h = 0.0, tol_s = 0.0;
+    for (int i = 0; i < 3; ++i) {  // |xz| ≤ 3 km: the lattice coordinate is ≤ 1 + 3000/s_o
+      const double du = 4.0 * std::ldexp(1.0, -24) * (1.0 + 3000.0 / noise.cell_m[i]);
+      tol_h += noise.amplitude_m[i] * (15.0 * du + 1e-6);
+      tol_s += noise.amplitude_m[i] / noise.cell_m[i] * (48.0 * du + 1e-5);
+    }
+    for (int k = 0; k < 400; ++k) {
+      const float x = static_cast<float>(-3000.0 + 15.01 * k);
+      const float z = static_cast<float>(2900.0 - 14.57 * k);
+      float h = 0.0f, sx = 0.0f, sz = 0.0f;
+      ocean::render::shader::far_field_noise(f, o[0], o[1], o[2], x, z, 1.0f, 1.0f, 1.0f, h, sx,
+                                             sz);
+      const ocean::render::FarFieldSample r =
+          ocean::render::far_field_noise(noise, ox + x, oz + z, t);
+      worst_h = std::max(worst_h, std::abs(h - r.height_m));
+      worst_s = std::max({worst_s, std::abs(sx - r.slope_x), std::abs(sz - r.slope_z)});
+    }
+    EXPECT_LE(worst_h, tol_h) << "origin " << ox << ", " << oz << ", t = " << t;
+    EXPECT_LE(worst_s, tol_s) << "origin " << ox << ", " << oz << ", t = " << t;
+  }
 }
 
 }  // namespace

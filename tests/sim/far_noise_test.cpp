@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <memory>
@@ -96,6 +97,39 @@ TEST(FarNoiseMap, EveryTexelIsTheAnalyticNoiseAtItsPointAndTime) {
     EXPECT_LE(worst_s, tol.slope) << "t = " << t;
     EXPECT_GT(std::sqrt(rms / (n * n)), 100.0 * tol.height_m) << "a flat map proves nothing";
   }
+}
+
+// Simulator::set_far_noise_origin moves the window from the next step on: the frame says where
+// its map lies, and every texel is the analytic noise at its point of the new window.
+TEST(FarNoiseMap, MovingTheOriginMovesTheWindow) {
+  const SimulationConfig config = noise_small_config();
+  auto sim = ocean::Simulator::make(config, ocean::cpu::make_cpu_backend({}));
+  ASSERT_TRUE(sim.ok()) << sim.status().message();
+  auto noise = ocean::fit_far_field_noise(config);
+  ASSERT_TRUE(noise.ok());
+  const std::array<double, 2> moved = {98765.5, -4321.25};
+  sim.value()->set_far_noise_origin(moved);
+  EXPECT_EQ(sim.value()->config().far_noise.origin_m, moved);
+  const double t = 12.5;
+  sim.value()->step(t);
+  const ocean::FarNoiseFrame& map = sim.value()->frame().far_noise;
+  ASSERT_EQ(map.origin_m, moved);
+  ocean::FarNoiseConfig window = config.far_noise;
+  window.origin_m = moved;
+  const Tolerance tol = tolerance(noise.value(), window);
+  const int n = window.resolution;
+  const double spacing = window.size_m / n;
+  double worst_h = 0.0, worst_s = 0.0;
+  for (int row = 0; row < n; row += 7)
+    for (int col = 0; col < n; col += 5) {
+      const ocean::FarFieldSample a = ocean::far_field_noise(
+          noise.value(), moved[0] + col * spacing, moved[1] + row * spacing, t);
+      const float* m = &map.height_slope[3 * (std::size_t(row) * n + col)];
+      worst_h = std::max(worst_h, std::abs(m[0] - a.height_m));
+      worst_s = std::max({worst_s, std::abs(m[1] - a.slope_x), std::abs(m[2] - a.slope_z)});
+    }
+  EXPECT_LE(worst_h, tol.height_m);
+  EXPECT_LE(worst_s, tol.slope);
 }
 
 // The CPU task carries each octave's corner gradients along a row instead of hashing four per
