@@ -26,7 +26,7 @@ Status validate(const FarFieldRange& range);
 /// Seed 003's eq. 6: 0 up to near_m, 1 from far_m, the Hermite step −2t³ + 3t² between.
 double far_field_ratio(const FarFieldRange& range, double distance_m);
 
-/// The far field's noise map around a moving camera (docs/rendering.md R.13b, eqs. R.13b-1 and
+/// The far field's noise map around a moving camera (docs/rendering.md R.13b, eqs. R.13b-2 and
 /// R.13b-3). The window's origin is snapped to kFarNoiseSnapTexels texels, so the map's texels
 /// (and its first log2(32) = 5 mip levels) lie on the same world points however the camera
 /// moves, and the renderer fades the map out over its outer kFarNoiseFadeTexels texels.
@@ -36,16 +36,16 @@ inline constexpr int kFarNoiseFadeTexels = 16;
 inline constexpr int kFarNoiseMinResolution = 128;
 /// The map's default resolution in `ocean render` and `ocean view` (docs/performance.md: its
 /// cost on the CPU backend and on lavapipe).
-inline constexpr int kFarNoiseDefaultResolution = 512;
+inline constexpr int kFarNoiseDefaultResolution = 256;
 /// The window of N = `resolution` texels whose full-weight part holds the disc of radius
 /// range.far_m about every camera that far_noise_origin places in it: side
-/// S = 2·D_max/(1 − 2(32 + 16 + 1)/N) (R.13b-1), origin from far_noise_origin for the camera at
+/// S = 2·D_max/(1 − 2(32 + 16 + 1)/N) (R.13b-3), origin from far_noise_origin for the camera at
 /// (x, z). invalid_argument (one line) for a bad range or a resolution outside
 /// [kFarNoiseMinResolution, 4096], or a window beyond the simulation's 1e6 m.
 Result<FarNoiseConfig> far_noise_window(const FarFieldRange& range, int resolution, double x_m,
                                         double z_m);
 /// The origin of `window` (its size and resolution) for a camera at world (x, z): the corner
-/// S/2 before the camera, rounded down to a multiple of 32 texels (R.13b-3); the camera then lies
+/// S/2 before the camera, rounded down to a multiple of 32 texels (R.13b-2); the camera then lies
 /// within [S/2, S/2 + 32 texels) of the origin on each axis.
 std::array<double, 2> far_noise_origin(const FarNoiseConfig& window, double x_m, double z_m);
 

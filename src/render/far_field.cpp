@@ -36,7 +36,7 @@ Result<FarNoiseConfig> far_noise_window(const FarFieldRange& range, int resoluti
     return invalid_argument("far-field noise map resolution " + std::to_string(resolution) +
                             " is out of range: must be 0 (off) or in [" +
                             std::to_string(kFarNoiseMinResolution) + ", 4096]");
-  // R.13b-1: S/2 = D_max + (snap + fade + 1)·S/N.
+  // R.13b-3: S/2 = D_max + (snap + fade + 1)·S/N.
   constexpr int kMargin = 2 * (kFarNoiseSnapTexels + kFarNoiseFadeTexels + 1);
   const double size = 2.0 * range.far_m / (1.0 - static_cast<double>(kMargin) / resolution);
   if (!(size <= 1e6))
@@ -51,7 +51,7 @@ Result<FarNoiseConfig> far_noise_window(const FarFieldRange& range, int resoluti
 std::array<double, 2> far_noise_origin(const FarNoiseConfig& window, double x_m, double z_m) {
   const double snap = kFarNoiseSnapTexels * window.size_m / window.resolution;
   const auto corner = [&](double c) { return snap * std::floor((c - 0.5 * window.size_m) / snap); };
-  return {corner(x_m), corner(z_m)};  // R.13b-3
+  return {corner(x_m), corner(z_m)};  // R.13b-2
 }
 
 }  // namespace ocean::render

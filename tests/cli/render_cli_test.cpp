@@ -126,6 +126,12 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --far-field-range -5,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range nan,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range 100", "two distances DMIN,DMAX");
+  // The far field's noise map (R.13b): 0 (none) or 128..4096 texels, a window within 1e6 m.
+  ocean_test::expect_usage_error("render --far-noise-resolution 100", "[128, 4096]");
+  ocean_test::expect_usage_error("render --far-noise-resolution -1", "--far-noise-resolution");
+  ocean_test::expect_usage_error("render --far-noise-resolution 2.5", "--far-noise-resolution");
+  ocean_test::expect_usage_error("render --far-noise-resolution 512 --far-field-range 1000,500000",
+                                 "exceeds the simulation's 1e6 m");
   // ... and in a preset ("far_field_range"), refused before anything runs, by render and view.
   ocean_test::expect_usage_error("render --set 'far_field_range=[2000,1000]'",
                                  "far_field_range: [2000, 1000] must be finite distances with 0 "
@@ -245,8 +251,8 @@ TEST(RenderCli, TessellatedMeshRendersOrIsRefusedInOneLine) {
   ocean_test::expect_usage_error("render --mesh triangles", "quadtree or tessellation");
   if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   const fs::path out = scratch("tessellated.png");
-  const ocean_test::CliRun r =
-      ocean_test::run_cli("render --mesh tessellation --out " + out.string() + kRenderSmall + " --json");
+  const ocean_test::CliRun r = ocean_test::run_cli("render --mesh tessellation --out " +
+                                                   out.string() + kRenderSmall + " --json");
   if (r.exit_code != 0) {
     EXPECT_NE(r.err.find("lacks tessellation shaders"), std::string::npos) << r.err;
     EXPECT_EQ(line_count(r.err), 1) << r.err;

@@ -136,7 +136,7 @@ TEST(FarField, BadRangesAreRefused) {
   EXPECT_TRUE(ocean::render::validate(FarFieldRange{}).ok());
 }
 
-// The map's window (R.13b-1, R.13b-3): for cameras anywhere, the disc of radius D_max about the
+// The map's window (R.13b-3, R.13b-2): for cameras anywhere, the disc of radius D_max about the
 // camera lies inside the part of the window the map draws at full weight (kFarNoiseFadeTexels
 // from the last texel centres), the origin is a whole number of snap steps, and a camera that
 // moves by less than a texel without crossing a snap line keeps the origin exactly.

@@ -289,7 +289,7 @@ TEST(FarMapRender, CpuUploadAndVulkanBufferGiveTheSamePicture) {
   EXPECT_LE(d.max, 12);
 }
 
-// The window follows the camera in steps of 32 texels (R.13b-3): the same view drawn with the
+// The window follows the camera in steps of 32 texels (R.13b-2): the same view drawn with the
 // window one snap step along x and z keeps the picture within the bound of the upload and
 // zero-copy paths above (the map's texels and its first five mip levels lie on the same world
 // points; only coarser mips, float rounding and the outer fade move).

@@ -33,7 +33,7 @@ void far_noise_at(vec2 xz, vec3 weights, out float h, out float sx, out float sz
 }
 
 // How much of the far field comes from the map at xz for samples `sample_m` apart (R.13b,
-// eq. R.13b-2): 1 inside the window, falling to 0 over its outer fade_texels texels (the
+// eq. R.13b-1): 1 inside the window, falling to 0 over its outer fade_texels texels (the
 // analytic noise beyond, the same field), times the share the map resolves: none where the
 // samples are at most a texel apart (the analytic noise, evaluated per sample, is exact there),
 // all from two texels on (the map's mips filter what the samples cannot resolve).
