@@ -36,7 +36,7 @@ inline constexpr int kFarNoiseFadeTexels = 16;
 inline constexpr int kFarNoiseMinResolution = 128;
 /// The map's default resolution in `ocean render` and `ocean view` (docs/performance.md: its
 /// cost on the CPU backend and on lavapipe).
-inline constexpr int kFarNoiseDefaultResolution = 256;
+inline constexpr int kFarNoiseDefaultResolution = 512;
 /// The window of N = `resolution` texels whose full-weight part holds the disc of radius
 /// range.far_m about every camera that far_noise_origin places in it: side
 /// S = 2·D_max/(1 − 2(32 + 16 + 1)/N) (R.13b-3), origin from far_noise_origin for the camera at
