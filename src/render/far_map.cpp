@@ -1,8 +1,8 @@
 // The far field's per-frame noise map as the renderer samples it (docs/rendering.md R.13b): the
 // frame's float3 map (Frame::far_noise, uploaded; or the Vulkan backend's buffer, read where it
-// lies) turned on the device into an RGBA16F image of (h, ∂h/∂x, ∂h/∂z, |∇h|²) with its mip
-// chain, and the uniforms that place the map's window and the noise's lattice at the frame's
-// origin and time.
+// lies) turned on the device into an RGBA16F image of (h, ∂h/∂x, ∂h/∂z, |∇h|²) of the octaves it
+// resolves, with its mip chain, and the uniforms that place the map's window and the noise's
+// lattice at the frame's origin and time.
 //
 // This work is based on: VR-GIS FFT+Perlin, §III (the noise height and normal maps the renderer
 // reads); Olano, M. & Baker, D. (2010) "LEAN mapping" (the first and second moments of the slope
@@ -13,6 +13,7 @@
 #include <cstring>
 #include <string>
 
+#include "../sim/far_noise.h"
 #include "spirv.hpp"
 #include "state.hpp"
 
@@ -86,7 +87,7 @@ Status create_layouts(FarMapPass& pass, const vk::Context& ctx) {
                     "vkCreateDescriptorSetLayout");
       !s.ok())
     return s;
-  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(std::uint32_t)};
+  const VkPushConstantRange push{VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(noise::FarNoiseMapParams)};
   const VkPipelineLayoutCreateInfo layout_info{
       .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
       .setLayoutCount = 1,
@@ -124,6 +125,42 @@ Status check_map(const FarNoiseFrame& map) {
                             " texels over " + std::to_string(map.size_m) +
                             " m: needs 0 or [16, 4096] texels over a finite positive size");
   return {};
+}
+
+// Whether the map holds octave o (R.13b): its cells span at least four texels. Finer octaves
+// alias in the map's point samples; the per-pixel noise draws them.
+bool octave_in_map(const Renderer::State& st, int o) {
+  const FarMapPass& pass = st.far_map;
+  const double texel = pass.size_m / pass.resolution;
+  return st.far_noise.cell_m[static_cast<std::size_t>(o)] >= 4.0 * texel;
+}
+
+// The octaves the conversion removes from the map: the map's own parameters at its window and
+// time (the split of far_noise_lattice, as the simulation's), the kept octaves' amplitudes 0.
+noise::FarNoiseMapParams removed_octaves(const Renderer::State& st) {
+  const FarMapPass& pass = st.far_map;
+  constexpr std::array<std::uint32_t, 3> kSeeds = {OCEAN_FAR_SEED0, OCEAN_FAR_SEED1,
+                                                   OCEAN_FAR_SEED2};
+  noise::FarNoiseMapParams p{};
+  p.resolution = pass.side;
+  const double texel = pass.size_m / pass.resolution;
+  for (int o = 0; o < 3; ++o) {
+    const auto i = static_cast<std::size_t>(o);
+    const double s = st.far_noise.cell_m[i];
+    const FarNoiseLattice l =
+        far_noise_lattice(st.far_noise, o, pass.origin_m[0], pass.origin_m[1], pass.time_s);
+    p.octave[i] = {.origin_u = l.rest_u,
+                   .origin_v = l.rest_v,
+                   .shift_u = l.cells_u,
+                   .shift_v = l.cells_v,
+                   .step = static_cast<float>(texel / s),
+                   .amplitude_m = octave_in_map(st, o)
+                                      ? 0.0f
+                                      : static_cast<float>(st.far_noise.amplitude_m[i]),
+                   .inv_cell = static_cast<float>(1.0 / s),
+                   .seed = kSeeds[i]};
+  }
+  return p;
 }
 
 void place(FarMapPass& pass, const FarNoiseFrame& map, double time_s) {
@@ -239,6 +276,7 @@ void record_far_map(Renderer::State& st, VkCommandBuffer cmd) {
                 VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
     return;
   }
+  if (pass.resolution == 0) return;  // the map went before it was drawn
   // The source's writes (the host's, or the backend's compute and copies) → the conversion.
   vk::barrier(cmd,
               VK_PIPELINE_STAGE_HOST_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT |
@@ -247,7 +285,8 @@ void record_far_map(Renderer::State& st, VkCommandBuffer cmd) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set, 0,
                           nullptr);
-  vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(n), &n);
+  const noise::FarNoiseMapParams removed = removed_octaves(st);
+  vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(removed), &removed);
   const std::uint32_t groups = (n + OCEAN_RENDER_FAR_TILE - 1) / OCEAN_RENDER_FAR_TILE;
   vkCmdDispatch(cmd, groups, groups, 1);
   vk::barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
@@ -276,7 +315,9 @@ void fill_far_uniforms(const Renderer::State& st, shader::FrameUniforms& u) {
         .rest_u = l.rest_u, .rest_v = l.rest_v, .cells_u = l.cells_u, .cells_v = l.cells_v};
   }
   const bool on = pass.resolution > 0 && pass.side == static_cast<std::uint32_t>(pass.resolution);
-  u.far_map = {.origin_m = {static_cast<float>(pass.origin_m[0] - ox),
+  const auto in_map = [&](int o) { return on && octave_in_map(st, o) ? 1.0f : 0.0f; };
+  u.far_map = {.in_map = {in_map(0), in_map(1), in_map(2), 0.0f},
+               .origin_m = {static_cast<float>(pass.origin_m[0] - ox),
                             static_cast<float>(pass.origin_m[1] - oz)},
                .size_m = static_cast<float>(pass.size_m),
                .resolution = on ? static_cast<float>(pass.resolution) : 0.0f,

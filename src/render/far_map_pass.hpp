@@ -1,7 +1,8 @@
 // The far field's noise map as the renderer samples it (src/render, private; docs/rendering.md
-// R.13b): an RGBA16F image with its mip chain, (h, ∂h/∂x, ∂h/∂z, (∂h/∂x)² + (∂h/∂z)²), filled on
-// the device from a float3 buffer — the renderer's own (upload path) or a Vulkan backend's (no
-// copy) — by shaders/far_map.comp, the coarser levels by blits. 1×1 while there is no map.
+// R.13b): an RGBA16F image with its mip chain, (h, ∂h/∂x, ∂h/∂z, (∂h/∂x)² + (∂h/∂z)²) of the
+// octaves whose cells span at least four texels, filled on the device from a float3 buffer — the
+// renderer's own (upload path) or a Vulkan backend's (no copy) — by shaders/far_map.comp, the
+// coarser levels by blits. 1×1 while there is no map.
 #pragma once
 
 #include <array>

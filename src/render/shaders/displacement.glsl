@@ -48,11 +48,12 @@ vec3 sea_displacement(sampler2DArray map, vec2 xz, float spacing) {
         float lod = clamp(log2(max(spacing / texel, 1.0)), 0.0, u.far_map.coarsest_mip);
         h = from_map * textureLod(far_map, vec3(far_map_uv(xz), 0.0), lod).x;
       }
-      if (from_map < 1.0) {
+      vec3 share = 1.0 - from_map * u.far_map.in_map.xyz;  // octaves not from the map
+      if (max(share.x, max(share.y, share.z)) > 0.0) {
         float ha, sx, sz;
         vec3 cell = u.far_field.cell_m.xyz;
-        far_noise_at(xz, clamp(2.0 - 4.0 * spacing / cell, 0.0, 1.0), ha, sx, sz);
-        h += (1.0 - from_map) * ha;
+        far_noise_at(xz, share * clamp(2.0 - 4.0 * spacing / cell, 0.0, 1.0), ha, sx, sz);
+        h += ha;
       }
       sim = blend.x * sim + vec3(0.0, blend.y * h, 0.0);
     }

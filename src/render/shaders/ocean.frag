@@ -120,12 +120,15 @@ void main() {
         far_slope = from_map * m.yz;
         unresolved = from_map * max(m.w - dot(m.yz, m.yz), 0.0);
       }
-      if (from_map < 1.0) {  // the analytic octaves: cells below 4 pixels fade (R.13)
+      // The analytic octaves elsewhere and those the map does not hold: cells below 4 pixels
+      // fade (R.13).
+      vec3 share = 1.0 - from_map * u.far_map.in_map.xyz;
+      if (max(share.x, max(share.y, share.z)) > 0.0) {
         vec3 w = clamp(2.0 - 4.0 * footprint / u.far_field.cell_m.xyz, 0.0, 1.0);
         float h, sx, sz;
-        far_noise_at(world_xz, w, h, sx, sz);
-        far_slope += (1.0 - from_map) * vec2(sx, sz);
-        unresolved += (1.0 - from_map) * dot(1.0 - w * w, u.far_field.slope_variance.xyz);
+        far_noise_at(world_xz, w * share, h, sx, sz);
+        far_slope += vec2(sx, sz);
+        unresolved += dot(share * (1.0 - w * w), u.far_field.slope_variance.xyz);
       }
       sh.slope = blend.x * sh.slope + blend.y * far_slope;
       sh.extra = blend.x * blend.x * sh.extra + blend.y * blend.y * unresolved;

@@ -50,7 +50,9 @@ struct mat4 {
 #define OCEAN_RENDER_BINDING_REFLECTION 7    // sampler2D RGBA16F: objects mirrored in y = 0 (R.53)
 #define OCEAN_RENDER_BINDING_FAR_MAP 8  // sampler2DArray RGBA16F: (h, sx, sz, sx² + sz²), mips
 #define OCEAN_RENDER_SCENE_BINDINGS 9
-// The far field's map pass (compute, R.13b): the frame's float3 map in, mip 0 of the image out.
+// The far field's map pass (compute, R.13b): the frame's float3 map in, less the octaves the map
+// does not resolve (push constants: the noise's FarNoiseMapParams, those octaves' amplitudes
+// set, the others 0), mip 0 of the image out.
 #define OCEAN_RENDER_FAR_BINDING_SOURCE 0  // storage buffer, float3 (h, ∂h/∂x, ∂h/∂z) per texel
 #define OCEAN_RENDER_FAR_BINDING_IMAGE 1  // image2DArray rgba16f, level 0
 #define OCEAN_RENDER_FAR_TILE 8           // workgroup side
@@ -90,8 +92,10 @@ struct FarOctaveUniforms {
   uint cells_v;  // the same along z
 };
 
-// The far field's per-frame noise map (R.13b): where its window lies and how it hands over.
+// The far field's per-frame noise map (R.13b): which octaves it holds, where its window lies and
+// how it hands over.
 struct FarMapUniforms {
+  vec4 in_map;         // x, y, z: 1 where octave 0, 1, 2 is read from the map, 0 where per pixel
   vec2 origin_m;       // world (x, z) of texel (0, 0) relative to the frame's origin O
   float size_m;        // side S of the window: texel (col, row) at origin + (col, row)·S/N
   float resolution;    // N texels per side; 0: no map (the analytic noise everywhere)
@@ -249,9 +253,9 @@ static_assert(offsetof(FrameUniforms, eyes) == 448 + 32 * OCEAN_RENDER_MAX_CASCA
 static_assert(offsetof(FrameUniforms, underwater) == 736 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(FarOctaveUniforms) == 16);
 static_assert(offsetof(FrameUniforms, far_octaves) == 784 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FarMapUniforms) == 32);
+static_assert(sizeof(FarMapUniforms) == 48);
 static_assert(offsetof(FrameUniforms, far_map) == 832 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 864 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 880 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
