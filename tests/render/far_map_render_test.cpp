@@ -274,6 +274,27 @@ TEST(FarMapRender, TheMapIsWhatIsDrawnWhereItResolvesTheNoise) {
   EXPECT_GT(far_difference, 0.25 * far_detail);
 }
 
+// The conversion subtracts the octaves the map does not hold with the arithmetic that made the
+// map (R.13b): with 128 texels (167 m, no octave's cell spans four) the image holds rounding
+// residues only and every octave is drawn per pixel, so the picture is the one without a map —
+// were the subtraction misplaced, the map would add the field a second time where it draws.
+TEST(FarMapRender, AMapThatHoldsNoOctaveDrawsTheAnalyticPicture) {
+  REQUIRE_DEVICE();
+  auto scene = far_map_scene(false, "cpu", kMapW, kMapH);
+  ASSERT_NE(scene, nullptr);
+  const View view = far_map_view(kMapW, kMapH);
+  ASSERT_TRUE(scene->step(20.0).ok());
+  const std::vector<std::uint8_t> analytic = far_map_draw(*scene, view);
+  ocean::SimulationConfig coarse = far_map_config(true, 128);
+  coarse.far_noise = ocean::render::far_noise_window({}, 128, kMapEye[0], kMapEye[2]).value();
+  ASSERT_TRUE(scene->reconfigure(coarse).ok());
+  ASSERT_TRUE(scene->step(20.0).ok());
+  ASSERT_EQ(scene->simulator().frame().far_noise.resolution, 128);
+  const auto d = difference(analytic, far_map_draw(*scene, view));
+  std::printf("a map holding no octave against none: mean %.4f LSB, max %d LSB\n", d.mean, d.max);
+  EXPECT_LE(d.max, 1);
+}
+
 // The two paths of R.13b: Frame::far_noise uploaded (CPU backend) and the Vulkan backend's buffer
 // read where it lies give the same picture within the bound of tests/render/scene_test.cpp (the
 // backends' maps agree within ocean/conformance.hpp's kFarNoiseDeviceBounds, their cascades
