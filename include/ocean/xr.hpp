@@ -1,8 +1,10 @@
 // ocean/xr.hpp — an OpenXR session for a headset: instance, the HMD system, a Vulkan context on
 // the device the runtime renders with (XR_KHR_vulkan_enable), a stereo session with one
 // swapchain per eye, and the frame loop's calls (xrWaitFrame, xrBeginFrame, xrLocateViews,
-// xrEndFrame). The library draws nothing here: the caller records each eye's picture (the
-// renderer's record()) and the session copies it into the eye's swapchain image.
+// xrEndFrame), and each located view as the renderer's camera (eye_camera). The library draws
+// nothing here: the caller records both eyes in one pass (the renderer's record_stereo()) and
+// the session copies each half into its eye's swapchain image, or records each eye (record())
+// and the session copies it.
 //
 // A frame:
 //   session->poll_events();                       // begins/ends the session as the runtime says
