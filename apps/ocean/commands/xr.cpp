@@ -179,8 +179,10 @@ Command add_xr_command(CLI::App& app) {
                 "OpenXR core validation layer and Vulkan validation layer on");
   cmd->add_flag("--no-multiview", options->no_multiview,
                 "Render the eyes one after the other even when the device has multiview");
-  cmd->add_flag("--json", options->json,
-                "Print the frames' predicted display times and simulation times as JSON");
+  cmd->add_flag(
+      "--json", options->json,
+      "Print the frames' predicted display times and simulation times, and whether both eyes "
+      "were drawn in one multiview pass, as JSON");
   return {cmd, [options] { return run_xr(*options); }};
 }
 
