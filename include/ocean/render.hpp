@@ -273,8 +273,16 @@ class Renderer {
   /// unsupported when the context lacks multiview (Context::multiview); invalid_argument for an
   /// IPD that is negative or not finite, or an odd width.
   Status record_stereo(VkCommandBuffer cmd, const View& view, double ipd_m);
+  /// Stereo in one pass from two arbitrary eyes (R.25, R.27): `eyes` left then right, each its
+  /// own pose, roll and field of view (lod::Camera::up, lod::Camera::fov: a headset's located
+  /// views). view.camera is the head: the LOD's distances are measured from its position, and
+  /// the selection is culled by the planes bounding both eyes' frusta (lod::bounding_frustum).
+  /// Otherwise as above; invalid_argument naming the eye for an invalid eye camera.
+  Status record_stereo(VkCommandBuffer cmd, const View& view,
+                       const std::array<lod::Camera, 2>& eyes);
   /// record_stereo() on the renderer's own command buffer, submitted and waited for.
   Status draw_stereo(const View& view, double ipd_m);
+  Status draw_stereo(const View& view, const std::array<lod::Camera, 2>& eyes);
   /// Motion vectors (docs/rendering.md R.26) from the next draw() on (true), or none (false, the
   /// default): per pixel, how far the surface point seen there moved on the screen since the
   /// previous draw — the camera's motion and the waves' (the same undisplaced point, the
@@ -322,7 +330,7 @@ class Renderer {
 /// human interpupillary distance", 2004: 63 mm; headsets default to 63–64 mm).
 inline constexpr double kDefaultIpd_m = 0.064;
 /// The left and right eyes of a head whose camera is `head` (docs/rendering.md R.25): moved by
-/// ∓ipd/2 along the head's right axis (forward × world up), looking along the head's direction
+/// ∓ipd/2 along the head's right axis (forward × the head's up), looking along the head's direction
 /// (parallel axes) with its field of view, aspect, near and far planes. invalid_argument for an
 /// IPD that is negative or not finite.
 Result<std::array<lod::Camera, 2>> stereo_eyes(const lod::Camera& head, double ipd_m);
