@@ -128,7 +128,8 @@ inline SeaStateParams default_sea_state() {
 /// on a square window of the world, each octave advected at the mean phase velocity of the waves
 /// it stands for. Computed by the backend beside the cascades: on the CPU as a task of the frame
 /// graph next to the cascades' chains, on Vulkan as a dispatch in the frame's submission with no
-/// barrier between it and the FFT. Off by default (resolution 0): no map, no work.
+/// barrier between it and the FFT, on CUDA on a stream of its own in the frame's graph. Off by
+/// default (resolution 0): no map, no work.
 struct FarNoiseConfig {
   int resolution = 0;  ///< N texels per side: 0 (off) or in [16, 4096]
   /// World (x, z) of texel (0, 0), m; texel (col, row) is the point origin + (col, row)·size/N.

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "errors.hpp"
+#include "far_noise_state.hpp"
 
 namespace ocean::cuda::detail {
 namespace {
@@ -81,6 +82,12 @@ Status issue_op(DeviceState& st, const Op& op) {
                                      l.readback.bytes, cudaMemcpyDeviceToHost, stream),
                      "the readback copy");
       break;
+    case Op::noise_params:
+    case Op::noise:
+    case Op::noise_readback:
+      if (Status s = issue_noise_op(st, op, stream); !s.ok()) return s;
+      break;
+    case Op::fork:
     case Op::join: break;
   }
   if (op.records >= 0)
@@ -92,7 +99,7 @@ Status issue_op(DeviceState& st, const Op& op) {
 }  // namespace
 
 DeviceState::~DeviceState() {
-  for (cudaGraphExec_t g : {frame, simulation, serial})
+  for (cudaGraphExec_t g : {frame, simulation, serial, cascades_alone, noise_alone})
     if (g != nullptr) (void)cudaGraphExecDestroy(g);
   for (cufftHandle p : plans) (void)cufft->destroy(p);
   for (cudaEvent_t e : events) (void)cudaEventDestroy(e);
@@ -157,7 +164,7 @@ Status create_device_state(DeviceState& st, const Layout& l, const CufftLibrary*
     a.packed_mips = reinterpret_cast<std::uint32_t*>(output(packed_mips));
     st.args.push_back(a);
   }
-  return {};
+  return create_noise_state(st);
 }
 
 Status issue(DeviceState& st, const Schedule& schedule, bool capture, cudaGraphExec_t* graph) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "cufft_library.hpp"
+#include "far_noise_kernel.hpp"
 #include "kernels.hpp"
 #include "ocean/cuda/simulation.hpp"
 #include "plan.hpp"
@@ -25,14 +26,18 @@ struct DeviceState {
   FrameParams* params_device = nullptr;
   char* host = nullptr;                  // pinned: Layout::host_bytes(), every readback block
   FrameParams* params_host = nullptr;    // pinned, rewritten before each frame
-  std::vector<cudaStream_t> streams;     // origin + one per cascade
-  std::vector<cudaEvent_t> events;       // fork + one join per cascade (no timing)
+  std::vector<cudaStream_t> streams;     // origin + one per cascade (+ the noise map's)
+  std::vector<cudaEvent_t> events;       // fork + one join per cascade (+ the map's), no timing
   std::vector<cufftHandle> plans;        // cuFFT: per cascade, `planes` 2-D N×N C2C transforms
   std::vector<CascadeArgs> args;         // per cascade
   cudaGraphExec_t frame = nullptr;       // concurrent, with readback: what step() launches
   cudaGraphExec_t simulation = nullptr;  // concurrent, no readback (time_frames)
   cudaGraphExec_t serial = nullptr;      // one stream, no readback (time_frames)
   cudaEvent_t start = nullptr, stop = nullptr;  // timing events
+  // The far field's noise map (far_noise_state.cpp), when Layout::noise_resolution > 0:
+  FarNoiseArgs noise;                        // its kernel's arguments
+  cudaGraphExec_t cascades_alone = nullptr;  // time_frames: the cascades without the map
+  cudaGraphExec_t noise_alone = nullptr;     // time_frames: the map without the cascades
 };
 
 /// Creates streams, events, buffers and plans (with `cufft`; nullptr for the own FFT kernels) for
