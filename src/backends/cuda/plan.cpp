@@ -72,7 +72,7 @@ Result<Layout> make_layout(const SimulationConfig& config) {
   return l;
 }
 
-Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback) {
+Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback, bool with_share) {
   Schedule s;
   s.streams = concurrent ? 1 + layout.cascades : 1;
   s.events = concurrent ? 1 + layout.cascades : 0;
@@ -87,6 +87,7 @@ Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback
       s.ops.push_back(
           {.kind = Op::mips, .cascade = c, .pass = static_cast<int>(p), .stream = stream});
     }
+    if (with_share) s.ops.push_back({.kind = Op::share, .cascade = c, .stream = stream});
     if (with_readback) s.ops.push_back({.kind = Op::readback, .cascade = c, .stream = stream});
     if (concurrent) {
       s.ops[first].waits = {0};

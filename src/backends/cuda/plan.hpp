@@ -75,7 +75,18 @@ Result<Layout> make_layout(const SimulationConfig& config);
 /// with one event per cascade (1 + c), which the final `join` op on the origin waits for; a serial
 /// one runs everything on the origin stream and uses no event.
 struct Op {
-  enum Kind { upload_params, evolve, fft, finalize, mips, readback, join } kind = upload_params;
+  /// share: the cascade's half4 displacement and RGBA8 chain copied, device to device, into the
+  /// renderer's shared buffer (ocean/interop.hpp, interop::inputs_layout).
+  enum Kind {
+    upload_params,
+    evolve,
+    fft,
+    finalize,
+    mips,
+    share,
+    readback,
+    join
+  } kind = upload_params;
   int cascade = -1;  ///< -1 for upload_params and join
   int pass = 0;      ///< for mips: index into Layout::mip_passes
   int stream = 0;
@@ -87,6 +98,8 @@ struct Schedule {
   int events = 0;
   std::vector<Op> ops;  ///< in issue order
 };
-Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback);
+/// `with_share`: each cascade's share op after its last mip pass, before its readback.
+Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback,
+                       bool with_share = false);
 
 }  // namespace ocean::cuda::detail
