@@ -53,12 +53,12 @@ Result<interop::SharedInputs> Renderer::share_inputs() {
   interop::SharedInputs out;
   out.layout =
       interop::inputs_layout(static_cast<int>(st.sim_size), static_cast<int>(st.sim_layers));
-  // Exported semaphores where the device can (timeline ones where those export); else local
-  // timeline semaphores, for a producer on the host or on this device (shared_semaphores()).
   if (!st.ctx->external_memory_fd)
     return unsupported("Vulkan device '" + st.ctx->info.name +
                        "': VK_KHR_external_memory_fd is not enabled "
                        "(ContextParams::external_interop)");
+  // Exported semaphores where the device can (timeline ones where those export); else local
+  // timeline semaphores, for a producer on the host or on this device (shared_semaphores()).
   const bool exported_semaphores = st.ctx->external_semaphore_fd;
   out.timeline = exported_semaphores ? st.ctx->timeline_exportable : st.ctx->timeline_semaphore;
   if (!exported_semaphores && !out.timeline)

@@ -152,6 +152,10 @@ Status CudaBackend::share_inputs(interop::SharedInputs& shared) {
         "CUDA backend: the shared inputs are for N = " + std::to_string(shared.layout.resolution) +
         " and " + std::to_string(shared.layout.cascades) + " cascades, configured for " +
         std::to_string(l.resolution) + " and " + std::to_string(l.cascades));
+  // The frame's half4 map and RGBA8 chain are what the share copies move (always read back).
+  if (l.outputs[detail::displacement_half].bytes != shared.layout.displacement_bytes ||
+      l.outputs[detail::packed_mips].bytes != shared.layout.mips_bytes)
+    return invalid_argument("CUDA backend: the shared layout's arrays differ from the frame's");
   if (shared.memory_fd < 0 || shared.written_fd < 0 || shared.read_fd < 0)
     return invalid_argument("CUDA backend: the shared inputs lack a descriptor");
   if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return s;
