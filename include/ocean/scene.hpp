@@ -1,17 +1,20 @@
 // ocean/scene.hpp — a simulation and a renderer on one Vulkan context: the glue an engine or a
 // tool would otherwise write between ocean/sim.hpp and ocean/render.hpp. With the CPU backend
 // each simulated Frame is uploaded into the renderer's images; with the Vulkan backend the
-// simulation's GPU images (ocean/vk/images.hpp) are sampled where they are, with no copy. The
-// pictures of the two agree within the backends' conformance bounds (tests/render/scene_test.cpp).
+// simulation's GPU images (ocean/vk/images.hpp) are sampled where they are, with no copy; with
+// the CUDA backend on the renderer's GPU each frame is written into the renderer's shared buffer
+// (ocean/interop.hpp; make() creates the context with ContextParams::external_interop), else
+// uploaded like the CPU backend's, and interop() says which. The pictures agree within the
+// backends' conformance bounds (tests/render/scene_test.cpp).
 //
 // Contract: make() creates the context (or takes the caller's), the simulator and the renderer,
 // and configures both; step() and warm_up() simulate and hand the result over without allocating
 // (the CPU upload copies into a staging buffer made by configure). Every failure is a Status:
-// invalid_argument for a backend name other than cpu/vulkan or a bad configuration, unsupported
-// where the context has no graphics queue or no Vulkan device exists, device failures from the
-// Vulkan backend's status(); with the cuda backend, `unsupported` "no CUDA device: ..." where
-// there is none, before any Vulkan object is made. Threading: one thread drives a scene (it drives
-// the renderer and the simulator, which share the context's queue).
+// invalid_argument for a backend name other than cpu/vulkan/cuda or a bad configuration,
+// unsupported where the context has no graphics queue or no Vulkan device exists, device failures
+// from the Vulkan backend's status(); with the cuda backend, `unsupported` "no CUDA device: ..."
+// where there is none, before any Vulkan object is made. Threading: one thread drives a scene (it
+// drives the renderer and the simulator, which share the context's queue).
 #pragma once
 
 #include <memory>
