@@ -39,10 +39,10 @@ struct PanelStats {
 };
 
 struct PanelActions {
-  bool sea_changed = false;      ///< state.sea was edited: reconfigure the simulation
-  bool quality_changed = false;  ///< view.quality is a new preset
-  bool reset_camera = false;     ///< back to the --camera/--target pose
-  bool boat_changed = false;     ///< state.boat was edited: make the wake's layer again
+  bool sea_changed = false;       ///< state.sea was edited: reconfigure the simulation
+  bool quality_changed = false;   ///< view.quality is a new preset
+  bool reset_camera = false;      ///< back to the --camera/--target pose
+  bool boat_changed = false;      ///< state.boat was edited: make the wake's layer again
   bool shallows_changed = false;  ///< state.shallows is a new scene
   bool quit = false;
 };
