@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "ocean/far_field.hpp"
+#include "ocean/interop.hpp"
 #include "ocean/lod.hpp"
 #include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
@@ -224,6 +225,24 @@ class Renderer {
   /// GPU path: samples these images (a VulkanBackend's on the same context) from now on, until
   /// upload() or configure() is called. The images must stay alive while they are in use.
   void use_simulation_images(const vk::SimulationImages& images);
+  /// Shared path (a simulation on another API on the same GPU: CUDA; ocean/interop.hpp): makes a
+  /// device-local buffer in interop::inputs_layout of the configuration, exportable, and two
+  /// exportable semaphores (timeline where they export, else binary; see shared_semaphores()
+  /// for a device that exports none), and returns their descriptors for the simulation to
+  /// import. Needs configure() first and a context made with ContextParams::external_interop
+  /// (else `unsupported` naming the missing extension); replaced by the next share_inputs() and
+  /// released by configure().
+  Result<interop::SharedInputs> share_inputs();
+  /// Shared path, frame n (1, 2, …, one per frame the simulation wrote): submits, on the queue, a
+  /// wait for `written` (≥ n, or the binary signal), the copy of the shared buffer into the
+  /// sampled images and the signal of `read` (= n); the next draw samples frame n. No host wait
+  /// for the simulation; waits only for the previous take's copy to have finished (its fence).
+  Status take_shared(std::uint64_t frame);
+  /// The shared path's semaphores {written, read}; null before share_inputs(). Where the device
+  /// cannot export semaphores (no VK_KHR_external_semaphore_fd: SharedInputs::written_fd and
+  /// read_fd are −1) they are timeline semaphores of this device, for a producer on the host
+  /// (vkSignalSemaphore, vkWaitSemaphores) or on this device; a CUDA producer needs them exported.
+  [[nodiscard]] std::array<VkSemaphore, 2> shared_semaphores() const;
   /// The local layer alone (ocean/waves.hpp: wakes and waveforms; docs/rendering.md R.19) to add
   /// to the cascades from the next draw on, until this or set_local_surface is called again:
   /// `grid` is a LocalFrame's area and displacement (float3 (Dx, h, Dz) per cell, row-major, rows

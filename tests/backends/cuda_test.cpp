@@ -240,6 +240,26 @@ TEST(CudaSchedule, CascadesRunOnTheirOwnStreamsBetweenForkAndJoin) {
     if (readback) expected.push_back(d::Op::readback);
     for (const auto& chain : chains) EXPECT_EQ(chain, expected);
   }
+  // The shared frame (CudaBackend::share_inputs): each cascade's share copies after its last mip
+  // pass (the RGBA8 chain is complete) and before its join event, on its own stream.
+  const d::Schedule shared = d::make_schedule(l, true, true, true);
+  std::vector<std::vector<d::Op::Kind>> chains(4);
+  for (const d::Op& op : shared.ops) {
+    if (op.cascade >= 0) chains[static_cast<std::size_t>(op.cascade)].push_back(op.kind);
+    if (op.kind == d::Op::share) {
+      EXPECT_EQ(op.stream, op.cascade + 1);
+    }
+  }
+  std::vector<d::Op::Kind> expected = {d::Op::evolve, d::Op::fft, d::Op::finalize};
+  for (std::size_t p = 1; p < l.mip_passes.size(); ++p) expected.push_back(d::Op::mips);
+  expected.push_back(d::Op::share);
+  expected.push_back(d::Op::readback);
+  for (const auto& chain : chains) EXPECT_EQ(chain, expected);
+  for (int c = 0; c < 4; ++c) {
+    auto last = std::find_if(shared.ops.rbegin(), shared.ops.rend(),
+                             [c](const d::Op& op) { return op.cascade == c; });
+    EXPECT_EQ(last->records, 1 + c);  // the join event follows the share copies
+  }
   const d::Schedule serial = d::make_schedule(l, false, true);
   EXPECT_EQ(serial.streams, 1);
   EXPECT_EQ(serial.events, 0);

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "ocean/far_noise.hpp"
+#include "ocean/interop.hpp"
 #include "ocean/sim.hpp"
 
 namespace ocean::cuda {
@@ -55,6 +56,7 @@ struct DeviceInfo {
   int multiprocessors = 0;
   bool usable = false;  ///< this build carries code the device runs (see reason otherwise)
   std::string reason;
+  interop::Uuid uuid{};  ///< cudaDeviceProp::uuid: equal to the Vulkan deviceUUID of the same GPU
 };
 
 /// What the CUDA runtime sees: the devices, or an error whose message starts "no CUDA device: "
@@ -108,6 +110,19 @@ class CudaBackend final : public Backend {
   Status submit(double time_s);
   Status read(Frame& out);
 
+  /// Zero-copy to a renderer on the same GPU (ocean/interop.hpp; Renderer::share_inputs): imports
+  /// the shared buffer (cudaImportExternalMemory, cudaExternalMemoryGetMappedBuffer) and the two
+  /// semaphores (cudaImportExternalSemaphore); from then on each frame n waits on the origin
+  /// stream for `read` ≥ n − 1 (none for n = 1), runs the frame's graph with the share copies
+  /// (device to device, after each cascade's mips) besides the readback, and signals `written`
+  /// = n. Every frame must then be taken by the renderer (Renderer::take_shared(shared_frame()))
+  /// before the next one is submitted, or the next one waits for ever. Imported descriptors are
+  /// set to −1 (the runtime owns them); on failure the rest stay the caller's
+  /// (interop::close_unimported). Needs configure() first; configure() ends the sharing.
+  Status share_inputs(interop::SharedInputs& shared);
+  /// The last frame written into the shared buffer (1, 2, …), 0 before the first or unshared.
+  [[nodiscard]] std::uint64_t shared_frame() const;
+
   /// The first failure of a frame since configure(); ok while everything works.
   [[nodiscard]] const Status& status() const { return status_; }
   /// The device's name, as list_devices() gives it.
@@ -120,6 +135,7 @@ class CudaBackend final : public Backend {
   Result<FrameTimings> time_frames(int frames);
 
  private:
+  Status submit_shared();  // the shared frame: wait `read`, graph, signal `written`
   int device_;
   FftEngine fft_;
   std::string device_name_;
@@ -136,6 +152,9 @@ class CudaBackend final : public Backend {
 /// The first usable device's backend, or `unsupported` "no CUDA device: ..." (see the contract);
 /// FftEngine::cufft where cuFFT does not load: `unsupported` naming the library.
 Result<std::unique_ptr<CudaBackend>> make_cuda_backend(FftEngine fft = FftEngine::automatic);
+/// Device `device` (an index of list_devices()), which must be usable; as above otherwise.
+Result<std::unique_ptr<CudaBackend>> make_cuda_backend(int device,
+                                                       FftEngine fft = FftEngine::automatic);
 
 /// Configures a backend for `config` and returns CudaBackend::time_frames(frames).
 Result<FrameTimings> benchmark(const SimulationConfig& config, int frames,

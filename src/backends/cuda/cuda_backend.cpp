@@ -149,6 +149,91 @@ Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runn
 
 void CudaBackend::allocate(Frame& frame) const { allocate_frame(config_, frame); }
 
+Status CudaBackend::share_inputs(interop::SharedInputs& shared) {
+  if (!gpu_) return invalid_argument("CUDA backend: share_inputs() before configure()");
+  DeviceState& g = *gpu_;
+  const detail::Layout& l = g.layout;
+  if (shared.layout.resolution != l.resolution || shared.layout.cascades != l.cascades)
+    return invalid_argument(
+        "CUDA backend: the shared inputs are for N = " + std::to_string(shared.layout.resolution) +
+        " and " + std::to_string(shared.layout.cascades) + " cascades, configured for " +
+        std::to_string(l.resolution) + " and " + std::to_string(l.cascades));
+  // The frame's half4 map and RGBA8 chain are what the share copies move (always read back).
+  if (l.outputs[detail::displacement_half].bytes != shared.layout.displacement_bytes ||
+      l.outputs[detail::packed_mips].bytes != shared.layout.mips_bytes)
+    return invalid_argument("CUDA backend: the shared layout's arrays differ from the frame's");
+  if (shared.memory_fd < 0 || shared.written_fd < 0 || shared.read_fd < 0)
+    return invalid_argument("CUDA backend: the shared inputs lack a descriptor");
+  if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return s;
+  g.release_shared();
+  const Status made = [&]() -> Status {
+    cudaExternalMemoryHandleDesc memory{};
+    memory.type = cudaExternalMemoryHandleTypeOpaqueFd;
+    memory.handle.fd = shared.memory_fd;
+    memory.size = shared.memory_bytes;
+    memory.flags = shared.dedicated ? cudaExternalMemoryDedicated : 0u;
+    if (Status s = to_status(cudaImportExternalMemory(&g.shared_memory, &memory),
+                             "cudaImportExternalMemory (the renderer's buffer)");
+        !s.ok())
+      return s;
+    shared.memory_fd = -1;
+    cudaExternalMemoryBufferDesc buffer{};
+    buffer.offset = 0;
+    buffer.size = shared.layout.bytes();
+    void* mapped = nullptr;
+    if (Status s = to_status(cudaExternalMemoryGetMappedBuffer(&mapped, g.shared_memory, &buffer),
+                             "cudaExternalMemoryGetMappedBuffer");
+        !s.ok())
+      return s;
+    g.shared = static_cast<char*>(mapped);
+    for (auto [fd, semaphore] :
+         {std::pair{&shared.written_fd, &g.written}, std::pair{&shared.read_fd, &g.read}}) {
+      cudaExternalSemaphoreHandleDesc desc{};
+      desc.type = shared.timeline ? cudaExternalSemaphoreHandleTypeTimelineSemaphoreFd
+                                  : cudaExternalSemaphoreHandleTypeOpaqueFd;
+      desc.handle.fd = *fd;
+      if (Status s = to_status(cudaImportExternalSemaphore(semaphore, &desc),
+                               "cudaImportExternalSemaphore (the renderer's semaphore)");
+          !s.ok())
+        return s;
+      *fd = -1;
+    }
+    g.shared_layout = shared.layout;
+    g.timeline = shared.timeline;
+    return detail::issue(g, detail::make_schedule(l, true, true, true), true, &g.shared_frame);
+  }();
+  if (!made.ok()) g.release_shared();
+  return made;
+}
+
+std::uint64_t CudaBackend::shared_frame() const {
+  return gpu_ && gpu_->shared_frame != nullptr ? gpu_->shared_frames : 0;
+}
+
+Status CudaBackend::submit_shared() {
+  DeviceState& g = *gpu_;
+  cudaStream_t origin = g.streams.front();
+  const std::uint64_t n = g.shared_frames + 1;
+  if (n > 1) {  // the renderer has copied frame n − 1 out of the buffer
+    cudaExternalSemaphoreWaitParams wait{};
+    wait.params.fence.value = n - 1;  // ignored for a binary semaphore
+    if (Status s = to_status(cudaWaitExternalSemaphoresAsync(&g.read, &wait, 1, origin),
+                             "cudaWaitExternalSemaphoresAsync");
+        !s.ok())
+      return s;
+  }
+  if (Status s = to_status(cudaGraphLaunch(g.shared_frame, origin), "cudaGraphLaunch"); !s.ok())
+    return s;
+  cudaExternalSemaphoreSignalParams signal{};
+  signal.params.fence.value = n;
+  if (Status s = to_status(cudaSignalExternalSemaphoresAsync(&g.written, &signal, 1, origin),
+                           "cudaSignalExternalSemaphoresAsync");
+      !s.ok())
+    return s;
+  g.shared_frames = n;
+  return {};
+}
+
 Status CudaBackend::submit(double time_s) {
   if (!status_.ok()) return status_;
   if (!gpu_) return status_ = Status(ErrorCode::internal, "CUDA backend used before configure()");
@@ -161,9 +246,13 @@ Status CudaBackend::submit(double time_s) {
                         .reset_foam = reset_foam ? 1u : 0u};
   detail::write_noise_params(*gpu_, far_noise_, config_.far_noise, time_s);
   if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return status_ = s;
-  if (Status s = to_status(cudaGraphLaunch(gpu_->frame, gpu_->streams.front()), "cudaGraphLaunch");
-      !s.ok())
+  if (gpu_->shared_frame != nullptr) {
+    if (Status s = submit_shared(); !s.ok()) return status_ = s;
+  } else if (Status s =
+                 to_status(cudaGraphLaunch(gpu_->frame, gpu_->streams.front()), "cudaGraphLaunch");
+             !s.ok()) {
     return status_ = s;
+  }
   pending_ = true;
   pending_time_s_ = time_s;
   last_time_s_ = time_s;

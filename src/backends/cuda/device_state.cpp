@@ -76,6 +76,20 @@ Status issue_op(DeviceState& st, const Op& op) {
       OCEAN_CUDA_TRY(launch_mips(st.args[c], p.source, p.tile, p.levels, stream), "the mip kernel");
       break;
     }
+    case Op::share: {
+      const char* readback = st.device + c * l.cascade_bytes + l.readback.offset;
+      const auto cascade = static_cast<int>(c);
+      OCEAN_CUDA_TRY(
+          cudaMemcpyAsync(st.shared + st.shared_layout.displacement_offset(cascade),
+                          readback + l.outputs[displacement_half].offset,
+                          st.shared_layout.displacement_bytes, cudaMemcpyDeviceToDevice, stream),
+          "the shared displacement copy");
+      OCEAN_CUDA_TRY(cudaMemcpyAsync(st.shared + st.shared_layout.mips_offset(cascade),
+                                     readback + l.outputs[packed_mips].offset,
+                                     st.shared_layout.mips_bytes, cudaMemcpyDeviceToDevice, stream),
+                     "the shared mip-chain copy");
+      break;
+    }
     case Op::readback:
       OCEAN_CUDA_TRY(cudaMemcpyAsync(st.host + c * l.readback.bytes,
                                      st.device + c * l.cascade_bytes + l.readback.offset,
@@ -98,7 +112,19 @@ Status issue_op(DeviceState& st, const Op& op) {
 
 }  // namespace
 
+void DeviceState::release_shared() {
+  if (shared_frame != nullptr) (void)cudaGraphExecDestroy(shared_frame);
+  for (cudaExternalSemaphore_t s : {written, read})
+    if (s != nullptr) (void)cudaDestroyExternalSemaphore(s);
+  if (shared != nullptr) (void)cudaFree(shared);
+  if (shared_memory != nullptr) (void)cudaDestroyExternalMemory(shared_memory);
+  shared_frame = nullptr, written = nullptr, read = nullptr, shared = nullptr;
+  shared_memory = nullptr;
+  shared_frames = 0;
+}
+
 DeviceState::~DeviceState() {
+  release_shared();
   for (cudaGraphExec_t g : {frame, simulation, serial, cascades_alone, noise_alone})
     if (g != nullptr) (void)cudaGraphExecDestroy(g);
   for (cufftHandle p : plans) (void)cufft->destroy(p);

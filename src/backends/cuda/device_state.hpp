@@ -10,6 +10,7 @@
 #include "far_noise_kernel.hpp"
 #include "kernels.hpp"
 #include "ocean/cuda/simulation.hpp"
+#include "ocean/interop.hpp"
 #include "plan.hpp"
 
 namespace ocean::cuda::detail {
@@ -38,6 +39,16 @@ struct DeviceState {
   FarNoiseArgs noise;                        // its kernel's arguments
   cudaGraphExec_t cascades_alone = nullptr;  // time_frames: the cascades without the map
   cudaGraphExec_t noise_alone = nullptr;     // time_frames: the map without the cascades
+  // The renderer's shared inputs (CudaBackend::share_inputs): the imported Vulkan memory mapped as
+  // a buffer, the two imported semaphores, and the frame's graph with the share copies.
+  cudaExternalMemory_t shared_memory = nullptr;
+  char* shared = nullptr;  // mapped: interop::inputs_layout, freed with cudaFree
+  interop::InputsLayout shared_layout;
+  cudaExternalSemaphore_t written = nullptr, read = nullptr;
+  bool timeline = false;
+  cudaGraphExec_t shared_frame = nullptr;  // concurrent, with share copies and readback
+  std::uint64_t shared_frames = 0;         // frames written into `shared` (the semaphore value)
+  void release_shared();                   // the five above; errors are ignored
 };
 
 /// Creates streams, events, buffers and plans (with `cufft`; nullptr for the own FFT kernels) for

@@ -122,6 +122,7 @@ Schedule make_schedule(const Layout& layout, const ScheduleParts& parts) {
       s.ops.push_back(
           {.kind = Op::mips, .cascade = c, .pass = static_cast<int>(p), .stream = stream});
     }
+    if (parts.share) s.ops.push_back({.kind = Op::share, .cascade = c, .stream = stream});
     if (parts.readback) s.ops.push_back({.kind = Op::readback, .cascade = c, .stream = stream});
     if (concurrent) {
       s.ops[first].waits = {0};
@@ -134,8 +135,9 @@ Schedule make_schedule(const Layout& layout, const ScheduleParts& parts) {
   return s;
 }
 
-Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback) {
-  return make_schedule(layout, {.concurrent = concurrent, .readback = with_readback});
+Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback, bool with_share) {
+  return make_schedule(layout,
+                       {.concurrent = concurrent, .readback = with_readback, .share = with_share});
 }
 
 }  // namespace ocean::cuda::detail

@@ -91,6 +91,8 @@ Result<Layout> make_layout(const SimulationConfig& config);
 /// with one event per cascade (1 + c) and one for the map (cascades + 1), which the final `join`
 /// op on the origin waits for; a serial one runs everything on the origin stream and uses no event.
 struct Op {
+  /// share: the cascade's half4 displacement and RGBA8 chain copied, device to device, into the
+  /// renderer's shared buffer (ocean/interop.hpp, interop::inputs_layout).
   enum Kind {
     upload_params,
     fork,  ///< the fork event's record alone, where no upload_params records it
@@ -98,6 +100,7 @@ struct Op {
     fft,
     finalize,
     mips,
+    share,
     readback,
     noise_params,    ///< the frame's FarNoiseMapParams, pinned host → device
     noise,           ///< the map's kernel
@@ -122,14 +125,18 @@ struct ScheduleParts {
   bool readback = true;    ///< the copies into pinned memory
   bool cascades = true;    ///< the cascades' chains
   bool noise = true;       ///< the far field's noise map
+  /// Each cascade's share op after its last mip pass, before its readback (the renderer's
+  /// shared inputs).
+  bool share = false;
 };
 /// Stream and event indices are those of the whole frame whatever the parts, so every schedule
 /// of a layout runs on the same DeviceState. The frame parameters' upload (FrameParams) belongs
 /// to the cascades: without them a concurrent schedule forks with a `fork` op, so that the map
 /// alone times the map alone.
 Schedule make_schedule(const Layout& layout, const ScheduleParts& parts);
-/// Every part: make_schedule(layout, {concurrent, with_readback, true, true}).
-Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback);
+/// Every part: make_schedule(layout, {concurrent, with_readback, true, true, with_share}).
+Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback,
+                       bool with_share = false);
 /// The stream (concurrent schedules) and the join event of the far field's noise map.
 [[nodiscard]] inline int noise_stream(const Layout& layout) { return layout.cascades + 1; }
 [[nodiscard]] inline int noise_event(const Layout& layout) { return layout.cascades + 1; }
