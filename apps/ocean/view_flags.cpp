@@ -65,7 +65,8 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
                      "GPU's tessellation shaders; default " +
                          f.mesh + ")");
   command.add_option("--backend", f.backend,
-                     "simulation backend: cpu, or vulkan (its images are rendered with no copy)");
+                     "simulation backend: cpu, vulkan (its images are rendered with no copy) or "
+                     "cuda (its frames written into the renderer's memory on the same GPU)");
   command.add_flag("--validation", f.validation,
                    "enable the Khronos validation layer; fail if it reports anything");
   add_sphere_flags(command, f.sphere);
@@ -73,9 +74,9 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
 
 Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& scene,
                         render::View& v) {
-  if (f.backend != "cpu" && f.backend != "vulkan")
+  if (f.backend != "cpu" && f.backend != "vulkan" && f.backend != "cuda")
     return invalid_argument("--backend = " + excerpt(f.backend) +
-                            " cannot render: must be cpu or vulkan");
+                            " cannot render: must be cpu, vulkan or cuda");
   scene.backend = f.backend;
   scene.validation = f.validation;
   const auto side = [min_size](std::string_view flag) {

@@ -64,16 +64,17 @@ inline constexpr Bounds kDeviceBounds{.height_rel_hs = 6e-6,        // 4.1e-7, 1
                                       .foam = 2e-5,                 // 3.4e-6, 3.8e-6
                                       .packed_fraction = 4e-4};     // 2.9e-5, 9.2e-5
 
-/// The far field's noise map (SimulationConfig::far_noise, docs/rendering.md R.13a) of a backend
-/// against the CPU backend's: max |Δh| over the map's rms height and max |Δ∂h/∂x|, |Δ∂h/∂z|
-/// over its rms slope component. Both sides run the same texel arithmetic (src/sim/far_noise.h)
-/// and differ by the device's sin/cos of the lattice gradients' angles (and contracted
-/// multiply-adds). Bound: 4× the worst case NVIDIA's documented sin/cos accuracy (2^-21.19
-/// absolute, CUDA guide) allows, rounded up to one digit — every corner's error aligned: a
-/// gradient off by δ = 2^-21.19 per component moves g·d by at most 2δ (|d| ≤ √2) and the height
+/// The far field's noise map (SimulationConfig::far_noise, docs/rendering.md R.13a) of a GPU
+/// backend (Vulkan, CUDA) against the CPU backend's: max |Δh| over the map's rms height and max
+/// |Δ∂h/∂x|, |Δ∂h/∂z| over its rms slope component. Both sides run the same texel arithmetic
+/// (src/sim/far_noise.h) and differ by the device's sin/cos of the lattice gradients' angles (and
+/// contracted multiply-adds). Bound: 4× the worst case NVIDIA's documented sin/cos accuracy
+/// (2^-21.19 absolute, CUDA guide) allows, rounded up to one digit — every corner's error aligned:
+/// a gradient off by δ = 2^-21.19 per component moves g·d by at most 2δ (|d| ≤ √2) and the height
 /// by a_o·2δ, the slope by a_o/s_o·(δ + 2δ·Σ|∂W|), Σ|∂W| ≤ 2·15/8; over the rms of three
 /// octaves (√(G·Σa²), G = 0.0465 and G_s = 0.390 of unit noise) at most √3·2δ/√G = 6.7e-6 and
-/// √3·8.5δ/√G_s = 1.0e-5. Measured on lavapipe: 2.3e-6 and 1.1e-6.
+/// √3·8.5δ/√G_s = 1.0e-5. Measured on lavapipe: 2.3e-6 and 1.1e-6. The CUDA kernel calls the
+/// accurate cosf/sinf (2 ulp: at most 2^-23 absolute on [−1, 1], inside δ) without contraction.
 struct FarNoiseBounds {
   double height_rel = 0.0;
   double slope_rel = 0.0;

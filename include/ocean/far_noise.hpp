@@ -3,8 +3,9 @@
 // of the band they replace (cascade 0, the one whose period shows from afar), each octave
 // advected at the mean phase velocity of that band's waves. The renderer evaluates the noise in
 // its shaders (ocean/far_field.hpp); the backends compute it as a per-frame map
-// (SimulationConfig::far_noise, Frame::far_noise). This is the CPU reference both mirror (one
-// source: src/sim/far_noise.h) and what the statistics tests measure.
+// (SimulationConfig::far_noise, Frame::far_noise: the CPU, Vulkan and CUDA backends). This is the
+// CPU reference they mirror (one source: src/sim/far_noise.h) and what the statistics tests
+// measure.
 //
 // Contract: plain functions, no allocation beyond the returned values, thread-safe.
 #pragma once

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <string_view>
 #include <vector>
 
@@ -93,6 +94,22 @@ Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up = {0.0, 1.0, 0.0});
 /// clip y is not flipped (a Vulkan renderer flips with a negative viewport height).
 Mat4 perspective(double fov_y_rad, double aspect, double near_m, double far_m);
 
+/// An asymmetric field of view: the angles of the frustum's four sides from the view's −z axis,
+/// radians, in OpenXR's convention (XrFovf): left and down are negative when the side lies left
+/// of or below the axis, right and up positive when it lies right of or above it. Each in
+/// (−π/2, π/2), left < right, down < up. A headset's eye usually sees farther outwards and down
+/// than inwards and up.
+struct FovAngles {
+  double left_rad = -std::numbers::pi / 4.0;
+  double right_rad = std::numbers::pi / 4.0;
+  double up_rad = std::numbers::pi / 4.0;
+  double down_rad = -std::numbers::pi / 4.0;
+};
+/// The off-axis perspective of `fov` (docs/lod.md L.12) with perspective()'s depth range and
+/// orientation: a view direction (tan α, tan β, −1) maps to NDC x = −1 at α = left, +1 at α =
+/// right, y = −1 at β = down, +1 at β = up. Precondition: `fov` valid (validate(Camera)).
+Mat4 perspective(const FovAngles& fov, double near_m, double far_m);
+
 /// A plane n·p + d = 0 with |n| = 1; points with n·p + d ≥ 0 are inside.
 struct Plane {
   double nx = 0.0, ny = 0.0, nz = 0.0, d = 0.0;
@@ -105,7 +122,9 @@ struct Frustum {
 /// Hartmann 2001), normalised.
 Frustum frustum_from_view_projection(const Mat4& view_projection);
 
-/// The camera of `ocean lod` and the tests.
+/// The camera of the renderer, `ocean lod` and the tests. The default form is a symmetric
+/// frustum (fov_y_rad, aspect) with a level horizon (up = +y); a headset's eye also rolls (up
+/// leans with the head) and has an asymmetric frustum (fov).
 struct Camera {
   Vec3 position_m;                            ///< eye, world metres
   Vec3 target_m{0.0, 0.0, -1.0};              ///< a point it looks at, ≠ position_m
@@ -113,12 +132,31 @@ struct Camera {
   double aspect = 16.0 / 9.0;                 ///< width / height, > 0
   double near_m = 0.5;                        ///< near plane distance, > 0
   double far_m = 1.0e5;                       ///< far plane distance, > near_m
+  /// The world direction the picture's up leans towards (look_at's `up`), finite, ≠ 0: +y keeps
+  /// the horizon level; the head's up rolls the picture (L.11).
+  Vec3 up{0.0, 1.0, 0.0};
+  /// An asymmetric frustum (L.12); when set, fov_y_rad and aspect are not used (the picture's
+  /// width and height span the angles whatever its pixel aspect, as a headset's eye image).
+  std::optional<FovAngles> fov;
 };
-/// invalid_argument naming the field for non-finite values, eye == target, or ranges above.
+/// invalid_argument naming the field for non-finite values, eye == target, a zero up, or ranges
+/// above.
 Status validate(const Camera& camera);
-/// perspective(...) · look_at(...). Precondition: validate(camera) is ok.
+/// perspective(...) · look_at(position_m, target_m, up), with perspective(*fov, ...) when fov is
+/// set. Precondition: validate(camera) is ok.
 Mat4 view_projection(const Camera& camera);
+/// The vertical angle the camera spans, radians: fov_y_rad, or up − down with fov.
+double vertical_fov_rad(const Camera& camera);
 Frustum camera_frustum(const Camera& camera);
+/// The frustum's eight corners, world metres: near (bottom-left, bottom-right, top-right,
+/// top-left), then far in the same order. Precondition: validate(camera) is ok.
+std::array<Vec3, 8> frustum_corners(const Camera& camera);
+/// Six planes bounding both cameras' frusta (L.13): for each side the one of the two cameras'
+/// planes that needs the smaller outward shift to hold all sixteen corners, shifted that far
+/// (shifts under 1e-9 of the far distance are the corners' rounding and not made).
+/// Two eyes of parallel axes give the left eye's left plane, the right eye's right plane and
+/// the shared others unshifted. Precondition: both cameras valid.
+Frustum bounding_frustum(const Camera& a, const Camera& b);
 
 /// Aebi, VR Ocean, eqs. 59–60 (L.6): false only when the box centre ± half extents lies wholly
 /// outside one plane (tests the corner farthest along each plane normal). Conservative: a box

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "ocean/far_field.hpp"
+#include "ocean/interop.hpp"
 #include "ocean/lod.hpp"
 #include "ocean/objects.hpp"
 #include "ocean/sim.hpp"
@@ -233,6 +234,28 @@ class Renderer {
   /// image when its side changes. invalid_argument when the frame's map and the buffer differ in
   /// size.
   Status use_simulation_images(const vk::SimulationImages& images, const Frame& frame);
+  /// The far field's noise map of `frame` alone (what upload() copies besides the cascades), the
+  /// far field at frame.time_s: for a path that hands the cascades over otherwise (take_shared).
+  /// invalid_argument for a map of the wrong size.
+  Status set_far_noise(const Frame& frame);
+  /// Shared path (a simulation on another API on the same GPU: CUDA; ocean/interop.hpp): makes a
+  /// device-local buffer in interop::inputs_layout of the configuration, exportable, and two
+  /// exportable semaphores (timeline where they export, else binary; see shared_semaphores()
+  /// for a device that exports none), and returns their descriptors for the simulation to
+  /// import. Needs configure() first and a context made with ContextParams::external_interop
+  /// (else `unsupported` naming the missing extension); replaced by the next share_inputs() and
+  /// released by configure().
+  Result<interop::SharedInputs> share_inputs();
+  /// Shared path, frame n (1, 2, …, one per frame the simulation wrote): submits, on the queue, a
+  /// wait for `written` (≥ n, or the binary signal), the copy of the shared buffer into the
+  /// sampled images and the signal of `read` (= n); the next draw samples frame n. No host wait
+  /// for the simulation; waits only for the previous take's copy to have finished (its fence).
+  Status take_shared(std::uint64_t frame);
+  /// The shared path's semaphores {written, read}; null before share_inputs(). Where the device
+  /// cannot export semaphores (no VK_KHR_external_semaphore_fd: SharedInputs::written_fd and
+  /// read_fd are −1) they are timeline semaphores of this device, for a producer on the host
+  /// (vkSignalSemaphore, vkWaitSemaphores) or on this device; a CUDA producer needs them exported.
+  [[nodiscard]] std::array<VkSemaphore, 2> shared_semaphores() const;
   /// The local layer alone (ocean/waves.hpp: wakes and waveforms; docs/rendering.md R.19) to add
   /// to the cascades from the next draw on, until this or set_local_surface is called again:
   /// `grid` is a LocalFrame's area and displacement (float3 (Dx, h, Dz) per cell, row-major, rows
@@ -282,8 +305,16 @@ class Renderer {
   /// unsupported when the context lacks multiview (Context::multiview); invalid_argument for an
   /// IPD that is negative or not finite, or an odd width.
   Status record_stereo(VkCommandBuffer cmd, const View& view, double ipd_m);
+  /// Stereo in one pass from two arbitrary eyes (R.25, R.27): `eyes` left then right, each its
+  /// own pose, roll and field of view (lod::Camera::up, lod::Camera::fov: a headset's located
+  /// views). view.camera is the head: the LOD's distances are measured from its position, and
+  /// the selection is culled by the planes bounding both eyes' frusta (lod::bounding_frustum).
+  /// Otherwise as above; invalid_argument naming the eye for an invalid eye camera.
+  Status record_stereo(VkCommandBuffer cmd, const View& view,
+                       const std::array<lod::Camera, 2>& eyes);
   /// record_stereo() on the renderer's own command buffer, submitted and waited for.
   Status draw_stereo(const View& view, double ipd_m);
+  Status draw_stereo(const View& view, const std::array<lod::Camera, 2>& eyes);
   /// Motion vectors (docs/rendering.md R.26) from the next draw() on (true), or none (false, the
   /// default): per pixel, how far the surface point seen there moved on the screen since the
   /// previous draw — the camera's motion and the waves' (the same undisplaced point, the
@@ -331,7 +362,7 @@ class Renderer {
 /// human interpupillary distance", 2004: 63 mm; headsets default to 63–64 mm).
 inline constexpr double kDefaultIpd_m = 0.064;
 /// The left and right eyes of a head whose camera is `head` (docs/rendering.md R.25): moved by
-/// ∓ipd/2 along the head's right axis (forward × world up), looking along the head's direction
+/// ∓ipd/2 along the head's right axis (forward × the head's up), looking along the head's direction
 /// (parallel axes) with its field of view, aspect, near and far planes. invalid_argument for an
 /// IPD that is negative or not finite.
 Result<std::array<lod::Camera, 2>> stereo_eyes(const lod::Camera& head, double ipd_m);

@@ -128,7 +128,8 @@ inline SeaStateParams default_sea_state() {
 /// on a square window of the world, each octave advected at the mean phase velocity of the waves
 /// it stands for. Computed by the backend beside the cascades: on the CPU as a task of the frame
 /// graph next to the cascades' chains, on Vulkan as a dispatch in the frame's submission with no
-/// barrier between it and the FFT. Off by default (resolution 0): no map, no work.
+/// barrier between it and the FFT, on CUDA on a stream of its own in the frame's graph. Off by
+/// default (resolution 0): no map, no work.
 struct FarNoiseConfig {
   int resolution = 0;  ///< N texels per side: 0 (off) or in [16, 4096]
   /// World (x, z) of texel (0, 0), m; texel (col, row) is the point origin + (col, row)·size/N.
@@ -320,9 +321,10 @@ class Simulator {
   /// Adds a local layer (ocean/waves.hpp: wakes, waveforms) to the surface the queries see, so
   /// that displacement_at and heights_at return sea + layer, the layer taken at the published
   /// frame's time, and to every frame computed from now on: Frame::local, the layer composited
-  /// with the sea before normals, Jacobian and foam (M.7.9; its foam restarts here). Allocates
-  /// the local surface of both frames; waits for a kicked step. nullptr removes it. Call it
-  /// while no query runs.
+  /// with the sea before normals, Jacobian and foam (M.7.9). Its foam restarts here unless the
+  /// layer replaces one on the same grid (origin, size and resolution equal): then the composited
+  /// surface carries on, foam included. Allocates the local surface of both frames (unless the
+  /// grid is the same); waits for a kicked step. nullptr removes it. Call it while no query runs.
   void set_local_layer(std::shared_ptr<const waves::LocalLayer> layer);
   [[nodiscard]] const waves::LocalLayer* local_layer() const { return local_layer_.get(); }
   /// Damps the sea's bands where a mask or a bathymetry says (ocean/waves.hpp, W.12–W.13): the

@@ -14,6 +14,7 @@
 
 #include <vulkan/vulkan.h>
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <memory>
@@ -55,6 +56,10 @@ struct ContextParams {
   /// With `graphics`: enables multiview (VK_KHR_multiview, core in Vulkan 1.1; stereo in one
   /// pass) where the device has it. false leaves it off, as on a device without it.
   bool multiview = true;
+  /// Enables what sharing memory and semaphores with another API on the same GPU needs
+  /// (ocean/vk/external.hpp): VK_KHR_external_memory_fd, VK_KHR_external_semaphore_fd and the
+  /// timelineSemaphore feature, each where the device has it (Context says which it got).
+  bool external_interop = false;
 };
 
 /// An instance, a logical device and its compute queue.
@@ -86,6 +91,15 @@ struct Context {
   std::string last_validation_message;
   /// The handles belong to the caller (adopt_context): the destructor destroys none of them.
   bool adopted = false;
+  /// VkPhysicalDeviceIDProperties::deviceUUID: the same GPU seen from another API (CUDA) has the
+  /// same UUID.
+  std::array<std::uint8_t, VK_UUID_SIZE> device_uuid{};
+  /// Enabled by ContextParams::external_interop where the device has them (never on an adopted
+  /// context: the library cannot see which extensions the caller enabled).
+  bool external_memory_fd = false;     ///< VK_KHR_external_memory_fd
+  bool external_semaphore_fd = false;  ///< VK_KHR_external_semaphore_fd
+  bool timeline_semaphore = false;     ///< timelineSemaphore (Vulkan 1.2 feature)
+  bool timeline_exportable = false;    ///< ... and a timeline semaphore exports as an opaque fd
 
   Context() = default;
   Context(const Context&) = delete;

@@ -1,8 +1,10 @@
 // ocean/xr.hpp — an OpenXR session for a headset: instance, the HMD system, a Vulkan context on
 // the device the runtime renders with (XR_KHR_vulkan_enable), a stereo session with one
 // swapchain per eye, and the frame loop's calls (xrWaitFrame, xrBeginFrame, xrLocateViews,
-// xrEndFrame). The library draws nothing here: the caller records each eye's picture (the
-// renderer's record()) and the session copies it into the eye's swapchain image.
+// xrEndFrame), and each located view as the renderer's camera (eye_camera). The library draws
+// nothing here: the caller records both eyes in one pass (the renderer's record_stereo()) and
+// the session copies each half into its eye's swapchain image, or records each eye (record())
+// and the session copies it.
 //
 // A frame:
 //   session->poll_events();                       // begins/ends the session as the runtime says
@@ -10,6 +12,7 @@
 //   FrameState f = session->begin_frame().value(); // waits for the runtime: predicted display time
 //   simulate(f.predicted_display_time_ns);         // the time the picture will be seen
 //   for eye in 0, 1: session->submit_eye(eye, record(view from f.views[eye]), source image);
+//   (or both eyes in one pass: session->submit_stereo(record_stereo(...), source image))
 //   session->end_frame();                          // one projection layer, the located views
 //
 // Contract: make() fails with `unsupported` and one line ("no OpenXR runtime: ...") when the
@@ -27,6 +30,7 @@
 #include <string>
 
 #include "ocean/core.hpp"
+#include "ocean/lod.hpp"
 #include "ocean/task_runner.hpp"
 #include "ocean/vk.hpp"
 
@@ -47,7 +51,8 @@ struct Pose {
   std::array<double, 3> position_m{0.0, 0.0, 0.0};
 };
 
-/// The angles of an eye's frustum sides from its forward axis, radians (left and down < 0).
+/// The angles of an eye's frustum sides from its forward axis, radians (XrFovf: left and down
+/// negative when the side lies left of or below the axis).
 struct Fov {
   double left_rad = -0.785, right_rad = 0.785, up_rad = 0.785, down_rad = -0.785;
 };
@@ -56,6 +61,15 @@ struct EyeView {
   Pose pose;
   Fov fov;
 };
+
+/// The world camera of a located view (docs/vr.md V.1–V.2): at the pose's position plus
+/// `origin_m` (the LOCAL space's origin in the world), looking along the pose's −Z with the
+/// pose's +Y as up (the head's roll drawn), and the view's own asymmetric field of view
+/// (lod::Camera::fov). Pure arithmetic; precondition: a unit quaternion.
+lod::Camera eye_camera(const EyeView& eye, lod::Vec3 origin_m, double near_m, double far_m);
+/// The head of one stereo selection: the eyes' mid-point, eye 0's orientation and field of
+/// view (the LOD measures distances from its position; the renderer culls by both eyes).
+lod::Camera head_camera(const std::array<lod::Camera, 2>& eyes);
 
 struct FrameState {
   std::int64_t predicted_display_time_ns = 0;    ///< XrTime the frame will be displayed at
@@ -92,6 +106,11 @@ class Session {
   /// `source`: an RGBA8 sRGB image of eye_width() × eye_height() in TRANSFER_SRC_OPTIMAL once
   /// `record` has run (what render::Renderer::record() leaves in srgb_image()).
   Status submit_eye(int eye, FunctionRef<Status(VkCommandBuffer)> record, VkImage source);
+  /// Both eyes from one side-by-side picture (the renderer's record_stereo()): acquires both
+  /// eyes' images, records `record` followed by copies of the left half of `source` into eye
+  /// 0's image and the right half into eye 1's, submits once, waits, releases both. `source`:
+  /// RGBA8 sRGB, 2·eye_width() × eye_height(), TRANSFER_SRC_OPTIMAL once `record` has run.
+  Status submit_stereo(FunctionRef<Status(VkCommandBuffer)> record, VkImage source);
   /// xrEndFrame at the predicted time: one projection layer with the views begin_frame located,
   /// or no layer when !should_render.
   Status end_frame();

@@ -3,6 +3,7 @@
 // Sources: Aebi, VR Ocean, §5.2.2 (eqs. 59–61); G. Gribb and K. Hartmann, "Fast Extraction of
 // Viewing Frustum Planes from the World-View-Projection Matrix" (2001), adapted to Vulkan's [0, 1]
 // depth; docs/lod.md L.5–L.6.
+#include <algorithm>
 #include <cassert>
 #include <cmath>
 
@@ -76,6 +77,23 @@ Mat4 perspective(double fov_y_rad, double aspect, double near_m, double far_m) {
   return p;
 }
 
+// L.12: x_ndc = (2·tan α − (t_r + t_l))/(t_r − t_l) for a view direction (tan α, tan β, −1),
+// i.e. clip x = (2·x_v + (t_r + t_l)·z_v)/(t_r − t_l) with w = −z_v; y alike with up and down.
+// Depth as perspective(): z_v = −near → 0, −far → 1.
+Mat4 perspective(const FovAngles& fov, double near_m, double far_m) {
+  const double tl = std::tan(fov.left_rad), tr = std::tan(fov.right_rad);
+  const double td = std::tan(fov.down_rad), tu = std::tan(fov.up_rad);
+  Mat4 p;
+  at(p, 0, 0) = 2.0 / (tr - tl);
+  at(p, 0, 2) = (tr + tl) / (tr - tl);
+  at(p, 1, 1) = 2.0 / (tu - td);
+  at(p, 1, 2) = (tu + td) / (tu - td);
+  at(p, 2, 2) = far_m / (near_m - far_m);
+  at(p, 2, 3) = near_m * far_m / (near_m - far_m);
+  at(p, 3, 2) = -1.0;
+  return p;
+}
+
 Frustum frustum_from_view_projection(const Mat4& vp) {
   auto row = [&](int r) {
     return std::array<double, 4>{at(vp, r, 0), at(vp, r, 1), at(vp, r, 2), at(vp, r, 3)};
@@ -101,10 +119,33 @@ Status validate(const Camera& camera) {
         "camera.target_m equals camera.position_m: the view direction is "
         "undefined; give a target away from the camera");
   }
-  if (Status s = require_in_range("camera.fov_y_rad", camera.fov_y_rad, 1e-6, 3.14159); !s.ok()) {
-    return s;
+  if (Status s = require_finite_vec("camera.up", camera.up); !s.ok()) return s;
+  if (!(dot(camera.up, camera.up) > 0.0) || std::isinf(dot(camera.up, camera.up))) {
+    return invalid_argument("camera.up is zero: give the direction the picture's up leans to");
   }
-  if (Status s = require_positive("camera.aspect", camera.aspect); !s.ok()) return s;
+  if (camera.fov) {
+    const FovAngles& f = *camera.fov;
+    constexpr double kEdge = 1.5707;  // just inside π/2: the side's tangent stays finite
+    if (Status s = require_in_range("camera.fov.left_rad", f.left_rad, -kEdge, kEdge); !s.ok())
+      return s;
+    if (Status s = require_in_range("camera.fov.right_rad", f.right_rad, -kEdge, kEdge); !s.ok())
+      return s;
+    if (Status s = require_in_range("camera.fov.up_rad", f.up_rad, -kEdge, kEdge); !s.ok())
+      return s;
+    if (Status s = require_in_range("camera.fov.down_rad", f.down_rad, -kEdge, kEdge); !s.ok())
+      return s;
+    if (!(f.right_rad - f.left_rad >= 1e-6))
+      return invalid_argument("camera.fov.right_rad = " + format_number(f.right_rad) +
+                              " must exceed camera.fov.left_rad = " + format_number(f.left_rad));
+    if (!(f.up_rad - f.down_rad >= 1e-6))
+      return invalid_argument("camera.fov.up_rad = " + format_number(f.up_rad) +
+                              " must exceed camera.fov.down_rad = " + format_number(f.down_rad));
+  } else {
+    if (Status s = require_in_range("camera.fov_y_rad", camera.fov_y_rad, 1e-6, 3.14159); !s.ok()) {
+      return s;
+    }
+    if (Status s = require_positive("camera.aspect", camera.aspect); !s.ok()) return s;
+  }
   if (Status s = require_positive("camera.near_m", camera.near_m); !s.ok()) return s;
   if (Status s = require_positive("camera.far_m", camera.far_m); !s.ok()) return s;
   if (!(camera.far_m > camera.near_m)) {
@@ -116,11 +157,71 @@ Status validate(const Camera& camera) {
 }
 
 Mat4 view_projection(const Camera& c) {
-  return perspective(c.fov_y_rad, c.aspect, c.near_m, c.far_m) * look_at(c.position_m, c.target_m);
+  const Mat4 projection = c.fov ? perspective(*c.fov, c.near_m, c.far_m)
+                                : perspective(c.fov_y_rad, c.aspect, c.near_m, c.far_m);
+  return projection * look_at(c.position_m, c.target_m, c.up);
+}
+
+double vertical_fov_rad(const Camera& c) {
+  return c.fov ? c.fov->up_rad - c.fov->down_rad : c.fov_y_rad;
 }
 
 Frustum camera_frustum(const Camera& camera) {
   return frustum_from_view_projection(view_projection(camera));
+}
+
+std::array<Vec3, 8> frustum_corners(const Camera& c) {
+  // The view basis of look_at: rows s (right), u (up), −f; a view point (x, y, z) is at
+  // eye + x·s + y·u − z·f in the world.
+  const Mat4 v = look_at(c.position_m, c.target_m, c.up);
+  const Vec3 s{at(v, 0, 0), at(v, 0, 1), at(v, 0, 2)};
+  const Vec3 u{at(v, 1, 0), at(v, 1, 1), at(v, 1, 2)};
+  const Vec3 f{-at(v, 2, 0), -at(v, 2, 1), -at(v, 2, 2)};
+  double tl, tr, td, tu;
+  if (c.fov) {
+    tl = std::tan(c.fov->left_rad), tr = std::tan(c.fov->right_rad);
+    td = std::tan(c.fov->down_rad), tu = std::tan(c.fov->up_rad);
+  } else {
+    tu = std::tan(0.5 * c.fov_y_rad), td = -tu;
+    tr = tu * c.aspect, tl = -tr;
+  }
+  const double tx[4] = {tl, tr, tr, tl}, ty[4] = {td, td, tu, tu};
+  std::array<Vec3, 8> corners{};
+  for (int k = 0; k < 8; ++k) {
+    const double d = k < 4 ? c.near_m : c.far_m;
+    const double x = tx[k % 4] * d, y = ty[k % 4] * d;
+    corners[static_cast<std::size_t>(k)] = {c.position_m.x + x * s.x + y * u.x + d * f.x,
+                                            c.position_m.y + x * s.y + y * u.y + d * f.y,
+                                            c.position_m.z + x * s.z + y * u.z + d * f.z};
+  }
+  return corners;
+}
+
+// L.13: each side's plane from the camera whose plane the other's corners leave least outside,
+// moved out past them.
+Frustum bounding_frustum(const Camera& a, const Camera& b) {
+  const Frustum fa = camera_frustum(a), fb = camera_frustum(b);
+  std::array<Vec3, 16> corners{};
+  const std::array<Vec3, 8> ca = frustum_corners(a), cb = frustum_corners(b);
+  std::copy(ca.begin(), ca.end(), corners.begin());
+  std::copy(cb.begin(), cb.end(), corners.begin() + 8);
+  // Corners are computed to about 1e-16 of their distance: a plane that leaves one out by less
+  // than 1e-9 of the far distance holds it (and stays unmoved, as for parallel eyes).
+  const double rounding = 1e-9 * std::max(a.far_m, b.far_m);
+  const auto shift = [&](const Plane& p) {
+    double lowest = 0.0;
+    for (const Vec3& q : corners)
+      lowest = std::min(lowest, p.nx * q.x + p.ny * q.y + p.nz * q.z + p.d);
+    return lowest < -rounding ? -lowest : 0.0;
+  };
+  Frustum hull;
+  for (std::size_t i = 0; i < 6; ++i) {
+    const double sa = shift(fa.planes[i]), sb = shift(fb.planes[i]);
+    Plane p = sb < sa ? fb.planes[i] : fa.planes[i];
+    p.d += std::min(sa, sb);
+    hull.planes[i] = p;
+  }
+  return hull;
 }
 
 // L.6 (Aebi, VR Ocean, eqs. 59–60): the positive vertex is the box corner farthest along n; if even

@@ -232,6 +232,10 @@ Status upload_far_map(Renderer::State& st, const FarNoiseFrame& map, double time
   return {};
 }
 
+Status Renderer::set_far_noise(const Frame& frame) {
+  return upload_far_map(*state_, frame.far_noise, frame.time_s);
+}
+
 Status Renderer::use_simulation_images(const vk::SimulationImages& images, const Frame& frame) {
   State& st = *state_;
   FarMapPass& pass = st.far_map;

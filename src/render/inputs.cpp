@@ -46,6 +46,7 @@ Status Renderer::configure(const SimulationConfig& config) {
   }
   // Own images for the upload path.
   vkDeviceWaitIdle(st.ctx->device);
+  st.destroy_shared();
   st.destroy_sim_images();
   const auto size = static_cast<std::uint32_t>(n);
   const auto layers = static_cast<std::uint32_t>(st.cascades);
@@ -60,8 +61,7 @@ Status Renderer::configure(const SimulationConfig& config) {
       vk::create_image_array(*st.ctx, VK_FORMAT_R8G8B8A8_UNORM, size, layers, mips, usage);
   if (!normal.ok()) return normal.status();
   st.normal_foam = normal.value();
-  const std::size_t bytes =
-      layers * (static_cast<std::size_t>(size) * size * 8 + mip_chain_texels(n) * 4);
+  const std::size_t bytes = interop::inputs_layout(n, st.cascades).bytes();
   Result<vk::Buffer> staging =
       vk::create_buffer(*st.ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
   if (!staging.ok()) return staging.status();
@@ -120,6 +120,10 @@ void Renderer::use_simulation_images(const vk::SimulationImages& images) {
 }
 
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd) {
+  record_uploads(st, cmd, st.staging.buffer);
+}
+
+void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source) {
   // Staging → images (GENERAL); the first use transitions them from UNDEFINED.
   static_assert(sizeof(std::uint16_t) * 4 == 8);
   for (vk::Image* im : {&st.displacement, &st.normal_foam})
@@ -127,32 +131,30 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd) {
                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                       0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   const std::uint32_t n = st.sim_size;
-  const VkDeviceSize texels = static_cast<VkDeviceSize>(n) * n;
-  VkDeviceSize offset = 0;
+  const interop::InputsLayout layout =
+      interop::inputs_layout(static_cast<int>(n), static_cast<int>(st.sim_layers));
   // ≤ 8 cascades × 12 mip levels (N ≤ 2048): on the stack, no allocation per frame.
   std::array<VkBufferImageCopy, kMaxCascades * 12> regions{};
   std::uint32_t count = 0;
   for (std::uint32_t c = 0; c < st.sim_layers; ++c) {
-    regions[count++] = {.bufferOffset = offset,
+    regions[count++] = {.bufferOffset = layout.displacement_offset(static_cast<int>(c)),
                         .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, c, 1},
                         .imageExtent = {n, n, 1}};
-    offset += texels * 8;
   }
-  vkCmdCopyBufferToImage(cmd, st.staging.buffer, st.displacement.image, VK_IMAGE_LAYOUT_GENERAL,
-                         count, regions.data());
+  vkCmdCopyBufferToImage(cmd, source, st.displacement.image, VK_IMAGE_LAYOUT_GENERAL, count,
+                         regions.data());
   count = 0;
   for (std::uint32_t c = 0; c < st.sim_layers; ++c) {
     for (std::uint32_t m = 0; m < st.sim_mips; ++m) {
       const std::uint32_t s = n >> m;
-      regions[count++] = {
-          .bufferOffset = offset + mip_offset(static_cast<int>(n), static_cast<int>(m)) * 4,
-          .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, c, 1},
-          .imageExtent = {s, s, 1}};
+      regions[count++] = {.bufferOffset = layout.mips_offset(static_cast<int>(c)) +
+                                          mip_offset(static_cast<int>(n), static_cast<int>(m)) * 4,
+                          .imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, m, c, 1},
+                          .imageExtent = {s, s, 1}};
     }
-    offset += mip_chain_texels(static_cast<int>(n)) * 4;
   }
-  vkCmdCopyBufferToImage(cmd, st.staging.buffer, st.normal_foam.image, VK_IMAGE_LAYOUT_GENERAL,
-                         count, regions.data());
+  vkCmdCopyBufferToImage(cmd, source, st.normal_foam.image, VK_IMAGE_LAYOUT_GENERAL, count,
+                         regions.data());
   vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT,
               VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 }

@@ -52,6 +52,13 @@ struct Renderer::State {
   bool borrowed = false;
   VkImageView displacement_view = VK_NULL_HANDLE, normal_view = VK_NULL_HANDLE;
   std::uint32_t sim_size = 0, sim_layers = 0, sim_mips = 0;
+  // Shared path (shared_inputs.cpp): the exported buffer the simulation writes, the semaphores,
+  // and the commands that copy it into the images.
+  vk::Buffer shared;
+  VkSemaphore shared_written = VK_NULL_HANDLE, shared_read = VK_NULL_HANDLE;
+  bool shared_timeline = false;
+  vk::Commands shared_commands;
+  bool shared_in_flight = false;
   // Samplers, descriptors, pipelines.
   VkSampler displacement_sampler = VK_NULL_HANDLE, normal_sampler = VK_NULL_HANDLE,
             hdr_sampler = VK_NULL_HANDLE, lut_sampler = VK_NULL_HANDLE;
@@ -129,6 +136,7 @@ struct Renderer::State {
   ~State();
   void destroy_targets();
   void destroy_sim_images();
+  void destroy_shared();
 };
 
 // targets.cpp: whether targets of this size fit the device and memory (Renderer::resize's
@@ -189,6 +197,8 @@ void draw_sphere(Renderer::State& st, VkCommandBuffer cmd, RenderStats& stats);
 
 // inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
+// The same copies from `source`, a buffer in interop::inputs_layout (inputs.cpp).
+void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source);
 // local_layer.cpp: the 1×1 empty layer made at construction, and the copy of a staged layer.
 Status create_local_layer(Renderer::State& st);
 void record_local_upload(Renderer::State& st, VkCommandBuffer cmd);

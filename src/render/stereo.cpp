@@ -83,10 +83,12 @@ Result<std::array<lod::Camera, 2>> stereo_eyes(const lod::Camera& head, double i
     return invalid_argument("IPD " + excerpt(std::to_string(ipd_m)) + " m must be finite and ≥ 0");
   const lod::Vec3 p = head.position_m, t = head.target_m;
   const double fx = t.x - p.x, fy = t.y - p.y, fz = t.z - p.z;
-  // Right = forward × up (up = +y), as lod::look_at; looking straight down, forward × −z.
-  double rx = -fz, rz = fx;
-  double ry = 0.0;
-  if (rx * rx + rz * rz < 1e-24 * (fx * fx + fy * fy + fz * fz)) rx = -fy, ry = fx, rz = 0.0;
+  // Right = forward × up (the head's up, +y unless it rolls), as lod::look_at; looking along
+  // up, forward × −z.
+  const lod::Vec3 u = head.up;
+  double rx = fy * u.z - fz * u.y, ry = fz * u.x - fx * u.z, rz = fx * u.y - fy * u.x;
+  if (rx * rx + ry * ry + rz * rz < 1e-24 * (fx * fx + fy * fy + fz * fz))
+    rx = -fy, ry = fx, rz = 0.0;
   const double len = std::sqrt(rx * rx + ry * ry + rz * rz);
   std::array<lod::Camera, 2> eyes{head, head};
   for (int e = 0; e < 2; ++e) {
@@ -110,12 +112,21 @@ void destroy_stereo(Renderer::State& st, bool all) {
 }
 
 Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd_m) {
+  Result<std::array<lod::Camera, 2>> eyes = stereo_eyes(view.camera, ipd_m);
+  if (!eyes.ok()) return eyes.status();
+  return record_stereo(cmd, view, eyes.value());
+}
+
+Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
+                               const std::array<lod::Camera, 2>& eyes) {
   State& st = *state_;
   if (!st.ctx->multiview)
     return unsupported("stereo: the Vulkan device '" + st.ctx->info.name +
                        "' lacks multiview (VK_KHR_multiview)");
-  Result<std::array<lod::Camera, 2>> eyes = stereo_eyes(view.camera, ipd_m);
-  if (!eyes.ok()) return eyes.status();
+  for (std::size_t e = 0; e < 2; ++e) {
+    if (Status s = lod::validate(eyes[e]); !s.ok())
+      return invalid_argument(std::string(e == 0 ? "left" : "right") + " eye: " + s.message());
+  }
   if (st.hdr.width % 2 != 0)
     return invalid_argument("stereo: the image width " + std::to_string(st.hdr.width) +
                             " must be even (two eyes side by side)");
@@ -127,18 +138,17 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
   if (Status s = create_stereo_targets(st); !s.ok()) return s;
   if (Status s = prepare(view); !s.ok()) return s;
   // One selection for both eyes: distances from the head, culled by the planes that bound both
-  // frusta (R.25): the left eye's left plane, the right eye's right plane, the shared others.
-  const lod::Frustum left = lod::camera_frustum(eyes.value()[0]);
-  lod::Frustum hull = left;
-  hull.planes[1] = lod::camera_frustum(eyes.value()[1]).planes[1];
-  Result<std::uint32_t> skirt_instance =
-      select_frame(st, view, view.camera.position_m, hull, stats_);
+  // frusta (R.25, docs/lod.md L.13): for parallel eyes the left eye's left plane, the right
+  // eye's right plane and the shared others; for a headset's canted, rolled eyes each side's
+  // plane moved out past the other eye's corners.
+  Result<std::uint32_t> skirt_instance = select_frame(
+      st, view, view.camera.position_m, lod::bounding_frustum(eyes[0], eyes[1]), stats_);
   if (!skirt_instance.ok()) return skirt_instance.status();
   const lod::LodSelection& sel = st.selection;
   shader::FrameUniforms u{};
   fill_frame_uniforms(st, view, lod::view_projection(relative_camera(view.camera, sel)), u);
   for (std::size_t e = 0; e < 2; ++e) {
-    const lod::Camera eye = relative_camera(eyes.value()[e], sel);
+    const lod::Camera eye = relative_camera(eyes[e], sel);
     const lod::Mat4 vp = lod::view_projection(eye);
     u.eyes[e].view_proj = to_mat4(vp.m);
     u.eyes[e].inverse_view_proj = to_mat4(inverse(vp.m));
@@ -186,11 +196,17 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd
 }
 
 Status Renderer::draw_stereo(const View& view, double ipd_m) {
+  Result<std::array<lod::Camera, 2>> eyes = stereo_eyes(view.camera, ipd_m);
+  if (!eyes.ok()) return eyes.status();
+  return draw_stereo(view, eyes.value());
+}
+
+Status Renderer::draw_stereo(const View& view, const std::array<lod::Camera, 2>& eyes) {
   State& st = *state_;
   if (Status s = prepare(view); !s.ok()) return s;
   Status recorded;
   const Status run = vk::run_once(*st.ctx, st.commands, [&](VkCommandBuffer cmd) {
-    recorded = record_stereo(cmd, view, ipd_m);
+    recorded = record_stereo(cmd, view, eyes);
   });
   if (!recorded.ok()) return recorded;
   if (!run.ok()) return run;

@@ -15,6 +15,7 @@ Renderer::State::~State() {
   VkDevice d = ctx->device;
   vkDeviceWaitIdle(d);
   destroy_targets();
+  destroy_shared();
   destroy_sim_images();
   destroy_objects(*this, true);
   destroy_stereo(*this, true);
@@ -38,9 +39,8 @@ Renderer::State::~State() {
   for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler, local_sampler,
                       damping_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
-  for (vk::Buffer* b :
-       {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices, &sphere_instances,
-        &tess_cells})
+  for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices,
+                        &sphere_instances, &tess_cells})
     vk::destroy_buffer(*ctx, *b);
   vk::destroy_timestamps(*ctx, timestamps);
   vk::destroy_commands(*ctx, commands);

@@ -42,7 +42,7 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
     u.view_proj.m[i] = static_cast<float>(vp.m[static_cast<std::size_t>(i)]);
   const lod::Vec3 eye = view.camera.position_m;  // relative to the grid centre (R.16)
   u.camera_pos_m = to_vec3({eye.x - sel.grid_centre_x_m, eye.y, eye.z - sel.grid_centre_z_m});
-  u.fov_y_rad = static_cast<float>(view.camera.fov_y_rad);
+  u.fov_y_rad = static_cast<float>(lod::vertical_fov_rad(view.camera));
   const ShadingParams& sh = view.shading;
   u.sun_dir = to_vec3(sun_direction(sh.sun_azimuth_deg, sh.sun_elevation_deg));
   u.sun_ground = to_vec3(st.sun_ground);

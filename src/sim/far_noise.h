@@ -1,8 +1,9 @@
 // far_noise.h — the far field's gradient noise (docs/rendering.md R.13) and its per-frame map
 // (R.13a), one source for the C++ reference (src/sim/far_noise.cpp), the CPU backend's noise task,
 // the Vulkan backend's noise kernel (src/backends/vulkan/shaders/far_noise.comp) and the
-// renderer's shaders (through src/render/shaders/far_noise.h). Written in the subset C++ and GLSL
-// share: 32-bit uint, int and float scalars, `OCEAN_FN` for `inline`, `OCEAN_OUT` for
+// renderer's shaders (through src/render/shaders/far_noise.h), and the CUDA backend's noise kernel
+// (src/backends/cuda/far_noise.cu). Written in the subset C++, CUDA and GLSL share: 32-bit uint,
+// int and float scalars, `OCEAN_FN` for `inline` (`__device__ inline` under nvcc), `OCEAN_OUT` for
 // out-parameters, `OCEAN_IN` for a struct passed in; structs of 32-bit scalars only, so that
 // their std430 layout equals the C++ one.
 //
@@ -14,7 +15,17 @@
 #ifndef OCEAN_SIM_FAR_NOISE_H
 #define OCEAN_SIM_FAR_NOISE_H
 
-#ifdef __cplusplus
+#if defined(__CUDACC__)
+// CUDA: device functions. floor, cos and sin are CUDA's float overloads (floorf, cosf, sinf: the
+// accurate functions, 2 ulp, not the __cosf intrinsics; the backend builds without
+// --use_fast_math and with --fmad=false, so no product is fused into an addition, as on the CPU).
+#include <cstdint>
+namespace ocean::noise {
+using uint = std::uint32_t;
+#define OCEAN_FN __device__ inline
+#define OCEAN_OUT(T) T&
+#define OCEAN_IN(T) const T&
+#elif defined(__cplusplus)
 #include <cmath>
 #include <cstdint>
 namespace ocean::noise {

@@ -115,7 +115,14 @@ void composite_local_surface(const SimulationConfig& config, const waves::Dampin
 
 void Simulator::set_local_layer(std::shared_ptr<const waves::LocalLayer> layer) {
   wait();
+  // A layer on the same grid as the one it replaces (a driven wake remade at a waypoint) keeps the
+  // composited surface: its foam carries on accumulating instead of starting afresh.
+  const bool same_grid = local_layer_ != nullptr && layer != nullptr &&
+                         local_layer_->params().area.origin_m == layer->params().area.origin_m &&
+                         local_layer_->params().area.size_m == layer->params().area.size_m &&
+                         local_layer_->params().area.resolution == layer->params().area.resolution;
   local_layer_ = std::move(layer);
+  if (same_grid) return;
   local_foam_reset_ = true;
   for (Frame& f : frames_) {
     if (local_layer_ != nullptr)

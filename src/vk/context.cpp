@@ -254,6 +254,33 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
     device_extensions.push_back(name);
   }
 
+  // Sharing memory and semaphores with CUDA (ocean/vk/external.hpp), where the device can.
+  VkPhysicalDeviceVulkan12Features enabled12{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+  if (params.external_interop) {
+    ctx->external_memory_fd = has(VK_KHR_EXTERNAL_MEMORY_FD_EXTENSION_NAME);
+    ctx->external_semaphore_fd = has(VK_KHR_EXTERNAL_SEMAPHORE_FD_EXTENSION_NAME);
+    if (ctx->external_memory_fd)
+      device_extensions.push_back(VK_KHR_EXTERNAL_MEMORY_FD_EXTENSION_NAME);
+    if (ctx->external_semaphore_fd)
+      device_extensions.push_back(VK_KHR_EXTERNAL_SEMAPHORE_FD_EXTENSION_NAME);
+    // Timeline semaphores (core 1.2), also where they cannot be exported: a producer on the
+    // host or on this device can still use the renderer's (Renderer::shared_semaphores).
+    VkPhysicalDeviceVulkan12Features features12{
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 query{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2,
+                                    .pNext = &features12};
+    vkGetPhysicalDeviceFeatures2(ctx->physical, &query);
+    if (features12.timelineSemaphore == VK_TRUE) {
+      enabled12.timelineSemaphore = VK_TRUE;
+      enabled12.pNext = enabled.pNext;
+      enabled.pNext = &enabled12;
+      ctx->timeline_semaphore = true;
+      ctx->timeline_exportable =
+          ctx->external_semaphore_fd && detail::timeline_exportable(ctx->physical);
+    }
+  }
+
   const float priority = 1.0f;
   const VkDeviceQueueCreateInfo queue{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO,
                                       .queueFamilyIndex = ctx->queue_family,
@@ -261,7 +288,7 @@ Result<std::unique_ptr<Context>> create_context(const ContextParams& params) {
                                       .pQueuePriorities = &priority};
   const VkDeviceCreateInfo info{
       .sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
-      .pNext = params.graphics ? &enabled : nullptr,
+      .pNext = params.graphics || ctx->timeline_semaphore ? &enabled : nullptr,
       .queueCreateInfoCount = 1,
       .pQueueCreateInfos = &queue,
       .enabledExtensionCount = static_cast<std::uint32_t>(device_extensions.size()),

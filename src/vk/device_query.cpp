@@ -86,12 +86,14 @@ void read_device(Context& ctx, bool family_timestamps) {
   vkGetPhysicalDeviceProperties(ctx.physical, &ctx.properties);
   vkGetPhysicalDeviceMemoryProperties(ctx.physical, &ctx.memory);
   if (ctx.properties.apiVersion >= VK_API_VERSION_1_1) {
+    VkPhysicalDeviceIDProperties id{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ID_PROPERTIES};
     VkPhysicalDeviceMaintenance3Properties maintenance3{
-        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+        .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES, .pNext = &id};
     VkPhysicalDeviceProperties2 properties2{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2,
                                             .pNext = &maintenance3};
     vkGetPhysicalDeviceProperties2(ctx.physical, &properties2);
     ctx.max_allocation_bytes = maintenance3.maxMemoryAllocationSize;
+    std::copy(std::begin(id.deviceUUID), std::end(id.deviceUUID), ctx.device_uuid.begin());
   }
   ctx.timestamps = family_timestamps && ctx.properties.limits.timestampComputeAndGraphics;
   ctx.timestamp_period_ns = static_cast<double>(ctx.properties.limits.timestampPeriod);
@@ -106,6 +108,20 @@ float max_anisotropy(const VkPhysicalDeviceProperties& properties) {
   if (const char* a = std::getenv("OCEAN_VK_ANISOTROPY"); a != nullptr)
     chosen = std::clamp(static_cast<float>(std::atof(a)), 1.0f, most);
   return chosen;
+}
+
+bool timeline_exportable(VkPhysicalDevice physical) {
+  const VkSemaphoreTypeCreateInfo type{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO,
+                                       .semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE};
+  const VkPhysicalDeviceExternalSemaphoreInfo info{
+      .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_EXTERNAL_SEMAPHORE_INFO,
+      .pNext = &type,
+      .handleType = VK_EXTERNAL_SEMAPHORE_HANDLE_TYPE_OPAQUE_FD_BIT};
+  VkExternalSemaphoreProperties props{.sType = VK_STRUCTURE_TYPE_EXTERNAL_SEMAPHORE_PROPERTIES};
+  vkGetPhysicalDeviceExternalSemaphoreProperties(physical, &info, &props);
+  const VkExternalSemaphoreFeatureFlags both =
+      VK_EXTERNAL_SEMAPHORE_FEATURE_EXPORTABLE_BIT | VK_EXTERNAL_SEMAPHORE_FEATURE_IMPORTABLE_BIT;
+  return (props.externalSemaphoreFeatures & both) == both;
 }
 
 }  // namespace ocean::vk::detail

@@ -33,4 +33,7 @@ void read_device(Context& ctx, bool family_timestamps);
 /// limit up to 16, 1 on software rasterisers unless OCEAN_VK_ANISOTROPY asks for more.
 float max_anisotropy(const VkPhysicalDeviceProperties& properties);
 
+/// A timeline semaphore of `physical` can be exported and imported as an opaque fd.
+bool timeline_exportable(VkPhysicalDevice physical);
+
 }  // namespace ocean::vk::detail

@@ -2,6 +2,8 @@
 // into its swapchain image between xrAcquireSwapchainImage and xrReleaseSwapchainImage; and
 // xrEndFrame with one projection layer at the predicted display time (OpenXR 1.0
 // specification, "Frame Synchronization" and "Compositing").
+#include <span>
+
 #include "state.hpp"
 
 namespace ocean::xr {
@@ -16,14 +18,14 @@ Pose to_pose(const XrPosef& p) {
 // Copies `source` (TRANSFER_SRC_OPTIMAL) into the swapchain image, which the runtime hands over
 // and takes back in COLOR_ATTACHMENT_OPTIMAL (XR_KHR_vulkan_enable). A blit, not a copy: the
 // runtime may offer BGRA where the renderer writes RGBA.
-void record_copy(VkCommandBuffer cmd, VkImage source, VkImage target, std::int32_t w,
-                 std::int32_t h) {
+void record_copy(VkCommandBuffer cmd, VkImage source, std::int32_t source_x, VkImage target,
+                 std::int32_t w, std::int32_t h) {
   vk::barrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT);
   vk::image_barrier(cmd, target, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0,
                     VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
   const VkImageBlit region{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                           .srcOffsets = {{0, 0, 0}, {w, h, 1}},
+                           .srcOffsets = {{source_x, 0, 0}, {source_x + w, h, 1}},
                            .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                            .dstOffsets = {{0, 0, 0}, {w, h, 1}}};
   vkCmdBlitImage(cmd, source, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
@@ -79,19 +81,25 @@ Result<FrameState> Session::begin_frame() {
   return out;
 }
 
-Status Session::submit_eye(int eye, FunctionRef<Status(VkCommandBuffer)> record, VkImage source) {
-  State& st = *state_;
-  const Eye& e = st.eyes[static_cast<std::size_t>(eye)];
-  std::uint32_t index = 0;
-  const XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
-  if (Status s = check(st.instance, xrAcquireSwapchainImage(e.swapchain, &acquire, &index),
-                       "xrAcquireSwapchainImage");
-      !s.ok())
-    return s;
-  XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
-  wait.timeout = XR_INFINITE_DURATION;
-  Status status =
-      check(st.instance, xrWaitSwapchainImage(e.swapchain, &wait), "xrWaitSwapchainImage");
+namespace {
+
+// Acquires the images of `eyes` (one or both), records `record` and a copy of each eye's part
+// of `source` (x offset eye·width when `side_by_side`), submits, waits and releases them all.
+Status submit_eyes(Session::State& st, std::span<const int> eyes,
+                   FunctionRef<Status(VkCommandBuffer)> record, VkImage source, bool side_by_side) {
+  std::array<std::uint32_t, 2> index{};
+  std::size_t acquired = 0;
+  Status status;
+  for (; acquired < eyes.size() && status.ok(); ++acquired) {
+    const Eye& e = st.eyes[static_cast<std::size_t>(eyes[acquired])];
+    const XrSwapchainImageAcquireInfo acquire{XR_TYPE_SWAPCHAIN_IMAGE_ACQUIRE_INFO};
+    status = check(st.instance, xrAcquireSwapchainImage(e.swapchain, &acquire, &index[acquired]),
+                   "xrAcquireSwapchainImage");
+    if (!status.ok()) break;
+    XrSwapchainImageWaitInfo wait{XR_TYPE_SWAPCHAIN_IMAGE_WAIT_INFO};
+    wait.timeout = XR_INFINITE_DURATION;
+    status = check(st.instance, xrWaitSwapchainImage(e.swapchain, &wait), "xrWaitSwapchainImage");
+  }
   const VkDevice device = st.context->device;
   if (status.ok()) {
     vkResetCommandBuffer(st.cmd, 0);
@@ -99,9 +107,12 @@ Status Session::submit_eye(int eye, FunctionRef<Status(VkCommandBuffer)> record,
                                          .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     vkBeginCommandBuffer(st.cmd, &begin);
     status = record(st.cmd);
-    if (status.ok())
-      record_copy(st.cmd, source, e.images[index], static_cast<std::int32_t>(st.width),
+    for (std::size_t i = 0; i < eyes.size() && status.ok(); ++i) {
+      const auto w = static_cast<std::int32_t>(st.width);
+      record_copy(st.cmd, source, side_by_side ? eyes[i] * w : 0,
+                  st.eyes[static_cast<std::size_t>(eyes[i])].images[index[i]], w,
                   static_cast<std::int32_t>(st.height));
+    }
     vkEndCommandBuffer(st.cmd);
   }
   if (status.ok()) {
@@ -115,11 +126,28 @@ Status Session::submit_eye(int eye, FunctionRef<Status(VkCommandBuffer)> record,
       vkResetFences(device, 1, &st.fence);
     }
   }
-  // Released even after a failure: the runtime must get its image back.
-  const XrSwapchainImageReleaseInfo release{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
-  const Status released =
-      check(st.instance, xrReleaseSwapchainImage(e.swapchain, &release), "xrReleaseSwapchainImage");
-  return status.ok() ? released : status;
+  // Released even after a failure: the runtime must get its images back.
+  for (std::size_t i = 0; i < acquired; ++i) {
+    const XrSwapchainImageReleaseInfo release{XR_TYPE_SWAPCHAIN_IMAGE_RELEASE_INFO};
+    const Status released = check(
+        st.instance,
+        xrReleaseSwapchainImage(st.eyes[static_cast<std::size_t>(eyes[i])].swapchain, &release),
+        "xrReleaseSwapchainImage");
+    if (status.ok()) status = released;
+  }
+  return status;
+}
+
+}  // namespace
+
+Status Session::submit_eye(int eye, FunctionRef<Status(VkCommandBuffer)> record, VkImage source) {
+  const int eyes[] = {eye};
+  return submit_eyes(*state_, eyes, record, source, false);
+}
+
+Status Session::submit_stereo(FunctionRef<Status(VkCommandBuffer)> record, VkImage source) {
+  const int eyes[] = {0, 1};
+  return submit_eyes(*state_, eyes, record, source, true);
 }
 
 Status Session::end_frame() {

@@ -2,14 +2,18 @@
 // one-line Status values (every way of having no device says "no CUDA device: "), the frame's
 // memory layout (against the Frame arrays allocate_frame sizes: an identity), the mip passes
 // (every level once) and the frame's schedule (each cascade on its own stream, every event
-// recorded before it is waited for). On this machine class (CI: no GPU, no driver) the backend's
-// factory must answer the mapped runtime error; where a device exists it must succeed.
+// recorded before it is waited for; the far field's noise map on a stream of its own, ordered
+// after the fork and before the join and with no cascade operation), the map's place in both
+// allocations, and its timings' overlap. On this machine class (CI: no GPU, no driver) the
+// backend's factory must answer the mapped runtime error; where a device exists it must succeed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cuda/cufft_library.hpp"
@@ -17,6 +21,7 @@
 #include "cuda/plan.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/cuda/simulation.hpp"
+#include "sim/far_noise.h"
 
 namespace {
 
@@ -235,6 +240,26 @@ TEST(CudaSchedule, CascadesRunOnTheirOwnStreamsBetweenForkAndJoin) {
     if (readback) expected.push_back(d::Op::readback);
     for (const auto& chain : chains) EXPECT_EQ(chain, expected);
   }
+  // The shared frame (CudaBackend::share_inputs): each cascade's share copies after its last mip
+  // pass (the RGBA8 chain is complete) and before its join event, on its own stream.
+  const d::Schedule shared = d::make_schedule(l, true, true, true);
+  std::vector<std::vector<d::Op::Kind>> chains(4);
+  for (const d::Op& op : shared.ops) {
+    if (op.cascade >= 0) chains[static_cast<std::size_t>(op.cascade)].push_back(op.kind);
+    if (op.kind == d::Op::share) {
+      EXPECT_EQ(op.stream, op.cascade + 1);
+    }
+  }
+  std::vector<d::Op::Kind> expected = {d::Op::evolve, d::Op::fft, d::Op::finalize};
+  for (std::size_t p = 1; p < l.mip_passes.size(); ++p) expected.push_back(d::Op::mips);
+  expected.push_back(d::Op::share);
+  expected.push_back(d::Op::readback);
+  for (const auto& chain : chains) EXPECT_EQ(chain, expected);
+  for (int c = 0; c < 4; ++c) {
+    auto last = std::find_if(shared.ops.rbegin(), shared.ops.rend(),
+                             [c](const d::Op& op) { return op.cascade == c; });
+    EXPECT_EQ(last->records, 1 + c);  // the join event follows the share copies
+  }
   const d::Schedule serial = d::make_schedule(l, false, true);
   EXPECT_EQ(serial.streams, 1);
   EXPECT_EQ(serial.events, 0);
@@ -243,6 +268,213 @@ TEST(CudaSchedule, CascadesRunOnTheirOwnStreamsBetweenForkAndJoin) {
     EXPECT_TRUE(op.waits.empty());
     EXPECT_EQ(op.records, -1);
   }
+}
+
+// The far field's noise map's regions follow every cascade's block in the device allocation and
+// every cascade's readback block in the pinned buffer, aligned and disjoint; the map's readback
+// holds exactly Frame::far_noise's array; without a map both allocations are the cascades' alone.
+TEST(CudaLayout, NoiseMapFollowsTheCascadesInBothAllocations) {
+  for (const int m : {16, 100, 256}) {
+    SCOPED_TRACE("M = " + std::to_string(m));
+    ocean::SimulationConfig config =
+        config_of(64, 3, ocean::NormalMethod::central_difference, ocean::FrameOutputs::all());
+    const auto plain = d::make_layout(config);
+    config.far_noise.resolution = m;
+    const auto made = d::make_layout(config);
+    ASSERT_TRUE(plain.ok() && made.ok()) << made.status().message();
+    const d::Layout& l = made.value();
+    EXPECT_EQ(plain.value().noise_resolution, 0);
+    EXPECT_EQ(plain.value().device_bytes(), 3 * plain.value().cascade_bytes);
+    EXPECT_EQ(plain.value().host_bytes(), 3 * plain.value().readback.bytes);
+    EXPECT_EQ(l.noise_resolution, m);
+    ocean::Frame frame;
+    ocean::allocate_frame(config, frame);
+    const std::size_t map_bytes = sizeof(float) * frame.far_noise.height_slope.size();
+    EXPECT_EQ(map_bytes, std::size_t{12} * static_cast<std::size_t>(m * m));
+    EXPECT_EQ(l.noise_map.bytes, map_bytes);
+    EXPECT_EQ(l.noise_readback.bytes, map_bytes);
+    EXPECT_EQ(l.noise_params_device.bytes, sizeof(ocean::noise::FarNoiseMapParams));
+    EXPECT_EQ(l.noise_params_host.bytes, sizeof(ocean::noise::FarNoiseMapParams));
+    // Device: [cascades' blocks][params][map]; host: [readback blocks][params][map readback].
+    const std::pair<std::size_t, std::vector<d::Region>> allocations[] = {
+        {l.device_bytes(), {{0, 3 * l.cascade_bytes}, l.noise_params_device, l.noise_map}},
+        {l.host_bytes(), {{0, 3 * l.readback.bytes}, l.noise_params_host, l.noise_readback}}};
+    for (const auto& [total, regions] : allocations) {
+      for (std::size_t i = 0; i < regions.size(); ++i) {
+        EXPECT_EQ(regions[i].offset % d::kAlignment, 0u) << "region " << i;
+        EXPECT_GT(regions[i].bytes, 0u);
+        EXPECT_LE(regions[i].offset + regions[i].bytes,
+                  i + 1 < regions.size() ? regions[i + 1].offset : total)
+            << "region " << i;
+      }
+      EXPECT_EQ(regions.back().offset + regions.back().bytes, total);
+    }
+    // The cascades' own layout does not move.
+    EXPECT_EQ(l.cascade_bytes, plain.value().cascade_bytes);
+    EXPECT_EQ(l.readback.bytes, plain.value().readback.bytes);
+  }
+}
+
+// A bad FarNoiseConfig is refused with one line naming the field, as validate() refuses it for
+// every backend, before anything touches a device.
+TEST(CudaLayout, BadNoiseMapSettingsAreRefused) {
+  const ocean::SimulationConfig base =
+      config_of(64, 1, ocean::NormalMethod::central_difference, ocean::FrameOutputs::all());
+  const auto with = [&](ocean::FarNoiseConfig f) {
+    ocean::SimulationConfig c = base;
+    c.far_noise = f;
+    return d::make_layout(c).status();
+  };
+  for (const ocean::FarNoiseConfig& f :
+       {ocean::FarNoiseConfig{.resolution = 8}, ocean::FarNoiseConfig{.resolution = 4097},
+        ocean::FarNoiseConfig{.resolution = -16},
+        ocean::FarNoiseConfig{.resolution = 64, .size_m = 0.5},
+        ocean::FarNoiseConfig{.resolution = 64, .size_m = std::nan("")},
+        ocean::FarNoiseConfig{.resolution = 64, .origin_m = {2e9, 0.0}},
+        ocean::FarNoiseConfig{.resolution = 64, .origin_m = {0.0, -INFINITY}}}) {
+    const ocean::Status s = with(f);
+    EXPECT_EQ(s.code(), ocean::ErrorCode::invalid_argument) << s.message();
+    EXPECT_TRUE(one_line(s.message()));
+    EXPECT_NE(s.message().find("far_noise."), std::string::npos) << s.message();
+  }
+  EXPECT_TRUE(with({.resolution = 16}).ok());
+  EXPECT_TRUE(with({.resolution = 4096, .origin_m = {-1e9, 1e9}, .size_m = 1e6}).ok());
+}
+
+// Which operations a schedule orders before which: a before b when b follows a on its stream, or
+// b waits for an event recorded at or after a on a's stream (transitively). What a CUDA graph
+// captured from the schedule keeps as edges; everything else may run concurrently.
+std::vector<std::vector<bool>> happens_before(const d::Schedule& s) {
+  const std::size_t n = s.ops.size();
+  std::vector<std::vector<bool>> before(n, std::vector<bool>(n, false));
+  std::vector<int> last_on_stream(static_cast<std::size_t>(s.streams), -1);
+  std::vector<int> recorder(static_cast<std::size_t>(s.events), -1);
+  for (std::size_t b = 0; b < n; ++b) {
+    const d::Op& op = s.ops[b];
+    std::vector<int> direct;
+    if (const int prev = last_on_stream[static_cast<std::size_t>(op.stream)]; prev >= 0)
+      direct.push_back(prev);
+    for (const int w : op.waits) direct.push_back(recorder[static_cast<std::size_t>(w)]);
+    for (const int a : direct) {
+      if (a < 0) continue;
+      before[static_cast<std::size_t>(a)][b] = true;
+      for (std::size_t x = 0; x < n; ++x)
+        if (before[x][static_cast<std::size_t>(a)]) before[x][b] = true;
+    }
+    last_on_stream[static_cast<std::size_t>(op.stream)] = static_cast<int>(b);
+    if (op.records >= 0) recorder[static_cast<std::size_t>(op.records)] = static_cast<int>(b);
+  }
+  return before;
+}
+
+bool is_noise_op(const d::Op& op) {
+  return op.kind == d::Op::noise_params || op.kind == d::Op::noise ||
+         op.kind == d::Op::noise_readback;
+}
+
+// The map on a stream of its own (neither the origin's nor a cascade's), forked from the origin
+// after the frame's first operation and joined by the final join; no cascade operation ordered
+// before or after any of the map's (so they may overlap), its upload before its kernel before its
+// readback; the parts alone keep the frame's stream and event numbers; a serial frame runs the map
+// on the origin stream; a layout without a map gets no map operation.
+TEST(CudaSchedule, NoiseMapRunsOnItsOwnStreamBetweenForkAndJoin) {
+  ocean::SimulationConfig config =
+      config_of(256, 4, ocean::NormalMethod::central_difference, ocean::FrameOutputs::all());
+  const auto plain = d::make_layout(config);
+  config.far_noise.resolution = 128;
+  const auto made = d::make_layout(config);
+  ASSERT_TRUE(plain.ok() && made.ok());
+  const d::Layout& l = made.value();
+  ASSERT_EQ(d::noise_stream(l), 5);
+  ASSERT_EQ(d::noise_event(l), 5);
+  for (const bool readback : {true, false}) {
+    SCOPED_TRACE(readback ? "with readback" : "without readback");
+    const d::Schedule s = d::make_schedule(l, true, readback);
+    EXPECT_EQ(s.streams, 6);
+    EXPECT_EQ(s.events, 6);
+    const auto before = happens_before(s);
+    std::vector<d::Op::Kind> noise_kinds;
+    std::vector<std::size_t> noise_ops, cascade_ops;
+    for (std::size_t i = 0; i < s.ops.size(); ++i) {
+      const d::Op& op = s.ops[i];
+      if (is_noise_op(op)) {
+        EXPECT_EQ(op.stream, d::noise_stream(l));
+        EXPECT_EQ(op.cascade, -1);
+        noise_kinds.push_back(op.kind);
+        noise_ops.push_back(i);
+      } else if (op.cascade >= 0) {
+        EXPECT_NE(op.stream, d::noise_stream(l));
+        cascade_ops.push_back(i);
+      }
+    }
+    std::vector<d::Op::Kind> expected = {d::Op::noise_params, d::Op::noise};
+    if (readback) expected.push_back(d::Op::noise_readback);
+    EXPECT_EQ(noise_kinds, expected);
+    // Forked from the origin: the frame's first operation (the upload, which records the fork)
+    // comes before the map's first; the join after its last; the map's own order.
+    EXPECT_EQ(s.ops.front().kind, d::Op::upload_params);
+    EXPECT_EQ(s.ops.front().records, 0);
+    EXPECT_EQ(s.ops[noise_ops.front()].waits, (std::vector<int>{0}));
+    EXPECT_EQ(s.ops[noise_ops.back()].records, d::noise_event(l));
+    EXPECT_EQ(s.ops.back().kind, d::Op::join);
+    for (std::size_t k = 0; k < noise_ops.size(); ++k) {
+      EXPECT_TRUE(before[0][noise_ops[k]]);
+      EXPECT_TRUE(before[noise_ops[k]][s.ops.size() - 1]) << "the join waits for the map";
+      if (k > 0) {
+        EXPECT_TRUE(before[noise_ops[k - 1]][noise_ops[k]]);
+      }
+      for (const std::size_t c : cascade_ops) {
+        EXPECT_FALSE(before[noise_ops[k]][c]) << "op " << noise_ops[k] << " before " << c;
+        EXPECT_FALSE(before[c][noise_ops[k]]) << "op " << c << " before " << noise_ops[k];
+      }
+    }
+    for (const std::size_t c : cascade_ops) EXPECT_TRUE(before[c][s.ops.size() - 1]);
+  }
+
+  // The parts alone: the cascades without any map operation (the join waits for them only), the
+  // map alone forked by a bare `fork` (no frame-parameter upload to time) and joined.
+  const d::Schedule cascades = d::make_schedule(l, {.readback = false, .noise = false});
+  EXPECT_EQ(cascades.streams, 6);
+  EXPECT_TRUE(std::none_of(cascades.ops.begin(), cascades.ops.end(), is_noise_op));
+  EXPECT_EQ(cascades.ops.back().waits, (std::vector<int>{1, 2, 3, 4}));
+  const d::Schedule alone = d::make_schedule(l, {.readback = false, .cascades = false});
+  ASSERT_EQ(alone.ops.size(), 4u);
+  EXPECT_EQ(alone.ops[0].kind, d::Op::fork);
+  EXPECT_EQ(alone.ops[0].records, 0);
+  EXPECT_EQ(alone.ops[0].stream, 0);
+  EXPECT_EQ(alone.ops[1].kind, d::Op::noise_params);
+  EXPECT_EQ(alone.ops[1].waits, (std::vector<int>{0}));
+  EXPECT_EQ(alone.ops[2].kind, d::Op::noise);
+  EXPECT_EQ(alone.ops[3].kind, d::Op::join);
+  EXPECT_EQ(alone.ops[3].waits, (std::vector<int>{d::noise_event(l)}));
+  const auto alone_before = happens_before(alone);
+  EXPECT_TRUE(alone_before[0][2] && alone_before[2][3]);
+
+  // Serial: the map on the origin stream with everything else, no event.
+  const d::Schedule serial = d::make_schedule(l, false, true);
+  EXPECT_EQ(serial.streams, 1);
+  EXPECT_EQ(serial.events, 0);
+  EXPECT_EQ(std::count_if(serial.ops.begin(), serial.ops.end(), is_noise_op), 3);
+  for (const d::Op& op : serial.ops) EXPECT_EQ(op.stream, 0);
+
+  // No map in the layout: no map operation whatever the parts ask, the frame's streams as before.
+  const d::Schedule without = d::make_schedule(plain.value(), true, true);
+  EXPECT_EQ(without.streams, 5);
+  EXPECT_TRUE(std::none_of(without.ops.begin(), without.ops.end(), is_noise_op));
+}
+
+// FrameTimings::noise_overlap is ocean bench --overlap's (t_c + t_n − t_both)/min(t_c, t_n): 1
+// when the shorter part is hidden entirely, 0 when the parts run in turn, 0 without a map.
+TEST(CudaTimings, NoiseOverlapIsTheBenchDefinition) {
+  const auto overlap = [](double c, double n, double both) {
+    return ocean::cuda::FrameTimings{.simulation_ms = both, .cascades_ms = c, .noise_ms = n}
+        .noise_overlap();
+  };
+  EXPECT_DOUBLE_EQ(overlap(0.4, 0.1, 0.4), 1.0);
+  EXPECT_DOUBLE_EQ(overlap(0.4, 0.1, 0.5), 0.0);
+  EXPECT_DOUBLE_EQ(overlap(0.1, 0.4, 0.45), 0.5);
+  EXPECT_DOUBLE_EQ(overlap(0.4, 0.1, 0.6), -1.0);
+  EXPECT_DOUBLE_EQ(overlap(0.4, 0.0, 0.4), 0.0);
 }
 
 }  // namespace

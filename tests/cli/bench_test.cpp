@@ -103,7 +103,8 @@ TEST(BenchCli, TableForPeople) {
 }
 
 // --overlap: the cascades alone, the noise map alone and both, per backend (the CPU always; Vulkan
-// where a device exists), and the overlap is the stated formula of the three medians.
+// and CUDA where a device exists), and the overlap is the stated formula of the three times;
+// without a CUDA row the JSON says why ("no CUDA device: ...", or a build without CUDA).
 TEST(BenchCli, OverlapRowsFollowTheirDefinition) {
   const ocean_test::CliRun r = ocean_test::run_cli(
       "bench --overlap --json --resolution 16 --cascades 1 --far-noise-resolution 16 --min-time 0");
@@ -124,6 +125,14 @@ TEST(BenchCli, OverlapRowsFollowTheirDefinition) {
     EXPECT_GT(b, 0.0);
     EXPECT_DOUBLE_EQ(row["sum_ms"].get<double>(), c + n);
     EXPECT_DOUBLE_EQ(row["overlap"].get<double>(), (c + n - b) / std::min(c, n));
+  }
+  const bool cuda_row = std::any_of(rows.begin(), rows.end(), [](const nlohmann::json& row) {
+    return row["backend"].get<std::string>() == "cuda";
+  });
+  EXPECT_NE(cuda_row, j.contains("cuda_note")) << r.out;
+  if (!cuda_row) {
+    const std::string note = j["cuda_note"].get<std::string>();
+    EXPECT_TRUE(note.starts_with("no CUDA device: ") || note == "built without CUDA") << note;
   }
 }
 

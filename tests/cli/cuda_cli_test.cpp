@@ -1,10 +1,12 @@
 // The CUDA backend from the command line: where it cannot run (built without CUDA, or no usable
-// device: CI has neither a GPU nor a driver), every command that takes --backend cuda prints one
-// line, "ocean: error: " and the backend table's reason, writes nothing on standard output and
-// exits 1; `ocean info` says why there are no CUDA devices. Where a device exists these checks
-// give way to the conformance tests (tests/backends/conformance_test.cpp).
+// device: CI has neither a GPU nor a driver), every command that takes --backend cuda (render and
+// view included, before any window or file) prints one line, "ocean: error: " and the backend
+// table's reason, writes nothing on standard output and exits 1; `ocean info` says why there are no
+// CUDA devices. Where a device exists these checks give way to the conformance tests
+// (tests/backends/conformance_test.cpp).
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -29,12 +31,17 @@ TEST(CudaCli, WithoutADeviceEveryCommandSaysWhyOnOneLine) {
 #else
   const std::string expected = "ocean: error: unsupported: backend 'cuda' " + cuda.detail + "\n";
 #endif
-  for (const std::string args : {"validate --backend cuda", "query --backend cuda --at 1,2",
-                                 "bench --backend cuda --resolution 64 --cascades 1"}) {
+  for (const std::string args :
+       {"validate --backend cuda", "query --backend cuda --at 1,2",
+        "bench --backend cuda --resolution 64 --cascades 1",
+        "render --backend cuda --out cuda_cli_never_written.png", "view --backend cuda"}) {
     SCOPED_TRACE(args);
     const ocean_test::CliRun r = ocean_test::run_cli(args);
     EXPECT_EQ(r.exit_code, 1);
     EXPECT_TRUE(r.out.empty()) << r.out;
+    if (args.starts_with("render")) {
+      EXPECT_FALSE(std::filesystem::exists("cuda_cli_never_written.png"));
+    }
     if (args.starts_with("bench")) {
 #ifdef OCEAN_HAS_CUDA
       EXPECT_EQ(r.err, expected);
@@ -64,8 +71,13 @@ TEST(CudaCli, InfoSaysWhyThereAreNoDevices) {
   EXPECT_EQ(j["cuda"]["status"], "built without CUDA");
 #endif
   EXPECT_TRUE(j["cuda"]["devices"].empty());
+  // Whether --backend cuda would render with no host copy: not without a device, and why.
+  EXPECT_EQ(j["cuda"]["render"], j["cuda"]["status"]);
   const ocean_test::CliRun text = ocean_test::run_cli("info");
   EXPECT_NE(text.out.find("cuda devices: none ("), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("cuda render: " + j["cuda"]["status"].get<std::string>() + "\n"),
+            std::string::npos)
+      << text.out;
 }
 
 }  // namespace

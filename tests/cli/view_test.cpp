@@ -230,7 +230,7 @@ TEST(ViewCliNoDisplay, BadFlagsAreUsageErrors) {
   ocean_test::expect_usage_error("view --width 10", "--width");
   ocean_test::expect_usage_error("view --quality bogus", "--quality");
   ocean_test::expect_usage_error("view --view sketch", "--view");
-  ocean_test::expect_usage_error("view --backend cuda", "--backend");
+  ocean_test::expect_usage_error("view --backend opengl", "--backend");
   ocean_test::expect_usage_error("view --camera 0,-2000,0", "--camera");
   ocean_test::expect_usage_error("view --screenshot shot.jpg", "--screenshot");
   ocean_test::expect_usage_error("view --resolution 100", "resolution");

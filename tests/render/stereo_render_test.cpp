@@ -7,6 +7,8 @@
 //   mean and 99.5 % of the values within 2 LSB (the eyes share the head's LOD selection, which
 //   a mono render from the eye can refine differently where a patch is within 32 mm of a
 //   split distance);
+// - a headset's eyes (rolled, canted, asymmetric fields of view) drawn in one pass: each half
+//   equals a mono picture from that eye bit for bit;
 // - a context without multiview and an odd width refused with one line.
 // Skips where no Vulkan device exists (fails with OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>
@@ -17,6 +19,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -115,16 +118,16 @@ struct EyeDifference {
   double above_2 = 0.0;
 };
 std::array<EyeDifference, 2> stereo_against_mono(Renderer& stereo, Renderer& mono, const View& head,
+                                                 const std::array<ocean::lod::Camera, 2>& eyes,
                                                  double ipd, std::vector<std::uint8_t>& both) {
   std::array<EyeDifference, 2> out{};
-  EXPECT_TRUE(stereo.draw_stereo(head, ipd).ok());
+  const ocean::Status drawn = stereo.draw_stereo(head, eyes);
+  EXPECT_TRUE(drawn.ok()) << drawn.message();
   EXPECT_TRUE(stereo.read_srgb(both).ok());
   EXPECT_EQ(both.size(), static_cast<std::size_t>(2 * kEyeW * kEyeH * 4));
-  const auto eyes = ocean::render::stereo_eyes(head.camera, ipd);
-  EXPECT_TRUE(eyes.ok());
-  for (std::size_t e = 0; e < 2 && eyes.ok() && both.size() == 2 * kEyeW * kEyeH * 4; ++e) {
+  for (std::size_t e = 0; e < 2 && both.size() == 2 * kEyeW * kEyeH * 4; ++e) {
     View v = head;
-    v.camera = eyes.value()[e];
+    v.camera = eyes[e];
     v.object_reflections = false;  // the stereo pass mirrors no object (R.53)
     EXPECT_TRUE(mono.draw(v).ok());
     std::vector<std::uint8_t> one;
@@ -170,9 +173,13 @@ TEST(StereoRender, EachEyeEqualsAMonoRenderFromItsPose) {
       {.mesh = 0, .model = ocean::render::model_matrix({-22.0, 4.0, -22.0}, {1, 0, 0, 0})}};
   std::vector<std::uint8_t> both;
   // IPD 0 (both eyes are the head) and 64 mm: each eye bit for bit its mono render.
-  for (double ipd : {0.0, ocean::render::kDefaultIpd_m})
-    for (const EyeDifference& e : stereo_against_mono(*stereo, *mono, head, ipd, both))
+  for (double ipd : {0.0, ocean::render::kDefaultIpd_m}) {
+    const auto eyes = ocean::render::stereo_eyes(head.camera, ipd);
+    ASSERT_TRUE(eyes.ok());
+    for (const EyeDifference& e :
+         stereo_against_mono(*stereo, *mono, head, eyes.value(), ipd, both))
       EXPECT_EQ(e.d.max, 0) << "IPD " << ipd;
+  }
   // The box is in both eyes (orange: red well above blue; the sea and the sky are not).
   for (int e = 0; e < 2; ++e) {
     const std::vector<std::uint8_t> eye = half(both, e);
@@ -182,6 +189,54 @@ TEST(StereoRender, EachEyeEqualsAMonoRenderFromItsPose) {
   }
   // The two eyes see different pictures (the comparison above is not of one picture twice).
   EXPECT_GT(ocean::render::testing::difference(half(both, 0), half(both, 1)).mean, 0.2);
+}
+
+// A headset's eyes (R.27): each rolled with the head by 0.3 rad, canted 3° outwards, with mirrored
+// asymmetric fields of view (wider outwards and downwards), 64 mm apart along the rolled head's
+// right axis. The hull of both frusta culls the one selection.
+std::array<ocean::lod::Camera, 2> headset_eyes(const ocean::lod::Camera& head, double roll_rad) {
+  const double c = std::cos(roll_rad), s = std::sin(roll_rad);
+  std::array<ocean::lod::Camera, 2> eyes{head, head};
+  for (int e = 0; e < 2; ++e) {
+    const double side = e == 0 ? -1.0 : 1.0;
+    ocean::lod::Camera& eye = eyes[static_cast<std::size_t>(e)];
+    // The head looks along −z: its rolled right is (cos θ, sin θ, 0), its up (−sin θ, cos θ, 0).
+    eye.position_m.x += side * 0.032 * c, eye.position_m.y += side * 0.032 * s;
+    const double cant = side * std::tan(3.0 * std::numbers::pi / 180.0);
+    eye.target_m = {eye.position_m.x + cant * c, eye.position_m.y + cant * s,
+                    eye.position_m.z - 1.0};
+    eye.up = {-s, c, 0.0};
+    eye.fov = ocean::lod::FovAngles{.left_rad = e == 0 ? -0.90 : -0.70,
+                                    .right_rad = e == 0 ? 0.70 : 0.90,
+                                    .up_rad = 0.55,
+                                    .down_rad = -0.80};
+  }
+  return eyes;
+}
+
+TEST(StereoRender, HeadsetEyesEachEqualAMonoRenderFromTheirPose) {
+  auto rig = make_rig();
+  REQUIRE_RIG(rig);
+  if (!rig->ctx->multiview) GTEST_SKIP() << "the device lacks multiview";
+  auto stereo = rig->renderer(2 * kEyeW, kEyeH);
+  auto mono = rig->renderer(kEyeW, kEyeH);
+  ASSERT_NE(stereo, nullptr);
+  ASSERT_NE(mono, nullptr);
+  View head = ocean::render::testing::eye_level_view(kEyeW, kEyeH);
+  head.camera.position_m = {7.3, 6.0, 4.1};  // clear of the grid centre's snap lines (L.9)
+  head.camera.target_m = {7.3, 6.0, 4.1 - 100.0};
+  const auto eyes = headset_eyes(head.camera, 0.3);
+  std::vector<std::uint8_t> both;
+  // Bit for bit, as the parallel eyes above (the head and eyes share the grid centre's snap).
+  for (const EyeDifference& e : stereo_against_mono(*stereo, *mono, head, eyes, 0.064, both))
+    EXPECT_EQ(e.d.max, 0);
+  // An invalid eye is refused, naming it.
+  ocean::lod::Camera bad = eyes[1];
+  bad.fov->right_rad = -1.0;
+  const auto refused = stereo->draw_stereo(head, {eyes[0], bad});
+  EXPECT_EQ(refused.code(), ocean::ErrorCode::invalid_argument);
+  EXPECT_NE(refused.message().find("right eye: camera.fov.right_rad"), std::string::npos)
+      << refused.message();
 }
 
 TEST(StereoRender, RefusedWithoutMultiviewOrWithAnOddWidth) {

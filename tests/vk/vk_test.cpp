@@ -1,14 +1,17 @@
 // The shared Vulkan layer: device enumeration, context creation with validation, device
-// selection errors, buffer round trip through a copy, timestamps. Skips where no device exists
-// (fails with OCEAN_REQUIRE_DEVICES=1).
+// selection errors, buffer round trip through a copy, timestamps, the side of the CUDA pairing
+// (external_interop). Skips where no device exists (fails with OCEAN_REQUIRE_DEVICES=1).
 #include "ocean/vk.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <numeric>
 #include <vector>
 
+#include "ocean/interop.hpp"
+#include "ocean/vk/external.hpp"
 #include "support/require_devices.hpp"
 
 namespace {
@@ -123,6 +126,46 @@ TEST(Vk, CheckTurnsDeviceLossAndOutOfMemoryIntoClearMessages) {
   const ocean::Status oom = ocean::vk::check(VK_ERROR_OUT_OF_DEVICE_MEMORY, "vkAllocateMemory");
   EXPECT_NE(oom.message().find("lower the resolution"), std::string::npos);
   EXPECT_TRUE(ocean::vk::check(VK_SUCCESS, "x").ok());
+}
+
+// The context's side of the CUDA pairing on a real device: the UUID read from the device is the
+// one the device list reports, not all zeros, and stays the same for a second device; the
+// extensions the context enabled are those the device advertises; and interop::choose with a
+// CUDA device of that UUID shares memory only where both fd extensions are on (lavapipe, Mesa
+// 22: memory yes, semaphores no), naming the missing one otherwise.
+TEST(Vk, ExternalInteropSideMatchesTheDeviceAndDecides) {
+  if (!have_device()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  auto made = ocean::vk::create_context({.validation = true, .external_interop = true});
+  ASSERT_TRUE(made.ok()) << made.status().message();
+  const ocean::vk::Context& ctx = *made.value();
+  const ocean::interop::VulkanSide side = ocean::vk::interop_side(ctx);
+  EXPECT_NE(side.uuid, ocean::interop::Uuid{});
+  auto sides = ocean::vk::list_interop_sides();
+  ASSERT_TRUE(sides.ok()) << sides.status().message();
+  const auto same = std::find_if(sides.value().begin(), sides.value().end(),
+                                 [&](const auto& s) { return s.name == side.name; });
+  ASSERT_NE(same, sides.value().end());
+  EXPECT_EQ(same->uuid, side.uuid);
+  EXPECT_EQ(same->memory_fd, side.memory_fd);
+  EXPECT_EQ(same->semaphore_fd, side.semaphore_fd);
+  auto again = ocean::vk::create_context({.external_interop = true});
+  ASSERT_TRUE(again.ok());
+  EXPECT_EQ(again.value()->device_uuid, ctx.device_uuid);
+  // Without external_interop nothing is enabled.
+  auto plain = ocean::vk::create_context({});
+  ASSERT_TRUE(plain.ok());
+  EXPECT_FALSE(plain.value()->external_memory_fd || plain.value()->external_semaphore_fd ||
+               plain.value()->timeline_semaphore);
+
+  const std::vector<ocean::interop::CudaSide> cuda = {
+      {.index = 0, .name = "same GPU", .uuid = side.uuid, .usable = true}};
+  const ocean::interop::Choice c = ocean::interop::choose(side, cuda);
+  EXPECT_EQ(c.cuda_device, 0);
+  EXPECT_EQ(c.zero_copy, side.memory_fd && side.semaphore_fd) << c.reason;
+  if (!side.semaphore_fd) {
+    EXPECT_NE(c.reason.find("VK_KHR_external_semaphore_fd"), std::string::npos) << c.reason;
+  }
+  EXPECT_EQ(ctx.validation_messages.load(), 0u) << ctx.last_validation_message;
 }
 
 }  // namespace

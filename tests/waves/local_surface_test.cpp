@@ -192,3 +192,39 @@ TEST(LocalSurface, CarriesTheLayerAndTheSeaAloneBesideTheSum) {
 }
 
 }  // namespace
+
+// A layer that replaces one on the same grid (a driven wake remade at a waypoint) carries the
+// composited surface's foam on: the frames are those of a layer never replaced. One on a new grid
+// restarts it from the ramp (M.7.4's first frame).
+TEST(LocalSurface, ALayerReplacedOnTheSameGridKeepsItsFoam) {
+  const LayerParams p = surface_wake_params(0.8);
+  auto kept = sea();
+  kept->set_local_layer(layer(p));
+  auto replaced = sea();
+  replaced->set_local_layer(layer(p));
+  for (const double t : {1.0, 1.25}) {
+    kept->step(t);
+    replaced->step(t);
+  }
+  replaced->set_local_layer(layer(p));  // a new layer object on the same grid
+  kept->step(1.5);
+  replaced->step(1.5);
+  const ocean::LocalSurfaceFrame& a = kept->frame().local;
+  const ocean::LocalSurfaceFrame& b = replaced->frame().local;
+  const ocean::FoamParams& foam = kept->config().foam;
+  int accumulated = 0;  // cells whose foam is more than this frame's ramp: what a restart loses
+  for (std::size_t i = 0; i < a.foam.size(); ++i) {
+    ASSERT_EQ(a.foam[i], b.foam[i]) << i;
+    ASSERT_EQ(a.sea_foam[i], b.sea_foam[i]) << i;
+    accumulated += a.foam[i] > ramp(foam, a.jacobian[i]) + 1e-3f;
+  }
+  EXPECT_GT(accumulated, 0);
+
+  LayerParams moved = p;
+  moved.area.origin_m[0] += moved.area.size_m / moved.area.resolution;  // one cell along x
+  replaced->set_local_layer(layer(moved));
+  replaced->step(1.75);
+  const ocean::LocalSurfaceFrame& c = replaced->frame().local;
+  for (std::size_t i = 0; i < c.foam.size(); ++i)
+    ASSERT_NEAR(c.foam[i], ramp(foam, c.jacobian[i]), 1e-6f) << i;
+}

@@ -2,15 +2,21 @@
 // every frame it receives (two views at the predicted display time, posed as located, each a
 // swapchain image released during the frame and not black) and writes what it found to a JSON
 // report; the tool prints the display times it was given and the simulation times it used.
-// Without a runtime the tool says so in one line.
+// Without a runtime the tool says so in one line. The runtime's head is rolled and its eyes have
+// asymmetric fields of view: the horizon measured in the eye images it received is tilted by the
+// roll and lies where the views' own projections put it (docs/vr.md V.1–V.2), both eyes in one
+// multiview pass and as two renders.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli/cli_run.hpp"
 #include "ocean/vk.hpp"
+#include "support/png_reader.hpp"
 #include "support/require_devices.hpp"
 
 namespace {
@@ -27,11 +33,10 @@ void run_frames(bool validation) {
   const std::filesystem::path messages = dir.path / "validation.txt";
   std::vector<std::string> args = {"xr", "--frames", "5", "--quality", "low", "--json"};
   if (validation) args.push_back("--validation");
-  const ocean_test::CliRun r =
-      run_cli_argv(args, {},
-                   {std::string("XR_RUNTIME_JSON=") + OCEAN_TEST_XR_RUNTIME_JSON,
-                    "OCEAN_TEST_XR_REPORT=" + report,
-                    "XR_CORE_VALIDATION_FILE_NAME=" + messages.string()});
+  const ocean_test::CliRun r = run_cli_argv(
+      args, {},
+      {std::string("XR_RUNTIME_JSON=") + OCEAN_TEST_XR_RUNTIME_JSON,
+       "OCEAN_TEST_XR_REPORT=" + report, "XR_CORE_VALIDATION_FILE_NAME=" + messages.string()});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   // No loader or tool message; the OpenXR validation layer announces itself once (so it ran)
   // and writes its findings to the file, which it creates at the first one.
@@ -68,6 +73,111 @@ void run_frames(bool validation) {
 TEST(XrCli, RunsFramesAgainstTheTestRuntime) { run_frames(false); }
 
 TEST(XrCli, RunsFramesUnderTheValidationLayers) { run_frames(true); }
+
+// The horizon of one eye image, in the view's tangent coordinates (a, b): the direction
+// (a, b, −1) of view space. The horizon is the brightest line of a column: the sky brightens
+// down to it (the haze), and the sea's reflection, Fresnel's near 1 at grazing, darkens away
+// below it. So per column the first row from the top below which the brightness falls; the
+// horizon crosses that row, taken at its centre (±½ row). Columns whose row lies within 3 rows
+// of the top or bottom are left out.
+struct HorizonFit {
+  double slope = 0.0;      // db/da
+  double intercept = 0.0;  // b at a = 0
+  double rms_rows = 0.0;   // residual, rows
+  int columns = 0;
+};
+HorizonFit fit_horizon(const ocean::io::PngImage& img, const std::array<double, 4>& fov) {
+  const double tl = std::tan(fov[0]), tr = std::tan(fov[1]);
+  const double tu = std::tan(fov[2]), td = std::tan(fov[3]);
+  const int w = img.width, h = img.height, ch = img.channels;
+  const auto luma = [&](int x, int y) {
+    const std::size_t i = static_cast<std::size_t>((y * w + x) * ch);
+    return 0.2126 * img.samples[i] + 0.7152 * img.samples[i + 1] + 0.0722 * img.samples[i + 2];
+  };
+  std::vector<double> as, bs;
+  for (int x = 0; x < w; ++x) {
+    int peak = 0;
+    while (peak + 1 < h && luma(x, peak + 1) >= luma(x, peak)) ++peak;
+    if (peak < 3 || peak > h - 4) continue;
+    // Pixel centres: column x at tangent tl + (x + ½)/w·(tr − tl); rows from the top (OpenXR's
+    // image: up at the top row), row y spanning [y, y + 1).
+    const double row = peak + 0.5;
+    as.push_back(tl + (x + 0.5) / w * (tr - tl));
+    bs.push_back(tu - row / h * (tu - td));
+  }
+  HorizonFit f;
+  f.columns = static_cast<int>(as.size());
+  if (f.columns < 2) return f;
+  double ma = 0, mb = 0;
+  for (std::size_t i = 0; i < as.size(); ++i) ma += as[i], mb += bs[i];
+  ma /= double(as.size()), mb /= double(as.size());
+  double sab = 0, saa = 0;
+  for (std::size_t i = 0; i < as.size(); ++i)
+    sab += (as[i] - ma) * (bs[i] - mb), saa += (as[i] - ma) * (as[i] - ma);
+  f.slope = sab / saa;
+  f.intercept = mb - f.slope * ma;
+  double r2 = 0;
+  for (std::size_t i = 0; i < as.size(); ++i) {
+    const double r = (bs[i] - (f.intercept + f.slope * as[i])) / (tu - td) * h;
+    r2 += r * r;
+  }
+  f.rms_rows = std::sqrt(r2 / double(as.size()));
+  return f;
+}
+
+void check_horizon(bool multiview) {
+  if (!ocean::vk::list_devices().ok()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  ScratchDir dir("ocean_xr_horizon");
+  const std::string report = (dir.path / "report.json").string();
+  std::vector<std::string> args = {"xr", "--frames", "2", "--quality", "low", "--json"};
+  if (!multiview) args.push_back("--no-multiview");
+  const ocean_test::CliRun r =
+      run_cli_argv(args, {},
+                   {std::string("XR_RUNTIME_JSON=") + OCEAN_TEST_XR_RUNTIME_JSON,
+                    "OCEAN_TEST_XR_REPORT=" + report, "OCEAN_TEST_XR_IMAGES=" + dir.path.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json out = nlohmann::json::parse(r.out);
+  if (multiview && !out["multiview"].get<bool>()) GTEST_SKIP() << "the device lacks multiview";
+  EXPECT_EQ(out["multiview"].get<bool>(), multiview);
+  std::ifstream in(report);
+  ASSERT_TRUE(in.good()) << "the runtime wrote no report";
+  const nlohmann::json seen = nlohmann::json::parse(in);
+  EXPECT_EQ(seen["problems"], nlohmann::json::array()) << seen.dump();
+  ASSERT_TRUE(seen.contains("saved_views")) << seen.dump();
+  for (int eye = 0; eye < 2; ++eye) {
+    const nlohmann::json& v = seen["saved_views"][eye];
+    const auto q = v["orientation"].get<std::array<double, 4>>();  // x, y, z, w
+    const auto fov = v["fov"].get<std::array<double, 4>>();        // left, right, up, down
+    // The analytic horizon (OpenXR: the view looks along its −Z, +Y up): world up in view
+    // space is u = R(q)ᵀ·(0, 1, 0), and the level directions (a, b, −1) satisfy
+    // a·u_x + b·u_y − u_z = 0, i.e. b = u_z/u_y − (u_x/u_y)·a. (The horizon's dip below level
+    // from 6 m on the Earth, √(2h/R) = 1.4 mrad, is under a tenth of a row here.)
+    const double x = q[0], y = q[1], z = q[2], w = q[3];
+    const double ux = 2.0 * (x * y + w * z), uy = 1.0 - 2.0 * (x * x + z * z),
+                 uz = 2.0 * (y * z - w * x);
+    const double slope = -ux / uy, intercept = uz / uy;
+    const auto img = ocean::io::read_png(dir.path / ("view" + std::to_string(eye) + ".png"));
+    ASSERT_TRUE(img.ok()) << img.status().message();
+    const HorizonFit f = fit_horizon(img.value(), fov);
+    const double rows_per_tangent = img.value().height / (std::tan(fov[2]) - std::tan(fov[3]));
+    std::printf(
+        "eye %d: horizon at %.2f° (analytic %.2f°), at a = 0 b = %.4f (analytic %.4f), "
+        "%d columns, rms %.2f rows\n",
+        eye, std::atan(f.slope) * 180.0 / M_PI, std::atan(slope) * 180.0 / M_PI, f.intercept,
+        intercept, f.columns, f.rms_rows);
+    ASSERT_GT(f.columns, img.value().width / 2);
+    // Each column's horizon is found to ½ row (the row it crosses): over the ~90 columns the
+    // fitted angle within 1°, the line within a row where the view's axis meets it, the
+    // residual under a row (uniform ±½ row: 0.29 rms).
+    EXPECT_NEAR(std::atan(f.slope), std::atan(slope), 1.0 * M_PI / 180.0) << "eye " << eye;
+    EXPECT_NEAR((f.intercept - intercept) * rows_per_tangent, 0.0, 1.0) << "eye " << eye;
+    EXPECT_LT(f.rms_rows, 1.0) << "eye " << eye;
+  }
+}
+
+TEST(XrCli, HorizonRolledAndPlacedByEachViewsProjection) { check_horizon(true); }
+
+TEST(XrCli, HorizonRolledAndPlacedWithoutMultiview) { check_horizon(false); }
 
 TEST(XrCli, NoRuntimeIsOneLineAndAFailure) {
   ScratchDir dir("ocean_xr_none");

@@ -16,6 +16,9 @@
 #ifdef OCEAN_HAS_VULKAN
 #include "ocean/vk/simulation.hpp"
 #endif
+#ifdef OCEAN_HAS_CUDA
+#include "ocean/cuda/simulation.hpp"
+#endif
 
 namespace ocean::cli::bench {
 
@@ -97,6 +100,22 @@ Result<Timed> time_vulkan(const SimulationConfig& with, double min_time, std::st
 }
 #endif
 
+// CUDA: GPU time from CUDA events (CudaBackend::time_frames: the frame, the cascades alone and the
+// map alone as three graphs on the same streams, alternating launch by launch, means of
+// kCudaFrames after a warm-up): the device's time, no host round trip.
+constexpr int kCudaFrames = 50;
+#ifdef OCEAN_HAS_CUDA
+Result<cuda::FrameTimings> time_cuda(const SimulationConfig& with, std::string& device) {
+  Result<std::unique_ptr<cuda::CudaBackend>> made = cuda::make_cuda_backend();
+  if (!made.ok()) return made.status();
+  cuda::CudaBackend& backend = *made.value();
+  device = backend.device_name() + ", " + std::string(cuda::to_string(backend.fft_engine()));
+  std::unique_ptr<TaskRunner> serial = make_serial_runner();
+  if (Status s = backend.configure(with, *serial); !s.ok()) return s;
+  return backend.time_frames(kCudaFrames);
+}
+#endif
+
 }  // namespace
 
 double overlap_of(double cascades_ms, double noise_ms, double both_ms) {
@@ -106,7 +125,7 @@ double overlap_of(double cascades_ms, double noise_ms, double both_ms) {
 int run_overlap(const OverlapOptions& o) {
   std::shared_ptr<TaskRunner> runner = make_tbb_runner(o.threads);
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-  std::string device, vulkan_note;
+  std::string device, vulkan_note, cuda_device, cuda_note;
   Progress progress("bench", static_cast<long long>(o.resolutions.size() * o.cascades.size()));
   long long done = 0;
   for (int n : o.resolutions) {
@@ -124,23 +143,43 @@ int run_overlap(const OverlapOptions& o) {
 #else
       vulkan_note = "built without Vulkan";
 #endif
+      const auto row = [&](const std::string& backend, double cascades_ms, double noise_ms,
+                           double both_ms) {
+        return nlohmann::ordered_json{{"backend", backend},
+                                      {"resolution", n},
+                                      {"cascades", c},
+                                      {"noise_resolution", o.noise_resolution},
+                                      {"threads", backend == "cpu" ? runner->concurrency() : 0},
+                                      {"cascades_ms", cascades_ms},
+                                      {"noise_ms", noise_ms},
+                                      {"both_ms", both_ms},
+                                      {"sum_ms", cascades_ms + noise_ms},
+                                      {"overlap", overlap_of(cascades_ms, noise_ms, both_ms)}};
+      };
       for (const auto& [backend, timed] : measured) {
         if (!timed.ok()) return report(timed.status());
         const Timed& t = timed.value();
-        const double sum = t.cascades.median_ms + t.noise.median_ms;
-        rows.push_back(
-            {{"backend", backend},
-             {"resolution", n},
-             {"cascades", c},
-             {"noise_resolution", o.noise_resolution},
-             {"threads", backend == "cpu" ? runner->concurrency() : 0},
-             {"cascades_ms", t.cascades.median_ms},
-             {"noise_ms", t.noise.median_ms},
-             {"both_ms", t.both.median_ms},
-             {"sum_ms", sum},
-             {"overlap", overlap_of(t.cascades.median_ms, t.noise.median_ms, t.both.median_ms)},
-             {"both_min_max_ms", {t.both.min_ms, t.both.max_ms}}});
+        nlohmann::ordered_json r =
+            row(backend, t.cascades.median_ms, t.noise.median_ms, t.both.median_ms);
+        r["both_min_max_ms"] = {t.both.min_ms, t.both.max_ms};
+        rows.push_back(r);
       }
+#ifdef OCEAN_HAS_CUDA
+      Result<cuda::FrameTimings> cuda_timed = time_cuda(config, cuda_device);
+      if (cuda_timed.ok()) {
+        const cuda::FrameTimings& t = cuda_timed.value();
+        nlohmann::ordered_json r = row("cuda", t.cascades_ms, t.noise_ms, t.simulation_ms);
+        r["gpu_mean_of_frames"] = kCudaFrames;
+        r["serial_ms"] = t.serial_ms;
+        rows.push_back(r);
+      } else if (cuda_timed.status().code() == ErrorCode::unsupported) {
+        cuda_note = cuda_timed.status().message();
+      } else {
+        return report(cuda_timed.status());
+      }
+#else
+      cuda_note = "built without CUDA";
+#endif
       progress.update(++done);
     }
   }
@@ -152,6 +191,8 @@ int run_overlap(const OverlapOptions& o) {
     nlohmann::ordered_json out = {{"definition", definition}, {"rows", rows}};
     if (!device.empty()) out["vulkan_device"] = device;
     if (!vulkan_note.empty()) out["vulkan_note"] = vulkan_note;
+    if (!cuda_device.empty()) out["cuda_device"] = cuda_device;
+    if (!cuda_note.empty()) out["cuda_note"] = cuda_note;
     print_json(out);
     return kExitOk;
   }
@@ -159,7 +200,10 @@ int run_overlap(const OverlapOptions& o) {
                "per frame, ms (CPU: "
             << runner->concurrency() << " threads, two tasks of the frame graph; Vulkan"
             << (device.empty() ? std::string() : " on " + device)
-            << ": one submission, no barrier between the noise and the FFT's first stage)\n"
+            << ": one submission, no barrier between the noise and the FFT's first stage; CUDA"
+            << (cuda_device.empty() ? std::string() : " on " + cuda_device)
+            << ": the map on its own stream in the frame's graph, GPU time, mean of " << kCudaFrames
+            << " frames)\n"
             << std::setw(8) << "backend" << std::setw(6) << "N" << std::setw(3) << "C"
             << std::setw(7) << "map" << std::setw(11) << "cascades" << std::setw(9) << "noise"
             << std::setw(9) << "both" << std::setw(9) << "sum" << std::setw(9) << "overlap\n";
@@ -175,6 +219,7 @@ int run_overlap(const OverlapOptions& o) {
   }
   std::cout << "overlap = " << definition << "\n";
   if (!vulkan_note.empty()) std::cout << "vulkan: " << vulkan_note << "\n";
+  if (!cuda_note.empty()) std::cout << "cuda: " << cuda_note << "\n";
   return kExitOk;
 }
 

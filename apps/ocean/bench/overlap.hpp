@@ -1,7 +1,9 @@
 // `ocean bench --overlap`: seed 003's concurrent kernels measured — the cascades' frame alone, the
 // far field's noise map alone (docs/rendering.md R.13a) and both in one frame, on the CPU backend
-// (two tasks of the frame graph) and the Vulkan backend (one submission, no barrier between the
-// noise dispatch and the FFT's first stage), and how much of the shorter one the frame hides.
+// (two tasks of the frame graph), the Vulkan backend (one submission, no barrier between the
+// noise dispatch and the FFT's first stage) and the CUDA backend (the map on a stream of its own
+// beside the cascades', one graph; GPU time from CudaBackend::time_frames), and how much of the
+// shorter one the frame hides.
 #pragma once
 
 #include <vector>
@@ -20,8 +22,9 @@ struct OverlapOptions {
 };
 
 /// overlap = (t_cascades + t_noise − t_both) / min(t_cascades, t_noise), medians of the wall
-/// time per frame: 1 when the shorter part is hidden entirely, 0 when the parts run one after the
-/// other, negative when running them together costs more than in turn.
+/// time per frame (CUDA: means of the GPU time per frame): 1 when the shorter part is hidden
+/// entirely, 0 when the parts run one after the other, negative when running them together costs
+/// more than in turn.
 double overlap_of(double cascades_ms, double noise_ms, double both_ms);
 
 /// Prints the table (or JSON) and returns the exit code.

@@ -114,8 +114,8 @@ int run_bench(const BenchOptions& o) {
   const double interval = interval_ms.value() * 1e-3;
   if (o.overlap && (o.backend != "cpu" || interval > 0.0))
     return report(
-        invalid_argument("--overlap times the CPU and the Vulkan backend: leave out --backend and "
-                         "--frame-interval"));
+        invalid_argument("--overlap times the CPU, Vulkan and CUDA backends: leave out --backend "
+                         "and --frame-interval"));
   if (o.table_one && (o.backend != "cpu" || interval > 0.0))
     return report(invalid_argument(
         "--table-one times the CPU and the Vulkan backend back to back: leave out --backend and "
@@ -284,11 +284,12 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_flag("--table-one", options->table_one,
                 "VR-GIS FFT+Perlin's Table I: CPU and Vulkan ms per frame and their ratio at "
                 "128, 512, 1024 and 2048 (or --resolution), the first --cascades count");
-  cmd->add_flag("--overlap", options->overlap,
-                "Seed 003's concurrent kernels: the cascades alone, the far field's noise map "
-                "alone and both in one frame, on the CPU and the Vulkan backend, and the overlap "
-                "(t_cascades + t_noise - t_both) / min(t_cascades, t_noise); the first "
-                "--resolution and --cascades default to 256 and 4");
+  cmd->add_flag(
+      "--overlap", options->overlap,
+      "Seed 003's concurrent kernels: the cascades alone, the far field's noise map "
+      "alone and both in one frame, on the CPU, Vulkan and CUDA backends, and the overlap "
+      "(t_cascades + t_noise - t_both) / min(t_cascades, t_noise); the first "
+      "--resolution and --cascades default to 256 and 4");
   add_option(*cmd, kFarNoiseResolution, options->far_noise_resolution,
              "--overlap: texels per side of the noise map (16…4096); the CPU runs on the first "
              "--threads count (default all)")

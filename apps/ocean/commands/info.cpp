@@ -12,6 +12,10 @@
 #ifdef OCEAN_HAS_CUDA
 #include "ocean/cuda/simulation.hpp"
 #endif
+#if defined(OCEAN_HAS_VULKAN) && defined(OCEAN_HAS_CUDA)
+#include "ocean/interop.hpp"
+#include "ocean/vk/external.hpp"
+#endif
 
 namespace ocean::cli {
 
@@ -59,12 +63,40 @@ int run_info(bool json) {
                             {"reason", d.reason}});
   }
 #endif
+  // Whether `--backend cuda` renders with no host copy: the first Vulkan device that is the same
+  // GPU as a usable CUDA device, else why not (interop::choose against the first Vulkan device).
+  std::string cuda_render = cuda_status;  // why there is no CUDA device, or "built without CUDA"
+#if defined(OCEAN_HAS_VULKAN) && defined(OCEAN_HAS_CUDA)
+  Result<std::vector<vk::DeviceInfo>> listed = vk::list_devices();
+  Result<std::vector<interop::VulkanSide>> sides = vk::list_interop_sides();
+  if (cuda_found.ok() && sides.ok() && listed.ok()) {
+    std::vector<interop::CudaSide> cuda_sides;
+    for (const cuda::DeviceInfo& d : cuda_found.value())
+      cuda_sides.push_back({.index = d.index, .name = d.name, .uuid = d.uuid, .usable = d.usable});
+    std::string first_reason;
+    for (std::size_t i = 0; i < sides.value().size(); ++i) {
+      if (!listed.value()[i].usable) continue;
+      const interop::Choice c = interop::choose(sides.value()[i], cuda_sides);
+      if (first_reason.empty()) first_reason = c.reason;
+      if (c.zero_copy) {
+        first_reason = "zero-copy with Vulkan device [" + std::to_string(i) + "]: " + c.reason;
+        break;
+      }
+    }
+    cuda_render = first_reason.empty() ? "no usable Vulkan device: CUDA frames cannot be rendered"
+                                       : first_reason;
+  } else if (cuda_found.ok()) {
+    cuda_render = "no Vulkan device: CUDA frames cannot be rendered";
+  }
+#endif
   if (json) {
-    print_json(
-        {{"backends", backends},
-         {"vulkan", {{"status", vulkan_status}, {"devices", devices}}},
-         {"cuda",
-          {{"status", cuda_status}, {"versions", cuda_versions}, {"devices", cuda_devices}}}});
+    print_json({{"backends", backends},
+                {"vulkan", {{"status", vulkan_status}, {"devices", devices}}},
+                {"cuda",
+                 {{"status", cuda_status},
+                  {"versions", cuda_versions},
+                  {"devices", cuda_devices},
+                  {"render", cuda_render}}}});
     return kExitOk;
   }
   std::cout << "backends:\n";
@@ -93,6 +125,7 @@ int run_info(bool json) {
               << (d["usable"].get<bool>() ? "" : " unusable: " + d["reason"].get<std::string>())
               << "\n";
   }
+  std::cout << "cuda render: " << cuda_render << "\n";
   return kExitOk;
 }
 

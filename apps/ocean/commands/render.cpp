@@ -341,6 +341,8 @@ int run_render(const RenderOptions& o) {
   Result<Inputs> parsed = parse_inputs(o);
   if (!parsed.ok()) return report(parsed.status());
   const Inputs& in = parsed.value();
+  // --backend cuda without a device: the backend's one line, before any window or file.
+  if (Status s = render::Scene::available(in.scene.backend); !s.ok()) return report(s);
   // Fail before any work when the output cannot be written (or ffmpeg cannot be started).
   if (Status s = io::check_parent_writable(frame_path(in, 0)); !s.ok()) return report(s);
   if (!o.motion_vectors.empty()) {
@@ -367,6 +369,7 @@ int run_render(const RenderOptions& o) {
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
+  if (!scene.interop().empty()) std::cerr << "ocean: note: " << scene.interop() << "\n";
   render::Renderer& renderer = scene.renderer();
   if (Status s = check_mesh_support(in.view, *scene.context()); !s.ok()) return report(s);
   if (Status s = renderer.set_meshes(objects.value()->meshes()); !s.ok()) return report(s);

@@ -155,6 +155,8 @@ int run_view(const ViewOptions& o) {
     if (Status s = io::check_parent_writable(o.screenshot); !s.ok()) return report(s);
   }
 
+  // --backend cuda without a device: the backend's one line, before any window or file.
+  if (Status s = render::Scene::available(in.scene.backend); !s.ok()) return report(s);
   // Declaration order is destruction order in reverse: ImGui, swapchain and surface go before
   // the scene's Vulkan instance, the window and GLFW last.
   Result<std::unique_ptr<view::Window>> window =
@@ -167,6 +169,7 @@ int run_view(const ViewOptions& o) {
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
+  if (!scene.interop().empty()) std::cerr << "ocean: note: " << scene.interop() << "\n";
   render::Renderer& renderer = scene.renderer();
   const vk::Context& ctx = *scene.context();
   if (in.view.debug == render::DebugView::wireframe && !ctx.wireframe)

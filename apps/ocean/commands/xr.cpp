@@ -1,6 +1,8 @@
 // `ocean xr`: the sea in a headset through OpenXR. The runtime's predicted display time drives
-// the simulation time (the picture shows the sea at the moment it is seen); each eye is a mono
-// render from the pose xrLocateViews gives for that time, copied into the eye's swapchain image.
+// the simulation time (the picture shows the sea at the moment it is seen); each eye is drawn
+// from the pose and field of view xrLocateViews gives for that time (roll and asymmetric frusta
+// included, docs/vr.md V.1–V.2): both eyes in one multiview pass when the device has multiview,
+// each half copied into its eye's swapchain image, else one render per eye.
 // The simulation runs on the ready task runner, woken before xrWaitFrame returns, so that its
 // workers are running when the frame's work starts (docs/performance.md, paced frames).
 #include "ocean/xr.hpp"
@@ -33,6 +35,7 @@ struct XrOptions {
   std::string eye_height = "6";
   std::string quality = "high";
   bool validation = false;
+  bool no_multiview = false;
   bool json = false;
 };
 
@@ -40,27 +43,6 @@ constexpr NumberOption<long long> kXrFrames{
     .flag = "--frames", .accept = Accept::whole_in_range, .lo = 0.0, .hi = 1e9};
 constexpr NumberOption<double> kEyeHeight{
     .flag = "--eye-height", .accept = Accept::in_range, .lo = 0.5, .hi = 1e4};
-
-// The eye's camera: the LOCAL space's origin `eye_height_m` above the sea, looking along the
-// pose's −Z. The renderer's camera is symmetric and has no roll (lod::Camera): the vertical
-// field of view spans the larger of the up and down angles, and a tilted head is drawn level;
-// the stereo renderer will take the views' own projections.
-lod::Camera eye_camera(const xr::EyeView& eye, double eye_height_m, double aspect) {
-  const auto& q = eye.pose.orientation;  // x, y, z, w
-  // R(q)·(0, 0, −1): the third column of the rotation matrix, negated.
-  const std::array<double, 3> forward = {-2.0 * (q[0] * q[2] + q[3] * q[1]),
-                                         -2.0 * (q[1] * q[2] - q[3] * q[0]),
-                                         -(1.0 - 2.0 * (q[0] * q[0] + q[1] * q[1]))};
-  const lod::Vec3 position{eye.pose.position_m[0], eye.pose.position_m[1] + eye_height_m,
-                           eye.pose.position_m[2]};
-  lod::Camera camera;
-  camera.position_m = position;
-  camera.target_m = {position.x + 100.0 * forward[0], position.y + 100.0 * forward[1],
-                     position.z + 100.0 * forward[2]};
-  camera.fov_y_rad = 2.0 * std::max(std::fabs(eye.fov.up_rad), std::fabs(eye.fov.down_rad));
-  camera.aspect = aspect;
-  return camera;
-}
 
 int run_xr(const XrOptions& o) {
   Result<long long> frames = parse(kXrFrames, o.frames);
@@ -83,8 +65,11 @@ int run_xr(const XrOptions& o) {
   auto runner = std::shared_ptr<TaskRunner>(make_ready_runner());
   Result<std::unique_ptr<Simulator>> sim = make_simulator(c, "cpu", runner);
   if (!sim.ok()) return report(sim.status());
+  // Both eyes side by side in one multiview pass (R.25), or one render per eye.
+  const bool one_pass = session.context()->multiview && !o.no_multiview;
   Result<std::unique_ptr<render::Renderer>> renderer = render::Renderer::make(
-      session.context(), {.width = session.eye_width(), .height = session.eye_height()});
+      session.context(),
+      {.width = (one_pass ? 2 : 1) * session.eye_width(), .height = session.eye_height()});
   if (!renderer.ok()) return report(renderer.status());
   render::Renderer& r = *renderer.value();
   if (Status s = r.configure(c); !s.ok()) return report(s);
@@ -97,7 +82,9 @@ int run_xr(const XrOptions& o) {
   }
   view.quality = lod::quality_preset(quality.value());
   view.shading = render::sky_preset(o.sim.preset_path == "storm" ? "overcast" : "clear").value();
-  const double aspect = double(session.eye_width()) / session.eye_height();
+  // The LOCAL space's origin `--eye-height` metres above the mean sea level.
+  const lod::Vec3 origin{0.0, eye_height.value(), 0.0};
+  const lod::Camera defaults;
 
   StopSignals stop;
   std::vector<std::int64_t> display_ns;
@@ -112,7 +99,7 @@ int run_xr(const XrOptions& o) {
       exit_requested = true;
       continue;  // the runtime may stop the session at once: poll before another frame
     }
-    if (!session.running()) {  // waiting for READY, or for the end after STOPPING
+    if (!session.running()) {              // waiting for READY, or for the end after STOPPING
       if (done && !exit_requested) break;  // stopped before the session began: nothing to end
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
       continue;
@@ -129,12 +116,24 @@ int run_xr(const XrOptions& o) {
     if (frame.should_render) {
       sim.value()->step(t);
       if (Status s = r.upload(sim.value()->frame()); !s.ok()) return report(s);
-      for (int eye = 0; eye < 2; ++eye) {
-        view.camera = eye_camera(frame.views[std::size_t(eye)], eye_height.value(), aspect);
-        if (Status s = session.submit_eye(
-                eye, [&](VkCommandBuffer cmd) { return r.record(cmd, view); }, r.srgb_image());
+      std::array<lod::Camera, 2> eyes;
+      for (std::size_t e = 0; e < 2; ++e)
+        eyes[e] = xr::eye_camera(frame.views[e], origin, defaults.near_m, defaults.far_m);
+      if (one_pass) {
+        view.camera = xr::head_camera(eyes);
+        if (Status s = session.submit_stereo(
+                [&](VkCommandBuffer cmd) { return r.record_stereo(cmd, view, eyes); },
+                r.srgb_image());
             !s.ok())
           return report(s);
+      } else {
+        for (int eye = 0; eye < 2; ++eye) {
+          view.camera = eyes[std::size_t(eye)];
+          if (Status s = session.submit_eye(
+                  eye, [&](VkCommandBuffer cmd) { return r.record(cmd, view); }, r.srgb_image());
+              !s.ok())
+            return report(s);
+        }
       }
     }
     if (Status s = session.end_frame(); !s.ok()) return report(s);
@@ -147,13 +146,15 @@ int run_xr(const XrOptions& o) {
     out["runtime"] = session.runtime_name();
     out["eye_width"] = session.eye_width();
     out["eye_height"] = session.eye_height();
+    out["multiview"] = one_pass;
     out["frames"] = display_ns.size();
     out["display_times_ns"] = display_ns;
     out["simulation_times_s"] = simulation_s;
     print_json(out);
   } else {
     std::cout << "ocean xr: " << display_ns.size() << " frames on '" << session.runtime_name()
-              << "', " << session.eye_width() << "×" << session.eye_height() << " per eye\n";
+              << "', " << session.eye_width() << "×" << session.eye_height() << " per eye, "
+              << (one_pass ? "both eyes in one multiview pass" : "one render per eye") << "\n";
   }
   return kExitOk;
 }
@@ -176,8 +177,12 @@ Command add_xr_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--validation", options->validation,
                 "OpenXR core validation layer and Vulkan validation layer on");
-  cmd->add_flag("--json", options->json,
-                "Print the frames' predicted display times and simulation times as JSON");
+  cmd->add_flag("--no-multiview", options->no_multiview,
+                "Render the eyes one after the other even when the device has multiview");
+  cmd->add_flag(
+      "--json", options->json,
+      "Print the frames' predicted display times and simulation times, and whether both eyes "
+      "were drawn in one multiview pass, as JSON");
   return {cmd, [options] { return run_xr(*options); }};
 }
 

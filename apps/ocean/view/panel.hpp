@@ -29,7 +29,7 @@ struct PanelState {
 /// What the panel shows but does not edit.
 struct PanelStats {
   std::string_view device;   ///< Vulkan device name
-  std::string_view backend;  ///< cpu or vulkan
+  std::string_view backend;  ///< cpu, vulkan or cuda
   double frame_ms = 0.0;     ///< CPU frame time, median of the last 60 frames
   double sim_time_s = 0.0;
   int width = 0, height = 0;  ///< rendered pixels
@@ -39,10 +39,10 @@ struct PanelStats {
 };
 
 struct PanelActions {
-  bool sea_changed = false;      ///< state.sea was edited: reconfigure the simulation
-  bool quality_changed = false;  ///< view.quality is a new preset
-  bool reset_camera = false;     ///< back to the --camera/--target pose
-  bool boat_changed = false;     ///< state.boat was edited: make the wake's layer again
+  bool sea_changed = false;       ///< state.sea was edited: reconfigure the simulation
+  bool quality_changed = false;   ///< view.quality is a new preset
+  bool reset_camera = false;      ///< back to the --camera/--target pose
+  bool boat_changed = false;      ///< state.boat was edited: make the wake's layer again
   bool shallows_changed = false;  ///< state.shallows is a new scene
   bool quit = false;
 };

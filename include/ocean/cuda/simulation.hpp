@@ -1,11 +1,13 @@
 // ocean/cuda/simulation.hpp — the CUDA simulation backend: the CPU reference pipeline (evolution,
 // inverse FFTs of height, displacement and slopes, finalize: normals, Jacobian, foam, RGBA8 with
 // its mips, half4) as CUDA kernels and cuFFT (or its own FFT kernels) transforms, each cascade on
-// a stream of its own, the whole frame one CUDA graph; results read back into the Frame arrays.
+// a stream of its own, the far field's noise map (SimulationConfig::far_noise) on another, the
+// whole frame one CUDA graph; results read back into the Frame arrays.
 //
 // Conformance (tests/backends/conformance_test.cpp, src/backends/cuda/README.md): every output
 // within conformance::kDeviceBounds of the CPU backend's scalar reference pipeline, the bound the
-// Vulkan backend is held to.
+// Vulkan backend is held to; the noise map within conformance::kFarNoiseDeviceBounds of the CPU
+// backend's.
 //
 // Contract: make_cuda_backend() answers `unsupported` with a message starting "no CUDA device: "
 // when the machine has no usable device (no driver, a driver older than the runtime, no GPU, a
@@ -24,6 +26,8 @@
 #include <string_view>
 #include <vector>
 
+#include "ocean/far_noise.hpp"
+#include "ocean/interop.hpp"
 #include "ocean/sim.hpp"
 
 namespace ocean::cuda {
@@ -52,6 +56,7 @@ struct DeviceInfo {
   int multiprocessors = 0;
   bool usable = false;  ///< this build carries code the device runs (see reason otherwise)
   std::string reason;
+  interop::Uuid uuid{};  ///< cudaDeviceProp::uuid: equal to the Vulkan deviceUUID of the same GPU
 };
 
 /// What the CUDA runtime sees: the devices, or an error whose message starts "no CUDA device: "
@@ -62,12 +67,25 @@ std::string runtime_versions();
 
 /// GPU time of one frame from CUDA events around the frame's graph, milliseconds.
 struct FrameTimings {
-  double simulation_ms = 0.0;  ///< every stage, cascades on concurrent streams, no readback
-  double serial_ms = 0.0;      ///< the same work with every cascade on one stream
-  double readback_ms = 0.0;    ///< device → pinned host copies of the frame's outputs
+  /// Every stage, the cascades and the far field's noise map (when configured) on concurrent
+  /// streams, no readback: the frame with both.
+  double simulation_ms = 0.0;
+  double serial_ms = 0.0;    ///< the same work with every cascade and the map on one stream
+  double readback_ms = 0.0;  ///< device → pinned host copies of the frame's outputs
+  /// The cascades alone on their streams (no map, no readback); simulation_ms without a map.
+  double cascades_ms = 0.0;
+  /// The noise map alone on its stream (no cascades, no readback); 0 without a map.
+  double noise_ms = 0.0;
   /// serial_ms / simulation_ms: how much the concurrent streams gain (1 = none).
   [[nodiscard]] double overlap() const {
     return simulation_ms > 0.0 ? serial_ms / simulation_ms : 0.0;
+  }
+  /// How much of the shorter of the cascades and the map the frame hides, as `ocean bench
+  /// --overlap` defines it: (cascades_ms + noise_ms − simulation_ms) / min(cascades_ms,
+  /// noise_ms); 1 = hidden entirely, 0 = one after the other; 0 without a map.
+  [[nodiscard]] double noise_overlap() const {
+    const double shorter = cascades_ms < noise_ms ? cascades_ms : noise_ms;
+    return shorter > 0.0 ? (cascades_ms + noise_ms - simulation_ms) / shorter : 0.0;
   }
 };
 
@@ -86,11 +104,27 @@ class CudaBackend final : public Backend {
   void allocate(Frame& frame) const override;
   /// submit(time_s) then read(out).
   void step(double time_s, Frame& out) override;
+  void set_far_noise_origin(const std::array<double, 2>& origin_m) override {
+    config_.far_noise.origin_m = origin_m;
+  }
 
   /// Asynchronous use: submit() launches the frame's graph at time_s and returns; read() waits
   /// for it and copies the outputs into `out`.
   Status submit(double time_s);
   Status read(Frame& out);
+
+  /// Zero-copy to a renderer on the same GPU (ocean/interop.hpp; Renderer::share_inputs): imports
+  /// the shared buffer (cudaImportExternalMemory, cudaExternalMemoryGetMappedBuffer) and the two
+  /// semaphores (cudaImportExternalSemaphore); from then on each frame n waits on the origin
+  /// stream for `read` ≥ n − 1 (none for n = 1), runs the frame's graph with the share copies
+  /// (device to device, after each cascade's mips) besides the readback, and signals `written`
+  /// = n. Every frame must then be taken by the renderer (Renderer::take_shared(shared_frame()))
+  /// before the next one is submitted, or the next one waits for ever. Imported descriptors are
+  /// set to −1 (the runtime owns them); on failure the rest stay the caller's
+  /// (interop::close_unimported). Needs configure() first; configure() ends the sharing.
+  Status share_inputs(interop::SharedInputs& shared);
+  /// The last frame written into the shared buffer (1, 2, …), 0 before the first or unshared.
+  [[nodiscard]] std::uint64_t shared_frame() const;
 
   /// The first failure of a frame since configure(); ok while everything works.
   [[nodiscard]] const Status& status() const { return status_; }
@@ -98,26 +132,33 @@ class CudaBackend final : public Backend {
   [[nodiscard]] const std::string& device_name() const { return device_name_; }
   /// The FFT engine in use: FftEngine::cufft or FftEngine::kernels.
   [[nodiscard]] FftEngine fft_engine() const { return fft_; }
-  /// Times `frames` launches of the simulation graph (concurrent and serial) and of the
-  /// readback after one warm-up frame; means. Needs a configured backend.
+  /// Times `frames` launches of the simulation graph (concurrent and serial), of the readback
+  /// and, with a noise map, of the cascades alone and the map alone, each after one warm-up
+  /// frame; means. Needs a configured backend.
   Result<FrameTimings> time_frames(int frames);
 
  private:
+  Status submit_shared();  // the shared frame: wait `read`, graph, signal `written`
   int device_;
   FftEngine fft_;
   std::string device_name_;
   std::unique_ptr<detail::DeviceState> gpu_;
   SimulationConfig config_;
+  FarFieldNoise far_noise_;  ///< fitted at configure when config_.far_noise is on
   Status status_;
   double last_time_s_ = 0.0;
   bool has_stepped_ = false;
   bool pending_ = false;
   double pending_time_s_ = 0.0;
+  std::array<double, 2> pending_far_origin_m_{};  ///< the window the submitted map covers
 };
 
 /// The first usable device's backend, or `unsupported` "no CUDA device: ..." (see the contract);
 /// FftEngine::cufft where cuFFT does not load: `unsupported` naming the library.
 Result<std::unique_ptr<CudaBackend>> make_cuda_backend(FftEngine fft = FftEngine::automatic);
+/// Device `device` (an index of list_devices()), which must be usable; as above otherwise.
+Result<std::unique_ptr<CudaBackend>> make_cuda_backend(int device,
+                                                       FftEngine fft = FftEngine::automatic);
 
 /// Configures a backend for `config` and returns CudaBackend::time_frames(frames).
 Result<FrameTimings> benchmark(const SimulationConfig& config, int frames,

@@ -1,7 +1,9 @@
 // The CUDA backend: host side. configure() generates every cascade's spectrum with the CPU code
 // (again at each reconfigure), uploads it with the exact phase rates of M.7.3, creates the
 // device state (device_state.cpp) and captures the frame into a graph; a frame rewrites the
-// per-frame parameters, launches the graph and copies the pinned readback into the Frame.
+// per-frame parameters, launches the graph and copies the pinned readback into the Frame. The far
+// field's noise map, when configured, is far_noise_state.cpp's: fitted here, its parameters
+// written with the frame's, its copy read with the cascades'.
 //
 // This work is based on: Aebi, VR Ocean, §4.2 (stage chain), §4.2.1 (spectrum regenerated on
 // demand); docs/math.md (M.7.3) for the exact looping phase.
@@ -9,11 +11,13 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "device_state.hpp"
 #include "errors.hpp"
+#include "far_noise_state.hpp"
 
 namespace ocean::cuda {
 
@@ -65,15 +69,15 @@ CudaBackend::~CudaBackend() {
 }
 
 Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runner*/) {
-  if (config.far_noise.resolution > 0)
-    return unsupported(
-        "unsupported on the CUDA backend: the far-field noise map (far_noise.resolution > 0); "
-        "use the cpu or vulkan backend");
   Result<detail::Layout> layout = detail::make_layout(config);
   if (!layout.ok()) return layout.status();
   const detail::Layout& l = layout.value();
   Result<SeaState> sea = SeaState::make(config.sea);
   if (!sea.ok()) return sea.status();
+  Result<FarFieldNoise> far_noise = config.far_noise.resolution > 0
+                                        ? fit_far_field_noise(config)
+                                        : Result<FarFieldNoise>(FarFieldNoise{});
+  if (!far_noise.ok()) return far_noise.status();
   const detail::CufftLibrary* cufft = nullptr;
   if (fft_ == FftEngine::cufft) {
     Result<const detail::CufftLibrary*> loaded = detail::load_cufft();
@@ -129,12 +133,14 @@ Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runn
   // One eager frame (loads every kernel and cuFFT's, and reports a failure where it happens),
   // then the same schedule captured once into the graph every step launches.
   const detail::Schedule frame = detail::make_schedule(l, true, true);
+  detail::write_noise_params(*gpu, far_noise.value(), config.far_noise, 0.0);
   if (Status s = detail::issue(*gpu, frame, false); !s.ok()) return s;
   if (Status s = to_status(cudaStreamSynchronize(gpu->streams.front()), "the first frame"); !s.ok())
     return s;
   if (Status s = detail::issue(*gpu, frame, true, &gpu->frame); !s.ok()) return s;
   gpu_ = std::move(gpu);
   config_ = config;
+  far_noise_ = far_noise.value();
   status_ = {};
   has_stepped_ = false;
   pending_ = false;
@@ -142,6 +148,91 @@ Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runn
 }
 
 void CudaBackend::allocate(Frame& frame) const { allocate_frame(config_, frame); }
+
+Status CudaBackend::share_inputs(interop::SharedInputs& shared) {
+  if (!gpu_) return invalid_argument("CUDA backend: share_inputs() before configure()");
+  DeviceState& g = *gpu_;
+  const detail::Layout& l = g.layout;
+  if (shared.layout.resolution != l.resolution || shared.layout.cascades != l.cascades)
+    return invalid_argument(
+        "CUDA backend: the shared inputs are for N = " + std::to_string(shared.layout.resolution) +
+        " and " + std::to_string(shared.layout.cascades) + " cascades, configured for " +
+        std::to_string(l.resolution) + " and " + std::to_string(l.cascades));
+  // The frame's half4 map and RGBA8 chain are what the share copies move (always read back).
+  if (l.outputs[detail::displacement_half].bytes != shared.layout.displacement_bytes ||
+      l.outputs[detail::packed_mips].bytes != shared.layout.mips_bytes)
+    return invalid_argument("CUDA backend: the shared layout's arrays differ from the frame's");
+  if (shared.memory_fd < 0 || shared.written_fd < 0 || shared.read_fd < 0)
+    return invalid_argument("CUDA backend: the shared inputs lack a descriptor");
+  if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return s;
+  g.release_shared();
+  const Status made = [&]() -> Status {
+    cudaExternalMemoryHandleDesc memory{};
+    memory.type = cudaExternalMemoryHandleTypeOpaqueFd;
+    memory.handle.fd = shared.memory_fd;
+    memory.size = shared.memory_bytes;
+    memory.flags = shared.dedicated ? cudaExternalMemoryDedicated : 0u;
+    if (Status s = to_status(cudaImportExternalMemory(&g.shared_memory, &memory),
+                             "cudaImportExternalMemory (the renderer's buffer)");
+        !s.ok())
+      return s;
+    shared.memory_fd = -1;
+    cudaExternalMemoryBufferDesc buffer{};
+    buffer.offset = 0;
+    buffer.size = shared.layout.bytes();
+    void* mapped = nullptr;
+    if (Status s = to_status(cudaExternalMemoryGetMappedBuffer(&mapped, g.shared_memory, &buffer),
+                             "cudaExternalMemoryGetMappedBuffer");
+        !s.ok())
+      return s;
+    g.shared = static_cast<char*>(mapped);
+    for (auto [fd, semaphore] :
+         {std::pair{&shared.written_fd, &g.written}, std::pair{&shared.read_fd, &g.read}}) {
+      cudaExternalSemaphoreHandleDesc desc{};
+      desc.type = shared.timeline ? cudaExternalSemaphoreHandleTypeTimelineSemaphoreFd
+                                  : cudaExternalSemaphoreHandleTypeOpaqueFd;
+      desc.handle.fd = *fd;
+      if (Status s = to_status(cudaImportExternalSemaphore(semaphore, &desc),
+                               "cudaImportExternalSemaphore (the renderer's semaphore)");
+          !s.ok())
+        return s;
+      *fd = -1;
+    }
+    g.shared_layout = shared.layout;
+    g.timeline = shared.timeline;
+    return detail::issue(g, detail::make_schedule(l, true, true, true), true, &g.shared_frame);
+  }();
+  if (!made.ok()) g.release_shared();
+  return made;
+}
+
+std::uint64_t CudaBackend::shared_frame() const {
+  return gpu_ && gpu_->shared_frame != nullptr ? gpu_->shared_frames : 0;
+}
+
+Status CudaBackend::submit_shared() {
+  DeviceState& g = *gpu_;
+  cudaStream_t origin = g.streams.front();
+  const std::uint64_t n = g.shared_frames + 1;
+  if (n > 1) {  // the renderer has copied frame n − 1 out of the buffer
+    cudaExternalSemaphoreWaitParams wait{};
+    wait.params.fence.value = n - 1;  // ignored for a binary semaphore
+    if (Status s = to_status(cudaWaitExternalSemaphoresAsync(&g.read, &wait, 1, origin),
+                             "cudaWaitExternalSemaphoresAsync");
+        !s.ok())
+      return s;
+  }
+  if (Status s = to_status(cudaGraphLaunch(g.shared_frame, origin), "cudaGraphLaunch"); !s.ok())
+    return s;
+  cudaExternalSemaphoreSignalParams signal{};
+  signal.params.fence.value = n;
+  if (Status s = to_status(cudaSignalExternalSemaphoresAsync(&g.written, &signal, 1, origin),
+                           "cudaSignalExternalSemaphoresAsync");
+      !s.ok())
+    return s;
+  g.shared_frames = n;
+  return {};
+}
 
 Status CudaBackend::submit(double time_s) {
   if (!status_.ok()) return status_;
@@ -153,10 +244,16 @@ Status CudaBackend::submit(double time_s) {
   *gpu_->params_host = {.clock = EvolutionPhase(time_s, config_.loop_period_s).clock(),
                         .foam_decay = static_cast<float>(config_.foam.decay_per_s * dt),
                         .reset_foam = reset_foam ? 1u : 0u};
+  detail::write_noise_params(*gpu_, far_noise_, config_.far_noise, time_s);
+  pending_far_origin_m_ = config_.far_noise.origin_m;
   if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return status_ = s;
-  if (Status s = to_status(cudaGraphLaunch(gpu_->frame, gpu_->streams.front()), "cudaGraphLaunch");
-      !s.ok())
+  if (gpu_->shared_frame != nullptr) {
+    if (Status s = submit_shared(); !s.ok()) return status_ = s;
+  } else if (Status s =
+                 to_status(cudaGraphLaunch(gpu_->frame, gpu_->streams.front()), "cudaGraphLaunch");
+             !s.ok()) {
     return status_ = s;
+  }
   pending_ = true;
   pending_time_s_ = time_s;
   last_time_s_ = time_s;
@@ -182,6 +279,8 @@ Status CudaBackend::read(Frame& out) {
       if (dst[o] != nullptr && r.bytes != 0) std::memcpy(dst[o], block + r.offset, r.bytes);
     }
   }
+  detail::read_noise_map(*gpu_, out);
+  if (!out.far_noise.height_slope.empty()) out.far_noise.origin_m = pending_far_origin_m_;
   out.time_s = pending_time_s_;
   ++out.index;
   return {};
@@ -197,50 +296,70 @@ Result<FrameTimings> CudaBackend::time_frames(int frames) {
   if (!status_.ok()) return status_;
   if (Status s = to_status(cudaSetDevice(device_), "cudaSetDevice"); !s.ok()) return s;
   DeviceState& g = *gpu_;
-  for (auto [graph, concurrent] : {std::pair{&g.simulation, true}, std::pair{&g.serial, false}}) {
-    if (*graph != nullptr) continue;
-    if (Status s =
-            detail::issue(g, detail::make_schedule(g.layout, concurrent, false), true, graph);
-        !s.ok())
+  const detail::Layout& l = g.layout;
+  const bool with_noise = l.noise_resolution > 0;
+  // The frame without readback (concurrent, serial) and, with a map, each part alone.
+  const std::pair<cudaGraphExec_t*, detail::ScheduleParts> graphs[] = {
+      {&g.simulation, {.readback = false}},
+      {&g.serial, {.concurrent = false, .readback = false}},
+      {&g.cascades_alone, {.readback = false, .noise = false}},
+      {&g.noise_alone, {.readback = false, .cascades = false}}};
+  for (const auto& [graph, parts] : graphs) {
+    if (*graph != nullptr || (!with_noise && !(parts.cascades && parts.noise))) continue;
+    if (Status s = detail::issue(g, detail::make_schedule(l, parts), true, graph); !s.ok())
       return s;
   }
   cudaStream_t origin = g.streams.front();
-  const detail::Layout& l = g.layout;
-  // Mean GPU time of `frames` runs of `enqueue` on the origin stream, after one warm-up run.
-  const auto time = [&](auto enqueue) -> Result<double> {
-    double total_ms = 0.0;
+  // Mean GPU time of `frames` runs of each of `enqueues` on the origin stream, after one warm-up
+  // run of each; with several, they alternate run by run (as ocean bench --overlap's
+  // measurements), so that a clock that changes during the run reaches each alike.
+  using Enqueue = std::function<Status()>;
+  const auto time = [&](const std::vector<Enqueue>& enqueues) -> Result<std::vector<double>> {
+    std::vector<double> total_ms(enqueues.size(), 0.0);
     for (int i = 0; i <= frames; ++i) {
       g.params_host->clock = (i + 1) / 60.0;
       g.params_host->reset_foam = 0;
-      if (Status s = to_status(cudaEventRecord(g.start, origin), "cudaEventRecord"); !s.ok())
-        return s;
-      if (Status s = enqueue(); !s.ok()) return s;
-      if (Status s = to_status(cudaEventRecord(g.stop, origin), "cudaEventRecord"); !s.ok())
-        return s;
-      if (Status s = to_status(cudaEventSynchronize(g.stop), "a timed frame"); !s.ok()) return s;
-      float ms = 0.0f;
-      if (Status s = to_status(cudaEventElapsedTime(&ms, g.start, g.stop), "cudaEventElapsedTime");
-          !s.ok())
-        return s;
-      if (i > 0) total_ms += ms;
+      detail::write_noise_params(g, far_noise_, config_.far_noise, (i + 1) / 60.0);
+      for (std::size_t k = 0; k < enqueues.size(); ++k) {
+        if (Status s = to_status(cudaEventRecord(g.start, origin), "cudaEventRecord"); !s.ok())
+          return s;
+        if (Status s = enqueues[k](); !s.ok()) return s;
+        if (Status s = to_status(cudaEventRecord(g.stop, origin), "cudaEventRecord"); !s.ok())
+          return s;
+        if (Status s = to_status(cudaEventSynchronize(g.stop), "a timed frame"); !s.ok()) return s;
+        float ms = 0.0f;
+        if (Status s =
+                to_status(cudaEventElapsedTime(&ms, g.start, g.stop), "cudaEventElapsedTime");
+            !s.ok())
+          return s;
+        if (i > 0) total_ms[k] += ms;
+      }
     }
-    return total_ms / frames;
+    for (double& t : total_ms) t /= frames;
+    return total_ms;
   };
-  const auto launch = [&](cudaGraphExec_t graph) {
+  const auto launch = [&](cudaGraphExec_t graph) -> Enqueue {
     return [&, graph] { return to_status(cudaGraphLaunch(graph, origin), "cudaGraphLaunch"); };
   };
-  Result<double> concurrent = time(launch(g.simulation));
+  // The frame and, with a map, the cascades alone and the map alone (their overlap).
+  Result<std::vector<double>> concurrent =
+      with_noise ? time({launch(g.simulation), launch(g.cascades_alone), launch(g.noise_alone)})
+                 : time({launch(g.simulation)});
   if (!concurrent.ok()) return concurrent.status();
-  Result<double> serial = time(launch(g.serial));
+  Result<std::vector<double>> serial = time({launch(g.serial)});
   if (!serial.ok()) return serial.status();
   detail::Schedule copies;  // the frame's readback alone, on the origin stream
   for (int c = 0; c < l.cascades; ++c)
     copies.ops.push_back({.kind = detail::Op::readback, .cascade = c});
-  Result<double> readback = time([&] { return detail::issue(g, copies, false); });
+  if (with_noise) copies.ops.push_back({.kind = detail::Op::noise_readback});
+  Result<std::vector<double>> readback = time({[&] { return detail::issue(g, copies, false); }});
   if (!readback.ok()) return readback.status();
-  return FrameTimings{.simulation_ms = concurrent.value(),
-                      .serial_ms = serial.value(),
-                      .readback_ms = readback.value()};
+  const std::vector<double>& both = concurrent.value();
+  return FrameTimings{.simulation_ms = both[0],
+                      .serial_ms = serial.value()[0],
+                      .readback_ms = readback.value()[0],
+                      .cascades_ms = with_noise ? both[1] : both[0],
+                      .noise_ms = with_noise ? both[2] : 0.0};
 }
 
 }  // namespace ocean::cuda

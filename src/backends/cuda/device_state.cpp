@@ -5,6 +5,7 @@
 #include <string>
 
 #include "errors.hpp"
+#include "far_noise_state.hpp"
 
 namespace ocean::cuda::detail {
 namespace {
@@ -75,12 +76,32 @@ Status issue_op(DeviceState& st, const Op& op) {
       OCEAN_CUDA_TRY(launch_mips(st.args[c], p.source, p.tile, p.levels, stream), "the mip kernel");
       break;
     }
+    case Op::share: {
+      const char* readback = st.device + c * l.cascade_bytes + l.readback.offset;
+      const auto cascade = static_cast<int>(c);
+      OCEAN_CUDA_TRY(
+          cudaMemcpyAsync(st.shared + st.shared_layout.displacement_offset(cascade),
+                          readback + l.outputs[displacement_half].offset,
+                          st.shared_layout.displacement_bytes, cudaMemcpyDeviceToDevice, stream),
+          "the shared displacement copy");
+      OCEAN_CUDA_TRY(cudaMemcpyAsync(st.shared + st.shared_layout.mips_offset(cascade),
+                                     readback + l.outputs[packed_mips].offset,
+                                     st.shared_layout.mips_bytes, cudaMemcpyDeviceToDevice, stream),
+                     "the shared mip-chain copy");
+      break;
+    }
     case Op::readback:
       OCEAN_CUDA_TRY(cudaMemcpyAsync(st.host + c * l.readback.bytes,
                                      st.device + c * l.cascade_bytes + l.readback.offset,
                                      l.readback.bytes, cudaMemcpyDeviceToHost, stream),
                      "the readback copy");
       break;
+    case Op::noise_params:
+    case Op::noise:
+    case Op::noise_readback:
+      if (Status s = issue_noise_op(st, op, stream); !s.ok()) return s;
+      break;
+    case Op::fork:
     case Op::join: break;
   }
   if (op.records >= 0)
@@ -91,8 +112,20 @@ Status issue_op(DeviceState& st, const Op& op) {
 
 }  // namespace
 
+void DeviceState::release_shared() {
+  if (shared_frame != nullptr) (void)cudaGraphExecDestroy(shared_frame);
+  for (cudaExternalSemaphore_t s : {written, read})
+    if (s != nullptr) (void)cudaDestroyExternalSemaphore(s);
+  if (shared != nullptr) (void)cudaFree(shared);
+  if (shared_memory != nullptr) (void)cudaDestroyExternalMemory(shared_memory);
+  shared_frame = nullptr, written = nullptr, read = nullptr, shared = nullptr;
+  shared_memory = nullptr;
+  shared_frames = 0;
+}
+
 DeviceState::~DeviceState() {
-  for (cudaGraphExec_t g : {frame, simulation, serial})
+  release_shared();
+  for (cudaGraphExec_t g : {frame, simulation, serial, cascades_alone, noise_alone})
     if (g != nullptr) (void)cudaGraphExecDestroy(g);
   for (cufftHandle p : plans) (void)cufft->destroy(p);
   for (cudaEvent_t e : events) (void)cudaEventDestroy(e);
@@ -157,7 +190,7 @@ Status create_device_state(DeviceState& st, const Layout& l, const CufftLibrary*
     a.packed_mips = reinterpret_cast<std::uint32_t*>(output(packed_mips));
     st.args.push_back(a);
   }
-  return {};
+  return create_noise_state(st);
 }
 
 Status issue(DeviceState& st, const Schedule& schedule, bool capture, cudaGraphExec_t* graph) {

@@ -46,6 +46,8 @@ Result<std::vector<DeviceInfo>> list_devices() {
     info.compute_minor = p.minor;
     info.memory_bytes = p.totalGlobalMem;
     info.multiprocessors = p.multiProcessorCount;
+    for (std::size_t i = 0; i < info.uuid.size(); ++i)
+      info.uuid[i] = static_cast<std::uint8_t>(p.uuid.bytes[i]);
     Status probe = to_status(cudaSetDevice(d), "cudaSetDevice");
     if (probe.ok()) probe = to_status(detail::probe_kernels(), "the kernel probe");
     info.usable = probe.ok();
@@ -58,20 +60,22 @@ Result<std::vector<DeviceInfo>> list_devices() {
 Result<std::unique_ptr<CudaBackend>> make_cuda_backend(FftEngine fft) {
   Result<std::vector<DeviceInfo>> devices = list_devices();
   if (!devices.ok()) return devices.status();
-  for (const DeviceInfo& d : devices.value()) {
-    if (!d.usable) continue;
-    if (fft != FftEngine::kernels) {
-      Result<const detail::CufftLibrary*> cufft = detail::load_cufft();
-      if (!cufft.ok() && fft == FftEngine::cufft) return cufft.status();
-      fft = cufft.ok() ? FftEngine::cufft : FftEngine::kernels;
-    }
-    return std::make_unique<CudaBackend>(d.index, fft);
-  }
+  for (const DeviceInfo& d : devices.value())
+    if (d.usable) return make_cuda_backend(d.index, fft);
   const DeviceInfo& first = devices.value().front();
   const std::string& why = first.reason;
   return unsupported(why.starts_with(detail::kNoDevice)
                          ? why
                          : std::string(detail::kNoDevice) + first.name + ": " + why);
+}
+
+Result<std::unique_ptr<CudaBackend>> make_cuda_backend(int device, FftEngine fft) {
+  if (fft != FftEngine::kernels) {
+    Result<const detail::CufftLibrary*> cufft = detail::load_cufft();
+    if (!cufft.ok() && fft == FftEngine::cufft) return cufft.status();
+    fft = cufft.ok() ? FftEngine::cufft : FftEngine::kernels;
+  }
+  return std::make_unique<CudaBackend>(device, fft);
 }
 
 Result<FrameTimings> benchmark(const SimulationConfig& config, int frames, FftEngine fft) {

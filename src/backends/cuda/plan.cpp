@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <bit>
 
+#include "sim/far_noise.h"
+
 namespace ocean::cuda::detail {
 namespace {
 
@@ -61,6 +63,19 @@ Result<Layout> make_layout(const SimulationConfig& config) {
   }
   l.cascade_bytes = cursor;
 
+  // The far field's noise map: its parameters and the map after every cascade's block, the
+  // pinned parameters and the map's readback after every cascade's readback block.
+  if (config.far_noise.resolution > 0) {
+    const auto m = static_cast<std::size_t>(config.far_noise.resolution);
+    l.noise_resolution = config.far_noise.resolution;
+    cursor = l.cascade_bytes * static_cast<std::size_t>(l.cascades);
+    l.noise_params_device = take(cursor, sizeof(noise::FarNoiseMapParams));
+    l.noise_map = take(cursor, 12 * m * m);
+    cursor = align(l.readback.bytes * static_cast<std::size_t>(l.cascades));
+    l.noise_params_host = take(cursor, sizeof(noise::FarNoiseMapParams));
+    l.noise_readback = take(cursor, 12 * m * m);
+  }
+
   // Mip passes: the first inside finalize (source 0), then one per four levels.
   for (int source = 0; source < l.log2_resolution;) {
     const int size = l.resolution >> source;
@@ -72,12 +87,32 @@ Result<Layout> make_layout(const SimulationConfig& config) {
   return l;
 }
 
-Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback) {
+Schedule make_schedule(const Layout& layout, const ScheduleParts& parts) {
+  const bool concurrent = parts.concurrent;
+  const bool noise = parts.noise && layout.noise_resolution > 0;
+  const int slots = 1 + layout.cascades + (layout.noise_resolution > 0 ? 1 : 0);
   Schedule s;
-  s.streams = concurrent ? 1 + layout.cascades : 1;
-  s.events = concurrent ? 1 + layout.cascades : 0;
-  s.ops.push_back({.kind = Op::upload_params, .records = concurrent ? 0 : -1});
-  for (int c = 0; c < layout.cascades; ++c) {
+  s.streams = concurrent ? slots : 1;
+  s.events = concurrent ? slots : 0;
+  if (parts.cascades) {
+    s.ops.push_back({.kind = Op::upload_params, .records = concurrent ? 0 : -1});
+  } else if (concurrent) {
+    s.ops.push_back({.kind = Op::fork, .records = 0});
+  }
+  Op join{.kind = Op::join};
+  // The map first: its one kernel is issued before the cascades' chains fill the device.
+  if (noise) {
+    const int stream = concurrent ? noise_stream(layout) : 0;
+    const std::size_t first = s.ops.size();
+    s.ops.push_back({.kind = Op::noise_params, .stream = stream});
+    s.ops.push_back({.kind = Op::noise, .stream = stream});
+    if (parts.readback) s.ops.push_back({.kind = Op::noise_readback, .stream = stream});
+    if (concurrent) {
+      s.ops[first].waits = {0};
+      s.ops.back().records = noise_event(layout);
+    }
+  }
+  for (int c = 0; parts.cascades && c < layout.cascades; ++c) {
     const int stream = concurrent ? 1 + c : 0;
     const std::size_t first = s.ops.size();
     s.ops.push_back({.kind = Op::evolve, .cascade = c, .stream = stream});
@@ -87,16 +122,22 @@ Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback
       s.ops.push_back(
           {.kind = Op::mips, .cascade = c, .pass = static_cast<int>(p), .stream = stream});
     }
-    if (with_readback) s.ops.push_back({.kind = Op::readback, .cascade = c, .stream = stream});
+    if (parts.share) s.ops.push_back({.kind = Op::share, .cascade = c, .stream = stream});
+    if (parts.readback) s.ops.push_back({.kind = Op::readback, .cascade = c, .stream = stream});
     if (concurrent) {
       s.ops[first].waits = {0};
       s.ops.back().records = 1 + c;
+      join.waits.push_back(1 + c);
     }
   }
-  Op join{.kind = Op::join};
-  for (int c = 0; concurrent && c < layout.cascades; ++c) join.waits.push_back(1 + c);
+  if (noise && concurrent) join.waits.push_back(noise_event(layout));
   s.ops.push_back(join);
   return s;
+}
+
+Schedule make_schedule(const Layout& layout, bool concurrent, bool with_readback, bool with_share) {
+  return make_schedule(layout,
+                       {.concurrent = concurrent, .readback = with_readback, .share = with_share});
 }
 
 }  // namespace ocean::cuda::detail

@@ -10,12 +10,14 @@
 // not ship them (OpenXR loader specification, "Runtime Interface Negotiation").
 #include "runtime.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string_view>
 #include <thread>
+#include <vector>
 
 extern "C" {
 enum XrLoaderInterfaceStructs {
@@ -84,7 +86,21 @@ void write_report() {
   std::ofstream out(path);
   out << "{\"frames\": " << rt.frames << ", \"views\": " << rt.views
       << ", \"images_checked\": " << rt.images_checked << ", \"images_lit\": " << rt.images_lit
-      << ", \"min_lit_fraction\": " << rt.min_lit_fraction << ", \"problems\": [";
+      << ", \"min_lit_fraction\": " << rt.min_lit_fraction;
+  if (rt.images_saved) {
+    // The views the saved images were drawn for (pose, then XrFovf's four angles).
+    out << ", \"saved_views\": [";
+    for (std::size_t i = 0; i < 2; ++i) {
+      const XrView& v = rt.saved[i];
+      out << (i ? ", " : "") << "{\"orientation\": [" << v.pose.orientation.x << ", "
+          << v.pose.orientation.y << ", " << v.pose.orientation.z << ", " << v.pose.orientation.w
+          << "], \"position\": [" << v.pose.position.x << ", " << v.pose.position.y << ", "
+          << v.pose.position.z << "], \"fov\": [" << v.fov.angleLeft << ", " << v.fov.angleRight
+          << ", " << v.fov.angleUp << ", " << v.fov.angleDown << "]}";
+    }
+    out << "]";
+  }
+  out << ", \"problems\": [";
   for (std::size_t i = 0; i < rt.problems.size(); ++i) {
     std::string p;
     for (char c : rt.problems[i]) p += (c == '"' || c == '\\') ? '\'' : c;
@@ -93,16 +109,22 @@ void write_report() {
   out << "]}\n";
 }
 
-// The head's pose at a display time: yaw about +Y, eyes ∓IPD/2 along the head's x axis.
+// The head's pose at a display time: rolled by kRoll_rad about its forward axis (+Z), then
+// turned by the yaw about +Y (q = q_yaw·q_roll); eyes ∓IPD/2 along the head's rolled x axis.
 XrView eye_view(int eye, std::int64_t time_ns) {
   const Runtime& rt = runtime();
   const double yaw = kYawRate_rad_per_s * double(time_ns - rt.first_predicted_ns) * 1e-9;
-  const auto half = static_cast<float>(0.5 * yaw);
+  const double sy = std::sin(0.5 * yaw), cy = std::cos(0.5 * yaw);
+  const double sr = std::sin(0.5 * kRoll_rad), cr = std::cos(0.5 * kRoll_rad);
   XrView v{XR_TYPE_VIEW};
-  v.pose.orientation = {0.0f, std::sin(half), 0.0f, std::cos(half)};
-  const float side = (eye == 0 ? -0.5f : 0.5f) * kIpd_m;
-  v.pose.position = {side * std::cos(float(yaw)), 0.0f, -side * std::sin(float(yaw))};
-  v.fov = {-kHalfFov_rad, kHalfFov_rad, kHalfFov_rad, -kHalfFov_rad};
+  v.pose.orientation = {float(sy * sr), float(sy * cr), float(cy * sr), float(cy * cr)};
+  // R(q)·(side, 0, 0) = R_yaw·(side·cos r, side·sin r, 0).
+  const double side = (eye == 0 ? -0.5 : 0.5) * kIpd_m;
+  const double x = side * std::cos(kRoll_rad);
+  v.pose.position = {float(x * std::cos(yaw)), float(side * std::sin(kRoll_rad)),
+                     float(-x * std::sin(yaw))};
+  v.fov = eye == 0 ? XrFovf{-kOuterFov_rad, kInnerFov_rad, kUpFov_rad, -kDownFov_rad}
+                   : XrFovf{-kInnerFov_rad, kOuterFov_rad, kUpFov_rad, -kDownFov_rad};
   return v;
 }
 
@@ -144,6 +166,7 @@ XRAPI_ATTR XrResult XRAPI_CALL create_instance(const XrInstanceCreateInfo* info,
   if (!vulkan) problem("xrCreateInstance without XR_KHR_vulkan_enable");
   rt = Runtime{};
   rt.instance = true;
+  if (const char* dir = std::getenv("OCEAN_TEST_XR_IMAGES"); dir != nullptr) rt.image_dir = dir;
   if (const char* hz = std::getenv("OCEAN_TEST_XR_HZ"); hz != nullptr && std::atof(hz) > 0.0)
     rt.period_ns = static_cast<std::int64_t>(1e9 / std::atof(hz));
   *instance = kInstance;
@@ -440,11 +463,26 @@ void check_projection(const XrCompositionLayerProjection& layer) {
       problem(view + ": no swapchain image released during the frame");
       continue;
     }
-    const double lit = lit_fraction(s, static_cast<std::uint32_t>(s.released));
+    std::vector<std::uint8_t> rgba;
     ++rt.images_checked;
-    if (lit < 0.0) problem(view + ": could not read the image back");
+    if (!read_back(s, static_cast<std::uint32_t>(s.released), rgba)) {
+      problem(view + ": could not read the image back");
+      rt.min_lit_fraction = std::min(rt.min_lit_fraction, -1.0);
+      continue;
+    }
+    // Lit: more than half the pixels have a channel above 8 of 255.
+    std::size_t lit_pixels = 0;
+    for (std::size_t p = 0; p < rgba.size(); p += 4)
+      if (std::max({rgba[p], rgba[p + 1], rgba[p + 2]}) > 8) ++lit_pixels;
+    const double lit = double(lit_pixels) / double(rgba.size() / 4);
     if (lit > 0.5) ++rt.images_lit;
     rt.min_lit_fraction = std::min(rt.min_lit_fraction, lit);
+    if (!rt.image_dir.empty()) {
+      const std::string path = rt.image_dir + "/view" + std::to_string(i) + ".png";
+      if (!write_png(path, s.width, s.height, rgba)) problem(view + ": cannot write " + path);
+      rt.saved[i] = rt.located[i];
+      rt.images_saved = true;
+    }
   }
 }
 

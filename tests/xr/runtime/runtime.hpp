@@ -17,12 +17,19 @@
 
 namespace ocean::test_xr {
 
-// The HMD this runtime pretends to be: two eyes 64 mm apart, symmetric 90° fields of view,
-// square eye images of kEyeSize pixels (small, so that lavapipe renders a frame quickly), the
-// head turning slowly about +Y so that every frame's poses differ.
+// The HMD this runtime pretends to be: two eyes 64 mm apart, square eye images of kEyeSize
+// pixels (small, so that lavapipe renders a frame quickly), the head turning slowly about +Y so
+// that every frame's poses differ and rolled by kRoll_rad (counter-clockwise as the wearer sees
+// it: the left ear down). Each eye's field of view is asymmetric as a real headset's: wider
+// outwards than towards the nose and downwards than upwards (the left eye's is the right eye's
+// mirrored).
 inline constexpr std::uint32_t kEyeSize = 96;
 inline constexpr float kIpd_m = 0.064f;
-inline constexpr float kHalfFov_rad = 0.785398163f;  // 45°
+inline constexpr float kOuterFov_rad = 0.90f;  // from the axis to the outer side
+inline constexpr float kInnerFov_rad = 0.70f;  // to the side towards the nose
+inline constexpr float kUpFov_rad = 0.60f;
+inline constexpr float kDownFov_rad = 0.85f;
+inline constexpr double kRoll_rad = 0.20;
 inline constexpr double kYawRate_rad_per_s = 0.05;
 inline constexpr std::int64_t kDefaultPeriod_ns = 11'111'111;  // 90 Hz
 
@@ -60,6 +67,11 @@ struct Runtime {
   std::int64_t frames = 0, views = 0, images_checked = 0, images_lit = 0;
   double min_lit_fraction = 1.0;
   std::vector<std::string> problems;
+  // With $OCEAN_TEST_XR_IMAGES: the folder each frame's eye images are written to (view0.png,
+  // view1.png, the last frame's kept) and the views they were drawn for.
+  std::string image_dir;
+  std::array<XrView, 2> saved{};
+  bool images_saved = false;
 };
 
 Runtime& runtime();
@@ -69,9 +81,12 @@ void problem(const std::string& text);
 // swapchains.cpp
 XrResult create_swapchain(const XrSwapchainCreateInfo& info, XrSwapchain* out);
 void destroy_swapchain(Swapchain& s);
-/// The fraction of the image's pixels that are not black (any channel above 8 of 255), read
-/// back from the application's device; < 0 when reading failed.
-double lit_fraction(Swapchain& s, std::uint32_t image);
+/// The image's pixels read back from the application's device as RGBA8 (BGRA swapped), top row
+/// first; false when reading failed.
+bool read_back(Swapchain& s, std::uint32_t image, std::vector<std::uint8_t>& rgba);
+/// Writes RGBA8 pixels as a PNG; false when it cannot.
+bool write_png(const std::string& path, std::uint32_t width, std::uint32_t height,
+               const std::vector<std::uint8_t>& rgba);
 /// Command pool on the application's queue family; false when Vulkan fails.
 bool open_device_queue();
 void close_device_queue();

@@ -1,8 +1,11 @@
 // The test runtime's swapchains: images made on the application's Vulkan device (as a runtime
 // with XR_KHR_vulkan_enable must), handed over in COLOR_ATTACHMENT_OPTIMAL, and read back at
 // xrEndFrame to check that the application drew into them.
+#include <png.h>
+
 #include <algorithm>
 #include <cstring>
+#include <utility>
 
 #include "runtime.hpp"
 
@@ -142,7 +145,7 @@ void destroy_swapchain(Swapchain& s) {
   s.memory.clear();
 }
 
-double lit_fraction(Swapchain& s, std::uint32_t image) {
+bool read_back(Swapchain& s, std::uint32_t image, std::vector<std::uint8_t>& rgba) {
   Runtime& rt = runtime();
   const VkDevice device = rt.binding.device;
   const VkDeviceSize bytes = VkDeviceSize{s.width} * s.height * 4;
@@ -150,7 +153,7 @@ double lit_fraction(Swapchain& s, std::uint32_t image) {
                                .size = bytes,
                                .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT};
   VkBuffer buffer = VK_NULL_HANDLE;
-  if (vkCreateBuffer(device, &bci, nullptr, &buffer) != VK_SUCCESS) return -1.0;
+  if (vkCreateBuffer(device, &bci, nullptr, &buffer) != VK_SUCCESS) return false;
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device, buffer, &req);
   const VkMemoryAllocateInfo mai{
@@ -159,7 +162,7 @@ double lit_fraction(Swapchain& s, std::uint32_t image) {
       .memoryTypeIndex = memory_type(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT |
                                                              VK_MEMORY_PROPERTY_HOST_COHERENT_BIT)};
   VkDeviceMemory memory = VK_NULL_HANDLE;
-  double fraction = -1.0;
+  bool read = false;
   if (mai.memoryTypeIndex != UINT32_MAX &&
       vkAllocateMemory(device, &mai, nullptr, &memory) == VK_SUCCESS) {
     vkBindBufferMemory(device, buffer, memory, 0);
@@ -176,17 +179,26 @@ double lit_fraction(Swapchain& s, std::uint32_t image) {
     void* mapped = nullptr;
     if (ok && vkMapMemory(device, memory, 0, bytes, 0, &mapped) == VK_SUCCESS) {
       const auto* px = static_cast<const std::uint8_t*>(mapped);
-      std::size_t lit = 0;
-      const std::size_t count = std::size_t{s.width} * s.height;
-      for (std::size_t i = 0; i < count; ++i)
-        if (std::max({px[4 * i], px[4 * i + 1], px[4 * i + 2]}) > 8) ++lit;
-      fraction = double(lit) / double(count);
+      rgba.assign(px, px + bytes);
+      if (s.format == VK_FORMAT_B8G8R8A8_SRGB)
+        for (std::size_t i = 0; i < rgba.size(); i += 4) std::swap(rgba[i], rgba[i + 2]);
+      read = true;
       vkUnmapMemory(device, memory);
     }
     vkFreeMemory(device, memory, nullptr);
   }
   vkDestroyBuffer(device, buffer, nullptr);
-  return fraction;
+  return read;
+}
+
+bool write_png(const std::string& path, std::uint32_t width, std::uint32_t height,
+               const std::vector<std::uint8_t>& rgba) {
+  png_image image{};
+  image.version = PNG_IMAGE_VERSION;
+  image.width = width;
+  image.height = height;
+  image.format = PNG_FORMAT_RGBA;
+  return png_image_write_to_file(&image, path.c_str(), 0, rgba.data(), 0, nullptr) != 0;
 }
 
 }  // namespace ocean::test_xr
