@@ -6,10 +6,8 @@
 
 namespace ocean::render {
 
-namespace {
-
 Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
-                               float anisotropy, bool repeat_v_too = true) {
+                               float anisotropy, bool repeat_v_too) {
   const VkSamplerAddressMode mode =
       repeat ? VK_SAMPLER_ADDRESS_MODE_REPEAT : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
   const VkSamplerAddressMode mode_v = repeat_v_too ? mode : VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
@@ -32,8 +30,6 @@ Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, b
     return st;
   return s;
 }
-
-}  // namespace
 
 void write_scene_images(Renderer::State& st) {
   const VkDescriptorBufferInfo ubo{st.uniforms.buffer, 0, sizeof(shader::FrameUniforms)};

@@ -175,21 +175,10 @@ void place(FarMapPass& pass, const FarNoiseFrame& map, double time_s) {
 Status create_far_map(Renderer::State& st) {
   FarMapPass& pass = st.far_map;
   const vk::Context& ctx = *st.ctx;
-  const VkSamplerCreateInfo info{.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
-                                 .magFilter = VK_FILTER_LINEAR,
-                                 .minFilter = VK_FILTER_LINEAR,
-                                 .mipmapMode = VK_SAMPLER_MIPMAP_MODE_LINEAR,
-                                 .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-                                 .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-                                 .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
-                                 .anisotropyEnable = ctx.max_anisotropy > 1.0f ? VK_TRUE : VK_FALSE,
-                                 .maxAnisotropy = ctx.max_anisotropy,
-                                 .minLod = 0.0f,
-                                 .maxLod = VK_LOD_CLAMP_NONE};
-  if (Status s =
-          vk::check(vkCreateSampler(ctx.device, &info, nullptr, &pass.sampler), "vkCreateSampler");
-      !s.ok())
-    return s;
+  // Linear with mips, clamped (the window does not repeat), anisotropic where the device is.
+  Result<VkSampler> sampler = make_sampler(ctx, true, true, false, ctx.max_anisotropy);
+  if (!sampler.ok()) return sampler.status();
+  pass.sampler = sampler.value();
   if (Status s = create_layouts(pass, ctx); !s.ok()) return s;
   Result<vk::ComputePipeline> pipeline =
       vk::create_compute_pipeline(ctx, spirv::far_map(), pass.layout);

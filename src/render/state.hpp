@@ -210,6 +210,10 @@ void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd);
 // zeros (at make()); a frame's map staged for the next record() (allocates when N changes); its
 // conversion and mips recorded before the scene; its uniforms (the window, the lattice at O, t).
 Status create_far_map(Renderer::State& st);
+/// A sampler: linear or nearest, with or without linear mips, repeating or clamped (v clamped
+/// unless repeat_v_too), anisotropic above 1 (descriptors.cpp).
+Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
+                               float anisotropy, bool repeat_v_too = true);
 void destroy_far_map(Renderer::State& st);
 Status upload_far_map(Renderer::State& st, const FarNoiseFrame& map, double time_s);
 void record_far_map(Renderer::State& st, VkCommandBuffer cmd);

@@ -124,6 +124,34 @@ double far_map_distance(int col, int row, const std::array<double, 3>& eye = kMa
 
 constexpr std::array<double, 5> kMapBands = {1000.0, 1500.0, 2500.0, 4000.0, 8000.0};
 
+// Where two pictures from `eye` differ: per pixel and channel, |a − b| nearer than near_m (the
+// largest, and how many samples), and between far_lo_m and far_hi_m its sum beside the sum of
+// a's horizontal detail there (and how many samples).
+struct BandChange {
+  int near_max = 0, near_count = 0, far_count = 0;
+  double far_difference = 0.0, far_detail = 0.0;
+};
+BandChange far_map_change(const std::vector<std::uint8_t>& a, const std::vector<std::uint8_t>& b,
+                          const std::array<double, 3>& eye, double near_m, double far_lo_m,
+                          double far_hi_m) {
+  BandChange c;
+  for (int row = 0; row < kMapH; ++row)
+    for (int col = 0; col + 1 < kMapW; ++col) {
+      const double dist = far_map_distance(col, row, eye);
+      const std::size_t p = (static_cast<std::size_t>(row) * kMapW + col) * 4;
+      for (std::size_t k = 0; k < 3; ++k) {
+        const int e = std::abs(int(a[p + k]) - int(b[p + k]));
+        if (dist < near_m) c.near_max = std::max(c.near_max, e), ++c.near_count;
+        if (dist > far_lo_m && dist < far_hi_m) {
+          c.far_difference += e;
+          c.far_detail += std::abs(int(a[p + 4 + k]) - int(a[p + k]));
+          ++c.far_count;
+        }
+      }
+    }
+  return c;
+}
+
 // Per band: mean linear luminance and mean |horizontal difference| of the sRGB-encoded
 // luminance (the detail).
 struct BandFigures {
@@ -207,22 +235,8 @@ TEST(FarMapRender, TimeMovesTheFarFieldAndNothingNearTheCamera) {
   moved.time_s = later.time_s;
   ASSERT_TRUE(scene->renderer().upload(moved).ok());
   const std::vector<std::uint8_t> then = far_map_draw(*scene, view);
-  int near_max = 0, near_count = 0, far_count = 0;
-  double far_difference = 0.0, far_detail = 0.0;
-  for (int row = 0; row < kMapH; ++row)
-    for (int col = 0; col + 1 < kMapW; ++col) {
-      const double dist = far_map_distance(col, row, kLow);
-      const std::size_t p = (static_cast<std::size_t>(row) * kMapW + col) * 4;
-      for (std::size_t c = 0; c < 3; ++c) {
-        const int e = std::abs(int(now[p + c]) - int(then[p + c]));
-        if (dist < 0.9 * view.far_field.near_m) near_max = std::max(near_max, e), ++near_count;
-        if (dist > view.far_field.far_m && dist < 1000.0) {
-          far_difference += e;
-          far_detail += std::abs(int(now[p + 4 + c]) - int(now[p + c]));
-          ++far_count;
-        }
-      }
-    }
+  const auto [near_max, near_count, far_count, far_difference, far_detail] =
+      far_map_change(now, then, kLow, 0.9 * view.far_field.near_m, view.far_field.far_m, 1000.0);
   ASSERT_GT(near_count, 300);
   ASSERT_GT(far_count, 300);
   std::printf(
@@ -248,22 +262,8 @@ TEST(FarMapRender, TheMapIsWhatIsDrawnWhereItResolvesTheNoise) {
   std::fill(flat.far_noise.height_slope.begin(), flat.far_noise.height_slope.end(), 0.0f);
   ASSERT_TRUE(scene->renderer().upload(flat).ok());
   const std::vector<std::uint8_t> zeros = far_map_draw(*scene, view);
-  int near_max = 0, near_count = 0, far_count = 0;
-  double far_difference = 0.0, far_detail = 0.0;
-  for (int row = 0; row < kMapH; ++row)
-    for (int col = 0; col + 1 < kMapW; ++col) {
-      const double dist = far_map_distance(col, row);
-      const std::size_t p = (static_cast<std::size_t>(row) * kMapW + col) * 4;
-      for (std::size_t c = 0; c < 3; ++c) {
-        const int e = std::abs(int(drawn[p + c]) - int(zeros[p + c]));
-        if (dist < 900.0) near_max = std::max(near_max, e), ++near_count;
-        if (dist > 2000.0 && dist < 2500.0) {
-          far_difference += e;
-          far_detail += std::abs(int(drawn[p + 4 + c]) - int(drawn[p + c]));
-          ++far_count;
-        }
-      }
-    }
+  const auto [near_max, near_count, far_count, far_difference, far_detail] =
+      far_map_change(drawn, zeros, kMapEye, 900.0, 2000.0, 2500.0);
   ASSERT_GT(near_count, 300);
   ASSERT_GT(far_count, 300);
   std::printf(
