@@ -13,6 +13,7 @@
 #include <initializer_list>
 #include <span>
 #include <string>
+#include <string_view>
 
 #include "ocean/core.hpp"
 
@@ -76,6 +77,34 @@ ocean::Status check_parent_writable(const std::filesystem::path& path);
 /// The strerror text for an errno value, e.g. "No such file or directory". Never throws (returns
 /// an empty string if even building the message fails).
 std::string errno_message(int err) noexcept;
+
+// ---- Reading a whole file under a size limit ---------------------------------------------
+
+/// What read_bounded may take: every reader of a user's file (a preset, a bake manifest, an
+/// environment map, a height map) names its limit here, so that a huge file, /dev/zero or a pipe
+/// that never ends is refused after at most `max_bytes + 1` bytes were read.
+struct ReadLimits {
+  std::uint64_t max_bytes = 0;  ///< the most the file may hold, bytes
+  std::string_view what;        ///< what the file is, for messages: "preset", "manifest"...
+  bool regular_only = false;    ///< refuse a FIFO, device, socket or directory before reading
+  bool no_follow = false;       ///< refuse a symbolic link at `path` itself (O_NOFOLLOW)
+  int fifo_wait_ms = 5000;      ///< a FIFO with no writer after this long is an io_error
+};
+
+/// The text of the file at `path`, read whole under `limits`.
+///
+/// Contract: at most `limits.max_bytes + 1` bytes are ever read or held, whatever `path` is (a
+/// regular file, a pipe, /dev/zero). The file is opened without blocking (a FIFO's open would
+/// wait for a writer forever) and a FIFO is given `fifo_wait_ms` to produce data. Errors:
+/// io_error "cannot read <what> '<path>': <reason>" (the reason "it is a FIFO, not a regular
+/// file" with `regular_only`, "it is a symbolic link" with `no_follow`, or strerror's text);
+/// invalid_argument "<what> '<path>' is larger than <N> bytes (<human>), the most a <what> may
+/// hold". The path is echoed through ocean::excerpt. Never throws.
+ocean::Result<std::string> read_bounded(const std::filesystem::path& path,
+                                        const ReadLimits& limits);
+
+/// `bytes` as messages state a limit: "1048576 bytes (1 MiB)".
+std::string byte_limit_text(std::uint64_t bytes);
 
 // ---- NumPy .npy (format 1.0, little-endian float32, C order) -------------------------------
 

@@ -1,9 +1,4 @@
 // Presets assembled in layers and the built-in presets by name (see ocean/preset.hpp).
-#include <fcntl.h>
-#include <poll.h>
-#include <sys/stat.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -11,6 +6,7 @@
 #include <string>
 
 #include "json_format.hpp"
+#include "ocean/io.hpp"
 #include "ocean/preset.hpp"
 
 namespace ocean::preset {
@@ -31,67 +27,6 @@ std::string builtin_list() {
   return list;
 }
 
-// "the most a preset may hold", in the words of every size message.
-std::string size_limit() {
-  return std::to_string(kMaxPresetBytes) + " bytes (1 MiB), the most a preset may hold";
-}
-
-// For a FIFO: waits up to kFifoWaitMs for a writer (or its data); then, whatever `fd` is,
-// makes its reads blocking. The message of an error is the reason alone.
-Status wait_for_writer(int fd) {
-  struct stat st {};
-  if (::fstat(fd, &st) == 0 && S_ISFIFO(st.st_mode)) {
-    pollfd p{.fd = fd, .events = POLLIN, .revents = 0};
-    int ready = 0;
-    do {
-      ready = ::poll(&p, 1, kFifoWaitMs);
-    } while (ready < 0 && errno == EINTR);
-    if (ready == 0)
-      return io_error("no process wrote to the FIFO within " + std::to_string(kFifoWaitMs / 1000) +
-                      " s");
-  }
-  const int flags = ::fcntl(fd, F_GETFL);
-  if (flags < 0 || ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK) < 0)
-    return io_error(std::strerror(errno));
-  return {};
-}
-
-// The text of the file at `path`, read up to one byte past the bound: whatever the file is (a
-// pipe, /dev/zero), no more than kMaxPresetBytes + 1 bytes are ever held.
-Result<std::string> read_bounded(const std::filesystem::path& path) {
-  const std::string name = excerpt(path.string());
-  int fd = -1;
-  // Opened without blocking (a FIFO's open() would wait for a writer forever), then read
-  // blocking once a FIFO has a writer.
-  do {
-    fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
-  } while (fd < 0 && errno == EINTR);
-  if (fd < 0) {
-    const int err = errno;
-    return io_error("cannot read preset '" + name + "': " + std::strerror(err));
-  }
-  if (Status waited = wait_for_writer(fd); !waited.ok()) {
-    ::close(fd);
-    return io_error("cannot read preset '" + name + "': " + waited.message());
-  }
-  std::string text(kMaxPresetBytes + 1, '\0');
-  std::size_t size = 0;
-  int err = 0;
-  while (size < text.size()) {
-    const ssize_t n = ::read(fd, text.data() + size, text.size() - size);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) err = errno;
-    if (n <= 0) break;
-    size += static_cast<std::size_t>(n);
-  }
-  ::close(fd);
-  if (err != 0) return io_error("cannot read preset '" + name + "': " + std::strerror(err));
-  if (size > kMaxPresetBytes)
-    return invalid_argument("preset '" + name + "' is larger than " + size_limit());
-  text.resize(size);
-  return text;
-}
-
 Result<Json> read_preset(std::string_view name_or_path, std::string_view label) {
   const std::filesystem::path path(name_or_path);
   // A bare name that is not a file selects a compiled-in preset.
@@ -103,7 +38,8 @@ Result<Json> read_preset(std::string_view name_or_path, std::string_view label) 
                             " is neither a file nor a preset: must be " + builtin_list() +
                             " or a JSON file");
   }
-  Result<std::string> text = read_bounded(path);
+  Result<std::string> text = io::read_bounded(
+      path, {.max_bytes = kMaxPresetBytes, .what = "preset", .fifo_wait_ms = kFifoWaitMs});
   if (!text.ok()) return text.status();
   detail::Parsed parsed = detail::parse_bounded(text.value(), kMaxPresetDepth);
   const std::string name = excerpt(path.string());
