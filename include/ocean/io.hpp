@@ -184,6 +184,10 @@ ocean::Result<ExrImage> read_exr(const std::filesystem::path& path);
 
 /// Largest width or height the PNG writers accept (libpng's default user limit).
 inline constexpr int kPngMaxDimension = 1000000;
+/// The most bytes a PNG reader lets one chunk other than the image data declare (and libpng
+/// allocate for one, decompressed text and ICC profiles included): 8 MiB. A file whose chunk
+/// declares more, or more than the file holds, is refused before libpng allocates anything.
+inline constexpr std::uint64_t kPngMaxChunkBytes = std::uint64_t{8} << 20;
 
 /// Writes an 8-bit PNG: `channels` 1 = gray, 2 = gray+alpha, 3 = RGB, 4 = RGBA.
 ///

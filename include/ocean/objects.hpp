@@ -43,12 +43,17 @@ Status validate(const Mesh& mesh);
 Mesh flat_mesh(std::span<const std::array<double, 3>> vertices,
                std::span<const std::array<std::uint32_t, 3>> triangles, const Material& material);
 
+/// The most bytes load_gltf reads from a glTF file, and from each buffer file it names: 512 MiB,
+/// room for kMaxMeshElements vertices with normals and indices.
+inline constexpr std::uint64_t kMaxGltfFileBytes = std::uint64_t{512} << 20;
+
 /// Reads a glTF 2.0 file (.glb, or .gltf with embedded or neighbouring .bin buffers): the
 /// triangle primitives of every node of the default scene (or of the first scene), node
 /// transforms applied, one Mesh per primitive with its material's base colour, metallic and
 /// roughness factors; missing normals are computed per face. io_error "cannot read '<path>':
-/// ..." for a missing or unreadable file; invalid_argument "cannot read '<path>': ..." for a
-/// malformed file, no triangles, non-finite values or more than kMaxMeshElements. The path is
+/// ..." for a missing or unreadable file; invalid_argument "glTF file '<path>' is larger than
+/// ..." past kMaxGltfFileBytes (a buffer file likewise); invalid_argument "cannot read '<path>':
+/// ..." for a malformed file, no triangles, non-finite values or more than kMaxMeshElements. The path is
 /// echoed through ocean::excerpt. Never throws.
 Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path);
 

@@ -44,7 +44,9 @@ std::string wait_for_writer(int fd, int wait_ms) {
       ready = ::poll(&p, 1, wait_ms);
     } while (ready < 0 && errno == EINTR);
     if (ready == 0) {
-      return "no process wrote to the FIFO within " + std::to_string(wait_ms / 1000) + " s";
+      return "no process wrote to the FIFO within " +
+             (wait_ms % 1000 == 0 ? std::to_string(wait_ms / 1000) + " s"
+                                  : std::to_string(wait_ms) + " ms");
     }
   }
   const int flags = ::fcntl(fd, F_GETFL);
@@ -91,7 +93,9 @@ Result<std::string> read_opened(const std::filesystem::path& path, const ReadLim
   if (size > limits.max_bytes) {
     std::string message(limits.what);
     message.append(" '").append(excerpt(path.string())).append("' is larger than ");
-    message.append(byte_limit_text(limits.max_bytes)).append(", the most a ");
+    const bool vowel = !limits.what.empty() && std::string_view("aeiou").find(limits.what[0]) !=
+                                                   std::string_view::npos;
+    message.append(byte_limit_text(limits.max_bytes)).append(vowel ? ", the most an " : ", the most a ");
     return invalid_argument(message.append(limits.what).append(" may hold"));
   }
   text.resize(static_cast<std::size_t>(size));

@@ -13,6 +13,7 @@
 #include <cstring>
 #include <string>
 
+#include "ocean/io.hpp"
 #include "ocean/objects.hpp"
 
 namespace ocean::render {
@@ -236,6 +237,20 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
+// tinygltf's file reads (a .gltf's neighbouring .bin buffers) under the same limit as the file
+// itself: a buffer named /dev/zero or a FIFO is refused, not read until memory runs out.
+bool read_bounded_buffer(std::vector<unsigned char>* out, std::string* err,
+                         const std::string& path, void* /*user_data*/) {
+  const Result<std::string> bytes = io::read_bounded(
+      path, {.max_bytes = kMaxGltfFileBytes, .what = "glTF buffer", .regular_only = true});
+  if (!bytes.ok()) {
+    if (err != nullptr) *err = bytes.status().message();
+    return false;
+  }
+  out->assign(bytes.value().begin(), bytes.value().end());
+  return true;
+}
+
 }  // namespace
 
 Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path) {
@@ -248,11 +263,25 @@ Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path) {
   std::string err, warn;
   bool loaded = false;
   try {
+    const Result<std::string> bytes = io::read_bounded(
+        path, {.max_bytes = kMaxGltfFileBytes, .what = "glTF file", .regular_only = true});
+    if (!bytes.ok()) return bytes.status();
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, nullptr);
+    loader.SetFsCallbacks({.FileExists = &tinygltf::FileExists,
+                           .ExpandFilePath = &tinygltf::ExpandFilePath,
+                           .ReadWholeFile = &read_bounded_buffer,
+                           .WriteWholeFile = &tinygltf::WriteWholeFile,
+                           .user_data = nullptr});
     const std::string ext = path.extension().string();
-    loaded = ext == ".gltf" ? loader.LoadASCIIFromFile(&model, &err, &warn, path.string())
-                            : loader.LoadBinaryFromFile(&model, &err, &warn, path.string());
+    const std::string base_dir = path.parent_path().string();
+    const std::string& text = bytes.value();
+    loaded = ext == ".gltf"
+                 ? loader.LoadASCIIFromString(&model, &err, &warn, text.data(),
+                                              static_cast<unsigned int>(text.size()), base_dir)
+                 : loader.LoadBinaryFromMemory(
+                       &model, &err, &warn, reinterpret_cast<const unsigned char*>(text.data()),
+                       static_cast<unsigned int>(text.size()), base_dir);
   } catch (const std::exception& e) {
     err = e.what();
   } catch (...) {

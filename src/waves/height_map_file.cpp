@@ -159,6 +159,9 @@ Result<HeightMap> read_png(const std::filesystem::path& path, io::detail::PngIo&
   if (info == nullptr) return bad(path, "out of memory");
   png_set_read_fn(png, &io, io::detail::png_on_read);
   png_set_user_limits(png, kMaxHeightMapSide, kMaxHeightMapSide);
+  io::detail::limit_png_reader(png);
+  if (std::string problem = io::detail::check_png_chunks(io.file); !problem.empty())
+    return bad(path, problem);
   if (!read_header(png, info)) return bad(path, io::detail::png_reason(io));
   if (png_get_color_type(png, info) != PNG_COLOR_TYPE_GRAY)
     return bad(path, "a PNG height map must be grayscale without alpha");
@@ -204,15 +207,12 @@ Result<HeightMap> load_height_map(const std::filesystem::path& path) {
       std::fclose(io.file);
       return map;
     }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      return io_error("cannot read '" + excerpt(path.string()) + "': " + io::errno_message(errno));
-    }
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec || size > std::uint64_t{8} * kMaxHeightMapSide * kMaxHeightMapSide + kMaxNpyHeader)
-      return bad(path, "file is too large for a height map");
-    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    return read_npy(path, bytes);
+    Result<std::string> bytes = io::read_bounded(
+        path, {.max_bytes = std::uint64_t{8} * kMaxHeightMapSide * kMaxHeightMapSide + kMaxNpyHeader,
+               .what = "height map",
+               .regular_only = true});
+    if (!bytes.ok()) return bytes.status();
+    return read_npy(path, bytes.value());
   } catch (const std::exception& e) {
     return io_error("cannot read '" + excerpt(path.string()) + "': " + e.what());
   }

@@ -4,6 +4,7 @@
 // node cycle, a missing file — are one error, never a crash. Mesh validation, flat shading and
 // the model matrix of a pose.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cmath>
@@ -77,6 +78,38 @@ TEST(Gltf, RefusesHostileFilesWithOneMessage) {
       "cycle");
   const auto missing = ocean::render::load_gltf(scratch("missing.glb"));
   EXPECT_EQ(missing.status().code(), ocean::ErrorCode::io_error);
+}
+
+// A .gltf whose buffer file is a FIFO nobody writes to, or a device: tinygltf would open the FIFO
+// and wait for ever. Every file the loader reads goes through io::read_bounded, which refuses
+// anything but a regular file before reading and stops at kMaxGltfFileBytes.
+TEST(Gltf, BufferFilesThatAreNotRegularFilesAreRefused) {
+  const fs::path dir = scratch("special").parent_path() / "special_buffers";
+  fs::create_directories(dir);
+  std::string json = cube_json();
+  const std::string plain = R"("buffers": [{"byteLength": 168}])";
+  ASSERT_NE(json.find(plain), std::string::npos);
+  for (const char* name : {"pipe.bin", "zero.bin"}) {
+    SCOPED_TRACE(name);
+    const fs::path buffer = dir / name;
+    fs::remove(buffer);
+    if (std::string(name) == "pipe.bin") {
+      ASSERT_EQ(::mkfifo(buffer.c_str(), 0600), 0);
+    } else {
+      fs::create_symlink("/dev/zero", buffer);
+    }
+    std::string text = json;
+    text.replace(text.find(plain), plain.size(),
+                 std::string(R"("buffers": [{"byteLength": 168, "uri": ")") + name + ""}]");
+    const fs::path gltf = dir / (std::string(name) + ".gltf");
+    std::ofstream(gltf) << text;
+    const auto r = ocean::render::load_gltf(gltf);
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.status().message().find("not a regular file"), std::string::npos)
+        << r.status().message();
+    EXPECT_EQ(r.status().message().find('\n'), std::string::npos);
+  }
+  fs::remove_all(dir);
 }
 
 TEST(Meshes, ValidationFlatShadingAndModelMatrix) {

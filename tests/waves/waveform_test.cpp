@@ -148,6 +148,33 @@ TEST(HeightMapFile, ExrHeightsAreReadAsStoredFromTheirYOrOnlyChannel) {
   }
 }
 
+// The PNG height map reader walks the chunks before libpng allocates what one declares: this 1×1
+// gray file's 'sPLT' chunk declares 1.9 GB (found by the PNG reader's fuzz target).
+TEST(HeightMapFile, PngChunkDeclaringMoreThanTheFileIsRefused) {
+  Scratch s;
+  const unsigned char declares_2gb[] = {
+      0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a, 0x00, 0x00, 0x00, 0x0d, 0x49, 0x48,
+      0x44, 0x52, 0x00, 0x00, 0x00, 0x01, 0x00, 0x00, 0x00, 0x01, 0x08, 0x00, 0x00, 0x00,
+      0x00, 0x3a, 0x7e, 0x9b, 0x55, 0x00, 0x00, 0x00, 0x0a, 0x73, 0x42, 0x49, 0x50, 0x4c,
+      0x54, 0x45, 0x54, 0x49, 0x44, 0x41, 0x54, 0x08, 0x99, 0x00, 0x8b, 0x00, 0xc9, 0x73,
+      0x42, 0x49, 0x54, 0x73, 0x50, 0x4c, 0x54, 0x45, 0x42, 0x49, 0x54};
+  std::ofstream(s.dir / "huge_chunk.png", std::ios::binary)
+      .write(reinterpret_cast<const char*>(declares_2gb), sizeof declares_2gb);
+  const auto m = ocean::waves::load_height_map(s.dir / "huge_chunk.png");
+  ASSERT_FALSE(m.ok());
+  EXPECT_NE(m.status().message().find("chunk 'sPLT' declares 1933723988 bytes, more than the "
+                                      "file holds"),
+            std::string::npos)
+      << m.status().message();
+  // A device behind a height map's name is refused before anything is read.
+  fs::create_symlink("/dev/zero", s.dir / "zero.npy");
+  const auto device = ocean::waves::load_height_map(s.dir / "zero.npy");
+  ASSERT_FALSE(device.ok());
+  EXPECT_NE(device.status().message().find("it is a character device, not a regular file"),
+            std::string::npos)
+      << device.status().message();
+}
+
 namespace sequence {
 
 // Frame f of a 3 × 4 sequence: every sample = 10·f + column (rows alike).
