@@ -237,14 +237,23 @@ bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, in
   return true;
 }
 
+// tinygltf's test for a buffer file, without opening it (tinygltf's own opens the file, and the
+// open of a FIFO waits for a writer for ever).
+bool file_exists(const std::string& path, void* /*user_data*/) {
+  std::error_code ec;
+  return std::filesystem::exists(path, ec);
+}
+
 // tinygltf's file reads (a .gltf's neighbouring .bin buffers) under the same limit as the file
 // itself: a buffer named /dev/zero or a FIFO is refused, not read until memory runs out.
+// `user_data` is the Status that load_gltf reports when the read fails.
 bool read_bounded_buffer(std::vector<unsigned char>* out, std::string* err,
-                         const std::string& path, void* /*user_data*/) {
+                         const std::string& path, void* user_data) {
   const Result<std::string> bytes = io::read_bounded(
       path, {.max_bytes = kMaxGltfFileBytes, .what = "glTF buffer", .regular_only = true});
   if (!bytes.ok()) {
     if (err != nullptr) *err = bytes.status().message();
+    *static_cast<Status*>(user_data) = bytes.status();
     return false;
   }
   out->assign(bytes.value().begin(), bytes.value().end());
@@ -262,17 +271,18 @@ Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path) {
   tinygltf::Model model;
   std::string err, warn;
   bool loaded = false;
+  Status buffer_read;  // the first refused buffer file
   try {
     const Result<std::string> bytes = io::read_bounded(
         path, {.max_bytes = kMaxGltfFileBytes, .what = "glTF file", .regular_only = true});
     if (!bytes.ok()) return bytes.status();
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, nullptr);
-    loader.SetFsCallbacks({.FileExists = &tinygltf::FileExists,
+    loader.SetFsCallbacks({.FileExists = &file_exists,
                            .ExpandFilePath = &tinygltf::ExpandFilePath,
                            .ReadWholeFile = &read_bounded_buffer,
                            .WriteWholeFile = &tinygltf::WriteWholeFile,
-                           .user_data = nullptr});
+                           .user_data = &buffer_read});
     const std::string ext = path.extension().string();
     const std::string base_dir = path.parent_path().string();
     const std::string& text = bytes.value();
@@ -287,6 +297,7 @@ Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path) {
   } catch (...) {
     err = "the parser failed";
   }
+  if (!loaded && !buffer_read.ok()) return buffer_read;
   if (!loaded) {
     std::string first = err.substr(0, err.find('\n'));
     if (first.empty()) first = "not a glTF 2.0 file";

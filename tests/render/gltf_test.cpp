@@ -100,7 +100,7 @@ TEST(Gltf, BufferFilesThatAreNotRegularFilesAreRefused) {
     }
     std::string text = json;
     text.replace(text.find(plain), plain.size(),
-                 std::string(R"("buffers": [{"byteLength": 168, "uri": ")") + name + ""}]");
+                 std::string(R"("buffers": [{"byteLength": 168, "uri": ")") + name + R"("}])");
     const fs::path gltf = dir / (std::string(name) + ".gltf");
     std::ofstream(gltf) << text;
     const auto r = ocean::render::load_gltf(gltf);
