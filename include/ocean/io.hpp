@@ -85,7 +85,8 @@ std::string errno_message(int err) noexcept;
 /// that never ends is refused after at most `max_bytes + 1` bytes were read.
 struct ReadLimits {
   std::uint64_t max_bytes = 0;  ///< the most the file may hold, bytes
-  std::string_view what;        ///< what the file is, for messages: "preset", "manifest"...
+  std::string_view what;        ///< what the file is, for messages: "preset", "manifest"...;
+                                ///< empty for the plain "cannot read '<path>': ..." form
   bool regular_only = false;    ///< refuse a FIFO, device, socket or directory before reading
   bool no_follow = false;       ///< refuse a symbolic link at `path` itself (O_NOFOLLOW)
   int fifo_wait_ms = 5000;      ///< a FIFO with no writer after this long is an io_error
@@ -99,7 +100,9 @@ struct ReadLimits {
 /// io_error "cannot read <what> '<path>': <reason>" (the reason "it is a FIFO, not a regular
 /// file" with `regular_only`, "it is a symbolic link" with `no_follow`, or strerror's text);
 /// invalid_argument "<what> '<path>' is larger than <N> bytes (<human>), the most a <what> may
-/// hold". The path is echoed through ocean::excerpt. Never throws.
+/// hold". With an empty `what` the messages are those of the format readers: "cannot read
+/// '<path>': <reason>" and "cannot read '<path>': it is larger than <N> bytes (<human>), the
+/// limit". The path is echoed through ocean::excerpt. Never throws.
 ocean::Result<std::string> read_bounded(const std::filesystem::path& path,
                                         const ReadLimits& limits);
 

@@ -29,7 +29,8 @@ const char* kind_of_mode(mode_t mode) {
 std::string cannot_read(const ReadLimits& limits, const std::filesystem::path& path,
                         const std::string& why) {
   std::string message = "cannot read ";
-  message.append(limits.what).append(" '").append(excerpt(path.string())).append("': ");
+  if (!limits.what.empty()) message.append(limits.what).append(" ");
+  message.append("'").append(excerpt(path.string())).append("': ");
   return message.append(why);
 }
 
@@ -89,6 +90,10 @@ Result<std::string> read_opened(const std::filesystem::path& path, const ReadLim
     if (n < 0) return io_error(cannot_read(limits, path, errno_message(errno)));
     if (n == 0) break;
     size += static_cast<std::uint64_t>(n);
+  }
+  if (size > limits.max_bytes && limits.what.empty()) {
+    return invalid_argument(cannot_read(
+        limits, path, "it is larger than " + byte_limit_text(limits.max_bytes) + ", the limit"));
   }
   if (size > limits.max_bytes) {
     std::string message(limits.what);

@@ -209,7 +209,7 @@ Result<HeightMap> load_height_map(const std::filesystem::path& path) {
     }
     Result<std::string> bytes = io::read_bounded(
         path, {.max_bytes = std::uint64_t{8} * kMaxHeightMapSide * kMaxHeightMapSide + kMaxNpyHeader,
-               .what = "height map",
+               .what = {},
                .regular_only = true});
     if (!bytes.ok()) return bytes.status();
     return read_npy(path, bytes.value());

@@ -36,6 +36,24 @@ TEST(BoundedRead, FileAtTheLimitIsReadWholeAndOneBytePastItIsRefused) {
                      "' is larger than 99 bytes, the most a manifest may hold");
 }
 
+// Without a `what`, the messages are the format readers' own "cannot read '<path>': ...".
+TEST(BoundedRead, WithoutWhatTheMessagesAreTheReadersPlainForm) {
+  TempDir dir;
+  const auto path = dir.path() / "map.npy";
+  write_file(path, std::string(2048, 'x'));
+  const Result<std::string> big = read_bounded(path, {.max_bytes = 1024, .what = {}});
+  ASSERT_FALSE(big.ok());
+  expect_message(big.status(), ErrorCode::invalid_argument,
+                 "cannot read '" + path.string() +
+                     "': it is larger than 1024 bytes (1 KiB), the limit");
+  const Result<std::string> absent =
+      read_bounded(dir.path() / "absent.npy", {.max_bytes = 1024, .what = {}});
+  ASSERT_FALSE(absent.ok());
+  expect_message(absent.status(), ErrorCode::io_error,
+                 "cannot read '" + (dir.path() / "absent.npy").string() +
+                     "': No such file or directory");
+}
+
 TEST(BoundedRead, LimitsAreStatedInBytesAndBinaryUnits) {
   EXPECT_EQ(byte_limit_text(1048576), "1048576 bytes (1 MiB)");
   EXPECT_EQ(byte_limit_text(std::uint64_t{3} << 30), "3221225472 bytes (3 GiB)");
