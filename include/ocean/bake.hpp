@@ -99,7 +99,9 @@ struct BakeParams {
   /// (local_height_f<f>.npy) and, unless calm, the composited local surface (local_displacement_,
   /// local_normal_, local_jacobian_, local_foam_f<f>.npy: the layer is set on the simulator,
   /// Simulator::set_local_layer, so its foam accumulates from the first frame stepped); the
-  /// manifest gains "local_area": {"origin_m": [x0, z0], "size_m", "resolution"}.
+  /// manifest gains "local_area": {"origin_m": [x0, z0], "size_m", "resolution",
+  /// "edge_fraction"} and "local_layer": {"wakes", "waveforms" (each map by "rows", "cols" and
+  /// the CRC-32 of its samples as little-endian float32), "choppiness", "gravity_mps2"}.
   std::shared_ptr<const waves::LocalLayer> local_layer;
   /// A calm sea: no wind sea, so no cascade files (the simulator is not stepped; the manifest
   /// says "calm": true). Needs local_layer.
@@ -138,8 +140,10 @@ double height_png_range_m(const SimulationConfig& config);
 /// (see make_backend), writing the files listed at the top of this header and, last,
 /// <output_dir>/manifest.json: generator, "complete" (true when every frame was written),
 /// frame_count (asked for), frames_written, "stopped" (why, when not complete), backend, config
-/// as the preset document, fps, formats, height_png_range_m, layout, cascades, and per frame
-/// written its index, time and files.
+/// as the preset document, fps, start_time_s, formats, height_png_range_m, layout, cascades,
+/// calm, and per frame written its index, time_s, files and, in the order of "files", each
+/// file's size ("bytes") and CRC-32 ("crc32": eight lower-case hexadecimal digits, the CRC-32 of
+/// zlib, PNG and Python's zlib.crc32), read back from the folder once the frame is written.
 ///
 /// Contract:
 ///  - invalid_argument for an empty output_dir, no format, frame_count outside 1..kMaxFrames, or
