@@ -24,6 +24,7 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -41,6 +42,13 @@ namespace ocean::bake {
 
 /// The most frames one bake writes.
 inline constexpr long long kMaxFrames = 1000000;
+
+/// The largest manifest.json merge() reads, bytes (64 MiB). A manifest takes 2.8 kB a frame for
+/// three cascades of 256² .npy files (measured), 10.3 kB with every format and four cascades of
+/// 512², so a shard holds up to about 23,000 frames (6,500 with every format); a longer bake
+/// splits into more shards. A larger file is refused after reading at most this many bytes and
+/// one more, before it is parsed.
+inline constexpr std::uint64_t kMaxManifestBytes = std::uint64_t{64} << 20;
 
 /// The lock file a bake holds in its output folder while it runs (flock(2), the holder's pid as
 /// text); removed when the bake ends. A lock file left by a killed process blocks nothing.
@@ -99,7 +107,9 @@ struct BakeParams {
   /// (local_height_f<f>.npy) and, unless calm, the composited local surface (local_displacement_,
   /// local_normal_, local_jacobian_, local_foam_f<f>.npy: the layer is set on the simulator,
   /// Simulator::set_local_layer, so its foam accumulates from the first frame stepped); the
-  /// manifest gains "local_area": {"origin_m": [x0, z0], "size_m", "resolution"}.
+  /// manifest gains "local_area": {"origin_m": [x0, z0], "size_m", "resolution",
+  /// "edge_fraction"} and "local_layer": {"wakes", "waveforms" (each map by "rows", "cols" and
+  /// the CRC-32 of its samples as little-endian float32), "choppiness", "gravity_mps2"}.
   std::shared_ptr<const waves::LocalLayer> local_layer;
   /// A calm sea: no wind sea, so no cascade files (the simulator is not stepped; the manifest
   /// says "calm": true). Needs local_layer.
@@ -138,8 +148,10 @@ double height_png_range_m(const SimulationConfig& config);
 /// (see make_backend), writing the files listed at the top of this header and, last,
 /// <output_dir>/manifest.json: generator, "complete" (true when every frame was written),
 /// frame_count (asked for), frames_written, "stopped" (why, when not complete), backend, config
-/// as the preset document, fps, formats, height_png_range_m, layout, cascades, and per frame
-/// written its index, time and files.
+/// as the preset document, fps, start_time_s, formats, height_png_range_m, layout, cascades,
+/// calm, and per frame written its index, time_s, files and, in the order of "files", each
+/// file's size ("bytes") and CRC-32 ("crc32": eight lower-case hexadecimal digits, the CRC-32 of
+/// zlib, PNG and Python's zlib.crc32), read back from the folder once the frame is written.
 ///
 /// Contract:
 ///  - invalid_argument for an empty output_dir, no format, frame_count outside 1..kMaxFrames, or
@@ -177,21 +189,42 @@ struct MergeParams {
 /// bake on one machine.
 ///
 /// Contract:
-///  - First, before touching anything, reads every shard's manifest.json and checks: each is a
-///    complete shard ("complete": true, its frames exactly its block), all of one bake (the same
-///    generator, backend, configuration, frame count, fps, formats and layout, and one shard
-///    count), no shard given twice, none missing, every listed file present and a plain name.
-///    Errors (invalid_argument unless a file cannot be read, io_error): "merge needs at least
-///    one shard folder", "'<dir>/manifest.json' is not a shard's manifest: <why>", "shard 1 of 4
-///    in '<dir>' is incomplete ...", "'<b>' is not a shard of the same bake as '<a>': \"config\"
-///    differs", "shard 2 of 4 is given twice: '<a>' and '<b>'", "shard 3 of 4 is missing
-///    (frames 75 to 99)", "shard 0 of 4 in '<dir>' lacks '<file>', which its manifest lists".
+///  - First, before touching anything, reads every shard's manifest.json and checks it: read with
+///    io::read_bounded (at most kMaxManifestBytes; a regular file, never through a symbolic
+///    link, so a FIFO or /dev/zero is refused at once), a complete shard ("complete": true, its
+///    frames exactly its block, each at start_time_s + f/fps and listing the files of its own
+///    frame, the same files every frame), every listed file a plain name and, by lstat, a regular
+///    file (never a symbolic link, FIFO, device, socket or directory) of the size listed. A
+///    manifest of the older format (no start_time_s, no "bytes" and "crc32") is refused: bake
+///    the shard again. Then that the shards are of one bake: every entry but the shard's own
+///    ("shard", "frames", "frames_written") the same, compared entry by entry down to the
+///    leaves (generator, backend, config, frame_count, fps, start_time_s, formats,
+///    height_png_range_m, layout, cascades, calm, local_area, local_layer), one shard count, no
+///    shard twice, none missing, the output not a shard's folder. Last, every file is read
+///    (O_NOFOLLOW, fstat: the same regular file) and its size and CRC-32 checked against the
+///    manifest's. Errors (invalid_argument unless a file cannot be read, io_error), one line
+///    each: "merge needs at least one shard folder", "cannot read manifest '<dir>/manifest.json':
+///    it is a symbolic link" (or "it is a FIFO, not a regular file"), "manifest '<path>' is
+///    larger than 67108864 bytes (64 MiB), the most a manifest may hold",
+///    "'<dir>/manifest.json' is not a shard's manifest: <why>", "shard 1 of 4 in '<dir>' is
+///    incomplete ...", "cannot merge: shard '<b>' differs from shard '<a>' in config.seed (6
+///    vs 5)" (the entry's path, b's value, a's), "shard 2 of 4 is given twice: '<a>' and
+///    '<b>'", "shard 3 of 4 is missing (frames 75 to 99; bake it with --shard 3/4)", and
+///    "cannot merge: shard 0 of 4 in '<dir>': " followed by "'<file>' is a symbolic link",
+///    "'<file>' is a FIFO, not a regular file", "the folder lacks '<file>', which its manifest
+///    lists", "'<file>' holds 10 bytes, its manifest says 12: the file changed after the bake;
+///    bake the shard again" (or "has CRC-32 <x>, its manifest says <y>: ..."), "frame 7 lists
+///    '<file>', which is not a file of frame 7", "its manifest records no start time, file
+///    sizes or CRC-32s (an older ocean wrote it): bake the shard again". Cancellation is checked
+///    before each file read (ErrorCode::cancelled, nothing written).
 ///  - Then the output folder is held as bake() holds it (created, locked, the old manifest
-///    removed before the first file), the files are copied frame by frame (each atomically), and
-///    the manifest is written last. A failed copy or a cancellation stops the merge as it stops a
-///    bake: the unfinished frame's files removed, "complete": false listing the frames copied.
-///  - Blocking; never throws. The shard folders are only read; they must not be baked into
-///    while the merge runs.
+///    removed before the first file), the files are copied frame by frame (each atomically, read
+///    as above and its size and CRC-32 checked again as it is copied: a file changed after the
+///    check fails the copy), and the manifest is written last. A failed copy or a cancellation
+///    stops the merge as it stops a bake: the unfinished frame's files removed, "complete":
+///    false listing the frames copied.
+///  - Blocking; reads every shard's files twice (the check, the copy); never throws. The shard
+///    folders are only read; they must not be baked into while the merge runs.
 Status merge(std::span<const std::filesystem::path> shard_dirs, const MergeParams& params);
 
 /// Bakes with an existing simulator (its configuration and backend name go to the manifest); the

@@ -5,13 +5,16 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <vector>
 
+#include "checksum.hpp"
 #include "frame_files.hpp"
 #include "manifest.hpp"
 #include "ocean/backends.hpp"
@@ -66,6 +69,55 @@ bool cancelled(const BakeParams& p) {
   return p.cancel != nullptr && p.cancel->load(std::memory_order_relaxed);
 }
 
+// The CRC-32 of a height map's samples as little-endian float32, with its size: enough to tell
+// two waveforms apart without copying their maps into the manifest.
+Json map_entry(const waves::HeightMap& map) {
+  std::uint32_t crc = 0;
+  for (const float v : map.values) {
+    const auto u = std::bit_cast<std::uint32_t>(v);
+    const std::array<std::byte, 4> le{std::byte(u & 0xFFU), std::byte((u >> 8U) & 0xFFU),
+                                      std::byte((u >> 16U) & 0xFFU), std::byte(u >> 24U)};
+    crc = detail::crc32_update(crc, le);
+  }
+  return {{"rows", map.rows}, {"cols", map.cols}, {"crc32", detail::crc32_hex(crc)}};
+}
+
+// Everything of the local layer that changes the frames but its area (the manifest's
+// "local_area"): the wakes, the waveforms (their maps by size and CRC-32), the choppiness and g.
+// Shards of one bake must agree on it (merge() compares it like every other entry).
+Json layer_entry(const waves::LayerParams& lp) {
+  Json wakes = Json::array(), waveforms = Json::array();
+  for (const waves::KelvinWake& w : lp.wakes) {
+    Json path = Json::array();
+    for (const waves::Waypoint& p : w.path) path.push_back({p.time_s, p.x_m, p.z_m});
+    wakes.push_back({{"x_m", w.x_m},
+                     {"z_m", w.z_m},
+                     {"heading_deg", w.heading_deg},
+                     {"speed_mps", w.speed_mps},
+                     {"hull_length_m", w.hull_length_m},
+                     {"peak_height_m", w.peak_height_m ? Json(*w.peak_height_m) : Json(nullptr)},
+                     {"fade_length_m", w.fade_length_m},
+                     {"path", path}});
+  }
+  for (const waves::Waveform& w : lp.waveforms) {
+    Json maps = Json::array();
+    if (w.frames.empty() && w.map != nullptr) maps.push_back(map_entry(*w.map));
+    for (const auto& frame : w.frames) maps.push_back(map_entry(*frame));
+    waveforms.push_back({{"x_m", w.x_m},
+                         {"z_m", w.z_m},
+                         {"size_m", w.size_m},
+                         {"amplitude_m", w.amplitude_m},
+                         {"rotation_deg", w.rotation_deg},
+                         {"fps_hz", w.fps_hz},
+                         {"playback", std::string(name_of(waves::kPlaybackNames, w.playback))},
+                         {"maps", maps}});
+  }
+  return {{"wakes", wakes},
+          {"waveforms", waveforms},
+          {"choppiness", lp.choppiness},
+          {"gravity_mps2", lp.gravity_mps2}};
+}
+
 // The manifest's opening entries, in the order a reader wants them; "complete", "frames_written"
 // and "stopped" are filled in when the bake ends.
 Json manifest_head(const Simulator& sim, std::string_view backend, const BakeParams& p,
@@ -86,6 +138,7 @@ Json manifest_head(const Simulator& sim, std::string_view backend, const BakePar
            {"backend", std::string(backend)},
            {"config", Json::parse(preset::to_json(c))},
            {"fps", p.fps},
+           {"start_time_s", p.start_time_s},
            {"formats", format_names(p.formats)},
            {"height_png_range_m", range_m},
            {"layout",
@@ -102,9 +155,30 @@ Json manifest_head(const Simulator& sim, std::string_view backend, const BakePar
     const waves::LocalArea& a = p.local_layer->params().area;
     manifest["local_area"] = {{"origin_m", {a.origin_m[0], a.origin_m[1]}},
                               {"size_m", a.size_m},
-                              {"resolution", a.resolution}};
+                              {"resolution", a.resolution},
+                              {"edge_fraction", a.edge_fraction}};
+    manifest["local_layer"] = layer_entry(p.local_layer->params());
   }
   return manifest;
+}
+
+// Records each file's size and CRC-32 in the frame's entry ("bytes", "crc32", in the order of
+// "files"), read back from the folder: what merge() checks a shard's files against.
+Status record_sums(const std::filesystem::path& dir, const std::vector<std::string>& names,
+                   Json& entry) {
+  Json bytes = Json::array(), crcs = Json::array();
+  for (const std::string& name : names) {
+    const Result<detail::FileSum> sum = detail::read_plain_file(dir / name, {});
+    if (!sum.ok()) {
+      return io_error("cannot read back " + io::quoted(dir / name) + ", just written: it " +
+                      sum.status().message());
+    }
+    bytes.push_back(sum.value().bytes);
+    crcs.push_back(detail::crc32_hex(sum.value().crc32));
+  }
+  entry["bytes"] = std::move(bytes);
+  entry["crc32"] = std::move(crcs);
+  return {};
 }
 
 // Evaluates the local layer at t and writes its heights as local_height_f<index>.npy [N][N] and,
@@ -198,6 +272,10 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
       }
     }
     entry["files"] = names;
+    if (Status s = record_sums(folder.dir(), names, entry); !s.ok()) {
+      folder.remove(names);
+      return s;
+    }
     manifest["frames"].push_back(entry);
     manifest["frames_written"] = f + 1 - range.first;
     if (on_frame) {

@@ -1,8 +1,15 @@
-// src/bake/merge.cpp — the shards of a bake joined into one folder: every manifest checked first
-// (shard_manifest.hpp), then the output folder held as a bake holds it, the files copied frame by
-// frame, and the manifest of the one-machine bake written last.
-#include <system_error>
+// src/bake/merge.cpp — the shards of a bake joined into one folder: every manifest and every
+// file checked first (shard_manifest.hpp), then the output folder held as a bake holds it, the
+// files copied frame by frame (each checked again as it is copied), and the manifest of the
+// one-machine bake written last.
+#include <fcntl.h>
+#include <unistd.h>
 
+#include <cerrno>
+#include <system_error>
+#include <utility>
+
+#include "checksum.hpp"
 #include "manifest.hpp"
 #include "ocean/bake.hpp"
 #include "ocean/io.hpp"
@@ -19,6 +26,17 @@ bool cancelled(const MergeParams& p) {
   return p.cancel != nullptr && p.cancel->load(std::memory_order_relaxed);
 }
 
+// Writes all of `bytes` to `fd`, retrying short writes and EINTR.
+Status write_all(int fd, std::span<const std::byte> bytes) {
+  while (!bytes.empty()) {
+    const ssize_t n = ::write(fd, bytes.data(), bytes.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return io_error(io::errno_message(errno));
+    bytes = bytes.subspan(static_cast<std::size_t>(n));
+  }
+  return {};
+}
+
 // The manifest a one-machine bake writes, from a shard's: its entries in their order without
 // "shard", "stopped" where bake() puts it, no frames yet.
 Json merged_head(const Json& shard) {
@@ -31,12 +49,33 @@ Json merged_head(const Json& shard) {
   return head;
 }
 
-// Copies `from` to `to`, atomically.
-Status copy_atomically(const fs::path& from, const fs::path& to) {
-  return io::write_atomically(to, [&](const fs::path& temporary) -> Status {
-    std::error_code ec;
-    fs::copy_file(from, temporary, fs::copy_options::overwrite_existing, ec);
-    if (ec) return io_error("copying from " + io::quoted(from) + ": " + ec.message());
+// Copies file `i` of `frame` from the shard's folder into the output folder, atomically, reading
+// it as check_files did (never through a link, a regular file only) and checking the bytes
+// copied against the manifest's size and CRC-32 once more: a file changed since the check never
+// reaches the output.
+Status copy_checked(const detail::ShardManifest& shard, const Json& frame, std::size_t i,
+                    const fs::path& to) {
+  const std::string& file = frame["files"][i].get_ref<const std::string&>();
+  return io::write_atomically(to / file, [&](const fs::path& temporary) -> Status {
+    detail::OwnedFd out;
+    out.fd = ::open(temporary.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC | O_NOFOLLOW);
+    if (out.fd < 0) return io_error(io::errno_message(errno));
+    Status written;
+    const Result<detail::FileSum> sum =
+        detail::read_plain_file(shard.dir / file, [&](std::span<const std::byte> block) {
+          written = write_all(out.fd, block);
+          return written;
+        });
+    if (!written.ok()) return written;  // the output's failure ("No space left on device")
+    // The reason write_atomically reports after "cannot write '<output file>': ".
+    const std::string from = detail::shard_place(shard) + ": ";
+    if (!sum.ok())
+      return {sum.status().code(), from + io::quoted(file) + " " + sum.status().message()};
+    if (std::string why = detail::sum_mismatch(file, sum.value(), detail::listed_sum(frame, i));
+        !why.empty())
+      return invalid_argument(from + why);
+    const int fd = std::exchange(out.fd, -1);
+    if (::close(fd) != 0 && errno != EINTR) return io_error(io::errno_message(errno));
     return {};
   });
 }
@@ -50,17 +89,16 @@ Status copy_frames(const std::vector<detail::ShardManifest>& shards, const Merge
   for (const detail::ShardManifest& shard : shards) {
     for (const Json& frame : shard.manifest["frames"]) {
       names.clear();
-      for (const Json& name : frame["files"]) {
+      for (std::size_t i = 0; i < frame["files"].size(); ++i) {
         if (cancelled(p)) {
           folder.remove(names);
           return {ErrorCode::cancelled, "cancelled"};
         }
-        const std::string& file = name.get_ref<const std::string&>();
-        if (Status s = copy_atomically(shard.dir / file, folder.dir() / file); !s.ok()) {
+        if (Status s = copy_checked(shard, frame, i, folder.dir()); !s.ok()) {
           folder.remove(names);
           return s;
         }
-        names.push_back(file);
+        names.push_back(frame["files"][i].get<std::string>());
       }
       manifest["frames"].push_back(frame);
       manifest["frames_written"] = ++copied;
@@ -96,6 +134,8 @@ Status merge(std::span<const fs::path> shard_dirs, const MergeParams& params) {
                               " is the folder of a shard (" + io::quoted(s->dir) +
                               "): merge into another folder");
     }
+    // Every byte checked before the output folder is touched.
+    if (Status s = detail::check_files(shards, params.cancel); !s.ok()) return s;
     detail::OutputFolder folder;
     if (Status s = folder.open(params.output_dir, {}); !s.ok()) return s;
     if (cancelled(params)) {

@@ -1,10 +1,14 @@
-// src/bake/shard_manifest.cpp — a shard's manifest read and checked, and the shards of one bake
-// checked against each other: everything a merge verifies before it writes a file.
+// src/bake/shard_manifest.cpp — one shard's manifest read under its size limit and checked:
+// its shard entry, its frames in order and at their times, each frame's files its own, a plain
+// name, a regular file of the size listed. What shard_set.cpp checks across the shards builds on
+// it.
 #include "shard_manifest.hpp"
 
+#include <sys/stat.h>
+
 #include <algorithm>
-#include <fstream>
-#include <iterator>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "ocean/io.hpp"
@@ -27,6 +31,11 @@ bool is_integer(const Json& j, const char* key, long long lo, long long hi) {
          it->get<long long>() <= hi;
 }
 
+bool is_number(const Json& j, const char* key) {
+  const auto it = j.find(key);
+  return it != j.end() && it->is_number() && std::isfinite(it->get<double>());
+}
+
 // A file name a manifest may list: one plain, visible name inside the folder (never a path that
 // would lead a merge to read or write outside the folders it was given).
 bool plain_name(const Json& name) {
@@ -35,6 +44,29 @@ bool plain_name(const Json& name) {
   return !text.empty() && text.size() <= 255 && text[0] != '.' &&
          text.find('/') == std::string::npos && text.find('\0') == std::string::npos &&
          text != kManifestName;
+}
+
+// Eight lower-case hexadecimal digits, as crc32_hex writes them.
+bool crc_text(const Json& j) {
+  if (!j.is_string() || j.get_ref<const std::string&>().size() != 8) return false;
+  const std::string& text = j.get_ref<const std::string&>();
+  return std::all_of(text.begin(), text.end(),
+                     [](char c) { return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f'); });
+}
+
+// `name` with frame f's "_f<fffff>" (followed by '.' or '_', found once) written "_f#"; empty
+// when the name is not one of frame f's.
+std::string pattern_of(const std::string& name, long long f) {
+  char tag[32];
+  std::snprintf(tag, sizeof tag, "_f%05lld", f);
+  const std::string_view t(tag);
+  const std::size_t at = name.find(t);
+  const std::size_t after = at + t.size();
+  if (at == std::string::npos || after >= name.size() ||
+      (name[after] != '.' && name[after] != '_') || name.find(t, at + 1) != std::string::npos) {
+    return {};
+  }
+  return name.substr(0, at) + "_f#" + name.substr(after);
 }
 
 // The checks of read_shard_manifest on a parsed document; an empty string when it passes.
@@ -56,11 +88,44 @@ std::string shape_error(const Json& m, ShardManifest& out) {
     return "its first and last frames are not those of " + shard_name(out.shard);
   if (!m.contains("complete") || !m["complete"].is_boolean())
     return "\"complete\" is not true or false";
+  if (!is_number(m, "fps") || !(m["fps"].get<double>() > 0)) return "\"fps\" is not a number > 0";
+  if (m.contains("start_time_s") && !is_number(m, "start_time_s"))
+    return "\"start_time_s\" is not a finite number";
   return {};
 }
 
+// Whether the manifest predates the start time and the files' sizes and CRC-32s.
+bool older_format(const ShardManifest& s) {
+  if (!s.manifest.contains("start_time_s")) return true;
+  const auto frames = s.manifest.find("frames");
+  if (frames == s.manifest.end() || !frames->is_array()) return false;
+  return std::any_of(frames->begin(), frames->end(), [](const Json& frame) {
+    return frame.is_object() && !frame.contains("bytes") && !frame.contains("crc32");
+  });
+}
+
+// Checks frame f's file i: a plain name of frame f's, a regular file of the size listed.
+std::string file_error(const ShardManifest& s, const Json& frame, std::size_t i, long long f,
+                       std::vector<std::string>& pattern) {
+  const Json& name = frame["files"][i];
+  const std::string at = "frame " + std::to_string(f) + " lists ";
+  if (!plain_name(name)) return at + excerpt(name.dump()) + ", which is not a plain file name";
+  const std::string& file = name.get_ref<const std::string&>();
+  pattern.push_back(pattern_of(file, f));
+  if (pattern.back().empty())
+    return at + io::quoted(file) + ", which is not a file of frame " + std::to_string(f);
+  if (!frame["bytes"][i].is_number_unsigned() || !crc_text(frame["crc32"][i]))
+    return at + io::quoted(file) + " without a size in bytes and an eight-digit CRC-32";
+  std::error_code ec;
+  if (fs::symlink_status(s.dir / file, ec).type() == fs::file_type::not_found)
+    return "the folder lacks " + io::quoted(file) + ", which its manifest lists";
+  const Result<std::uint64_t> size = plain_file_size(s.dir / file);
+  if (!size.ok()) return io::quoted(file) + " " + size.status().message();
+  return sum_mismatch(file, {.bytes = size.value()}, {.bytes = listed_sum(frame, i).bytes});
+}
+
 // The frame and file checks of a complete shard; an empty string when they pass.
-std::string frames_error(const ShardManifest& s) {
+std::string frames_error(ShardManifest& s) {
   static const Json kNone;
   const auto listed = s.manifest.find("frames");
   const Json& frames = listed == s.manifest.end() ? kNone : *listed;
@@ -69,19 +134,43 @@ std::string frames_error(const ShardManifest& s) {
       !is_integer(s.manifest, "frames_written", count, count))
     return "it lists " + std::to_string(frames.is_array() ? frames.size() : 0) + " frames of " +
            std::to_string(count);
+  const double start_s = s.manifest["start_time_s"].get<double>();
+  const double fps = s.manifest["fps"].get<double>();
+  std::vector<std::string> pattern;
   for (long long k = 0; k < count; ++k) {
     const Json& frame = frames[static_cast<std::size_t>(k)];
     const long long f = s.frames.first + k;
+    const std::string at = "frame " + std::to_string(f);
     if (!frame.is_object() || !is_integer(frame, "index", f, f) || !frame.contains("files") ||
         !frame["files"].is_array())
-      return "frame " + std::to_string(f) + " is not listed in order with its files";
-    for (const Json& name : frame["files"]) {
-      if (!plain_name(name))
-        return "frame " + std::to_string(f) + " lists " + excerpt(name.dump()) +
-               ", which is not a plain file name";
-      std::error_code ec;
-      if (!fs::is_regular_file(s.dir / name.get<std::string>(), ec))
-        return "the folder lacks '" + name.get<std::string>() + "', which its manifest lists";
+      return at + " is not listed in order with its files";
+    // The time bake() gives frame f, computed the same way (so equal to the last bit).
+    const double t = start_s + static_cast<double>(f) / fps;
+    if (!is_number(frame, "time_s") || frame["time_s"].get<double>() != t) {
+      const std::string was = !frame.contains("time_s") ? std::string("(none)")
+                              : is_number(frame, "time_s")
+                                  ? format_number(frame["time_s"].get<double>())
+                                  : excerpt(frame["time_s"].dump());
+      return at + " is at time_s " + was + ", not start_time_s + " + std::to_string(f) +
+             "/fps = " + format_number(t);
+    }
+    const std::size_t files = frame["files"].size();
+    for (const char* key : {"bytes", "crc32"}) {
+      if (!frame.contains(key) || !frame[key].is_array() || frame[key].size() != files)
+        return at + "'s \"" + key + "\" does not list one entry per file";
+    }
+    pattern.clear();
+    for (std::size_t i = 0; i < files; ++i) {
+      if (std::string why = file_error(s, frame, i, f, pattern); !why.empty()) return why;
+    }
+    std::vector<std::string> sorted = pattern;
+    std::sort(sorted.begin(), sorted.end());
+    if (std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+      return at + " lists a file twice";
+    if (k == 0) {
+      s.file_pattern = pattern;
+    } else if (pattern != s.file_pattern) {
+      return at + " lists other files than frame " + std::to_string(s.frames.first);
     }
   }
   return {};
@@ -89,17 +178,44 @@ std::string frames_error(const ShardManifest& s) {
 
 }  // namespace
 
+std::string shard_place(const ShardManifest& s) {
+  return shard_name(s.shard) + " in " + io::quoted(s.dir);
+}
+
+std::string shard_prefix(const ShardManifest& s) {
+  return "cannot merge: " + shard_place(s) + ": ";
+}
+
+FileSum listed_sum(const Json& frame, std::size_t i) {
+  const std::string& crc = frame["crc32"][i].get_ref<const std::string&>();
+  return {.bytes = frame["bytes"][i].get<std::uint64_t>(),
+          .crc32 = static_cast<std::uint32_t>(std::stoul(crc, nullptr, 16))};
+}
+
+std::string sum_mismatch(const std::string& file, const FileSum& got, const FileSum& listed) {
+  std::string why = io::quoted(file);
+  if (got.bytes != listed.bytes) {
+    why.append(" holds ").append(std::to_string(got.bytes)).append(" bytes, its manifest says ");
+    why.append(std::to_string(listed.bytes));
+  } else if (got.crc32 != listed.crc32) {
+    why.append(" has CRC-32 ").append(crc32_hex(got.crc32)).append(", its manifest says ");
+    why.append(crc32_hex(listed.crc32));
+  } else {
+    return {};
+  }
+  return why.append(": the file changed after the bake; bake the shard again");
+}
+
 Result<ShardManifest> read_shard_manifest(const fs::path& dir) noexcept {
   try {
     ShardManifest out{.dir = dir};
     const fs::path path = dir / kManifestName;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-      const int err = errno;
-      return io_error("cannot read " + io::quoted(path) + ": " + io::errno_message(err));
-    }
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    out.manifest = Json::parse(text, nullptr, false);
+    Result<std::string> text = io::read_bounded(path, {.max_bytes = kMaxManifestBytes,
+                                                       .what = "manifest",
+                                                       .regular_only = true,
+                                                       .no_follow = true});
+    if (!text.ok()) return text.status();
+    out.manifest = Json::parse(text.value(), nullptr, false);
     if (out.manifest.is_discarded())
       return invalid_argument(io::quoted(path) + " is not a shard's manifest: not valid JSON");
     if (std::string why = shape_error(out.manifest, out); !why.empty())
@@ -109,70 +225,16 @@ Result<ShardManifest> read_shard_manifest(const fs::path& dir) noexcept {
                               " is incomplete (its manifest says \"complete\": false): bake it "
                               "again");
     }
+    if (older_format(out)) {
+      return invalid_argument(shard_prefix(out) +
+                              "its manifest records no start time, file sizes or CRC-32s (an "
+                              "older ocean wrote it): bake the shard again");
+    }
     if (std::string why = frames_error(out); !why.empty())
-      return invalid_argument(shard_name(out.shard) + " in " + io::quoted(dir) + ": " + why);
+      return invalid_argument(shard_prefix(out) + why);
     return out;
-  } catch (const std::exception& e) {  // out of memory for a huge manifest
+  } catch (const std::exception& e) {  // out of memory for a large manifest
     return io_error("cannot read the manifest in " + io::quoted(dir) + ": " + e.what());
-  }
-}
-
-Status check_shards(std::vector<ShardManifest>& shards) noexcept {
-  try {
-    if (shards.empty()) return invalid_argument("merge needs at least one shard folder");
-    const ShardManifest& a = shards.front();
-    // Everything but the shard's own entries must be the same bake's.
-    const auto own = [](const std::string& key) {
-      return key == "shard" || key == "frames" || key == "frames_written";
-    };
-    for (const ShardManifest& b : shards) {
-      if (b.shard.count != a.shard.count) {
-        return invalid_argument(io::quoted(b.dir) + " is " + shard_name(b.shard) + " but " +
-                                io::quoted(a.dir) + " is " + shard_name(a.shard) +
-                                ": they are not shards of one bake");
-      }
-      for (const auto& [key, value] : a.manifest.items()) {
-        if (own(key) || (b.manifest.contains(key) && b.manifest[key] == value)) continue;
-        return invalid_argument(io::quoted(b.dir) + " is not a shard of the same bake as " +
-                                io::quoted(a.dir) + ": \"" + key + "\" differs");
-      }
-      if (b.manifest.size() != a.manifest.size()) {
-        return invalid_argument(io::quoted(b.dir) + " is not a shard of the same bake as " +
-                                io::quoted(a.dir) + ": their manifests hold other entries");
-      }
-    }
-    std::sort(shards.begin(), shards.end(), [](const ShardManifest& x, const ShardManifest& y) {
-      return x.shard.index < y.shard.index;
-    });
-    for (std::size_t i = 1; i < shards.size(); ++i) {
-      if (shards[i].shard.index == shards[i - 1].shard.index) {
-        return invalid_argument(shard_name(shards[i].shard) +
-                                " is given twice: " + io::quoted(shards[i - 1].dir) + " and " +
-                                io::quoted(shards[i].dir));
-      }
-    }
-    const long long frame_count = a.manifest["frame_count"].get<long long>();
-    for (long long i = 0; i < a.shard.count; ++i) {
-      const auto at = static_cast<std::size_t>(i);
-      if (at < shards.size() && shards[at].shard.index == i) continue;
-      const Shard missing{i, a.shard.count};
-      const FrameRange r = shard_frames(frame_count, missing);
-      const long long others = a.shard.count - static_cast<long long>(shards.size()) - 1;
-      std::string message = shard_name(missing);
-      message.append(r.end - r.first == 1 ? " is missing (frame " : " is missing (frames ")
-          .append(std::to_string(r.first));
-      if (r.end - r.first > 1) message.append(" to ").append(std::to_string(r.end - 1));
-      message.append("; bake it with --shard ")
-          .append(std::to_string(i))
-          .append("/")
-          .append(std::to_string(a.shard.count))
-          .append(")");
-      if (others > 0) message.append(", and ").append(std::to_string(others)).append(" more");
-      return invalid_argument(std::move(message));
-    }
-    return {};
-  } catch (const std::exception& e) {
-    return io_error(std::string("cannot check the shards: ") + e.what());
   }
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -56,6 +57,40 @@ TEST(BakeShardCli, ShardsMergedAreByteForByteTheOneMachineBake) {
   EXPECT_FALSE(fs::exists(dir.path / "partial"));
 }
 
+// A shard of another bake, a frame file changed after its bake or replaced by a link: the merge
+// refuses in one line naming the shard, the entry or the file, and writes nothing.
+TEST(BakeShardCli, AMergeRefusesAnotherBakesShardOrAChangedFileInOneLine) {
+  ScratchDir dir("ocean_cli_shard_checks_");
+  const std::string d = dir.path.string();
+  for (int i = 0; i < 2; ++i) {
+    const std::string n = std::to_string(i);
+    ASSERT_EQ(run_cli(kBake + "--shard " + n + "/2 --out " + d + "/s" + n).exit_code, 0);
+  }
+  std::string fast = kBake;
+  fast.replace(fast.find("--fps 2"), 7, "--fps 3");
+  ASSERT_EQ(run_cli(fast + "--shard 1/2 --out " + d + "/fast").exit_code, 0);
+  const auto refused = [&](const std::string& shards, const std::string& message) {
+    const ocean_test::CliRun r = run_cli("bake --merge " + shards + " --out " + d + "/out");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err, "ocean: error: " + message + "\n");
+    EXPECT_FALSE(fs::exists(dir.path / "out"));
+  };
+  refused(d + "/s0 " + d + "/fast",
+          "cannot merge: shard '" + d + "/fast' differs from shard '" + d + "/s0' in fps (3 vs 2)");
+  const fs::path file = dir.path / "s1" / "foam_c1_f00003.npy";
+  const std::string bytes = read_whole_file(file);
+  fs::remove(file);
+  fs::create_symlink("foam_c1_f00002.npy", file);
+  refused(d + "/s0 " + d + "/s1",
+          "cannot merge: shard 1 of 2 in '" + d + "/s1': 'foam_c1_f00003.npy' is a symbolic link");
+  fs::remove(file);
+  std::ofstream(file, std::ios::binary) << bytes.substr(0, 64);
+  refused(d + "/s0 " + d + "/s1", "cannot merge: shard 1 of 2 in '" + d +
+                                      "/s1': 'foam_c1_f00003.npy' holds 64 bytes, " +
+                                      "its manifest says " + std::to_string(bytes.size()) +
+                                      ": the file changed after the bake; bake the shard again");
+}
+
 TEST(BakeShardCli, BadShardAndMergeFlagsFailInOneLine) {
   ScratchDir dir("ocean_cli_shard_flags_");
   const std::string out = " --out " + (dir.path / "x").string();
@@ -75,7 +110,7 @@ TEST(BakeShardCli, BadShardAndMergeFlagsFailInOneLine) {
         "--merge takes only --out: --frames belongs to a bake, not to a merge");
   fails("bake --merge a b", "--merge needs --out DIR");
   fails("bake --merge " + (dir.path / "nowhere").string() + out,
-        "cannot read '" + (dir.path / "nowhere" / "manifest.json").string() +
+        "cannot read manifest '" + (dir.path / "nowhere" / "manifest.json").string() +
             "': No such file or directory",
         1);
 }
