@@ -106,3 +106,24 @@ def test_bake_frames_beyond_64_bits(tmp_path, frames):
     assert str(e.value) == (f"--frames = {frames} is out of range: must be an integer in "
                             "[1, 1000000]")
     assert not (tmp_path / "b").exists()
+
+
+def test_surface_stats_time_as_the_tool(cli_message):
+    with pytest.raises(ValueError) as e:
+        ocean.surface_stats("calm", seeds=1, time=float("inf"))
+    assert str(e.value) == "--time = inf is out of range: must be a finite number"
+    tool = cli_message("stats", "--seeds", "1", "--time", "inf")
+    if tool is not None:
+        assert str(e.value) == tool
+
+
+@pytest.mark.parametrize("name", ["s", "alpha"])
+def test_spreading_nan_as_the_tool(name, cli_message):
+    keywords = {"s": 10.0, name: float("nan")}
+    with pytest.raises(ValueError) as e:
+        ocean.spreading([0.0], model="cos2s", **keywords)
+    assert str(e.value) == f"--{name} = nan is out of range: must be a finite number"
+    flags = [a for k, v in keywords.items() for a in (f"--{k}", str(v))]
+    tool = cli_message("spreading", "--model", "cos2s", *flags, "--theta", "0")
+    if tool is not None:
+        assert str(e.value) == tool

@@ -155,9 +155,11 @@ void bind_bake(py::module_& m) {
       "surface_stats",
       [](const py::object& preset, const Integer& seed_arg, double time_s,
          const Integer& thread_arg) {
-        // `ocean stats --seeds`.
+        // As `ocean stats --seeds` and --time.
         constexpr cli::NumberOption<double> kSeeds{.flag = "--seeds", .lo = 1, .hi = 1e5};
+        constexpr cli::NumberOption<double> kTime{.flag = "--time", .accept = cli::Accept::finite};
         const auto seeds = static_cast<int>(in_range(seed_arg, kSeeds));
+        check(cli::check(kTime, time_s, format_number(time_s)));
         const auto threads = static_cast<int>(in_range(thread_arg, kThreads));
         const SimulationConfig config = config_of(preset);
         std::optional<SurfaceStats> stats;
