@@ -1,14 +1,17 @@
 // ocean.bake, ocean.merge, ocean.shard_frames and ocean.surface_stats: ocean/bake.hpp and
 // ocean/statistics.hpp with the GIL released while they run, their arguments checked as
-// `ocean bake` and `ocean stats` check their flags.
+// `ocean bake` and `ocean stats` check their flags; bake and merge stop on SIGINT, SIGTERM and
+// SIGHUP (signals.hpp).
 #include "ocean/bake.hpp"
 
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -18,6 +21,7 @@
 #include "ocean/statistics.hpp"
 #include "ocean/task_runner.hpp"
 #include "options.hpp"
+#include "signals.hpp"
 
 namespace py = pybind11;
 
@@ -33,6 +37,19 @@ void without_gil(F&& work) {
     s = work();
   }
   check(s);
+}
+
+// Runs `work(cancel)` without the GIL, `cancel` set by SIGINT, SIGTERM or SIGHUP when called
+// from the main thread, and raises as StopOnSignals::finish does with the GIL again.
+template <class F>
+void interruptible(std::string_view what, F&& work) {
+  StopOnSignals stop;
+  Status s;
+  {
+    const py::gil_scoped_release release;
+    s = work(stop.flag());
+  }
+  stop.finish(s, what);
 }
 
 bake::Formats parse_formats(const std::vector<std::string>& names) {
@@ -79,7 +96,10 @@ void bake_frames(const py::object& preset, const std::filesystem::path& out,
     }
     params.shard = s;
   }
-  without_gil([&] { return bake::bake(config, backend, params); });
+  interruptible("bake", [&](const std::atomic<bool>* cancel) {
+    params.cancel = cancel;
+    return bake::bake(config, backend, params);
+  });
 }
 
 py::dict stats_dict(const SurfaceStats& s) {
@@ -130,7 +150,9 @@ void bind_bake(py::module_& m) {
       "merge",
       [](const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
         if (out.empty()) raise(invalid_argument("--merge needs --out DIR"));
-        without_gil([&] { return bake::merge(shards, {.output_dir = out}); });
+        interruptible("merge", [&](const std::atomic<bool>* cancel) {
+          return bake::merge(shards, {.output_dir = out, .cancel = cancel});
+        });
       },
       py::arg("shards"), py::arg("out"),
       "Joins the folders of a sharded bake into `out`, byte for byte the one-machine bake; "
