@@ -1,22 +1,27 @@
 // ocean.bake, ocean.merge, ocean.shard_frames and ocean.surface_stats: ocean/bake.hpp and
 // ocean/statistics.hpp with the GIL released while they run, their arguments checked as
-// `ocean bake` and `ocean stats` check their flags.
+// `ocean bake` and `ocean stats` check their flags; bake and merge stop on SIGINT, SIGTERM and
+// SIGHUP (signals.hpp).
 #include "ocean/bake.hpp"
 
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <atomic>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "bindings.hpp"
 #include "errors.hpp"
+#include "integers.hpp"
 #include "ocean/statistics.hpp"
 #include "ocean/task_runner.hpp"
 #include "options.hpp"
+#include "signals.hpp"
 
 namespace py = pybind11;
 
@@ -32,6 +37,19 @@ void without_gil(F&& work) {
     s = work();
   }
   check(s);
+}
+
+// Runs `work(cancel)` without the GIL, `cancel` set by SIGINT, SIGTERM or SIGHUP when called
+// from the main thread, and raises as StopOnSignals::finish does with the GIL again.
+template <class F>
+void interruptible(std::string_view what, F&& work) {
+  StopOnSignals stop;
+  Status s;
+  {
+    const py::gil_scoped_release release;
+    s = work(stop.flag());
+  }
+  stop.finish(s, what);
 }
 
 bake::Formats parse_formats(const std::vector<std::string>& names) {
@@ -52,20 +70,21 @@ bake::Formats parse_formats(const std::vector<std::string>& names) {
   return f;
 }
 
-void bake_frames(const py::object& preset, const std::filesystem::path& out, long long frames,
-                 double fps, double time_s, const std::vector<std::string>& formats,
-                 const std::string& backend, const std::optional<std::string>& shard) {
+void bake_frames(const py::object& preset, const std::filesystem::path& out,
+                 const Integer& frame_arg, double fps, double time_s,
+                 const std::vector<std::string>& formats, const std::string& backend,
+                 const std::optional<std::string>& shard) {
   constexpr cli::NumberOption<double> kFps{
       .flag = "--fps", .accept = cli::Accept::in_range, .lo = 1e-3, .hi = 1e4};
   constexpr cli::NumberOption<double> kTime{.flag = "--time", .accept = cli::Accept::finite};
   constexpr cli::NumberOption<double> kFrames{
-      .flag = "--frames", .accept = cli::Accept::integer_in_range, .lo = 1.0, .hi = 1e6};
+      .flag = "--frames", .lo = 1.0, .hi = static_cast<double>(bake::kMaxFrames)};
   if (out.empty()) raise(invalid_argument("bake needs --out DIR"));
   bake::BakeParams params{.output_dir = out, .formats = parse_formats(formats)};
   const SimulationConfig config = config_of(preset);
   check(cli::check(kFps, fps, format_number(fps)));
   check(cli::check(kTime, time_s, format_number(time_s)));
-  check(cli::check(kFrames, static_cast<double>(frames), std::to_string(frames)));
+  const long long frames = in_range(frame_arg, kFrames);
   params.frame_count = frames;
   params.fps = fps;
   params.start_time_s = time_s;
@@ -77,7 +96,10 @@ void bake_frames(const py::object& preset, const std::filesystem::path& out, lon
     }
     params.shard = s;
   }
-  without_gil([&] { return bake::bake(config, backend, params); });
+  interruptible("bake", [&](const std::atomic<bool>* cancel) {
+    params.cancel = cancel;
+    return bake::bake(config, backend, params);
+  });
 }
 
 py::dict stats_dict(const SurfaceStats& s) {
@@ -128,27 +150,39 @@ void bind_bake(py::module_& m) {
       "merge",
       [](const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
         if (out.empty()) raise(invalid_argument("--merge needs --out DIR"));
-        without_gil([&] { return bake::merge(shards, {.output_dir = out}); });
+        interruptible("merge", [&](const std::atomic<bool>* cancel) {
+          return bake::merge(shards, {.output_dir = out, .cancel = cancel});
+        });
       },
       py::arg("shards"), py::arg("out"),
       "Joins the folders of a sharded bake into `out`, byte for byte the one-machine bake; "
       "ValueError names a missing, repeated or mismatched shard.");
   m.def(
       "shard_frames",
-      [](long long frames, long long index, long long count) {
-        if (!(count >= 1 && count <= frames && index >= 0 && index < count)) {
-          raise(invalid_argument("shard " + std::to_string(index) + "/" + std::to_string(count) +
-                                 " of " + std::to_string(frames) +
-                                 " frames: must have 1 <= count <= frames and 0 <= index < count"));
-        }
+      [](const Integer& frame_arg, const Integer& index_arg, const Integer& count_arg) {
+        // The ranges of bake::shard_frames (within them index·frames cannot overflow).
+        const long long frames = in_range(
+            frame_arg, {.flag = "frames", .lo = 1, .hi = static_cast<double>(bake::kMaxFrames)});
+        const long long count =
+            in_range(count_arg, {.flag = "count", .lo = 1, .hi = static_cast<double>(frames)});
+        const long long index =
+            in_range(index_arg, {.flag = "index", .lo = 0, .hi = static_cast<double>(count - 1)});
         const bake::FrameRange r = bake::shard_frames(frames, {index, count});
         return std::pair(r.first, r.end);
       },
       py::arg("frames"), py::arg("index"), py::arg("count"),
-      "The frames [first, end) that shard index of count writes in a bake of `frames` frames.");
+      "The frames [first, end) that shard index of count writes in a bake of `frames` frames: "
+      "frames 1 to 1000000, count 1 to frames, index 0 to count - 1 (ValueError otherwise).");
   m.def(
       "surface_stats",
-      [](const py::object& preset, int seeds, double time_s, int threads) {
+      [](const py::object& preset, const Integer& seed_arg, double time_s,
+         const Integer& thread_arg) {
+        // As `ocean stats --seeds` and --time.
+        constexpr cli::NumberOption<double> kSeeds{.flag = "--seeds", .lo = 1, .hi = 1e5};
+        constexpr cli::NumberOption<double> kTime{.flag = "--time", .accept = cli::Accept::finite};
+        const auto seeds = static_cast<int>(in_range(seed_arg, kSeeds));
+        check(cli::check(kTime, time_s, format_number(time_s)));
+        const auto threads = static_cast<int>(in_range(thread_arg, kThreads));
         const SimulationConfig config = config_of(preset);
         std::optional<SurfaceStats> stats;
         without_gil([&]() -> Status {
@@ -162,8 +196,9 @@ void bind_bake(py::module_& m) {
       },
       py::arg("preset") = py::none(), py::kw_only(), py::arg("seeds") = 4, py::arg("time") = 0.0,
       py::arg("threads") = 0,
-      "Statistics of the simulated surface over `seeds` realisations (what `ocean stats` "
-      "prints): measured and spectral Hs, height moments, slopes, Jacobian and foam.");
+      "Statistics of the simulated surface over `seeds` realisations, 1 to 100000 (what `ocean "
+      "stats` prints): measured and spectral Hs, height moments, slopes, Jacobian and foam. "
+      "threads: 0 (all) to 256.");
 }
 
 }  // namespace ocean::python

@@ -10,12 +10,19 @@
 
 #include "bindings.hpp"
 #include "errors.hpp"
+#include "integers.hpp"
 #include "ocean/io.hpp"
 
 namespace py = pybind11;
 
 namespace ocean::python {
 namespace {
+
+// Preset.to_json's indent: 0 to 64 spaces a level, negative for one line. nlohmann::json 3.11.2
+// keeps 512 spaces of indentation and doubles them once per level when a level needs more, so an
+// indent above 512 reads past them; 64 is more than any reader needs.
+constexpr cli::NumberOption<double> kIndent{
+    .flag = "indent", .lo = 0, .hi = 64, .says = "an integer in [0, 64], or negative for one line"};
 
 // Sets every leaf of a JSON object (a value that is not an object) at its dotted key path.
 void set_leaves(preset::Document& doc, const nlohmann::json& node, const std::string& prefix) {
@@ -93,10 +100,13 @@ void bind_preset(py::module_& m) {
           "Raises ValueError when the layers do not make a valid configuration.")
       .def(
           "to_json",
-          [](const preset::Document& doc, int indent) {
-            return preset::to_json(take(doc.config()), indent);
+          [](const preset::Document& doc, const Integer& indent) {
+            const int spaces = indent.value < 0 ? -1 : static_cast<int>(in_range(indent, kIndent));
+            return preset::to_json(take(doc.config()), spaces);
           },
-          py::arg("indent") = 2, "The preset document: every key, in a fixed order.")
+          py::arg("indent") = 2,
+          "The preset document: every key, in a fixed order; indent spaces a level, 0 to 64 "
+          "(ValueError beyond), a negative indent one line.")
       .def(
           "save",
           [](const preset::Document& doc, const std::string& path) {

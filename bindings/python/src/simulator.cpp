@@ -19,6 +19,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "errors.hpp"
+#include "integers.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/task_runner.hpp"
 
@@ -97,15 +98,12 @@ class PySimulator {
   }
 
   // The arrays of one cascade of the published frame, views sharing one FrameView base.
-  py::dict fields(int cascade) {
+  py::dict fields(const Integer& cascade) {
     const std::shared_lock lock(state_->mutex);
     const Frame& f = state_->sim->frame();
-    if (cascade < 0 || static_cast<std::size_t>(cascade) >= f.cascades.size()) {
-      raise(invalid_argument("cascade = " + std::to_string(cascade) +
-                             " is out of range: must be 0 to " +
-                             std::to_string(f.cascades.size() - 1)));
-    }
-    const CascadeFrame& c = f.cascades[static_cast<std::size_t>(cascade)];
+    const cli::NumberOption<double> option{
+        .flag = "cascade", .lo = 0, .hi = static_cast<double>(f.cascades.size()) - 1};
+    const CascadeFrame& c = f.cascades[static_cast<std::size_t>(in_range(cascade, option))];
     const py::object base =
         py::cast(new FrameView(state_, &f), py::return_value_policy::take_ownership);
     const auto n = static_cast<py::ssize_t>(c.resolution);
@@ -227,13 +225,15 @@ void bind_simulator(py::module_& m) {
                         "frame from being overwritten while any array of it exists.");
   py::class_<PySimulator>(m, "Simulator",
                           "A simulation of the preset's sea on a backend ('cpu', 'vulkan').")
-      .def(py::init([](const py::object& preset, const std::string& backend, int threads) {
-             return std::make_unique<PySimulator>(config_of(preset), backend, threads);
-           }),
+      .def(py::init(
+               [](const py::object& preset, const std::string& backend, const Integer& threads) {
+                 const auto n = static_cast<int>(in_range(threads, kThreads));
+                 return std::make_unique<PySimulator>(config_of(preset), backend, n);
+               }),
            py::arg("preset") = py::none(), py::kw_only(), py::arg("backend") = "cpu",
            py::arg("threads") = 0,
            "preset: an ocean.Preset, a built-in name or a preset file; None = the defaults. "
-           "threads: oneTBB threads, 0 = all.")
+           "threads: oneTBB threads, 0 (all) to 256.")
       .def("step", &PySimulator::step, py::arg("time_s"),
            "Computes and publishes the frame at time_s (GIL released).")
       .def("kick", &PySimulator::kick, py::arg("time_s"),

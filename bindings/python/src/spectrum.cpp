@@ -9,6 +9,7 @@
 
 #include <pybind11/stl.h>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <variant>
@@ -128,6 +129,9 @@ DoubleArray spreading(const DoubleArray& theta, const std::string& model, Option
   if (!m.ok()) raise(Status(m.status().code(), "--model: " + m.status().message()));
   SpreadingParams params{.model = m.value()};
   params.counter_wave_suppression = !symmetric;
+  // NaN is no number to the tool's parser (cli::parse_number), which refuses it as not finite.
+  if (s && std::isnan(*s)) check(require_finite("--s", *s));
+  if (alpha && std::isnan(*alpha)) check(require_finite("--alpha", *alpha));
   if (s) params.s = *s;
   if (alpha) params.alpha = *alpha;
   constexpr cli::NumberOption<double> kOmegaRatio{.flag = "--omega-ratio",
