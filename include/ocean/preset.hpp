@@ -50,8 +50,12 @@ struct PictureSettings {
   std::optional<std::array<double, 2>> far_field_range_m;
 };
 
+/// The most spaces a level to_json indents by; a larger indent is written as this one.
+inline constexpr int kMaxPresetIndent = 64;
+
 /// The preset document of `config`: every key, in a fixed order. `indent` < 0 writes one line,
-/// otherwise that many spaces per level. Numbers round-trip exactly through from_json.
+/// otherwise that many spaces per level, at most kMaxPresetIndent (nlohmann::json reads past its
+/// indentation buffer beyond 512). Numbers round-trip exactly through from_json.
 std::string to_json(const SimulationConfig& config, int indent = -1);
 
 /// Reads a preset document and validates the configuration (validate() and SeaState::make).

@@ -81,7 +81,12 @@ class TaskRunner {
 
 /// Runs everything on the calling thread, in order; its async slot runs jobs inline in kick().
 std::unique_ptr<TaskRunner> make_serial_runner();
-/// oneTBB work stealing with at most max_threads threads (0 = all hardware threads). Its async
+/// The most threads a runner takes: what a caller asks beyond it is clamped to it (oneTBB fails
+/// on an arena of 10^9 threads).
+inline constexpr int kMaxRunnerThreads = 256;
+
+/// oneTBB work stealing with at most max_threads threads (0 or negative = all hardware threads,
+/// above kMaxRunnerThreads that many). Its async
 /// slot runs a job as a oneTBB task (a tbb::task_group) on a worker thread, concurrently with the
 /// caller; the job's parallel loops run in the runner's arena.
 std::unique_ptr<TaskRunner> make_tbb_runner(int max_threads = 0);

@@ -65,7 +65,7 @@ class ReadyRunner final : public TaskRunner {
                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
         spin_(std::chrono::duration_cast<Clock::duration>(
             std::chrono::duration<double, std::micro>(params.spin_us))) {
-    assert(params.threads >= 0 && params.threads <= 256);
+    assert(params.threads >= 0 && params.threads <= kMaxRunnerThreads);
     assert(params.spin_us >= 0.0 && params.spin_us <= 1e6);
     workers_.reserve(static_cast<std::size_t>(threads_ - 1));
     for (int i = 1; i < threads_; ++i) workers_.emplace_back([this] { work(); });

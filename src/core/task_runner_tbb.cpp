@@ -30,7 +30,8 @@ class TbbSlot final : public AsyncSlot {
 class TbbRunner final : public TaskRunner {
  public:
   explicit TbbRunner(int max_threads)
-      : arena_(max_threads > 0 ? max_threads : tbb::task_arena::automatic) {}
+      : arena_(max_threads > 0 ? std::min(max_threads, kMaxRunnerThreads)
+                               : tbb::task_arena::automatic) {}
   void parallel_for(std::size_t n, std::size_t grain,
                     FunctionRef<void(std::size_t, std::size_t)> body) override {
     if (n == 0) return;

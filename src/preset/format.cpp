@@ -1,4 +1,5 @@
 // The preset format: SimulationConfig ⇄ JSON document (see ocean/preset.hpp).
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -276,7 +277,7 @@ Parsed parse_bounded(std::string_view text, int max_depth) {
 }  // namespace detail
 
 std::string to_json(const SimulationConfig& config, int indent) {
-  return detail::to_value(config).dump(indent);
+  return detail::to_value(config).dump(std::min(indent, kMaxPresetIndent));
 }
 
 Result<SimulationConfig> from_json(std::string_view text) {

@@ -215,4 +215,17 @@ TEST(TaskRunner, EngineRunnersPlugInTheirOwnAsyncJobs) {
   EXPECT_EQ(runs, 1);
 }
 
+// oneTBB fails on an arena of 10^9 threads: a request beyond kMaxRunnerThreads is clamped, a
+// negative one means every hardware thread, and the runner still runs a loop.
+TEST(TbbRunner, ThreadCountsOutsideTheRangeAreClamped) {
+  const auto huge = ocean::make_tbb_runner(1'000'000'000);
+  EXPECT_LE(huge->concurrency(), ocean::kMaxRunnerThreads);
+  EXPECT_EQ(ocean::make_tbb_runner(-5)->concurrency(), ocean::make_tbb_runner(0)->concurrency());
+  std::atomic<int> sum{0};
+  huge->parallel_for(100, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) sum += static_cast<int>(i);
+  });
+  EXPECT_EQ(sum.load(), 4950);
+}
+
 }  // namespace

@@ -176,4 +176,18 @@ TEST(PresetBounds, MessagesEchoExcerptsOfTheUsersText) {
   EXPECT_NE(bell.message().find("calm\\x07"), std::string::npos) << bell.message();
 }
 
+// nlohmann::json keeps 512 spaces of indentation: an indent above that read past them (a crash
+// at 100000). The indent is held to kMaxPresetIndent, and what is written still parses back.
+TEST(PresetBounds, AnIndentBeyondTheLimitIsWrittenAsTheLimit) {
+  const ocean::SimulationConfig config = ocean::SimulationConfig{};
+  const std::string at_limit = preset::to_json(config, ocean::preset::kMaxPresetIndent);
+  EXPECT_EQ(preset::to_json(config, 100000), at_limit);
+  EXPECT_EQ(preset::to_json(config, 1 << 30), at_limit);
+  EXPECT_NE(at_limit.find(std::string(ocean::preset::kMaxPresetIndent, ' ') + "\""),
+            std::string::npos);
+  const auto back = preset::from_json(at_limit);
+  ASSERT_TRUE(back.ok()) << back.status().message();
+  EXPECT_EQ(preset::to_json(back.value()), preset::to_json(config));
+}
+
 }  // namespace
