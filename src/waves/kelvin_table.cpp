@@ -26,6 +26,7 @@
 #include <numbers>
 
 #include "ocean/fft.hpp"
+#include "ocean/waves.hpp"
 
 namespace ocean::waves::detail {
 namespace {
@@ -67,7 +68,9 @@ std::vector<Mode> modes(const KelvinTableSpec& spec, double h, int m_count) {
     const double sec = std::sqrt(1.0 + u2);
     const double k = k0 * (1.0 + u2);
     const double ka2 = k * a * k * a;
-    const double amplitude = ka2 / std::pow(1.0 + ka2, 1.5);  // (k·a)²·p̂(k)/p̂(0)  (W.4)
+    // a²·(k_s² + β²·m²) = (k·a)²·(cos²θ + β²·sin²θ), cos²θ = 1/(1 + u²)
+    const double kq2 = ka2 * (1.0 + kWakePressureAspect * kWakePressureAspect * u2) / (1.0 + u2);
+    const double amplitude = ka2 / std::pow(1.0 + kq2, 1.5);  // (k·a)²·p̂(k)/p̂(0)  (W.4)
     const double taper = k <= 0.5 * k_cut ? 1.0
                          : k >= k_cut     ? 0.0
                                           : 0.5 + 0.5 * std::cos(kPi * (2.0 * k / k_cut - 1.0));
