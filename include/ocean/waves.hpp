@@ -336,7 +336,8 @@ class LocalLayer {
   /// Evaluates every cell at time t (displacement_at at the cell centres), sizing `out`.
   void evaluate(double time_s, LocalFrame& out) const;
   /// Warnings, one line each, for what will not show at time t: an object outside the area, a
-  /// wake whose waves are too short for the grid.
+  /// wake whose waves are too short for the grid (left out), or whose cusp waves are (under 6
+  /// cells: weakened by the grid's taper, W.5, so the wake looks narrower than Kelvin's angle).
   [[nodiscard]] std::vector<std::string> warnings(double time_s) const;
 
   struct Impl;
