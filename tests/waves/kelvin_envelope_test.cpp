@@ -33,7 +33,7 @@ constexpr double kEnvG = 9.81;
 constexpr double kEnvHull = 10.0;  // L, m
 const double kKelvinDeg = std::asin(1.0 / 3.0) * 180.0 / kEnvPi;
 
-double degrees(double rad) { return rad * 180.0 / kEnvPi; }
+double envelope_degrees(double rad) { return rad * 180.0 / kEnvPi; }
 
 // In-place radix-2 DFT in double precision, sign −1 (forward) or +1 (inverse, unnormalised).
 void envelope_fft(std::vector<std::complex<double>>& a, int sign) {
@@ -129,7 +129,7 @@ std::vector<double> envelope_across(const EnvelopeWake& w, int row, int cols) {
   return out;
 }
 
-struct Edge {
+struct EnvelopeEdge {
   double s_m = 0.0;
   double edge_deg = 0.0;  ///< outermost angle where the envelope is half its maximum
   double peak_deg = 0.0;  ///< angle of the maximum
@@ -137,7 +137,7 @@ struct Edge {
 
 // Across the track at row `row`: the envelope's maximum over ζ ≥ 0 and the outermost ζ where it is
 // half of that, interpolated linearly between the nodes either side.
-Edge edge_at(const EnvelopeWake& w, int row, int cols) {
+EnvelopeEdge edge_at(const EnvelopeWake& w, int row, int cols) {
   const std::vector<double> env = envelope_across(w, row, cols);
   std::size_t peak = 0;
   for (std::size_t j = 1; j < env.size(); ++j)
@@ -150,8 +150,8 @@ Edge edge_at(const EnvelopeWake& w, int row, int cols) {
   if (last + 1 < env.size()) zeta += (env[last] - half) / (env[last] - env[last + 1]);
   const double s = row * w.cell;
   return {.s_m = s,
-          .edge_deg = degrees(std::atan2(zeta * w.cell, s)),
-          .peak_deg = degrees(std::atan2(static_cast<double>(peak) * w.cell, s))};
+          .edge_deg = envelope_degrees(std::atan2(zeta * w.cell, s)),
+          .peak_deg = envelope_degrees(std::atan2(static_cast<double>(peak) * w.cell, s))};
 }
 
 // Ai(x) for x ≥ 0 from the modified Bessel function (DLMF 9.6.1): Ai(x) = (1/π)·√(x/3)·K_{1/3}(ξ),
@@ -167,7 +167,7 @@ double airy_ai(double x) {
 // at X½ > 0. The angle φ of a given X.
 double cusp_angle_deg(double k0_s, double x) {
   const double scale = 2.0 * std::numbers::sqrt2 / std::cbrt(3.0);
-  return degrees(
+  return envelope_degrees(
       std::atan(1.0 / (2.0 * std::numbers::sqrt2) + x / (scale * std::pow(k0_s, 2.0 / 3.0))));
 }
 constexpr double kAiryPeakX = -1.0187929716;
@@ -192,12 +192,12 @@ struct EnvelopeCase {
   int resolution;
 };
 
-std::vector<Edge> measure(const EnvelopeCase& c) {
+std::vector<EnvelopeEdge> measure_edges(const EnvelopeCase& c) {
   const EnvelopeWake w = envelope_wake(c.froude, c.size_hulls * kEnvHull, c.resolution);
   if (w.layer == nullptr) return {};
   const double wavelength = 2.0 * kEnvPi / w.k0();
   EXPECT_GE(wavelength / w.cell, 10.5) << "the cusp waves need 7 cells";
-  std::vector<Edge> out;
+  std::vector<EnvelopeEdge> out;
   for (double behind : c.hulls_behind) {
     // Out to 22.8° (tan = 0.42), beyond the half maximum at every distance measured.
     const int cols = static_cast<int>(std::ceil(0.42 * behind * kEnvHull / w.cell)) + 2;
@@ -226,11 +226,11 @@ TEST(KelvinEnvelope, OuterHalfMaximumFollowsKelvinsAngle) {
   const double half_x = airy_half_x();
   std::printf("  Fr  s/L  half-max edge  minus Kelvin  point source (W.18)  largest  Airy max\n");
   for (const EnvelopeCase& c : cases) {
-    const std::vector<Edge> edges = measure(c);
+    const std::vector<EnvelopeEdge> edges = measure_edges(c);
     ASSERT_EQ(edges.size(), c.hulls_behind.size());
     const double k0 = 1.0 / (c.froude * c.froude * kEnvHull);  // g/U²
     for (std::size_t i = 0; i < edges.size(); ++i) {
-      const Edge& e = edges[i];
+      const EnvelopeEdge& e = edges[i];
       const double ideal = cusp_angle_deg(k0 * e.s_m, half_x);
       const double crest = cusp_angle_deg(k0 * e.s_m, kAiryPeakX);
       std::printf("  %.1f  %3.0f  %8.2f      %+8.2f     %10.2f         %8.2f  %8.2f\n", c.froude,
@@ -333,7 +333,7 @@ TEST(KelvinEnvelope, NarrowsAtHighFroudeNumbers) {
     std::vector<double> peaks, edges;
     for (double behind = 1.5; behind <= 5.0; behind += 0.25) {
       const int row = static_cast<int>(std::lround(behind * wavelength / w.cell));
-      const Edge e = edge_at(w, row, static_cast<int>(std::ceil(0.42 * row)) + 2);
+      const EnvelopeEdge e = edge_at(w, row, static_cast<int>(std::ceil(0.42 * row)) + 2);
       peaks.push_back(e.peak_deg);
       edges.push_back(e.edge_deg);
     }
@@ -341,7 +341,7 @@ TEST(KelvinEnvelope, NarrowsAtHighFroudeNumbers) {
       std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2), v.end());
       return v[v.size() / 2];
     };
-    const double law = degrees(1.0 / (2.0 * std::sqrt(2.0 * kEnvPi) * froude));
+    const double law = envelope_degrees(1.0 / (2.0 * std::sqrt(2.0 * kEnvPi) * froude));
     std::printf(
         "Fr %.1f: largest amplitude at %.2f deg (Rabaud & Moisy %.2f), half maximum at "
         "%.2f deg\n",
