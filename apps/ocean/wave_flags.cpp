@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 #include "options.hpp"
@@ -131,6 +132,79 @@ Result<waves::PlacedMap> parse_placed_map(const std::string& flag, const std::st
                           .size_m = n[2]};
 }
 
+// The wake's area suggestion (W.19): the steady pattern shown this many transverse wavelengths
+// behind its object (at least kSuggestedHulls hull lengths), on cells of a tenth of the
+// wavelength (its cusp waves, 2/3 of it, then keep 6.7 cells, clear of the table's taper, W.5).
+constexpr double kSuggestedWavelengths = 12.0;
+constexpr double kSuggestedHulls = 5.0;
+constexpr double kSuggestedCellsPerWavelength = 10.0;
+
+// A square holding each wake's object at time t with its wake behind it — the object a fifth of
+// the side in from the front, its track along the middle, so the 19.5° wedge stays clear of the
+// soft edge — and each waveform's map, turned any way. Numbers rounded to two or three
+// significant digits.
+struct SuggestedArea {
+  double x0 = 0.0, z0 = 0.0, size = 0.0;
+  double shortest_wavelength_m = 0.0;  ///< of the wakes' transverse waves; +inf without wakes
+};
+SuggestedArea suggested_area(const std::vector<waves::KelvinWake>& wakes,
+                             const std::vector<waves::Waveform>& forms, double time_s) {
+  double x0 = std::numeric_limits<double>::infinity(), z0 = x0, x1 = -x0, z1 = -x0;
+  const auto hold = [&](double x, double z, double half) {
+    x0 = std::min(x0, x - half), z0 = std::min(z0, z - half);
+    x1 = std::max(x1, x + half), z1 = std::max(z1, z + half);
+  };
+  constexpr double kG = 9.81;  // the wakes' gravity (LayerParams)
+  SuggestedArea out{.shortest_wavelength_m = std::numeric_limits<double>::infinity()};
+  for (const waves::KelvinWake& w : wakes) {
+    const waves::WakePose p = waves::pose_at(w, time_s);
+    const double wavelength = 2.0 * std::numbers::pi * p.speed_mps * p.speed_mps / kG;
+    out.shortest_wavelength_m = std::min(out.shortest_wavelength_m, wavelength);
+    const double side =
+        1.25 * std::max(kSuggestedWavelengths * wavelength, kSuggestedHulls * w.hull_length_m);
+    const double back = 0.3 * side;  // from the object to the square's centre
+    hold(p.x_m - back * std::cos(p.heading_rad), p.z_m - back * std::sin(p.heading_rad),
+         0.5 * side);
+  }
+  for (const waves::Waveform& w : forms) {
+    const waves::HeightMap& m = w.frames.empty() ? *w.map : *w.frames.front();
+    const double aspect = static_cast<double>(m.rows) / m.cols;
+    hold(w.x_m, w.z_m, 0.5 * w.size_m * std::sqrt(1.0 + aspect * aspect));
+  }
+  const double size = std::max(x1 - x0, z1 - z0);
+  const double unit = std::pow(10.0, std::floor(std::log10(size)) - 1.0);
+  out.x0 = std::floor((0.5 * (x0 + x1 - size)) / unit) * unit;
+  out.z0 = std::floor((0.5 * (z0 + z1 - size)) / unit) * unit;
+  out.size = std::ceil((size + unit) / unit) * unit;
+  return out;
+}
+
+// The error for wakes or waveforms without --local-area: it names a square that holds them
+// (suggested_area) and, where the grid of `resolution` cells would give the shortest transverse
+// wavelength fewer than 10 cells, a finer --local-resolution (W.19).
+Status area_needed(const std::vector<waves::KelvinWake>& wakes,
+                   const std::vector<waves::Waveform>& forms, double time_s, int resolution) {
+  const SuggestedArea a = suggested_area(wakes, forms, time_s);
+  std::string text =
+      "--kelvin-wake and --waveform need --local-area X0,Z0,SIZE_M, the square the "
+      "local layer covers: --local-area " +
+      format_number(a.x0) + "," + format_number(a.z0) + "," + format_number(a.size);
+  if (wakes.empty()) return invalid_argument(text + " holds the waveforms");
+  const double wanted = a.size / (a.shortest_wavelength_m / kSuggestedCellsPerWavelength);
+  int n = resolution;
+  if (wanted > resolution) {
+    n = std::min(64 * static_cast<int>(std::ceil(wanted / 64.0)), waves::kMaxLocalResolution);
+    text += " --local-resolution " + std::to_string(n);
+  }
+  const double cells = std::round(10.0 * a.shortest_wavelength_m * n / a.size) / 10.0;
+  text += " holds " + std::string(wakes.size() == 1 ? "the wake's object" : "the wakes' objects") +
+          " at t = " + format_number(time_s) + " s and " + format_number(kSuggestedWavelengths) +
+          " transverse wavelengths (2πU²/g) of " + (wakes.size() == 1 ? "its wake" : "each wake") +
+          " behind, with " + format_number(cells) + " cells per transverse wavelength" +
+          (wakes.size() == 1 ? "" : " of the slowest");
+  return invalid_argument(text + (forms.empty() ? "" : ", and the waveforms"));
+}
+
 }  // namespace
 
 void add_wave_flags(CLI::App& command, WaveFlags& f) {
@@ -219,22 +293,14 @@ DampingSamples sample_damping(const waves::Damping& damping, int resolution, std
   return out;
 }
 
-Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, double choppiness) {
-  if (f.local_area.empty()) {
-    if (!f.wakes.empty() || !f.waveforms.empty())
-      return invalid_argument("--kelvin-wake and --waveform need --local-area X0,Z0,SIZE_M");
+Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, double choppiness,
+                                                            double time_s) {
+  if (f.local_area.empty() && f.wakes.empty() && f.waveforms.empty())
     return std::shared_ptr<const waves::LocalLayer>();
-  }
   waves::LayerParams p;
   p.choppiness = choppiness;
-  Result<std::vector<double>> area = numbers("--local-area", f.local_area, 3, 3, "X0,Z0,SIZE_M");
-  if (!area.ok()) return area.status();
   Result<int> n = parse(kLocalResolution, f.local_resolution);
   if (!n.ok()) return n.status();
-  p.area = {.origin_m = {area.value()[0], area.value()[1]},
-            .size_m = area.value()[2],
-            .resolution = n.value()};
-  if (Status s = waves::validate(p.area); !s.ok()) return flagged("--local-area", f.local_area, s);
   for (const std::string& text : f.wakes) {
     Result<waves::KelvinWake> w = parse_wake(text);
     if (!w.ok()) return w.status();
@@ -245,6 +311,13 @@ Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, 
     if (!w.ok()) return w.status();
     p.waveforms.push_back(std::move(w).value());
   }
+  if (f.local_area.empty()) return area_needed(p.wakes, p.waveforms, time_s, n.value());
+  Result<std::vector<double>> area = numbers("--local-area", f.local_area, 3, 3, "X0,Z0,SIZE_M");
+  if (!area.ok()) return area.status();
+  p.area = {.origin_m = {area.value()[0], area.value()[1]},
+            .size_m = area.value()[2],
+            .resolution = n.value()};
+  if (Status s = waves::validate(p.area); !s.ok()) return flagged("--local-area", f.local_area, s);
   Result<std::unique_ptr<waves::LocalLayer>> layer = waves::LocalLayer::make(std::move(p));
   if (!layer.ok()) return layer.status();
   return std::shared_ptr<const waves::LocalLayer>(std::move(layer).value());

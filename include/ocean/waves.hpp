@@ -35,6 +35,12 @@ inline constexpr int kMaxLocalResolution = 4096;
 /// Default peak height of a wake as a fraction of its hull length (0.02·L: 0.2 m for a 10 m
 /// boat, 2 m for a 100 m ship — of the order of observed ship-wave heights near the hull).
 inline constexpr double kDefaultPeakHeightPerLength = 0.02;
+/// The width of a wake's pressure across the track over its length along it (W.4), β: a hull is
+/// slender, and a pressure as wide as it is long moves the cusp lines outwards by its own width,
+/// which widens the wake near the object. 0.35 keeps the envelope's edge within 0.3° of a point
+/// disturbance's from 2 hull lengths behind at Fr = 0.1–0.4 while the wake still narrows at high
+/// Froude numbers as Rabaud & Moisy (2013) observe (W.11, W.18).
+inline constexpr double kWakePressureAspect = 0.35;
 
 /// The square world area the layer covers and its grid.
 struct LocalArea {
@@ -61,9 +67,11 @@ struct Waypoint {
 };
 
 /// The steady ship-wave pattern of an object moving over deep, calm water (W.1–W.7): the linear
-/// wake of a pressure disturbance of size hull_length_m (an axisymmetric cone-tipped pressure
-/// p ∝ e^{−r/a}, W.4), Kelvin's 19.47° cusps and transverse waves of wavelength 2πU²/g at low
-/// Froude numbers Fr = U/√(gL), narrower at high ones (Rabaud & Moisy 2013).
+/// wake of a pressure disturbance of length hull_length_m (a slender cone-tipped pressure
+/// p ∝ e^{−ρ/a}, ρ² = s² + (ζ/β)², β = kWakePressureAspect, W.4), centred on the object's
+/// position: Kelvin's 19.47° cusps, the amplitude largest along them and falling to half just
+/// outside (W.18), and transverse waves of wavelength 2πU²/g at low Froude numbers
+/// Fr = U/√(gL); narrower at Fr ≳ 0.5 (Rabaud & Moisy 2013, W.11).
 struct KelvinWake {
   double x_m = 0.0;             ///< position at time 0 (no path), m
   double z_m = 0.0;             ///< position at time 0 (no path), m
@@ -328,7 +336,8 @@ class LocalLayer {
   /// Evaluates every cell at time t (displacement_at at the cell centres), sizing `out`.
   void evaluate(double time_s, LocalFrame& out) const;
   /// Warnings, one line each, for what will not show at time t: an object outside the area, a
-  /// wake whose waves are too short for the grid.
+  /// wake whose waves are too short for the grid (left out), or whose cusp waves are (under 6
+  /// cells: weakened by the grid's taper, W.5, so the wake looks narrower than Kelvin's angle).
   [[nodiscard]] std::vector<std::string> warnings(double time_s) const;
 
   struct Impl;

@@ -22,9 +22,11 @@
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <complex>
 #include <numbers>
 
 #include "ocean/fft.hpp"
+#include "ocean/waves.hpp"
 
 namespace ocean::waves::detail {
 namespace {
@@ -66,7 +68,9 @@ std::vector<Mode> modes(const KelvinTableSpec& spec, double h, int m_count) {
     const double sec = std::sqrt(1.0 + u2);
     const double k = k0 * (1.0 + u2);
     const double ka2 = k * a * k * a;
-    const double amplitude = ka2 / std::pow(1.0 + ka2, 1.5);  // (k·a)²·p̂(k)/p̂(0)  (W.4)
+    // a²·(k_s² + β²·m²) = (k·a)²·(cos²θ + β²·sin²θ), cos²θ = 1/(1 + u²)
+    const double kq2 = ka2 * (1.0 + kWakePressureAspect * kWakePressureAspect * u2) / (1.0 + u2);
+    const double amplitude = ka2 / std::pow(1.0 + kq2, 1.5);  // (k·a)²·p̂(k)/p̂(0)  (W.4)
     const double taper = k <= 0.5 * k_cut ? 1.0
                          : k >= k_cut     ? 0.0
                                           : 0.5 + 0.5 * std::cos(kPi * (2.0 * k / k_cut - 1.0));
@@ -115,12 +119,17 @@ KelvinTable KelvinTable::make(const KelvinTableSpec& spec) {
                                                   {re.data() + m, im.data() + m},
                                                   {re.data() + 2 * m, im.data() + 2 * m}}};
   const double ramp_m = 0.5 * spec.hull_length_m, fade_m = 0.1 * spec.length_m;
+  // e^{i·k_s·s} of each mode, turned by e^{i·k_s·h} from one row to the next: the rotation's
+  // rounding grows by about 1e-16 a row, far below the table's float precision.
+  std::vector<std::complex<double>> phase(m, 1.0), turn(m);
+  for (std::size_t j = 0; j < m; ++j) turn[j] = std::polar(1.0, mode[j].k_s * h);
   double peak = 0.0;
   for (int row = 0; row < t.rows_; ++row) {
     const double s = row * h;
     for (std::size_t j = 0; j < m; ++j) {
       const Mode& q = mode[j];
-      const double c = std::cos(q.k_s * s), sn = std::sin(q.k_s * s);
+      const double c = phase[j].real(), sn = phase[j].imag();
+      phase[j] *= turn[j];
       // h̃ = w·i·e^{iψ} (W.5); D̃ = i·k̂·h̃ = −w·k̂·e^{iψ} (W.6).
       re[j] = static_cast<float>(-q.weight * sn);
       im[j] = static_cast<float>(q.weight * c);

@@ -208,6 +208,14 @@ std::vector<std::string> LocalLayer::warnings(double time_s) const {
         out.push_back(name + ": its waves (" + format_number(table.transverse_wavelength_m()) +
                       " m) are shorter than the local grid resolves (3 cells of " +
                       format_number(table.spacing_m()) + " m); it is left out");
+      } else if (table.transverse_wavelength_m() < 9.0 * table.spacing_m()) {
+        // The cusp waves, 2/3 of the transverse wavelength, fall in the taper below 6 cells (W.5).
+        out.push_back(name + ": its cusp waves (" +
+                      format_number(2.0 / 3.0 * table.transverse_wavelength_m()) +
+                      " m) are shorter than 6 cells of the local grid (" +
+                      format_number(table.spacing_m()) +
+                      " m) and are weakened: the wake looks narrower than Kelvin's 19.5°; a finer "
+                      "grid shows them");
       }
     }
   }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -214,6 +215,39 @@ TEST(WavesCli, WritingTheLayerLeavesTheSeaBitForBit) {
   EXPECT_EQ(m["local_area"]["size_m"], 80.0);
   EXPECT_EQ(m["local_area"]["resolution"], 64);
   EXPECT_TRUE(fs::exists(layered.path / "local_height_f00000.npy"));
+}
+
+// A wake without --local-area: the one-line error names a square that holds the object at the
+// query's time and 12 transverse wavelengths of its wake behind it (docs/waves.md W.19); given
+// that square, the query answers without a warning and finds the wake.
+TEST(WavesCli, QueryNamesTheAreaAWakeNeeds) {
+  const double u = 3.0, wavelength = 2 * kPi * u * u / kWavesG;  // 5.76 m
+  const std::string wake = "query --calm --kelvin-wake 30,-20,90,3,10 --time 4";
+  const auto r = ocean_test::run_cli(wake + " --at 1,1");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const std::string key = "--local-area ";
+  const std::size_t at = r.err.find(key, r.err.find(key) + 1);
+  ASSERT_NE(at, std::string::npos) << r.err;
+  double x0 = 0, z0 = 0, size = 0;
+  ASSERT_EQ(std::sscanf(r.err.c_str() + at + key.size(), "%lf,%lf,%lf", &x0, &z0, &size), 3)
+      << r.err;
+  const auto inside = [&](double x, double z, double margin) {
+    return x >= x0 + margin && x <= x0 + size - margin && z >= z0 + margin &&
+           z <= z0 + size - margin;
+  };
+  // At t = 4 s the object is at (30, −8), heading +z; its wake trails towards −z.
+  EXPECT_TRUE(inside(30.0, -8.0, 0.1 * size)) << r.err;  // clear of the soft edge
+  EXPECT_TRUE(inside(30.0, -8.0 - 10 * wavelength, 0.0)) << r.err;
+  EXPECT_TRUE(
+      inside(30.0 + std::tan(19.47 * kPi / 180) * 10 * wavelength, -8.0 - 10 * wavelength, 0.0))
+      << r.err;
+  char area[96];
+  std::snprintf(area, sizeof area, " --local-area %g,%g,%g", x0, z0, size);
+  const auto q = ocean_test::run_cli(wake + area + " --json --at 30,-12");
+  ASSERT_EQ(q.exit_code, 0) << q.err;
+  EXPECT_EQ(q.err, "");
+  EXPECT_NE(nlohmann::json::parse(q.out)["height_m"][0].get<double>(), 0.0);
 }
 
 TEST(WavesCli, BadInputIsOneLine) {

@@ -121,12 +121,14 @@ TEST(LocalSurfaceRender, PixelsCarryTheCompositedNormalAndAccumulatedFoam) {
 
   // A wake: foam in the picture where the composited surface's accumulated foam exceeds the
   // sea's, none where the layer adds none; some of it where the sum no longer folds (accumulated).
+  // Steep enough to fold over blocks of 5×5 cells (Fr = 0.38): the slender pressure's crests
+  // (docs/waves.md W.4) are narrower than an 8 m hull's at 1 m made.
   p.waveforms.clear();
   p.wakes.push_back({.x_m = 24.0,
                      .heading_deg = 180.0,
-                     .speed_mps = 4.0,
-                     .hull_length_m = 8.0,
-                     .peak_height_m = 1.0});
+                     .speed_mps = 4.5,
+                     .hull_length_m = 14.0,
+                     .peak_height_m = 1.6});
   s.simulator().set_local_layer(make_layer(p));
   ASSERT_TRUE(s.warm_up(3.0, 2.0).ok());
   ASSERT_TRUE(r.draw(view).ok());

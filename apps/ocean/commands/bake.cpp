@@ -125,7 +125,8 @@ int run_bake(const BakeOptions& o) {
         "--damping-mask and --bathymetry are not applied by bake: its tiles are periodic and a "
         "world-space map has no place on them (ocean query applies them)"));
   }
-  Result<std::shared_ptr<const waves::LocalLayer>> layer = make_layer(o.waves, c.choppiness);
+  Result<std::shared_ptr<const waves::LocalLayer>> layer =
+      make_layer(o.waves, c.choppiness, params.start_time_s);
   if (!layer.ok()) return report(layer.status());
   params.local_layer = layer.value();
   params.calm = o.waves.calm;

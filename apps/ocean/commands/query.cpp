@@ -52,7 +52,7 @@ int run_query(const QueryOptions& o) {
   Result<SimulationConfig> config = resolve_config(o.sim);
   if (!config.ok()) return report(config.status());
   Result<std::shared_ptr<const waves::LocalLayer>> layer =
-      make_layer(o.waves, config.value().choppiness);
+      make_layer(o.waves, config.value().choppiness, time.value());
   if (!layer.ok()) return report(layer.status());
   Result<std::shared_ptr<const waves::Damping>> damping = make_damping(o.waves, config.value());
   if (!damping.ok()) return report(damping.status());

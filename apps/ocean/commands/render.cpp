@@ -93,9 +93,13 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   in.scene.config = std::move(config).value();
   // The renderer uploads the displacement and the RGBA8 chain: no float normals, J or foam.
   in.scene.config.outputs = FrameOutputs::textures();
-  // The local layer: wakes and waveforms drawn over the sea (docs/rendering.md R.19).
+  Result<double> t = parse(kTime, o.time);
+  if (!t.ok()) return t.status();
+  in.time_s = t.value();
+  // The local layer: wakes and waveforms drawn over the sea (docs/rendering.md R.19). Without
+  // --local-area, make_layer names one that holds the wakes at the first frame's time (W.19).
   in.calm = o.waves.calm;
-  if (in.calm && o.waves.local_area.empty())
+  if (in.calm && o.waves.local_area.empty() && o.waves.wakes.empty() && o.waves.waveforms.empty())
     return invalid_argument("--calm draws only the local layer: give --local-area X0,Z0,SIZE_M");
   if (in.calm) {  // the sea is not drawn: simulate the smallest one
     in.scene.config.resolution = 16;
@@ -105,7 +109,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (!damping.ok()) return damping.status();
   in.damping = damping.value();
   Result<std::shared_ptr<const waves::LocalLayer>> layer =
-      make_layer(o.waves, in.scene.config.choppiness);
+      make_layer(o.waves, in.scene.config.choppiness, in.time_s);
   if (!layer.ok()) return layer.status();
   in.layer = layer.value();
   // The preset's picture settings, under the flags (--far-field-range wins).
@@ -150,9 +154,6 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
     if (!e.ok()) return e.status();
     v.shading.exposure = e.value();
   }
-  Result<double> t = parse(kTime, o.time);
-  if (!t.ok()) return t.status();
-  in.time_s = t.value();
   Result<long long> frames = parse(kFrames, o.frames);
   if (!frames.ok()) return frames.status();
   in.frames = frames.value();
