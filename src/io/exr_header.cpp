@@ -84,6 +84,9 @@ class Walk {
     if (name == "dataWindow" && type == "box2i") {
       info_.width = std::int64_t{int32_at(pos_ + 8)} - int32_at(pos_) + 1;
       info_.height = std::int64_t{int32_at(pos_ + 12)} - int32_at(pos_ + 4) + 1;
+    } else if (name == "tiles" && type == "tiledesc") {  // uint32 x size, y size, mode byte
+      info_.tile_width = static_cast<std::uint32_t>(int32_at(pos_));
+      info_.tile_height = static_cast<std::uint32_t>(int32_at(pos_ + 4));
     } else if (name == "channels" && type == "chlist") {
       info_.channels = 0;
       for (std::size_t at = pos_; bytes_[at] != '\0';

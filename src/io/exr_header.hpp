@@ -15,6 +15,8 @@ struct ExrHeaderInfo {
   std::int64_t width = 0;    ///< of the first part's data window ("dataWindow"); 0 if absent
   std::int64_t height = 0;   ///< as width
   std::size_t channels = 0;  ///< entries of the first part's channel list ("channels")
+  std::int64_t tile_width = 0;   ///< of the first part's "tiles" (tiledesc); 0 when not tiled
+  std::int64_t tile_height = 0;  ///< as tile_width
 };
 
 /// Walks the header(s) of the OpenEXR file `bytes` as OpenEXR 3.1 reads them. OpenEXR allocates an

@@ -64,12 +64,34 @@ Status check_size(const std::filesystem::path& path, std::int64_t w, std::int64_
   return Status::ok_status();
 }
 
+// OpenEXR reads a tiled file through a buffer of whole tiles: a row of tiles across the data
+// window, tile_height rows high, and one tile. A header may declare tiles of 2^31 pixels on an
+// 8×8 image; both buffers are held to the sample budget before OpenEXR sizes them.
+Status check_tiles(const std::filesystem::path& path, const ExrHeaderInfo& info) {
+  if (info.tile_width == 0 && info.tile_height == 0) return Status::ok_status();
+  const auto refuse = [&] {
+    return io_error(with_path("read", path,
+                              "tiles of " + std::to_string(info.tile_width) + "x" +
+                                  std::to_string(info.tile_height) +
+                                  " would need more than 1 GiB of samples to read"));
+  };
+  if (info.tile_width < 1 || info.tile_height < 1 || info.tile_width > kExrMaxDimension ||
+      info.tile_height > kExrMaxDimension)
+    return refuse();
+  const auto bytes_per_pixel = static_cast<std::uint64_t>(info.channels) * sizeof(float);
+  const std::uint64_t across = static_cast<std::uint64_t>(
+      std::max(info.width, info.tile_width) * info.tile_height);
+  if (across * bytes_per_pixel > kMaxSampleBytes) return refuse();
+  return Status::ok_status();
+}
+
 Status check_header(const std::filesystem::path& path) {
   std::string bytes;
   if (Status s = read_all(path, bytes); !s.ok()) return s;
   const ExrHeaderInfo info = check_exr_header(bytes);
   if (!info.problem.empty()) return io_error(with_path("read", path, info.problem));
-  return check_size(path, info.width, info.height, info.channels);
+  if (Status s = check_size(path, info.width, info.height, info.channels); !s.ok()) return s;
+  return check_tiles(path, info);
 }
 
 Result<ExrImage> read_checked(const std::filesystem::path& path) {

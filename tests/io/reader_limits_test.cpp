@@ -150,5 +150,23 @@ TEST(ExrReaderLimits, AttributesThatFitAreRead) {
   EXPECT_EQ(image.value().planes[0][0], 0.5f);
 }
 
+// OpenEXR reads tiled files through buffers of whole tiles, sized from the "tiles" attribute: a
+// tile of 4 × 67131648 pixels on an 8×8 image made it allocate 2 GiB (the library's height map
+// fuzz target; the OpenEXR fuzz target had hidden it by setting OpenEXR's own tile limit).
+TEST(ExrReaderLimits, TilesBeyondTheSampleBudgetAreRefused) {
+  TempDir dir;
+  const std::string file = one_pixel_exr(dir.path() / "a.exr");
+  const auto tiledesc = [](std::int32_t x, std::int32_t y) {
+    return int32_bytes(x) + int32_bytes(y) + std::string(1, '\0');
+  };
+  expect_refused(read_back(dir, with_attribute(file, "tiles", "tiledesc", 9, tiledesc(4, 67131648))),
+                 "tiles of 4x67131648 would need more than 1 GiB of samples to read");
+  expect_refused(read_back(dir, with_attribute(file, "tiles", "tiledesc", 9, tiledesc(0, 16))),
+                 "tiles of 0x16");
+  expect_refused(read_back(dir, with_attribute(file, "tiles", "tiledesc", 9,
+                                               tiledesc(16384, 16385))),
+                 "tiles of 16384x16385");
+}
+
 }  // namespace
 }  // namespace ocean::io
