@@ -28,22 +28,7 @@ int run(int argc, char** argv, Doing& doing) {
   CLI::App app{"ocean — spectral ocean surface simulation: spectra, dispersion, spreading"};
   app.name("ocean");
   app.require_subcommand(1);
-  const std::vector<ocean::cli::Command> commands = {
-      ocean::cli::add_spectrum_command(app),  ocean::cli::add_dispersion_command(app),
-      ocean::cli::add_spreading_command(app), ocean::cli::add_stats_command(app),
-      ocean::cli::add_bake_command(app),      ocean::cli::add_bench_command(app),
-      ocean::cli::add_info_command(app),      ocean::cli::add_validate_command(app),
-      ocean::cli::add_lod_command(app),       ocean::cli::add_query_command(app),
-#ifdef OCEAN_HAS_VULKAN
-      ocean::cli::add_render_command(app),
-#endif
-#ifdef OCEAN_HAS_VIEW
-      ocean::cli::add_view_command(app),
-#endif
-#ifdef OCEAN_HAS_XR
-      ocean::cli::add_xr_command(app),
-#endif
-  };
+  const std::vector<ocean::cli::Command> commands = ocean::cli::add_commands(app);
   // CLI11 would only say "A subcommand is required": name the word it did not know.
   std::string names;
   bool known = argc < 2 || argv[1][0] == '-';
