@@ -50,6 +50,9 @@ int run(int argc, char** argv, Doing& doing) {
   }
   for (const ocean::cli::Command& command : commands) {
     if (command.app->parsed()) {
+      // An empty value is a usage error, never the flag left out: one check for every flag.
+      if (ocean::Status s = ocean::cli::refuse_empty_values(*command.app); !s.ok())
+        return ocean::cli::report(s);
       std::snprintf(doing.text, sizeof doing.text, "running ocean %s",
                     command.app->get_name().c_str());
       return command.run();
