@@ -253,9 +253,10 @@ Result<std::shared_ptr<const waves::LocalLayer>> layer_with_wakes(
   return std::shared_ptr<const waves::LocalLayer>(std::move(made).value());
 }
 
-// Frame f's file: a single frame is written under the name, a sequence's frames are numbered.
+// Frame f's file: a single frame, and an MP4 of any length, is written under the name; a
+// sequence's frames are numbered.
 std::filesystem::path frame_path(const Inputs& in, long long frame) {
-  return in.frames == 1 ? in.out.name() : in.out.name_for(frame);
+  return in.frames == 1 || in.kind == OutputKind::mp4 ? in.out.name() : in.out.name_for(frame);
 }
 
 Status write_hdr_exr(const std::filesystem::path& path, int w, int h,
