@@ -11,6 +11,7 @@
 #include <fstream>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/cli_run.hpp"
@@ -83,6 +84,30 @@ TEST(RenderBounds, AnOutputThatIsNotARegularFileIsRefusedBeforeRendering) {
   const CliRun r = run_cli("render --out " + fifo.string() + " --width 8 --height 8");
   expect_one_line(r, 1, "cannot write '" + fifo.string() + "': it is a FIFO, not a regular file");
   EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+// --environment is read whole under the reader's limit: /dev/zero and a FIFO with no writer are
+// one usage line at once, naming the file and the limit, before any device is opened. (Under an
+// address-space and a time limit, so that a reader without a bound fails rather than fills the
+// machine's memory or waits for ever.)
+TEST(RenderBounds, AnEnvironmentMapThatIsNotARegularFileIsRefusedAtOnce) {
+  const ScratchDir dir("ocean_render_bounds_");
+  const fs::path fifo = dir.path / "sky.exr";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string limit = ocean_test::kAddressSanitizer ? "" : "ulimit -v 2000000; ";
+  for (const auto& [path, kind] :
+       {std::pair<std::string, std::string>{"/dev/zero", "a character device"},
+        {fifo.string(), "a FIFO"}}) {
+    const CliRun r =
+        run_cli_after(limit + "timeout 60 ",
+                      "render --environment " + path + " --out " + (dir.path / "a.png").string());
+    expect_one_line(r, 2,
+                    "ocean: error: --environment: cannot read '" + path + "': it is " + kind +
+                        ", not a regular file; an OpenEXR file is read whole, at most 2147483648 "
+                        "bytes (2 GiB)\n");
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_EQ(ocean_test::listing(dir.path), std::set<std::string>{"sky.exr"});
 }
 
 // An MP4 is one file whatever the frame count: a FIFO or a link to a device under its name is
