@@ -4,6 +4,7 @@
 
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <vector>
 
 namespace ocean::cli {
 
@@ -25,5 +26,9 @@ Command add_query_command(CLI::App& app);
 Command add_render_command(CLI::App& app);  // Vulkan builds only
 Command add_view_command(CLI::App& app);    // builds with GLFW and Dear ImGui only
 Command add_xr_command(CLI::App& app);      // builds with the OpenXR loader only
+
+/// Registers every subcommand this build has (the ones above that it was built with), in the
+/// order `ocean --help` lists them.
+std::vector<Command> add_commands(CLI::App& app);
 
 }  // namespace ocean::cli

@@ -28,22 +28,7 @@ int run(int argc, char** argv, Doing& doing) {
   CLI::App app{"ocean — spectral ocean surface simulation: spectra, dispersion, spreading"};
   app.name("ocean");
   app.require_subcommand(1);
-  const std::vector<ocean::cli::Command> commands = {
-      ocean::cli::add_spectrum_command(app),  ocean::cli::add_dispersion_command(app),
-      ocean::cli::add_spreading_command(app), ocean::cli::add_stats_command(app),
-      ocean::cli::add_bake_command(app),      ocean::cli::add_bench_command(app),
-      ocean::cli::add_info_command(app),      ocean::cli::add_validate_command(app),
-      ocean::cli::add_lod_command(app),       ocean::cli::add_query_command(app),
-#ifdef OCEAN_HAS_VULKAN
-      ocean::cli::add_render_command(app),
-#endif
-#ifdef OCEAN_HAS_VIEW
-      ocean::cli::add_view_command(app),
-#endif
-#ifdef OCEAN_HAS_XR
-      ocean::cli::add_xr_command(app),
-#endif
-  };
+  const std::vector<ocean::cli::Command> commands = ocean::cli::add_commands(app);
   // CLI11 would only say "A subcommand is required": name the word it did not know.
   std::string names;
   bool known = argc < 2 || argv[1][0] == '-';
@@ -65,6 +50,9 @@ int run(int argc, char** argv, Doing& doing) {
   }
   for (const ocean::cli::Command& command : commands) {
     if (command.app->parsed()) {
+      // An empty value is a usage error, never the flag left out: one check for every flag.
+      if (ocean::Status s = ocean::cli::refuse_empty_values(*command.app); !s.ok())
+        return ocean::cli::report(s);
       std::snprintf(doing.text, sizeof doing.text, "running ocean %s",
                     command.app->get_name().c_str());
       return command.run();

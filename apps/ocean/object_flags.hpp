@@ -5,6 +5,7 @@
 // by its propulsion (B.8–B.10) along its heading and leaves a Kelvin wake from its track (W.17).
 #pragma once
 
+#include <atomic>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +46,19 @@ bodies::PropulsionParams propulsion_for(const bodies::BodyParams& body, double g
 /// kWakePeakPerLength·L, a waypoint every 0.5 s, 8 kept.
 waves::WakeTrackParams wake_track_for(const bodies::Hull& hull);
 
+/// The latest time `ocean render --float` integrates the objects to, s: --time of the last
+/// frame (--time + (--frames − 1)/--fps) beyond it is a usage error. The bodies start at t = 0
+/// and step 1/60 s, the sea under them simulated every second step: 600 s is 36 000 body steps
+/// and 18 000 steps of the sea, whose cost dominates. Measured with a box on the moderate
+/// preset's four 256² cascades: about 4 ms of CPU per step of the sea, so the longest span is
+/// about 80 s of CPU (a minute or two on two cores), and four times that on 512² grids; beyond
+/// it a picture would be a wait of many minutes. The same bound as --warmup's.
+inline constexpr double kMaxFloatTime_s = 600.0;
+/// The shortest integration that shows its progress (a bar on a terminal, a summary line in a
+/// log), s of simulated time: a minute, about 8 s of CPU on the moderate preset. Shorter spans,
+/// the default --time 20 among them, print nothing.
+inline constexpr double kFloatProgressSpan_s = 60.0;
+
 /// The objects of a render: meshes for Renderer::set_meshes and, per object, its instances.
 class SceneObjects {
  public:
@@ -56,8 +70,12 @@ class SceneObjects {
   [[nodiscard]] const std::vector<render::Mesh>& meshes() const { return meshes_; }
   /// Advances the bodies (with --float) to time_s from where they are (from t = 0 on the first
   /// call) at a fixed step of 1/60 s, the surface simulated every second step, then writes the
-  /// instances of every object at their poses into `out`.
-  Status place(double time_s, std::vector<render::ObjectInstance>& out);
+  /// instances of every object at their poses into `out`. A span of kFloatProgressSpan_s or more
+  /// shows a progress bar on stderr ("floating bodies (1/60 s steps)"). When `cancel` is set (by
+  /// a signal handler, StopSignals) it stops between two steps with ErrorCode::cancelled and
+  /// `out` untouched; the bodies keep the pose they reached.
+  Status place(double time_s, std::vector<render::ObjectInstance>& out,
+               const std::atomic<bool>* cancel = nullptr);
   /// Appends the Kelvin wake of every driven object that moves fast enough (W.17) to `out`.
   void wakes(std::vector<waves::KelvinWake>& out) const;
   /// Where the first driven object is (x, z) and which way it heads (degrees), or nullopt.

@@ -94,6 +94,21 @@ Status check(const NumberOption<double>& o, double value, const std::string& tex
   return {};
 }
 
+Status refuse_empty_values(const CLI::App& command) {
+  for (const CLI::Option* option : command.get_options()) {
+    if (option->get_items_expected_min() == 0) continue;  // a switch: no value
+    for (const std::string& value : option->results()) {
+      if (value.empty())
+        return invalid_argument(option->get_name() +
+                                " is empty: give a value or leave the flag out");
+    }
+  }
+  for (const CLI::App* sub : command.get_subcommands()) {
+    if (Status s = refuse_empty_values(*sub); !s.ok()) return s;
+  }
+  return {};
+}
+
 Result<std::vector<double>> parse_list(const NumberOption<double>& option,
                                        const std::string& text) {
   Result<std::vector<double>> values = parse_number_list(option.flag, text);

@@ -78,6 +78,12 @@ CLI::Option* add_option(CLI::App& command, const NumberOption<T>& option, std::s
   return command.add_option(std::string(option.flag), text, help);
 }
 
+/// Refuses an empty value given to any option of `command` (and of its subcommands) that takes
+/// one: `--shard ""` is invalid_argument "--shard is empty: give a value or leave the flag out",
+/// never the flag left out. The flags keep their text empty for "not given", so this one check,
+/// made after parsing and before the command runs, holds for every flag.
+Status refuse_empty_values(const CLI::App& command);
+
 /// A comma-separated list (parse_number_list), every item then checked against the option.
 Result<std::vector<double>> parse_list(const NumberOption<double>& option, const std::string& text);
 

@@ -1,5 +1,7 @@
-// SIGINT/SIGTERM as a cancellation flag (see stop_signals.hpp).
+// SIGINT/SIGTERM/SIGHUP as a cancellation flag (see stop_signals.hpp).
 #include "stop_signals.hpp"
+
+#include <iostream>
 
 namespace ocean::cli {
 namespace {
@@ -35,11 +37,13 @@ StopSignals::StopSignals() {
   g_signal.store(0);
   install(SIGINT, on_stop_signal, SA_RESTART | SA_RESETHAND, old_int_);
   install(SIGTERM, on_stop_signal, SA_RESTART | SA_RESETHAND, old_term_);
+  install(SIGHUP, on_stop_signal, SA_RESTART | SA_RESETHAND, old_hup_);
   install(SIGXFSZ, SIG_IGN, 0, old_xfsz_);
 }
 
 StopSignals::~StopSignals() {
   (void)::sigaction(SIGXFSZ, &old_xfsz_, nullptr);
+  (void)::sigaction(SIGHUP, &old_hup_, nullptr);
   (void)::sigaction(SIGTERM, &old_term_, nullptr);
   (void)::sigaction(SIGINT, &old_int_, nullptr);
 }
@@ -52,8 +56,15 @@ std::string signal_name(int signal) {
   switch (signal) {
     case SIGINT: return "SIGINT";
     case SIGTERM: return "SIGTERM";
+    case SIGHUP: return "SIGHUP";
     default: return "signal " + std::to_string(signal);
   }
+}
+
+int report_interrupted(const StopSignals& stop, std::string_view what, std::string_view detail) {
+  std::cerr << "ocean: error: " << what << " interrupted: " << signal_name(stop.received()) << "; "
+            << detail << "\n";
+  return 128 + stop.received();
 }
 
 }  // namespace ocean::cli

@@ -65,6 +65,8 @@ struct SpawnSetup {
 }  // namespace
 
 Status VideoWriter::open(const std::filesystem::path& out, int width, int height, double fps) {
+  // A device, FIFO, socket or directory under the name is refused before ffmpeg starts.
+  if (Status s = io::check_parent_writable(out); !s.ok()) return s;
   out_ = out;
   const std::string leaf = out.filename().string();
   temp_ = out.parent_path() / ("." + leaf.substr(0, kMaxNameBytesInTemporary) + ".tmp-" +
@@ -140,6 +142,13 @@ Status VideoWriter::write(const std::vector<std::uint8_t>& rgba) {
 Status VideoWriter::close() {
   const std::string ended = finish();
   if (!ended.empty()) return fail("ffmpeg failed");
+  // Again before the rename, as the library's atomic writes do: a device or FIFO may have been
+  // put under the name while ffmpeg encoded, and a rename would replace it.
+  if (Status s = io::check_parent_writable(out_); !s.ok()) {
+    std::error_code ignored;
+    std::filesystem::remove(temp_, ignored);
+    return s;
+  }
   std::error_code ec;
   std::filesystem::rename(temp_, out_, ec);
   if (ec) return fail("ffmpeg left no video (" + ec.message() + ")");

@@ -25,7 +25,9 @@ class VideoWriter {
   ~VideoWriter();
 
   /// Starts ffmpeg for `out`, frames of `width` x `height` at `fps`. Errors (one line, the name
-  /// shown as ocean::excerpt writes it): unsupported when no ffmpeg is on PATH, io_error when it
+  /// shown as ocean::excerpt writes it): io_error when `out` cannot be written
+  /// (io::check_parent_writable: a missing folder, or a device, FIFO, socket or directory under
+  /// the name, before ffmpeg starts), unsupported when no ffmpeg is on PATH, io_error when it
   /// cannot be started. SIGPIPE is ignored from here on in this process, so that an ffmpeg that
   /// stops reading gives a write error rather than killing the tool; ffmpeg itself starts with
   /// the default SIGPIPE action.
@@ -33,8 +35,9 @@ class VideoWriter {
   /// Sends one frame: width * height * 4 bytes of sRGB RGBA. When ffmpeg has stopped reading,
   /// it is reaped and the error says how it ended and the last line it wrote.
   Status write(const std::vector<std::uint8_t>& rgba);
-  /// Ends the input, waits for ffmpeg and renames the temporary over the output; on any failure
-  /// the temporary is removed and nothing is left under the output's name.
+  /// Ends the input, waits for ffmpeg and renames the temporary over the output, after checking
+  /// the output's name again (only a regular file, or nothing, is replaced); on any failure the
+  /// temporary is removed and nothing is left under the output's name.
   Status close();
 
  private:

@@ -134,6 +134,11 @@ ocean::Status write_npy(const std::filesystem::path& path, const float* data,
 inline constexpr int kExrMaxDimension = 16384;
 /// Largest number of channels write_exr accepts.
 inline constexpr int kExrMaxChannels = 1024;
+/// Largest file read_exr reads, bytes (2 GiB): it reads the whole file once for its header check,
+/// so the file is bounded before a byte is read. Twice the reader's 1 GiB budget of samples as
+/// floats: room for that budget stored uncompressed, with a tiled file's mip levels (a third
+/// more) and the offset tables and headers.
+inline constexpr std::uint64_t kExrMaxFileBytes = std::uint64_t{2} << 30;
 
 /// How samples are stored in the file (values are always passed as float).
 enum class ExrPixelType { half, float32 };
@@ -173,14 +178,18 @@ struct ExrImage {
 /// Reads every channel of an OpenEXR file (scanline or tiled, any compression) as floats.
 ///
 /// Contract: of a multi-part file only the first part is read. io_error "cannot read '<path>':
-/// <reason>" if the file cannot be opened, is not an OpenEXR file, is corrupt or truncated, is a
-/// deep image, has subsampled or UINT channels, a data window larger than kExrMaxDimension in
-/// either direction, more than kExrMaxChannels channels, or needs more than 1 GiB of samples as
-/// floats. The header is checked first (see exr_header.hpp: every attribute inside the file and
-/// read by OpenEXR as its declared size), then the data window and the sample budget, before
-/// OpenEXR reads the file and sizes its buffers from them. The pixels are read in blocks of rows,
-/// so memory grows with the rows the file holds rather than with the size it declares. The file
-/// is read whole once for the header check. Never throws (OpenEXR exceptions become io_error).
+/// <reason>" if the file cannot be opened; is not a regular file ("it is a FIFO, not a regular
+/// file; an OpenEXR file is read whole, at most 2147483648 bytes (2 GiB)") or holds more than
+/// kExrMaxFileBytes ("it holds N bytes, more than the 2147483648 bytes (2 GiB) an OpenEXR file
+/// may hold"), both refused before a byte is read, so /dev/zero and a FIFO fail at once; is not an
+/// OpenEXR file, is corrupt or truncated, is a deep image, has subsampled or UINT channels, a data
+/// window larger than kExrMaxDimension in either direction, more than kExrMaxChannels channels,
+/// or needs more than 1 GiB of samples as floats. The header is checked first (see exr_header.hpp:
+/// every attribute inside the file and read by OpenEXR as its declared size), then the data window
+/// and the sample budget, before OpenEXR reads the file and sizes its buffers from them. The pixels
+/// are read in blocks of rows, so memory grows with the rows the file holds rather than with the
+/// size it declares. The file is read whole once for the header check. Never throws (OpenEXR
+/// exceptions become io_error).
 ocean::Result<ExrImage> read_exr(const std::filesystem::path& path);
 
 // ---- PNG images from raw samples (8-bit 1–4 channels, 16-bit gray) -------------------------

@@ -15,11 +15,15 @@
 //   (or both eyes in one pass: session->submit_stereo(record_stereo(...), source image))
 //   session->end_frame();                          // one projection layer, the located views
 //
-// Contract: make() fails with `unsupported` and one line ("no OpenXR runtime: ...") when the
-// loader finds no runtime, the runtime has no HMD or no XR_KHR_vulkan_enable, or the Vulkan
-// device lacks what the renderer needs; every other call returns a Status naming the OpenXR
-// call and its XrResult. Threading: one thread drives a session and its context's queue.
-// Allocation: make() allocates; the per-frame calls do not.
+// Contract: make() fails with `io_error` and one line ("XR_RUNTIME_JSON: ...", naming the file
+// and kRuntimeManifestMaxBytes) when XR_RUNTIME_JSON names what is not a regular file of at most
+// that size, checked before the loader reads it (the loader reads it whole, with no bound of its
+// own: /dev/zero or a FIFO would exhaust memory or block); with `unsupported` and one line ("no
+// OpenXR runtime: ...") when the loader finds no runtime (XR_RUNTIME_JSON naming no file among
+// the cases), the runtime has no HMD or no XR_KHR_vulkan_enable, or the Vulkan device lacks what
+// the renderer needs; every other call returns a Status naming the OpenXR call and its XrResult.
+// Threading: one thread drives a session and its context's queue. Allocation: make() allocates;
+// the per-frame calls do not.
 #pragma once
 
 #include <vulkan/vulkan.h>
@@ -77,6 +81,10 @@ struct FrameState {
   bool should_render = false;      ///< false: skip submit_eye, end_frame submits no layer
   std::array<EyeView, 2> views{};  ///< xrLocateViews at the predicted time: left, right
 };
+
+/// The largest runtime manifest (the JSON file XR_RUNTIME_JSON names) make() lets the loader
+/// read, bytes (1 MiB): a manifest names a library and a few fields, a few hundred bytes.
+inline constexpr std::uint64_t kRuntimeManifestMaxBytes = std::uint64_t{1} << 20;
 
 class Session {
  public:

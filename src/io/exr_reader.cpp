@@ -5,14 +5,14 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
-#include <fcntl.h>
-#include <unistd.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <exception>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "exr_header.hpp"
@@ -23,24 +23,42 @@ namespace ocean::io {
 namespace {
 
 using detail::failure;
-using detail::FdGuard;
 using detail::with_path;
 
-// Reads the whole file (the readers' files are small) into `bytes`.
+// What a file that is not a regular one is, for a message.
+const char* exr_file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
+}
+
+// Reads the whole file into `bytes`, under kExrMaxFileBytes: what is not a regular file
+// (/dev/zero, a FIFO that would block) and a file over the limit are refused before a byte is
+// read; read_bounded then holds the read to the limit should the file grow meanwhile.
 Status read_all(const std::filesystem::path& path, std::string& bytes) {
-  FdGuard guard;
-  do {
-    guard.fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  } while (guard.fd < 0 && errno == EINTR);
-  if (guard.fd < 0) return io_error(with_path("read", path, errno_message(errno)));
-  char buffer[1 << 16];
-  while (true) {
-    const ssize_t got = ::read(guard.fd, buffer, sizeof buffer);
-    if (got < 0 && errno == EINTR) continue;
-    if (got < 0) return io_error(with_path("read", path, errno_message(errno)));
-    if (got == 0) return Status::ok_status();
-    bytes.append(buffer, static_cast<std::size_t>(got));
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    return io_error(with_path("read", path, errno_message(errno)));
+  const std::string limit = byte_limit_text(kExrMaxFileBytes);
+  if (!S_ISREG(st.st_mode)) {
+    return io_error(with_path("read", path,
+                              std::string("it is ") + exr_file_kind(st.st_mode) +
+                                  ", not a regular file; an OpenEXR file is read whole, at most " +
+                                  limit));
   }
+  if (static_cast<std::uint64_t>(st.st_size) > kExrMaxFileBytes) {
+    return io_error(with_path("read", path,
+                              "it holds " + std::to_string(st.st_size) + " bytes, more than the " +
+                                  limit + " an OpenEXR file may hold"));
+  }
+  Result<std::string> read = read_bounded(
+      path, {.max_bytes = kExrMaxFileBytes, .what = "OpenEXR file", .regular_only = true});
+  if (!read.ok()) return io_error(read.status().message());
+  bytes = std::move(read).value();
+  return Status::ok_status();
 }
 
 // The most sample bytes (as floats) the reader holds, as the PNG reader.

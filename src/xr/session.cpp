@@ -5,8 +5,11 @@
 #include <algorithm>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <sstream>
+#include <system_error>
 
+#include "ocean/io.hpp"
 #include "state.hpp"
 
 namespace ocean::xr {
@@ -49,7 +52,28 @@ Result<std::vector<std::string>> vulkan_extensions(XrInstance instance, XrSystem
   return split_names(text);
 }
 
+// The manifest XR_RUNTIME_JSON names, checked before the loader reads it whole with no bound of
+// its own: a regular file of at most kRuntimeManifestMaxBytes. An unset or empty variable is
+// the loader's to resolve (the system's active runtime), and so is a name where nothing is: the
+// loader finds no runtime there, which make() reports as such.
+Status check_runtime_manifest() {
+  const char* named = std::getenv("XR_RUNTIME_JSON");
+  if (named == nullptr || *named == '\0') return {};
+  std::error_code ec;
+  if (!std::filesystem::exists(named, ec) && !ec) return {};
+  Result<std::string> read = io::read_bounded(
+      named,
+      {.max_bytes = kRuntimeManifestMaxBytes, .what = "runtime manifest", .regular_only = true});
+  if (read.ok()) return {};
+  std::string message = "XR_RUNTIME_JSON: " + read.status().message();
+  if (read.status().code() != ErrorCode::invalid_argument)  // the size message states the limit
+    message += "; a runtime manifest is a regular file of at most " +
+               io::byte_limit_text(kRuntimeManifestMaxBytes);
+  return io_error(message);
+}
+
 Status create_instance(const SessionParams& params, Session::State& st) {
+  if (Status s = check_runtime_manifest(); !s.ok()) return s;
   std::vector<const char*> layers;
   if (params.validation) {
     std::uint32_t count = 0;

@@ -1,5 +1,5 @@
-// `ocean bake` into a folder as a transaction, tried on a real child process: SIGINT or SIGTERM
-// mid-bake leaves no temporary and a manifest saying "complete": false; a second bake into a
+// `ocean bake` into a folder as a transaction, tried on a real child process: SIGINT, SIGTERM or
+// SIGHUP mid-bake leaves no temporary and a manifest saying "complete": false; a second bake into a
 // busy folder fails at once naming the first one's pid; an old manifest is gone before the first
 // new file; a killed bake blocks nothing; bad paths fail before the first frame; a failed start
 // leaves no folder; a full disk (a file size limit, and a 2 MiB tmpfs where one can be mounted)
@@ -45,10 +45,12 @@ std::string read_text(const fs::path& p) {
 // killed and reaped by the destructor if the test did not wait for it.
 class Child {
  public:
-  /// SIGINT and SIGTERM start with their default actions (as in a terminal's foreground job),
-  /// or SIGINT ignored (as in a shell's background job) if `ignore_sigint`.
+  /// SIGINT, SIGTERM and SIGHUP start with their default actions (as in a terminal's foreground
+  /// job), or SIGINT ignored (as in a shell's background job) if `ignore_sigint`, SIGHUP ignored
+  /// (as under nohup) if `ignore_sighup`.
   Child(const std::vector<std::string>& args, fs::path err_file,
-        rlim_t file_size_limit = RLIM_INFINITY, bool ignore_sigint = false)
+        rlim_t file_size_limit = RLIM_INFINITY, bool ignore_sigint = false,
+        bool ignore_sighup = false)
       : err_file_(std::move(err_file)) {
     std::vector<std::string> words = {OCEAN_CLI_PATH, "bake"};
     words.insert(words.end(), args.begin(), args.end());
@@ -62,6 +64,7 @@ class Child {
       ::sigprocmask(SIG_SETMASK, &none, nullptr);
       std::signal(SIGINT, ignore_sigint ? SIG_IGN : SIG_DFL);
       std::signal(SIGTERM, SIG_DFL);
+      std::signal(SIGHUP, ignore_sighup ? SIG_IGN : SIG_DFL);
       if (file_size_limit != RLIM_INFINITY) {
         const rlimit limit{file_size_limit, file_size_limit};
         if (::setrlimit(RLIMIT_FSIZE, &limit) != 0) ::_exit(126);
@@ -180,6 +183,25 @@ TEST(BakeTransaction, SigintOrSigtermMidBakeLeavesNoTemporaryAndAnIncompleteMani
   }
 }
 
+// The terminal closing (SIGHUP: a logout, a lost ssh connection) stops a bake as Ctrl-C does:
+// between two files, with the incomplete manifest, and exit 128 + 1.
+TEST(BakeTransaction, SighupMidBakeStopsItAsSigintDoes) {
+  ScratchDir dir("bake_sighup_");
+  const fs::path out = dir.path / "out";
+  Child bake(long_bake(out), dir.path / "err");
+  ASSERT_TRUE(wait_for_file(bake, out / "displacement_c0_f00001.npy")) << bake.err();
+  ASSERT_EQ(::kill(bake.pid(), SIGHUP), 0);
+  const int status = bake.wait();
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGHUP);
+  const std::string err = bake.err();
+  EXPECT_EQ(err.rfind("ocean: error: bake interrupted: SIGHUP; bake cancelled after ", 0), 0u)
+      << err;
+  EXPECT_EQ(line_count(err), 1) << err;
+  const Json m = expect_incomplete_and_consistent(out);
+  EXPECT_GE(m["frames"].size(), 1u);
+}
+
 // The set of signals on the line `field` ("SigIgn": ignored, "SigCgt": caught by a handler) of
 // /proc/<pid>/status, bit n-1 for signal n.
 unsigned long long signal_set(pid_t pid, const std::string& field) {
@@ -203,6 +225,24 @@ TEST(BakeTransaction, ASigintIgnoredByTheParentStaysIgnored) {
   EXPECT_TRUE(in_set(signal_set(bake.pid(), "SigIgn"), SIGINT));
   EXPECT_FALSE(in_set(signal_set(bake.pid(), "SigCgt"), SIGINT));
   EXPECT_TRUE(in_set(signal_set(bake.pid(), "SigCgt"), SIGTERM));
+  ASSERT_EQ(::kill(bake.pid(), SIGTERM), 0);
+  const int status = bake.wait();
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);
+  EXPECT_EQ(WEXITSTATUS(status), 128 + SIGTERM) << bake.err();
+  expect_incomplete_and_consistent(out);
+}
+
+// `nohup ocean bake ... &` outlives the terminal: a SIGHUP its parent ignores stays ignored, and
+// the bake still stops on SIGTERM.
+TEST(BakeTransaction, ASighupIgnoredByTheParentStaysIgnored) {
+  ScratchDir dir("bake_sighupign_");
+  const fs::path out = dir.path / "out";
+  Child bake(long_bake(out), dir.path / "err", RLIM_INFINITY, false, true);
+  ASSERT_TRUE(wait_for_file(bake, out / "displacement_c0_f00001.npy")) << bake.err();
+  EXPECT_TRUE(in_set(signal_set(bake.pid(), "SigIgn"), SIGHUP));
+  EXPECT_FALSE(in_set(signal_set(bake.pid(), "SigCgt"), SIGHUP));
+  EXPECT_TRUE(in_set(signal_set(bake.pid(), "SigCgt"), SIGINT));
+  ASSERT_EQ(::kill(bake.pid(), SIGHUP), 0);
   ASSERT_EQ(::kill(bake.pid(), SIGTERM), 0);
   const int status = bake.wait();
   ASSERT_TRUE(WIFEXITED(status)) << "killed by signal " << WTERMSIG(status);

@@ -119,7 +119,7 @@ TEST(CliMessages, BenchFlags) {
        "--threads = '0' is out of range: must be an integer in [1, 256] or 'all'"},
       {"bench --threads nan", "--threads = nan is out of range: must be a finite number"},
       {"bench --threads 1,,2", "--threads = '' is not a number"},
-      {"bench --cascades ''", "--cascades is empty"},
+      {"bench --cascades ''", "--cascades is empty: give a value or leave the flag out"},
       {"bench --min-time -1", "--min-time = -1 is out of range: must be in [0, 60] s"},
       {"bench --frame-interval 5000",
        "--frame-interval = 5000 is out of range: must be in [0, 1000] ms"},

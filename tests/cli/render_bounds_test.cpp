@@ -4,10 +4,15 @@
 // with one).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "cli/cli_run.hpp"
 #include "ocean/vk.hpp"
@@ -79,6 +84,81 @@ TEST(RenderBounds, AnOutputThatIsNotARegularFileIsRefusedBeforeRendering) {
   const CliRun r = run_cli("render --out " + fifo.string() + " --width 8 --height 8");
   expect_one_line(r, 1, "cannot write '" + fifo.string() + "': it is a FIFO, not a regular file");
   EXPECT_TRUE(fs::is_fifo(fifo));
+}
+
+// --environment is read whole under the reader's limit: /dev/zero and a FIFO with no writer are
+// one usage line at once, naming the file and the limit, before any device is opened. (Under an
+// address-space and a time limit, so that a reader without a bound fails rather than fills the
+// machine's memory or waits for ever.)
+TEST(RenderBounds, AnEnvironmentMapThatIsNotARegularFileIsRefusedAtOnce) {
+  const ScratchDir dir("ocean_render_bounds_");
+  const fs::path fifo = dir.path / "sky.exr";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::string limit = ocean_test::kAddressSanitizer ? "" : "ulimit -v 2000000; ";
+  for (const auto& [path, kind] :
+       {std::pair<std::string, std::string>{"/dev/zero", "a character device"},
+        {fifo.string(), "a FIFO"}}) {
+    const CliRun r =
+        run_cli_after(limit + "timeout 60 ",
+                      "render --environment " + path + " --out " + (dir.path / "a.png").string());
+    expect_one_line(r, 2,
+                    "ocean: error: --environment: cannot read '" + path + "': it is " + kind +
+                        ", not a regular file; an OpenEXR file is read whole, at most 2147483648 "
+                        "bytes (2 GiB)\n");
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_EQ(ocean_test::listing(dir.path), std::set<std::string>{"sky.exr"});
+}
+
+// An MP4 is one file whatever the frame count: a FIFO or a link to a device under its name is
+// refused before anything is rendered or ffmpeg started, and stays as it was.
+TEST(RenderBounds, AnMp4OntoAFifoOrADeviceIsRefusedBeforeRendering) {
+  for (const char* frames : {"1", "2"}) {
+    const ScratchDir dir("ocean_render_bounds_");
+    const fs::path fifo = dir.path / "video.mp4";
+    ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+    const CliRun r = ocean_test::run_cli_argv(
+        {"render", "--out", fifo.string(), "--frames", frames, "--width", "8", "--height", "8"});
+    expect_one_line(
+        r, 1,
+        "ocean: error: cannot write '" + fifo.string() + "': it is a FIFO, not a regular file\n");
+    EXPECT_TRUE(fs::is_fifo(fifo)) << frames;
+    EXPECT_EQ(ocean_test::listing(dir.path), std::set<std::string>{"video.mp4"}) << frames;
+
+    const fs::path link = dir.path / "null.mp4";
+    fs::create_symlink("/dev/null", link);
+    const CliRun d = ocean_test::run_cli_argv(
+        {"render", "--out", link.string(), "--frames", frames, "--width", "8", "--height", "8"});
+    expect_one_line(d, 1,
+                    "ocean: error: cannot write '" + link.string() +
+                        "': it links to a character device, not a regular file\n");
+    EXPECT_TRUE(fs::is_symlink(link)) << frames;
+    EXPECT_EQ(ocean_test::listing(dir.path), (std::set<std::string>{"video.mp4", "null.mp4"}));
+  }
+}
+
+// A FIFO made under the MP4's name while ffmpeg encodes (by a stand-in ffmpeg that writes its
+// output and then makes it) is not replaced: the name is checked again before the rename, as the
+// library's atomic writes do, and the temporary is removed.
+TEST(RenderBounds, AnMp4OutputThatBecomesAFifoWhileEncodingIsNotReplaced) {
+  if (!ocean::vk::list_devices().ok()) GTEST_SKIP() << "no Vulkan device";
+  const ScratchDir dir("ocean_render_bounds_");
+  const fs::path bin = dir.path / "bin";
+  fs::create_directory(bin);
+  // The last argument is "file:<temporary>".
+  std::ofstream(bin / "ffmpeg") << "#!/bin/sh\ncat >/dev/null\nfor a; do last=$a; done\n"
+                                   "echo video > \"${last#file:}\"\nmkfifo \"$FIFO_AT\"\n";
+  fs::permissions(bin / "ffmpeg", fs::perms::owner_all);
+  const fs::path out = dir.path / "v.mp4";
+  const CliRun r = ocean_test::run_cli_argv(
+      {"render", "--out", out.string(), "--frames", "2", "--width", "16", "--height", "16",
+       "--quality", "low", "--resolution", "16", "--cascades", "60", "--warmup", "0"},
+      {}, {"PATH=" + bin.string() + ":/usr/bin:/bin", "FIFO_AT=" + out.string()});
+  expect_one_line(
+      r, 1,
+      "ocean: error: cannot write '" + out.string() + "': it is a FIFO, not a regular file\n");
+  EXPECT_TRUE(fs::is_fifo(out));
+  EXPECT_EQ(ocean_test::listing(dir.path), (std::set<std::string>{"bin", "v.mp4"}));
 }
 
 }  // namespace

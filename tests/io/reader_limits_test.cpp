@@ -3,9 +3,14 @@
 // the header and allocates what the declaration asks for. Inputs of this kind were found by the
 // fuzz target tests/fuzz/exr_reader_fuzz.cpp (its corpus keeps them).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io_test_util.hpp"
@@ -166,6 +171,36 @@ TEST(ExrReaderLimits, TilesBeyondTheSampleBudgetAreRefused) {
   expect_refused(read_back(dir, with_attribute(file, "tiles", "tiledesc", 9,
                                                tiledesc(16384, 16385))),
                  "tiles of 16384x16385");
+}
+
+// The whole file is read for the header check under a stated limit: what is not a regular
+// file (/dev/zero, a FIFO with no writer) and a file larger than the limit (a sparse one here: no
+// disk used) are refused before a byte is read, each naming the file and the limit.
+TEST(ExrReaderLimits, WhatIsNotARegularFileWithinTheLimitIsRefusedAtOnce) {
+  TempDir dir;
+  static_assert(kExrMaxFileBytes == std::uint64_t{2} << 30, "the messages below state 2 GiB");
+  const std::string limit = "2147483648 bytes (2 GiB)";
+  const std::filesystem::path fifo = dir.path() / "fifo.exr";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::filesystem::path huge = dir.path() / "huge.exr";
+  { std::ofstream create(huge); }
+  ASSERT_EQ(::truncate(huge.c_str(), (std::int64_t{2} << 30) + 1), 0);
+  const std::pair<std::filesystem::path, std::string> cases[] = {
+      {"/dev/zero",
+       "cannot read '/dev/zero': it is a character device, not a regular file; an "
+       "OpenEXR file is read whole, at most " +
+           limit},
+      {fifo, "cannot read '" + fifo.string() +
+                 "': it is a FIFO, not a regular file; an OpenEXR file is read whole, at most " +
+                 limit},
+      {huge, "cannot read '" + huge.string() + "': it holds 2147483649 bytes, more than the " +
+                 limit + " an OpenEXR file may hold"}};
+  for (const auto& [path, message] : cases) {
+    const Result<ExrImage> image = read_exr(path);
+    ASSERT_FALSE(image.ok()) << path;
+    EXPECT_EQ(image.status().code(), ErrorCode::io_error) << path;
+    EXPECT_EQ(image.status().message(), message);
+  }
 }
 
 }  // namespace

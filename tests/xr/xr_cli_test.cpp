@@ -7,6 +7,7 @@
 // roll and lies where the views' own projections put it (docs/vr.md V.1–V.2), both eyes in one
 // multiview pass and as two renders.
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <array>
 #include <cmath>
@@ -187,6 +188,31 @@ TEST(XrCli, NoRuntimeIsOneLineAndAFailure) {
   EXPECT_EQ(r.out, "");
   EXPECT_EQ(ocean_test::line_count(r.err), 1) << r.err;
   EXPECT_EQ(r.err.rfind("ocean: error: no OpenXR runtime", 0), 0u) << r.err;
+}
+
+// The loader reads the manifest XR_RUNTIME_JSON names with no bound of its own: the tool checks
+// it first (a regular file of at most 1 MiB), so /dev/zero, a FIFO with no writer and a huge file
+// are one line at once, naming the variable, the file and the limit, before any runtime loads.
+TEST(XrCli, ARuntimeManifestThatIsNotASmallFileIsRefusedAtOnce) {
+  ScratchDir dir("ocean_xr_manifest");
+  const std::filesystem::path fifo = dir.path / "fifo.json";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::filesystem::path big = dir.path / "big.json";
+  std::ofstream(big) << std::string((1 << 20) + 1, ' ');
+  // Under an address-space limit and a time limit, so that reading without a bound fails the
+  // test rather than filling the machine's memory or waiting for ever.
+  const std::string limit = ocean_test::kAddressSanitizer ? "" : "ulimit -v 2000000; ";
+  for (const std::filesystem::path& manifest : {std::filesystem::path("/dev/zero"), fifo, big}) {
+    const ocean_test::CliRun r = ocean_test::run_cli_after(
+        limit + "XR_RUNTIME_JSON='" + manifest.string() + "' timeout 60 ", "xr --frames 1");
+    EXPECT_EQ(r.exit_code, 1) << manifest << ": " << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_EQ(ocean_test::line_count(r.err), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("ocean: error: XR_RUNTIME_JSON: ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("'" + manifest.string() + "'"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("1048576 bytes (1 MiB)"), std::string::npos) << r.err;
+  }
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
 }
 
 TEST(XrCli, BadFlagsAreOneLine) {

@@ -1,8 +1,8 @@
 // `ocean bake`: the flags of a bake (frames or one whole loop, formats, times, a shard) turned into
 // the library's BakeParams (ocean/bake.hpp, which writes the files and the manifest), a progress
 // bar, the first frame's contact sheet (its path checked with the folder, before the first frame),
-// and SIGINT/SIGTERM turned into the bake's cancellation (exit 128 + the signal). `--merge DIR...`
-// joins the folders of a sharded bake instead (ocean::bake::merge).
+// and SIGINT/SIGTERM/SIGHUP turned into the bake's cancellation (exit 128 + the signal).
+// `--merge DIR...` joins the folders of a sharded bake instead (ocean::bake::merge).
 #include "ocean/bake.hpp"
 
 #include <cmath>
@@ -48,11 +48,8 @@ struct BakeOptions {
 // An interrupted bake or merge: the signal named, exit 128 + the signal (the shell's convention
 // for a job ended by one); otherwise the usual one-line error.
 int report_stop(const Status& s, const StopSignals& stop, std::string_view what) {
-  if (s.code() == ErrorCode::cancelled && stop.received() != 0) {
-    std::cerr << "ocean: error: " << what << " interrupted: " << signal_name(stop.received())
-              << "; " << s.message() << "\n";
-    return 128 + stop.received();
-  }
+  if (s.code() == ErrorCode::cancelled && stop.received() != 0)
+    return report_interrupted(stop, what, s.message());
   return report(s);
 }
 
@@ -164,8 +161,8 @@ int run_bake(const BakeOptions& o) {
     if (done.index + 1 == range.end) progress.finish();
     return {};
   };
-  // From here on SIGINT/SIGTERM stop the bake between two files: no temporary is left and the
-  // manifest says what was written.
+  // From here on SIGINT/SIGTERM/SIGHUP stop the bake between two files: no temporary is left and
+  // the manifest says what was written.
   const StopSignals stop;
   params.cancel = stop.flag();
   if (Status s = bake::bake(c, o.backend, params, on_frame); !s.ok()) {

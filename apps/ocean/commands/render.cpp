@@ -24,6 +24,7 @@
 #include "render_output.hpp"
 #include "simulation_flags.hpp"
 #include "stereo_flags.hpp"
+#include "stop_signals.hpp"
 #include "video_writer.hpp"
 #include "view_flags.hpp"
 #include "wave_flags.hpp"
@@ -175,6 +176,18 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   }
   if (o.floating && o.objects.empty())
     return invalid_argument("--float needs at least one --object");
+  if (o.floating) {  // the bodies are integrated from t = 0 to the last frame (kMaxFloatTime_s)
+    const double last = in.time_s + static_cast<double>(in.frames - 1) / in.fps;
+    const std::string bound = "out of range with --float: must be at most " +
+                              format_number(kMaxFloatTime_s) +
+                              " s (the objects are integrated from t = 0 in 1/60 s steps)";
+    if (in.time_s > kMaxFloatTime_s)
+      return invalid_argument("--time = " + format_number(in.time_s) + " is " + bound);
+    if (last > kMaxFloatTime_s)
+      return invalid_argument("--time " + format_number(in.time_s) + " with --frames " +
+                              std::to_string(in.frames) + " at --fps " + format_number(in.fps) +
+                              " ends at " + format_number(last) + " s, " + bound);
+  }
   for (const ObjectSpec& spec : in.objects) {
     if (spec.speed_mps > 0.0 && !o.floating)
       return invalid_argument("--object " + excerpt(spec.kind) +
@@ -254,9 +267,10 @@ Result<std::shared_ptr<const waves::LocalLayer>> layer_with_wakes(
   return std::shared_ptr<const waves::LocalLayer>(std::move(made).value());
 }
 
-// Frame f's file: a single frame is written under the name, a sequence's frames are numbered.
+// Frame f's file: a single frame, and an MP4 of any length, is written under the name; a
+// sequence's frames are numbered.
 std::filesystem::path frame_path(const Inputs& in, long long frame) {
-  return in.frames == 1 ? in.out.name() : in.out.name_for(frame);
+  return in.frames == 1 || in.kind == OutputKind::mp4 ? in.out.name() : in.out.name_for(frame);
 }
 
 Status write_hdr_exr(const std::filesystem::path& path, int w, int h,
@@ -335,6 +349,17 @@ int run_contact_sheet(const RenderOptions& o) {
   return kExitOk;
 }
 
+// A render that SIGINT, SIGTERM or SIGHUP stopped: one line, exit 128 + the signal. What was
+// written stays (the files of a sequence's finished frames, each whole); an MP4's temporary goes
+// with its writer.
+int report_render_stop(const StopSignals& stop, const Inputs& in, long long frames_written) {
+  if (in.kind == OutputKind::mp4 || frames_written == 0)
+    return report_interrupted(stop, "render", "nothing written");
+  return report_interrupted(
+      stop, "render",
+      std::to_string(frames_written) + " of " + std::to_string(in.frames) + " frames written");
+}
+
 int run_render(const RenderOptions& o) {
   if (!o.contact_sheet.empty() && o.stereo.stereo)
     return report(invalid_argument("--stereo draws one view, not a --contact-sheet"));
@@ -344,6 +369,9 @@ int run_render(const RenderOptions& o) {
   const Inputs& in = parsed.value();
   // --backend cuda without a device: the backend's one line, before any window or file.
   if (Status s = render::Scene::available(in.scene.backend); !s.ok()) return report(s);
+  // From here on SIGINT/SIGTERM/SIGHUP stop the render between two frames, or between two steps
+  // of the floating bodies, with nothing half-written.
+  const StopSignals stop;
   // Fail before any work when the output cannot be written (or ffmpeg cannot be started).
   if (Status s = io::check_parent_writable(frame_path(in, 0)); !s.ok()) return report(s);
   if (!o.motion_vectors.empty()) {
@@ -408,7 +436,11 @@ int run_render(const RenderOptions& o) {
       stepped = scene.step(t);
     }
     if (!stepped.ok()) return report(stepped);
-    if (Status s = objects.value()->place(t, view.objects); !s.ok()) return report(s);
+    if (Status s = objects.value()->place(t, view.objects, stop.flag()); !s.ok()) {
+      if (s.code() != ErrorCode::cancelled || stop.received() == 0) return report(s);
+      progress.end_line();
+      return report_render_stop(stop, in, f);
+    }
     // Driven objects' wakes from their tracks (W.17): the layer remade when a track gains a
     // waypoint, sharing the previous one's tables while the speeds hold. A new layer goes to the
     // simulator, and the frame is simulated again so that its composited surface holds it.
@@ -423,6 +455,10 @@ int run_render(const RenderOptions& o) {
     const Status drawn =
         in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
     if (!drawn.ok()) return report(drawn);
+    if (stop.received() != 0) {  // a signal during the frame's work: its file is not begun
+      progress.end_line();
+      return report_render_stop(stop, in, f);
+    }
     const std::filesystem::path path = frame_path(in, f);
     Status written;
     if (in.kind == OutputKind::exr) {
@@ -486,7 +522,10 @@ Command add_render_command(CLI::App& app) {
       "sequence's PNG/EXR files are numbered name_00000.png, ..., or where the name holds one "
       "frame-number field, %d or %0Nd (N 1..18): shot_%05d.png. %% is a percent sign; any "
       "other % is refused");
-  add_option(*command, kTime, o->time, "simulated time of the first frame, s (default 20)");
+  add_option(*command, kTime, o->time,
+             "simulated time of the first frame, s (default 20); with --float the last frame's "
+             "time is at most " +
+                 format_number(kMaxFloatTime_s) + " s");
   add_option(*command, kFrames, o->frames, "number of frames (default 1)");
   add_option(*command, kFps, o->fps, "frames per second of a sequence (default 30)");
   add_option(*command, kWarmup, o->warmup,
@@ -513,7 +552,11 @@ Command add_render_command(CLI::App& app) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   command->add_flag("--float", o->floating,
                     "let the objects float: simulate them as rigid bodies on the waves from t = 0 "
-                    "to the picture's time (glTF meshes must be closed)");
+                    "to the picture's time, at most " +
+                        format_number(kMaxFloatTime_s) +
+                        " s (1/60 s steps, the sea every second one: minutes of work; a span of a "
+                        "minute or more shows its progress, Ctrl-C stops it) (glTF meshes must be "
+                        "closed)");
   add_option(*command, kSeabed, o->seabed,
              "a sandy seabed this far below the sea level, m, seen through clear water "
              "(refraction, absorption of pure water); with --bathymetry at the map's depth "
