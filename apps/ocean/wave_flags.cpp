@@ -16,10 +16,10 @@ namespace ocean::cli {
 namespace {
 
 constexpr NumberOption<int> kLocalResolution{.flag = "--local-resolution",
-                                        .accept = Accept::integer_in_range,
-                                        .lo = waves::kMinLocalResolution,
-                                        .hi = waves::kMaxLocalResolution,
-                                        .echo = Echo::text};
+                                             .accept = Accept::integer_in_range,
+                                             .lo = waves::kMinLocalResolution,
+                                             .hi = waves::kMaxLocalResolution,
+                                             .echo = Echo::text};
 
 Status flagged(const std::string& flag, const std::string& text, const Status& s) {
   return {s.code(), flag + " '" + excerpt(text) + "': " + s.message()};

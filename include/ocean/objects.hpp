@@ -53,8 +53,8 @@ inline constexpr std::uint64_t kMaxGltfFileBytes = std::uint64_t{512} << 20;
 /// roughness factors; missing normals are computed per face. io_error "cannot read '<path>':
 /// ..." for a missing or unreadable file; invalid_argument "glTF file '<path>' is larger than
 /// ..." past kMaxGltfFileBytes (a buffer file likewise); invalid_argument "cannot read '<path>':
-/// ..." for a malformed file, no triangles, non-finite values or more than kMaxMeshElements. The path is
-/// echoed through ocean::excerpt. Never throws.
+/// ..." for a malformed file, no triangles, non-finite values or more than kMaxMeshElements. The
+/// path is echoed through ocean::excerpt. Never throws.
 Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path);
 
 /// What the seabed looks like.

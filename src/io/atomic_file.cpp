@@ -10,6 +10,7 @@
 #include <string>
 #include <system_error>
 
+#include "format_detail.hpp"
 #include "ocean/io.hpp"
 
 namespace ocean::io {
@@ -50,16 +51,6 @@ int create_temporary(const std::filesystem::path& dir, const std::string& leaf,
   return EEXIST;
 }
 
-// The kind of file `mode` describes, for a message: "a directory", "a FIFO"...
-const char* kind_of(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 // The target may be replaced: nothing is there, or a regular file, or a symbolic link that
 // dangles or leads to a regular file. A device, FIFO, socket or directory is refused: renaming
 // over it would put a file where a device node was (`--plot /dev/full` run as root).
@@ -73,10 +64,11 @@ Status check_target(const std::filesystem::path& path) {
   if (S_ISREG(st.st_mode)) return Status::ok_status();
   if (S_ISLNK(st.st_mode)) {
     if (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return Status::ok_status();
-    return write_error(path,
-                       std::string("it links to ") + kind_of(st.st_mode) + ", not a regular file");
+    return write_error(
+        path, std::string("it links to ") + detail::file_kind(st.st_mode) + ", not a regular file");
   }
-  return write_error(path, std::string("it is ") + kind_of(st.st_mode) + ", not a regular file");
+  return write_error(
+      path, std::string("it is ") + detail::file_kind(st.st_mode) + ", not a regular file");
 }
 
 // fsync of the finished temporary; returns 0 or errno.

@@ -16,16 +16,6 @@ namespace {
 
 using detail::FdGuard;
 
-// The kind of file `mode` describes, for a message.
-const char* kind_of_mode(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 std::string cannot_read(const ReadLimits& limits, const std::filesystem::path& path,
                         const std::string& why) {
   std::string message = "cannot read ";
@@ -45,9 +35,9 @@ std::string wait_for_writer(int fd, int wait_ms) {
       ready = ::poll(&p, 1, wait_ms);
     } while (ready < 0 && errno == EINTR);
     if (ready == 0) {
-      return "no process wrote to the FIFO within " +
-             (wait_ms % 1000 == 0 ? std::to_string(wait_ms / 1000) + " s"
-                                  : std::to_string(wait_ms) + " ms");
+      return "no process wrote to the FIFO within " + (wait_ms % 1000 == 0
+                                                           ? std::to_string(wait_ms / 1000) + " s"
+                                                           : std::to_string(wait_ms) + " ms");
     }
   }
   const int flags = ::fcntl(fd, F_GETFL);
@@ -69,10 +59,12 @@ Result<std::string> read_opened(const std::filesystem::path& path, const ReadLim
   }
   if (limits.regular_only) {
     struct stat st {};
-    if (::fstat(guard.fd, &st) != 0) return io_error(cannot_read(limits, path, errno_message(errno)));
+    if (::fstat(guard.fd, &st) != 0)
+      return io_error(cannot_read(limits, path, errno_message(errno)));
     if (!S_ISREG(st.st_mode)) {
       return io_error(cannot_read(
-          limits, path, std::string("it is ") + kind_of_mode(st.st_mode) + ", not a regular file"));
+          limits, path,
+          std::string("it is ") + detail::file_kind(st.st_mode) + ", not a regular file"));
     }
   }
   if (std::string why = wait_for_writer(guard.fd, limits.fifo_wait_ms); !why.empty())
@@ -98,9 +90,10 @@ Result<std::string> read_opened(const std::filesystem::path& path, const ReadLim
   if (size > limits.max_bytes) {
     std::string message(limits.what);
     message.append(" '").append(excerpt(path.string())).append("' is larger than ");
-    const bool vowel = !limits.what.empty() && std::string_view("aeiou").find(limits.what[0]) !=
-                                                   std::string_view::npos;
-    message.append(byte_limit_text(limits.max_bytes)).append(vowel ? ", the most an " : ", the most a ");
+    const bool vowel = !limits.what.empty() &&
+                       std::string_view("aeiou").find(limits.what[0]) != std::string_view::npos;
+    message.append(byte_limit_text(limits.max_bytes))
+        .append(vowel ? ", the most an " : ", the most a ");
     return invalid_argument(message.append(limits.what).append(" may hold"));
   }
   text.resize(static_cast<std::size_t>(size));
@@ -122,7 +115,8 @@ std::string byte_limit_text(std::uint64_t bytes) {
       break;
     }
   }
-  if (unit != nullptr) text.append(" (").append(std::to_string(scaled)).append(" ").append(unit).append(")");
+  if (unit != nullptr)
+    text.append(" (").append(std::to_string(scaled)).append(" ").append(unit).append(")");
   return text;
 }
 

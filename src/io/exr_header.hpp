@@ -11,10 +11,10 @@ namespace ocean::io {
 
 /// What the header walk found: the first problem, or the size of the first part's image.
 struct ExrHeaderInfo {
-  std::string problem;       ///< empty when the header is well formed
-  std::int64_t width = 0;    ///< of the first part's data window ("dataWindow"); 0 if absent
-  std::int64_t height = 0;   ///< as width
-  std::size_t channels = 0;  ///< entries of the first part's channel list ("channels")
+  std::string problem;           ///< empty when the header is well formed
+  std::int64_t width = 0;        ///< of the first part's data window ("dataWindow"); 0 if absent
+  std::int64_t height = 0;       ///< as width
+  std::size_t channels = 0;      ///< entries of the first part's channel list ("channels")
   std::int64_t tile_width = 0;   ///< of the first part's "tiles" (tiledesc); 0 when not tiled
   std::int64_t tile_height = 0;  ///< as tile_width
 };

@@ -25,16 +25,6 @@ namespace {
 using detail::failure;
 using detail::with_path;
 
-// What a file that is not a regular one is, for a message.
-const char* exr_file_kind(mode_t mode) {
-  if (S_ISDIR(mode)) return "a directory";
-  if (S_ISCHR(mode)) return "a character device";
-  if (S_ISBLK(mode)) return "a block device";
-  if (S_ISFIFO(mode)) return "a FIFO";
-  if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
-}
-
 // Reads the whole file into `bytes`, under kExrMaxFileBytes: what is not a regular file
 // (/dev/zero, a FIFO that would block) and a file over the limit are refused before a byte is
 // read; read_bounded then holds the read to the limit should the file grow meanwhile.
@@ -45,7 +35,7 @@ Status read_all(const std::filesystem::path& path, std::string& bytes) {
   const std::string limit = byte_limit_text(kExrMaxFileBytes);
   if (!S_ISREG(st.st_mode)) {
     return io_error(with_path("read", path,
-                              std::string("it is ") + exr_file_kind(st.st_mode) +
+                              std::string("it is ") + detail::file_kind(st.st_mode) +
                                   ", not a regular file; an OpenEXR file is read whole, at most " +
                                   limit));
   }
@@ -97,8 +87,8 @@ Status check_tiles(const std::filesystem::path& path, const ExrHeaderInfo& info)
       info.tile_height > kExrMaxDimension)
     return refuse();
   const auto bytes_per_pixel = static_cast<std::uint64_t>(info.channels) * sizeof(float);
-  const std::uint64_t across = static_cast<std::uint64_t>(
-      std::max(info.width, info.tile_width) * info.tile_height);
+  const std::uint64_t across =
+      static_cast<std::uint64_t>(std::max(info.width, info.tile_width) * info.tile_height);
   if (across * bytes_per_pixel > kMaxSampleBytes) return refuse();
   return Status::ok_status();
 }

@@ -3,6 +3,7 @@
 // name the path, a closing file-descriptor guard, the .npy prelude, element count and byte swap.
 #pragma once
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <bit>
@@ -35,6 +36,17 @@ inline Status failure(const char* verb, const std::filesystem::path& path,
   } catch (...) {
     return {ErrorCode::io_error, std::string()};
   }
+}
+
+/// The kind of file `mode` describes, for a message: "a directory", "a FIFO"... (for a mode that is
+/// not a regular file's).
+inline const char* file_kind(mode_t mode) {
+  if (S_ISDIR(mode)) return "a directory";
+  if (S_ISCHR(mode)) return "a character device";
+  if (S_ISBLK(mode)) return "a block device";
+  if (S_ISFIFO(mode)) return "a FIFO";
+  if (S_ISSOCK(mode)) return "a socket";
+  return "not a regular file";
 }
 
 /// Closes the descriptor it holds when it goes out of scope.

@@ -4,7 +4,6 @@
 #pragma once
 
 #include <png.h>
-
 #include <sys/stat.h>
 
 #include <cerrno>

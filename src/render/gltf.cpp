@@ -247,8 +247,8 @@ bool file_exists(const std::string& path, void* /*user_data*/) {
 // tinygltf's file reads (a .gltf's neighbouring .bin buffers) under the same limit as the file
 // itself: a buffer named /dev/zero or a FIFO is refused, not read until memory runs out.
 // `user_data` is the Status that load_gltf reports when the read fails.
-bool read_bounded_buffer(std::vector<unsigned char>* out, std::string* err,
-                         const std::string& path, void* user_data) {
+bool read_bounded_buffer(std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                         void* user_data) {
   const Result<std::string> bytes = io::read_bounded(
       path, {.max_bytes = kMaxGltfFileBytes, .what = "glTF buffer", .regular_only = true});
   if (!bytes.ok()) {
@@ -289,9 +289,9 @@ Result<std::vector<Mesh>> load_gltf(const std::filesystem::path& path) {
     loaded = ext == ".gltf"
                  ? loader.LoadASCIIFromString(&model, &err, &warn, text.data(),
                                               static_cast<unsigned int>(text.size()), base_dir)
-                 : loader.LoadBinaryFromMemory(
-                       &model, &err, &warn, reinterpret_cast<const unsigned char*>(text.data()),
-                       static_cast<unsigned int>(text.size()), base_dir);
+                 : loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                               reinterpret_cast<const unsigned char*>(text.data()),
+                                               static_cast<unsigned int>(text.size()), base_dir);
   } catch (const std::exception& e) {
     err = e.what();
   } catch (...) {

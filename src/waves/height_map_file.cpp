@@ -208,9 +208,10 @@ Result<HeightMap> load_height_map(const std::filesystem::path& path) {
       return map;
     }
     Result<std::string> bytes = io::read_bounded(
-        path, {.max_bytes = std::uint64_t{8} * kMaxHeightMapSide * kMaxHeightMapSide + kMaxNpyHeader,
-               .what = {},
-               .regular_only = true});
+        path,
+        {.max_bytes = std::uint64_t{8} * kMaxHeightMapSide * kMaxHeightMapSide + kMaxNpyHeader,
+         .what = {},
+         .regular_only = true});
     if (!bytes.ok()) return bytes.status();
     return read_npy(path, bytes.value());
   } catch (const std::exception& e) {

@@ -77,8 +77,8 @@ std::vector<fs::path> bake_shards(const fs::path& root, long long count,
   std::vector<fs::path> dirs;
   for (long long i = 0; i < count; ++i) {
     dirs.push_back(root / numbered("s", i));
-    const ocean::Status s =
-        bake::bake(shard_small_config(), "cpu", params(dirs.back(), bake::Shard{i, count}, formats));
+    const ocean::Status s = bake::bake(shard_small_config(), "cpu",
+                                       params(dirs.back(), bake::Shard{i, count}, formats));
     EXPECT_TRUE(s.ok()) << s.message();
   }
   return dirs;

@@ -1,7 +1,6 @@
 // io::read_bounded (ocean/io.hpp): a file read whole under a stated limit, whatever it is.
-#include <sys/stat.h>
-
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 
 #include <chrono>
 #include <string>
@@ -31,9 +30,9 @@ TEST(BoundedRead, FileAtTheLimitIsReadWholeAndOneBytePastItIsRefused) {
 
   const Result<std::string> past = read_bounded(path, {.max_bytes = 99, .what = "manifest"});
   ASSERT_FALSE(past.ok());
-  expect_message(past.status(), ErrorCode::invalid_argument,
-                 "manifest '" + path.string() +
-                     "' is larger than 99 bytes, the most a manifest may hold");
+  expect_message(
+      past.status(), ErrorCode::invalid_argument,
+      "manifest '" + path.string() + "' is larger than 99 bytes, the most a manifest may hold");
 }
 
 // Without a `what`, the messages are the format readers' own "cannot read '<path>': ...".
@@ -43,15 +42,15 @@ TEST(BoundedRead, WithoutWhatTheMessagesAreTheReadersPlainForm) {
   write_file(path, std::string(2048, 'x'));
   const Result<std::string> big = read_bounded(path, {.max_bytes = 1024, .what = {}});
   ASSERT_FALSE(big.ok());
-  expect_message(big.status(), ErrorCode::invalid_argument,
-                 "cannot read '" + path.string() +
-                     "': it is larger than 1024 bytes (1 KiB), the limit");
+  expect_message(
+      big.status(), ErrorCode::invalid_argument,
+      "cannot read '" + path.string() + "': it is larger than 1024 bytes (1 KiB), the limit");
   const Result<std::string> absent =
       read_bounded(dir.path() / "absent.npy", {.max_bytes = 1024, .what = {}});
   ASSERT_FALSE(absent.ok());
-  expect_message(absent.status(), ErrorCode::io_error,
-                 "cannot read '" + (dir.path() / "absent.npy").string() +
-                     "': No such file or directory");
+  expect_message(
+      absent.status(), ErrorCode::io_error,
+      "cannot read '" + (dir.path() / "absent.npy").string() + "': No such file or directory");
 }
 
 TEST(BoundedRead, LimitsAreStatedInBytesAndBinaryUnits) {
@@ -72,8 +71,8 @@ TEST(BoundedRead, EndlessDeviceIsRefusedAtTheLimit) {
   // Structure, not speed: the refusal came from the bound, long before a minute of reading.
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::minutes(1));
 
-  const Result<std::string> regular = read_bounded(
-      "/dev/zero", {.max_bytes = 1 << 20, .what = "manifest", .regular_only = true});
+  const Result<std::string> regular =
+      read_bounded("/dev/zero", {.max_bytes = 1 << 20, .what = "manifest", .regular_only = true});
   ASSERT_FALSE(regular.ok());
   expect_message(regular.status(), ErrorCode::io_error,
                  "cannot read manifest '/dev/zero': it is a character device, not a regular file");
@@ -86,9 +85,9 @@ TEST(BoundedRead, FifoWithoutWriterIsRefusedAfterTheWait) {
   const Result<std::string> text =
       read_bounded(fifo, {.max_bytes = 10, .what = "preset", .fifo_wait_ms = 50});
   ASSERT_FALSE(text.ok());
-  expect_message(text.status(), ErrorCode::io_error,
-                 "cannot read preset '" + fifo.string() +
-                     "': no process wrote to the FIFO within 50 ms");
+  expect_message(
+      text.status(), ErrorCode::io_error,
+      "cannot read preset '" + fifo.string() + "': no process wrote to the FIFO within 50 ms");
   const Result<std::string> regular = read_bounded(
       fifo, {.max_bytes = 10, .what = "manifest", .regular_only = true, .fifo_wait_ms = 50});
   ASSERT_FALSE(regular.ok());

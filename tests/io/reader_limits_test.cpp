@@ -164,13 +164,14 @@ TEST(ExrReaderLimits, TilesBeyondTheSampleBudgetAreRefused) {
   const auto tiledesc = [](std::int32_t x, std::int32_t y) {
     return int32_bytes(x) + int32_bytes(y) + std::string(1, '\0');
   };
-  expect_refused(read_back(dir, with_attribute(file, "tiles", "tiledesc", 9, tiledesc(4, 67131648))),
-                 "tiles of 4x67131648 would need more than 1 GiB of samples to read");
+  expect_refused(
+      read_back(dir, with_attribute(file, "tiles", "tiledesc", 9, tiledesc(4, 67131648))),
+      "tiles of 4x67131648 would need more than 1 GiB of samples to read");
   expect_refused(read_back(dir, with_attribute(file, "tiles", "tiledesc", 9, tiledesc(0, 16))),
                  "tiles of 0x16");
-  expect_refused(read_back(dir, with_attribute(file, "tiles", "tiledesc", 9,
-                                               tiledesc(16384, 16385))),
-                 "tiles of 16384x16385");
+  expect_refused(
+      read_back(dir, with_attribute(file, "tiles", "tiledesc", 9, tiledesc(16384, 16385))),
+      "tiles of 16384x16385");
 }
 
 // The whole file is read for the header check under a stated limit: what is not a regular

@@ -63,7 +63,8 @@ Result<PngImage> read_opened(PngIo& io, const std::filesystem::path& path) {
   png_set_read_fn(png, &io, detail::png_on_read);
   png_set_user_limits(png, kPngMaxDimension, kPngMaxDimension);
   detail::limit_png_reader(png);
-  if (std::string problem = detail::check_png_chunks(io.file); !problem.empty()) return fail(problem);
+  if (std::string problem = detail::check_png_chunks(io.file); !problem.empty())
+    return fail(problem);
   if (!read_header(png, info)) return fail(png_reason(io));
 
   PngImage image;

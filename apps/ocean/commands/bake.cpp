@@ -28,10 +28,10 @@ constexpr NumberOption<double> kBakeFps{
     .flag = "--fps", .accept = Accept::in_range, .lo = 1e-3, .hi = 1e4};
 constexpr NumberOption<double> kBakeTime{.flag = "--time", .accept = Accept::finite};
 constexpr NumberOption<long long> kBakeFrames{.flag = "--frames",
-                                          .accept = Accept::integer_in_range,
-                                          .lo = 1.0,
-                                          .hi = 1e6,
-                                          .echo = Echo::text};
+                                              .accept = Accept::integer_in_range,
+                                              .lo = 1.0,
+                                              .hi = 1e6,
+                                              .echo = Echo::text};
 
 struct BakeOptions {
   SimulationFlags sim;
