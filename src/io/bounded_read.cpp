@@ -69,15 +69,20 @@ Result<std::string> read_opened(const std::filesystem::path& path, const ReadLim
   }
   if (std::string why = wait_for_writer(guard.fd, limits.fifo_wait_ms); !why.empty())
     return io_error(cannot_read(limits, path, why));
-  // Grown as the file delivers bytes (a 1 GiB limit is not 1 GiB held for a 1 kB file), never
-  // beyond one byte past the limit.
-  std::string text;
+  // Sized from the file's own size when it has one (one read, no growth for a regular file),
+  // else grown by doubling from 64 KiB as the file delivers bytes: a 1 GiB limit is not 1 GiB
+  // held for a 1 kB file, and never more than one byte past the limit is held.
   const std::uint64_t cap = limits.max_bytes + 1;
+  struct stat st {};
+  std::uint64_t room = std::uint64_t{1} << 16;
+  if (::fstat(guard.fd, &st) == 0 && S_ISREG(st.st_mode))
+    room = static_cast<std::uint64_t>(st.st_size) + 1;  // + 1 to see the end in the same read
+  std::string text(static_cast<std::size_t>(std::min(room, cap)), '\0');
   std::uint64_t size = 0;
   while (size < cap) {
-    const std::uint64_t want = std::min<std::uint64_t>(cap - size, std::uint64_t{1} << 20);
-    text.resize(static_cast<std::size_t>(size + want));
-    const ssize_t n = ::read(guard.fd, text.data() + size, static_cast<std::size_t>(want));
+    if (size == text.size())
+      text.resize(static_cast<std::size_t>(std::min<std::uint64_t>(cap, 2 * text.size())));
+    const ssize_t n = ::read(guard.fd, text.data() + size, text.size() - size);
     if (n < 0 && errno == EINTR) continue;
     if (n < 0) return io_error(cannot_read(limits, path, errno_message(errno)));
     if (n == 0) break;

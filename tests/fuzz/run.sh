@@ -8,8 +8,9 @@
 # files) and the dictionary NAME.dict next to this script.
 #  - replay runs each committed input (seeds and regressions) exactly once: nothing random.
 #  - smoke (what `./dev test` runs) starts from the same inputs, then mutates with the fixed
-#    SEED for exactly RUNS executions, so every run tries the same inputs; CAP seconds (default
-#    300) bound a run on a machine far slower than expected, and a capped run says so.
+#    SEED for exactly RUNS executions, with no corpus reloads on the clock and no address-space
+#    randomisation, so every run tries the same inputs; CAP seconds (default 300) bound a run on
+#    a machine far slower than expected, and a capped run says so.
 #  - random (what `./dev fuzz` runs) uses a seed from the clock for SECONDS and writes what it
 #    finds into regressions/NAME/, to be committed with the fix that makes it pass.
 # New inputs go to a temporary directory (the committed directories are read, never written),
@@ -51,7 +52,9 @@ case "$mode" in
   smoke)
     (($# >= 2)) || usage
     runs="$1" seed="$2" cap="${3:-300}"
-    flags+=(-runs="$runs" -seed="$seed" -max_total_time="$cap" -max_len=4096)
+    # -reload=0: libFuzzer otherwise rereads its corpus directory every second, so what it
+    # mutates next would depend on the clock.
+    flags+=(-runs="$runs" -seed="$seed" -max_total_time="$cap" -max_len=4096 -reload=0 -use_cmp=0)
     ;;
   random)
     (($# >= 1)) || usage
@@ -68,9 +71,17 @@ flags+=(-artifact_prefix="$artifacts/")
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1}"
 # libFuzzer writes new inputs to the first directory only: the committed ones come after it.
+# Without address-space randomisation where the machine allows it (setarch -R): libFuzzer keys
+# its table of recent comparisons by the code's addresses, whose mutations would otherwise differ
+# from run to run.
+launch=()
+if [[ "$mode" != random ]] && setarch "$(uname -m)" -R true 2>/dev/null; then
+  launch=(setarch "$(uname -m)" -R)
+fi
 log="$work.log"
 status=0
-"$fuzzer" "${flags[@]}" "$work" "${inputs[@]}" 2>&1 | tee "$log" >&2 || status=${PIPESTATUS[0]}
+"${launch[@]}" "$fuzzer" "${flags[@]}" "$work" "${inputs[@]}" 2>&1 | tee "$log" >&2 ||
+  status=${PIPESTATUS[0]}
 if [[ "$mode" == smoke ]] && grep -q "^Done .* in [0-9]* second" "$log" &&
    ! grep -q "^Done $runs runs" "$log"; then
   echo "run.sh: ${name}_fuzz stopped at its $cap s cap before $runs runs" >&2
