@@ -106,6 +106,7 @@ TEST(BenchCli, TableForPeople) {
 // and CUDA where a device exists), and the overlap is the stated formula of the three times;
 // without a CUDA row the JSON says why ("no CUDA device: ...", or a build without CUDA).
 TEST(BenchCli, OverlapRowsFollowTheirDefinition) {
+  const ocean_test::VulkanChildren vulkan;  // the Vulkan rows
   const ocean_test::CliRun r = ocean_test::run_cli(
       "bench --overlap --json --resolution 16 --cascades 1 --far-noise-resolution 16 --min-time 0");
   ASSERT_EQ(r.exit_code, 0) << r.err;

@@ -22,6 +22,7 @@ using ocean_test::ScratchDir;
 
 // Every command that prints on standard output, with small settings.
 TEST(CliBounds, AFullStandardOutputFailsEveryCommandThatPrints) {
+  const ocean_test::VulkanChildren vulkan;  // info and validate list the Vulkan devices
   for (const char* args : {
            "spectrum --omega 0.5,1 --json",
            "spectrum --omega 0.5,1",

@@ -12,6 +12,7 @@
 #include <array>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -26,6 +27,36 @@ namespace ocean_test {
 struct CliRun {
   int exit_code = -1;
   std::string out, err;
+};
+
+/// While it lives, the `ocean` processes a test starts run without LeakSanitizer's check at exit
+/// (ASAN_OPTIONS gains detect_leaks=0; the test process's own setting is read at its start and
+/// stays). For commands that open a Vulkan instance (`info`, `validate`, `bench --overlap`):
+/// Mesa's lavapipe keeps one-time allocations that LeakSanitizer cannot name once the loader has
+/// unloaded the driver, the policy of ocean_add_vulkan_test (tests/CMakeLists.txt) for the
+/// tests that open one themselves. Address and undefined-behaviour checks stay on.
+class VulkanChildren {
+ public:
+  VulkanChildren() {
+    const char* old = std::getenv("ASAN_OPTIONS");
+    had_ = old != nullptr;
+    if (had_) old_ = old;
+    ::setenv("ASAN_OPTIONS", (had_ && !old_.empty() ? old_ + ":" : "").append("detect_leaks=0").c_str(),
+             1);
+  }
+  ~VulkanChildren() {
+    if (had_) {
+      ::setenv("ASAN_OPTIONS", old_.c_str(), 1);
+    } else {
+      ::unsetenv("ASAN_OPTIONS");
+    }
+  }
+  VulkanChildren(const VulkanChildren&) = delete;
+  VulkanChildren& operator=(const VulkanChildren&) = delete;
+
+ private:
+  bool had_ = false;
+  std::string old_;
 };
 
 /// Runs `ocean <args>` through the shell (so `args` may redirect standard output), after

@@ -78,7 +78,7 @@ launch=()
 if [[ "$mode" != random ]] && setarch "$(uname -m)" -R true 2>/dev/null; then
   launch=(setarch "$(uname -m)" -R)
 fi
-log="$work.log"
+log="$(mktemp "${TMPDIR:-/tmp}/ocean-fuzz-$name-log.XXXXXX")"
 status=0
 "${launch[@]}" "$fuzzer" "${flags[@]}" "$work" "${inputs[@]}" 2>&1 | tee "$log" >&2 ||
   status=${PIPESTATUS[0]}
