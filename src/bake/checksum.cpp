@@ -28,6 +28,7 @@
 #include <exception>
 #include <memory>
 
+#include "io/format_detail.hpp"
 #include "ocean/io.hpp"
 
 namespace ocean::bake::detail {
@@ -78,7 +79,7 @@ Result<struct stat> plain_stat(const std::filesystem::path& path) {
 Result<FileSum> read_checked(const std::filesystem::path& path, const BlockSink& sink) {
   Result<struct stat> seen = plain_stat(path);
   if (!seen.ok()) return seen.status();
-  OwnedFd file;
+  io::detail::FdGuard file;
   // O_NONBLOCK: should a FIFO take the file's place after the lstat, its open does not wait for
   // a writer (the fstat below refuses it).
   do {
@@ -138,10 +139,6 @@ std::uint32_t crc32_update(std::uint32_t crc, std::span<const std::byte> bytes) 
   return ~c;
 }
 
-OwnedFd::~OwnedFd() {
-  if (fd >= 0) ::close(fd);
-}
-
 std::string crc32_hex(std::uint32_t crc) {
   char text[9];
   std::snprintf(text, sizeof text, "%08x", static_cast<unsigned>(crc));
@@ -151,13 +148,7 @@ std::string crc32_hex(std::uint32_t crc) {
 std::string not_regular(mode_t mode) {
   if (S_ISREG(mode)) return {};
   if (S_ISLNK(mode)) return "a symbolic link";
-  const char* kind = S_ISDIR(mode)    ? "a directory"
-                     : S_ISCHR(mode)  ? "a character device"
-                     : S_ISBLK(mode)  ? "a block device"
-                     : S_ISFIFO(mode) ? "a FIFO"
-                     : S_ISSOCK(mode) ? "a socket"
-                                      : "something else";
-  return std::string(kind) + ", not a regular file";
+  return std::string(io::detail::file_kind(mode)) + ", not a regular file";
 }
 
 Result<std::uint64_t> plain_file_size(const std::filesystem::path& path) noexcept {

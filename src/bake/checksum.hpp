@@ -28,15 +28,6 @@ struct FileSum {
   std::uint32_t crc32 = 0;  ///< CRC-32 of its bytes
 };
 
-/// A file descriptor closed when it goes out of scope (-1: none).
-struct OwnedFd {
-  int fd = -1;
-  OwnedFd() = default;
-  OwnedFd(const OwnedFd&) = delete;
-  OwnedFd& operator=(const OwnedFd&) = delete;
-  ~OwnedFd();
-};
-
 /// Called with each block of a file's bytes in order; a non-ok Status stops the read.
 using BlockSink = std::function<Status(std::span<const std::byte>)>;
 

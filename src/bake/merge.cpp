@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "checksum.hpp"
+#include "io/format_detail.hpp"
 #include "manifest.hpp"
 #include "ocean/bake.hpp"
 #include "ocean/io.hpp"
@@ -57,7 +58,7 @@ Status copy_checked(const detail::ShardManifest& shard, const Json& frame, std::
                     const fs::path& to) {
   const std::string& file = frame["files"][i].get_ref<const std::string&>();
   return io::write_atomically(to / file, [&](const fs::path& temporary) -> Status {
-    detail::OwnedFd out;
+    io::detail::FdGuard out;
     out.fd = ::open(temporary.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC | O_NOFOLLOW);
     if (out.fd < 0) return io_error(io::errno_message(errno));
     Status written;

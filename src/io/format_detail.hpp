@@ -38,15 +38,16 @@ inline Status failure(const char* verb, const std::filesystem::path& path,
   }
 }
 
-/// The kind of file `mode` describes, for a message: "a directory", "a FIFO"... (for a mode that is
-/// not a regular file's).
+/// The kind of file `mode` describes, for a message: "a directory", "a FIFO", "a symbolic link"
+/// (an lstat's mode)... (for a mode that is not a regular file's).
 inline const char* file_kind(mode_t mode) {
+  if (S_ISLNK(mode)) return "a symbolic link";
   if (S_ISDIR(mode)) return "a directory";
   if (S_ISCHR(mode)) return "a character device";
   if (S_ISBLK(mode)) return "a block device";
   if (S_ISFIFO(mode)) return "a FIFO";
   if (S_ISSOCK(mode)) return "a socket";
-  return "not a regular file";
+  return "something else";
 }
 
 /// Closes the descriptor it holds when it goes out of scope.
