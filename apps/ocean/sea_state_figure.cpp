@@ -78,7 +78,7 @@ plot::Axes spectra_panel(const FrequencySpectrum& chosen) {
     q.depth_m =
         m == SpectrumModel::tma ? (std::isfinite(cp.depth_m) ? cp.depth_m : 10.0) : kInfiniteDepth;
     const bool jonswap_family = m == SpectrumModel::jonswap || m == SpectrumModel::tma;
-    if (!hs_form && jonswap_family && std::isnan(q.fetch_m)) q.fetch_m = 100e3;
+    if (!hs_form && jonswap_family && std::isnan(q.fetch_m)) q.fetch_m = kDefaultFetchM;
     if (!jonswap_family) {
       q.fetch_m = kUnset;
       q.gamma = kUnset;

@@ -119,7 +119,9 @@ Result<std::vector<BandRole>> parse_band_roles(std::string_view list);
 /// spreading, waves travelling towards +x.
 inline SeaStateParams default_sea_state() {
   SeaStateParams p;
-  p.wind_sea.spectrum = {.model = SpectrumModel::jonswap, .wind_speed_mps = 10.0, .fetch_m = 100e3};
+  p.wind_sea.spectrum = {.model = SpectrumModel::jonswap,
+                         .wind_speed_mps = kDefaultWindSpeedMps,
+                         .fetch_m = kDefaultFetchM};
   p.wind_sea.spreading = {.model = SpreadingModel::donelan_banner};
   return p;
 }

@@ -16,11 +16,13 @@
 #include <complex>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string_view>
 #include <vector>
 
 #include "ocean/core.hpp"
 #include "ocean/names.hpp"
+#include "ocean/parameters.hpp"
 
 namespace ocean {
 
@@ -182,6 +184,59 @@ struct FrequencySpectrumParams {
   double phillips_amplitude = kUnset;
   double small_wave_cutoff_m = 0.0;  ///< l of the factor e^(−k²l²) (Aebi, VR Ocean, eq. 10), m ≥ 0
 };
+
+/// The default wind sea, m/s and m: U10 = 10 m/s (a fresh breeze) over a 100 km fetch, what
+/// default_sea_state() (ocean/sim.hpp) simulates and what a spectrum given no sea state draws.
+inline constexpr double kDefaultWindSpeedMps = 10.0;
+inline constexpr double kDefaultFetchM = 100e3;
+
+/// The sea state's numbers as every front end names them (ocean/parameters.hpp): the library's
+/// field, the tool's flag, the Python keyword, the range FrequencySpectrum::make and
+/// SpreadingParams check, and the doc line. The tool's help, its messages (fields rewritten to
+/// flags in this order), Python's keywords and the library's checks read this one table.
+inline constexpr std::array<params::ParameterDoc, 10> kSeaStateParameters{{
+    {"significant_wave_height_m", "--hs", "hs", 1e-6, 50.0, "m",
+     "significant wave height Hs, m (with --tp)"},
+    {"peak_period_s", "--tp", "tp", 1e-3, 100.0, "s", "peak period Tp, s (with --hs)"},
+    {"wind_speed_mps", "--wind-speed", "wind_speed", 1e-3, 100.0, "m/s",
+     "wind speed, m/s: U10 (U19.5 for pierson-moskowitz)"},
+    {"fetch_m", "--fetch", "fetch", 1.0, 1e8, "m", "fetch, m (jonswap/tma from wind)"},
+    {"gamma", "--gamma", "gamma", 1.0, 20.0, "", "JONSWAP peak enhancement, >= 1, or 'auto'"},
+    {"depth_m", "--depth", "depth", 1e-100, std::numeric_limits<double>::infinity(), "m",
+     "water depth, m (tma)"},
+    {"gravity_mps2", "--gravity", "gravity", 0.1, 100.0, "m/s^2",
+     "gravitational acceleration, m/s^2 (default 9.81)"},
+    {"phillips_amplitude", "--phillips-amplitude", "phillips_amplitude", 0.0, 1e6, "",
+     "Phillips amplitude A (dimensionless; default: Hs of Pierson-Moskowitz)"},
+    {"small_wave_cutoff_m", "--cutoff-length", "cutoff_length", 0.0,
+     std::numeric_limits<double>::infinity(), "m",
+     "Phillips small-wave cutoff length l, m (factor exp(-k^2 l^2))"},
+    {"alpha", "--alpha", "alpha", 0.0, 1.0, "",
+     "power-cosine wind alignment in [0,1]: s = 1 + 5 alpha^2, counter-wave energy 0.01 + "
+     "0.49 (1 - alpha)^2"},
+}};
+/// The row of kSeaStateParameters for a field ("fetch_m").
+constexpr const params::ParameterDoc& sea_state_parameter(std::string_view field) {
+  return params::parameter(kSeaStateParameters, field);
+}
+
+/// A frequency spectrum as a front end gathers it: the names as given (kSpectrumModelNames,
+/// kDepthFactorNames, kFetchLawNames, kJonswapNormalizationNames) and each number given or not
+/// (gamma not given is "auto"). The defaults are the tool's.
+struct SpectrumInputs {
+  std::string_view model = "jonswap";
+  std::optional<double> hs, tp, wind_speed, fetch, depth, gravity, phillips_amplitude,
+      cutoff_length, gamma;
+  std::string_view depth_factor = "exact";
+  std::string_view fetch_law = "hasselmann";
+  std::string_view normalization = "dnv";
+};
+/// The spectrum's parameters, checked later by FrequencySpectrum::make; errors name the flags
+/// (kSeaStateParameters), in this order: an unknown model ("--model: ..."), a NaN number ("--hs
+/// = nan must be a finite number"), an unknown name. With none of Hs, Tp and the wind speed
+/// given, the default wind sea (kDefaultWindSpeedMps, and kDefaultFetchM for jonswap and tma when
+/// no fetch is given); tma needs a depth.
+Result<FrequencySpectrumParams> resolve(const SpectrumInputs& inputs);
 
 /// A validated S(ω) with its derived constants resolved.
 class FrequencySpectrum {

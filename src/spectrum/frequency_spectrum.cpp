@@ -2,10 +2,12 @@
 //
 // Sources for each model are cited in pierson_moskowitz.cpp, jonswap.cpp, tma.cpp and
 // phillips.cpp. Equations: docs/math.md §3.
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 
 #include "internal.hpp"
 
@@ -23,9 +25,24 @@ namespace {
 
 bool is_set(double v) { return !std::isnan(v); }
 
+// The field's closed range in kSeaStateParameters.
+Status require_range(std::string_view field, double value) {
+  const params::ParameterDoc& p = sea_state_parameter(field);
+  return require_in_range(p.field, value, p.lo, p.hi);
+}
+
+// "<flag> = '<text>' is unknown: must be a or b".
+template <class E, std::size_t N>
+Result<E> parse_name(std::string_view flag, const std::array<EnumName<E>, N>& table,
+                     std::string_view text) {
+  if (std::optional<E> value = value_of(table, text)) return *value;
+  return invalid_argument(std::string(flag) + " = '" + excerpt(text) + "' is unknown: must be " +
+                          name_list(table, ", ", " or "));
+}
+
 Status validate_params(const FrequencySpectrumParams& p) {
   const std::string model(to_string(p.model));
-  if (Status s = require_in_range("gravity_mps2", p.gravity_mps2, 0.1, 100.0); !s.ok()) return s;
+  if (Status s = require_range("gravity_mps2", p.gravity_mps2); !s.ok()) return s;
   const bool hs_form = is_set(p.significant_wave_height_m) || is_set(p.peak_period_s);
   const bool wind_form = is_set(p.wind_speed_mps);
   if (hs_form && wind_form) {
@@ -45,16 +62,14 @@ Status validate_params(const FrequencySpectrumParams& p) {
     if (!is_set(p.significant_wave_height_m) || !is_set(p.peak_period_s)) {
       return invalid_argument("significant_wave_height_m and peak_period_s must be given together");
     }
-    if (Status s =
-            require_in_range("significant_wave_height_m", p.significant_wave_height_m, 1e-6, 50.0);
+    if (Status s = require_range("significant_wave_height_m", p.significant_wave_height_m);
         !s.ok()) {
       return s;
     }
-    if (Status s = require_in_range("peak_period_s", p.peak_period_s, 1e-3, 100.0); !s.ok()) {
+    if (Status s = require_range("peak_period_s", p.peak_period_s); !s.ok()) {
       return s;
     }
-  } else if (Status s = require_in_range("wind_speed_mps", p.wind_speed_mps, 1e-3, 100.0);
-             !s.ok()) {
+  } else if (Status s = require_range("wind_speed_mps", p.wind_speed_mps); !s.ok()) {
     return s;
   }
   const bool jonswap_family = p.model == SpectrumModel::jonswap || p.model == SpectrumModel::tma;
@@ -62,13 +77,13 @@ Status validate_params(const FrequencySpectrumParams& p) {
     if (!jonswap_family || hs_form) {
       return invalid_argument("fetch_m applies only to jonswap/tma given by wind_speed_mps");
     }
-    if (Status s = require_in_range("fetch_m", p.fetch_m, 1.0, 1e8); !s.ok()) return s;
+    if (Status s = require_range("fetch_m", p.fetch_m); !s.ok()) return s;
   } else if (jonswap_family && wind_form) {
     return invalid_argument(model + " from wind_speed_mps needs fetch_m (fetch-limited sea)");
   }
   if (is_set(p.gamma)) {
     if (!jonswap_family) return invalid_argument("gamma applies only to jonswap/tma");
-    if (Status s = require_in_range("gamma", p.gamma, 1.0, 20.0); !s.ok()) return s;
+    if (Status s = require_range("gamma", p.gamma); !s.ok()) return s;
   }
   if (Status s = require_in_range("sigma_a", p.sigma_a, 1e-3, 1.0); !s.ok()) return s;
   if (Status s = require_in_range("sigma_b", p.sigma_b, 1e-3, 1.0); !s.ok()) return s;
@@ -191,6 +206,63 @@ double FrequencySpectrum::moment(int n) const {
     sum += weight * f;
   }
   return sum * h / 3.0;
+}
+
+Result<FrequencySpectrumParams> resolve(const SpectrumInputs& in) {
+  FrequencySpectrumParams p;
+  Result<SpectrumModel> model = parse_spectrum_model(in.model);
+  if (!model.ok()) return Status(model.status().code(), "--model: " + model.status().message());
+  p.model = model.value();
+  const std::pair<const std::optional<double>*, double*> numbers[] = {
+      {&in.hs, &p.significant_wave_height_m},
+      {&in.tp, &p.peak_period_s},
+      {&in.wind_speed, &p.wind_speed_mps},
+      {&in.fetch, &p.fetch_m},
+      {&in.depth, &p.depth_m},
+      {&in.gravity, &p.gravity_mps2},
+      {&in.phillips_amplitude, &p.phillips_amplitude},
+      {&in.cutoff_length, &p.small_wave_cutoff_m},
+      {&in.gamma, &p.gamma}};
+  for (std::size_t i = 0; i < std::size(numbers); ++i) {
+    const auto& [given, value] = numbers[i];
+    if (!given->has_value()) continue;
+    // Any number but NaN: FrequencySpectrum::make checks the values and names the fields.
+    if (std::isnan(**given)) {
+      static constexpr std::array<std::string_view, 9> kFields = {"significant_wave_height_m",
+                                                                  "peak_period_s",
+                                                                  "wind_speed_mps",
+                                                                  "fetch_m",
+                                                                  "depth_m",
+                                                                  "gravity_mps2",
+                                                                  "phillips_amplitude",
+                                                                  "small_wave_cutoff_m",
+                                                                  "gamma"};
+      return require_finite(sea_state_parameter(kFields[i]).flag, **given);
+    }
+    *value = **given;
+  }
+  Result<DepthFactor> depth_factor =
+      parse_name("--depth-factor", kDepthFactorNames, in.depth_factor);
+  if (!depth_factor.ok()) return depth_factor.status();
+  p.depth_factor = depth_factor.value();
+  Result<FetchLaw> fetch_law = parse_name("--fetch-law", kFetchLawNames, in.fetch_law);
+  if (!fetch_law.ok()) return fetch_law.status();
+  p.fetch_law = fetch_law.value();
+  Result<JonswapNormalization> normalization =
+      parse_name("--normalization", kJonswapNormalizationNames, in.normalization);
+  if (!normalization.ok()) return normalization.status();
+  p.normalization = normalization.value();
+  if (!in.hs && !in.tp && !in.wind_speed) {
+    // The default sea state: a fresh breeze over a long fetch.
+    p.wind_speed_mps = kDefaultWindSpeedMps;
+    if ((p.model == SpectrumModel::jonswap || p.model == SpectrumModel::tma) && !in.fetch)
+      p.fetch_m = kDefaultFetchM;
+  }
+  if (p.model == SpectrumModel::tma && !in.depth) {
+    return invalid_argument("tma needs " + std::string(sea_state_parameter("depth_m").flag) +
+                            " (water depth, m)");
+  }
+  return p;
 }
 
 }  // namespace ocean

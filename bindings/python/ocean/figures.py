@@ -31,7 +31,7 @@ def _comparison(model, sea):
     else:
         q.pop("depth", None)
     if not hs_form and jonswap_family and q.get("fetch") is None:
-        q["fetch"] = 100e3
+        q["fetch"] = ocean._ocean.DEFAULT_FETCH_M
     if not jonswap_family:
         q.pop("fetch", None)
         q.pop("gamma", None)

@@ -18,9 +18,9 @@
 #include "bindings.hpp"
 #include "errors.hpp"
 #include "integers.hpp"
+#include "ocean/parameters.hpp"
 #include "ocean/statistics.hpp"
 #include "ocean/task_runner.hpp"
-#include "options.hpp"
 #include "signals.hpp"
 
 namespace py = pybind11;
@@ -74,16 +74,16 @@ void bake_frames(const py::object& preset, const std::filesystem::path& out,
                  const Integer& frame_arg, double fps, double time_s,
                  const std::vector<std::string>& formats, const std::string& backend,
                  const std::optional<std::string>& shard) {
-  constexpr cli::NumberOption<double> kFps{
-      .flag = "--fps", .accept = cli::Accept::in_range, .lo = 1e-3, .hi = 1e4};
-  constexpr cli::NumberOption<double> kTime{.flag = "--time", .accept = cli::Accept::finite};
-  constexpr cli::NumberOption<double> kFrames{
+  constexpr params::NumberOption<double> kFps{
+      .flag = "--fps", .accept = params::Accept::in_range, .lo = 1e-3, .hi = 1e4};
+  constexpr params::NumberOption<double> kTime{.flag = "--time", .accept = params::Accept::finite};
+  constexpr params::NumberOption<double> kFrames{
       .flag = "--frames", .lo = 1.0, .hi = static_cast<double>(bake::kMaxFrames)};
   if (out.empty()) raise(invalid_argument("bake needs --out DIR"));
   bake::BakeParams params{.output_dir = out, .formats = parse_formats(formats)};
   const SimulationConfig config = config_of(preset);
-  check(cli::check(kFps, fps, format_number(fps)));
-  check(cli::check(kTime, time_s, format_number(time_s)));
+  check(params::check(kFps, fps, format_number(fps)));
+  check(params::check(kTime, time_s, format_number(time_s)));
   const long long frames = in_range(frame_arg, kFrames);
   params.frame_count = frames;
   params.fps = fps;
@@ -178,10 +178,11 @@ void bind_bake(py::module_& m) {
       [](const py::object& preset, const Integer& seed_arg, double time_s,
          const Integer& thread_arg) {
         // As `ocean stats --seeds` and --time.
-        constexpr cli::NumberOption<double> kSeeds{.flag = "--seeds", .lo = 1, .hi = 1e5};
-        constexpr cli::NumberOption<double> kTime{.flag = "--time", .accept = cli::Accept::finite};
+        constexpr params::NumberOption<double> kSeeds{.flag = "--seeds", .lo = 1, .hi = 1e5};
+        constexpr params::NumberOption<double> kTime{.flag = "--time",
+                                                     .accept = params::Accept::finite};
         const auto seeds = static_cast<int>(in_range(seed_arg, kSeeds));
-        check(cli::check(kTime, time_s, format_number(time_s)));
+        check(params::check(kTime, time_s, format_number(time_s)));
         const auto threads = static_cast<int>(in_range(thread_arg, kThreads));
         const SimulationConfig config = config_of(preset);
         std::optional<SurfaceStats> stats;

@@ -1,7 +1,8 @@
 // Status → Python exception (see errors.hpp).
 #include "errors.hpp"
 
-#include "cli_common.hpp"
+#include "ocean/parameters.hpp"
+#include "ocean/spectrum.hpp"
 
 namespace ocean::python {
 
@@ -15,7 +16,7 @@ namespace ocean::python {
     case ErrorCode::ok:
     case ErrorCode::internal: break;
   }
-  PyErr_SetString(type, cli::flag_message(status).c_str());
+  PyErr_SetString(type, params::with_flag_names(status.message(), kSeaStateParameters).c_str());
   throw pybind11::error_already_set();
 }
 

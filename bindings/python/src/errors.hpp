@@ -1,6 +1,6 @@
 // Status → Python exception: the one place the binding turns the library's errors into raised
 // exceptions. The message is the one the ocean tool prints after "ocean: error: " (library field
-// names rewritten to the tool's flags, apps/ocean/cli_common.hpp).
+// names rewritten to the tool's flags by the table kSeaStateParameters, ocean/spectrum.hpp).
 //
 //   invalid_argument → ValueError         io_error → OSError
 //   unsupported      → NotImplementedError cancelled → KeyboardInterrupt

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "errors.hpp"
-#include "options.hpp"
+#include "ocean/parameters.hpp"
 
 namespace ocean::python {
 
@@ -25,16 +25,16 @@ struct Integer {
 /// The `threads` argument of Simulator and surface_stats: 0 (every hardware thread) to 256, the
 /// most threads `ocean bench --threads` and make_ready_runner take. oneTBB itself has no bound:
 /// an arena of 10**9 slots crashes it.
-inline constexpr cli::NumberOption<double> kThreads{
+inline constexpr params::NumberOption<double> kThreads{
     .flag = "threads", .lo = 0, .hi = 256, .says = "an integer in [0, 256] (0: all threads)"};
 
 /// `arg` when it lies in [option.lo, option.hi], else ValueError with the tool's message
 /// "<flag> = <arg> is out of range: must be an integer in [lo, hi]" (or "must be <says>"),
 /// the value echoed exactly. The bounds must be within ±2^53 (exact as doubles).
-inline long long in_range(const Integer& arg, cli::NumberOption<double> option) {
-  option.accept = cli::Accept::integer_in_range;
-  option.echo = cli::Echo::text;
-  check(cli::check(option, static_cast<double>(arg.value), arg.text));
+inline long long in_range(const Integer& arg, params::NumberOption<double> option) {
+  option.accept = params::Accept::integer_in_range;
+  option.echo = params::Echo::text;
+  check(params::check(option, static_cast<double>(arg.value), arg.text));
   return arg.value;
 }
 

@@ -21,7 +21,7 @@ namespace {
 // Preset.to_json's indent: 0 to 64 spaces a level, negative for one line. nlohmann::json 3.11.2
 // keeps 512 spaces of indentation and doubles them once per level when a level needs more, so an
 // indent above 512 reads past them; 64 is more than any reader needs.
-constexpr cli::NumberOption<double> kIndent{
+constexpr params::NumberOption<double> kIndent{
     .flag = "indent", .lo = 0, .hi = 64, .says = "an integer in [0, 64], or negative for one line"};
 
 // Sets every leaf of a JSON object (a value that is not an object) at its dotted key path.

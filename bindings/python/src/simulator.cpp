@@ -101,7 +101,7 @@ class PySimulator {
   py::dict fields(const Integer& cascade) {
     const std::shared_lock lock(state_->mutex);
     const Frame& f = state_->sim->frame();
-    const cli::NumberOption<double> option{
+    const params::NumberOption<double> option{
         .flag = "cascade", .lo = 0, .hi = static_cast<double>(f.cascades.size()) - 1};
     const CascadeFrame& c = f.cascades[static_cast<std::size_t>(in_range(cascade, option))];
     const py::object base =

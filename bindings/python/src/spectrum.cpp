@@ -2,9 +2,9 @@
 // the math of ocean/spectrum.hpp vectorised over numpy arrays, with the parameters and the error
 // messages of `ocean spectrum`, `ocean dispersion` and `ocean spreading`.
 //
-// Keyword values reach the library through the tool's own flag parser (cli::to_params), each
-// number written in its shortest round-trip form, so that a value means exactly what the same
-// flag means and a bad one gives the tool's message.
+// Keyword values reach the library as the tool's flags do (ocean::resolve, the ranges of
+// kSeaStateParameters, ocean/parameters.hpp's checks), so that a value means exactly what the
+// same flag means and a bad one gives the tool's message.
 #include "ocean/spectrum.hpp"
 
 #include <pybind11/stl.h>
@@ -16,9 +16,8 @@
 
 #include "arrays.hpp"
 #include "bindings.hpp"
-#include "cli_common.hpp"
 #include "errors.hpp"
-#include "options.hpp"
+#include "ocean/parameters.hpp"
 
 namespace py = pybind11;
 
@@ -27,8 +26,6 @@ namespace {
 
 using OptionalNumber = std::optional<double>;
 using NumberOrName = std::optional<std::variant<double, std::string>>;
-
-std::string text_of(const OptionalNumber& v) { return v ? format_number(*v) : std::string(); }
 
 /// The sea-state keywords of ocean.spectrum, as `ocean spectrum`'s flags.
 struct SeaKeywords {
@@ -40,24 +37,25 @@ struct SeaKeywords {
   OptionalNumber phillips_amplitude, cutoff_length;
 
   [[nodiscard]] FrequencySpectrumParams params() const {
-    cli::SpectrumFlags f;
-    f.model = model;
-    f.hs = text_of(hs);
-    f.tp = text_of(tp);
-    f.wind_speed = text_of(wind_speed);
-    f.fetch = text_of(fetch);
-    if (gamma) {
-      f.gamma = std::holds_alternative<double>(*gamma) ? format_number(std::get<double>(*gamma))
-                                                       : std::get<std::string>(*gamma);
+    SpectrumInputs in{.model = model,
+                      .hs = hs,
+                      .tp = tp,
+                      .wind_speed = wind_speed,
+                      .fetch = fetch,
+                      .depth = depth,
+                      .gravity = gravity,
+                      .phillips_amplitude = phillips_amplitude,
+                      .cutoff_length = cutoff_length,
+                      .depth_factor = depth_factor,
+                      .fetch_law = fetch_law,
+                      .normalization = normalization};
+    if (gamma && std::holds_alternative<double>(*gamma)) {
+      in.gamma = std::get<double>(*gamma);
+    } else if (gamma && std::get<std::string>(*gamma) != "auto") {
+      // Text other than 'auto' is read as the flag's text is.
+      in.gamma = take(params::parse_number("--gamma", std::get<std::string>(*gamma)));
     }
-    f.depth = text_of(depth);
-    f.gravity = text_of(gravity);
-    f.depth_factor = depth_factor;
-    f.fetch_law = fetch_law;
-    f.normalization = normalization;
-    f.phillips_amplitude = text_of(phillips_amplitude);
-    f.cutoff_length = text_of(cutoff_length);
-    return take(cli::to_params(f));
+    return take(resolve(in));
   }
 };
 
@@ -67,11 +65,11 @@ FrequencySpectrum make_spectrum(const SeaKeywords& kw) {
 
 // The values every ω must take, as `ocean spectrum --omega` checks them.
 void check_omegas(const DoubleArray& omega) {
-  constexpr cli::NumberOption<double> kOmega{.flag = "--omega",
-                                             .accept = cli::Accept::non_negative};
+  constexpr params::NumberOption<double> kOmega{.flag = "--omega",
+                                                .accept = params::Accept::non_negative};
   for (py::ssize_t i = 0; i < omega.size(); ++i) {
     const double w = omega.data()[i];
-    check(cli::check(kOmega, w, format_number(w)));
+    check(params::check(kOmega, w, format_number(w)));
   }
 }
 
@@ -129,25 +127,30 @@ DoubleArray spreading(const DoubleArray& theta, const std::string& model, Option
   if (!m.ok()) raise(Status(m.status().code(), "--model: " + m.status().message()));
   SpreadingParams params{.model = m.value()};
   params.counter_wave_suppression = !symmetric;
-  // NaN is no number to the tool's parser (cli::parse_number), which refuses it as not finite.
+  // NaN is no number to the tool's parser (params::parse_number), which refuses it as not finite.
   if (s && std::isnan(*s)) check(require_finite("--s", *s));
   if (alpha && std::isnan(*alpha)) check(require_finite("--alpha", *alpha));
   if (s) params.s = *s;
   if (alpha) params.alpha = *alpha;
-  constexpr cli::NumberOption<double> kOmegaRatio{.flag = "--omega-ratio",
-                                                  .accept = cli::Accept::positive};
-  constexpr cli::NumberOption<double> kWindSpeed{
-      .flag = "--wind-speed", .accept = cli::Accept::in_range, .lo = 1e-3, .hi = 100.0};
-  constexpr cli::NumberOption<double> kFetch{
-      .flag = "--fetch", .accept = cli::Accept::in_range, .lo = 1.0, .hi = 1e8};
-  constexpr cli::NumberOption<double> kTheta{.flag = "--theta", .accept = cli::Accept::finite};
-  check(cli::check(kOmegaRatio, omega_ratio, format_number(omega_ratio)));
+  constexpr params::NumberOption<double> kOmegaRatio{.flag = "--omega-ratio",
+                                                     .accept = params::Accept::positive};
+  constexpr params::ParameterDoc wind = sea_state_parameter("wind_speed_mps");
+  constexpr params::ParameterDoc fetch_range = sea_state_parameter("fetch_m");
+  constexpr params::NumberOption<double> kWindSpeed{
+      .flag = wind.flag, .accept = params::Accept::in_range, .lo = wind.lo, .hi = wind.hi};
+  constexpr params::NumberOption<double> kFetch{.flag = fetch_range.flag,
+                                                .accept = params::Accept::in_range,
+                                                .lo = fetch_range.lo,
+                                                .hi = fetch_range.hi};
+  constexpr params::NumberOption<double> kTheta{.flag = "--theta",
+                                                .accept = params::Accept::finite};
+  check(params::check(kOmegaRatio, omega_ratio, format_number(omega_ratio)));
   SpreadingContext context{.omega_p = 1.0};
   if (wind_speed.has_value() != fetch.has_value())
     raise(invalid_argument("--wind-speed and --fetch must be given together"));
   if (wind_speed) {
-    check(cli::check(kWindSpeed, *wind_speed, format_number(*wind_speed)));
-    check(cli::check(kFetch, *fetch, format_number(*fetch)));
+    check(params::check(kWindSpeed, *wind_speed, format_number(*wind_speed)));
+    check(params::check(kFetch, *fetch, format_number(*fetch)));
     context.wind_speed_mps = *wind_speed;
     context.omega_p =
         jonswap_fetch_law(*wind_speed, *fetch, kDefaultGravity, FetchLaw::hasselmann_1973)[1];
@@ -159,7 +162,7 @@ DoubleArray spreading(const DoubleArray& theta, const std::string& model, Option
   const Spreading d = take(Spreading::make(params, context));
   for (py::ssize_t i = 0; i < theta.size(); ++i) {
     const double t = theta.data()[i];
-    check(cli::check(kTheta, t, format_number(t)));
+    check(params::check(kTheta, t, format_number(t)));
   }
   const double omega = omega_ratio * context.omega_p;
   return map_values(theta, [&](double t) { return d(omega, t); });
@@ -192,6 +195,8 @@ void def_with_sea(py::module_& m, const char* name, F&& f, const char* doc) {
 }  // namespace
 
 void bind_spectrum(py::module_& m) {
+  m.attr("DEFAULT_WIND_SPEED_MPS") = kDefaultWindSpeedMps;
+  m.attr("DEFAULT_FETCH_M") = kDefaultFetchM;
   m.def(
       "spectrum",
       [](const std::string& model, const DoubleArray& omega, OptionalNumber hs, OptionalNumber tp,
@@ -210,8 +215,9 @@ void bind_spectrum(py::module_& m) {
       py::arg("normalization") = "dnv", py::arg("phillips_amplitude") = py::none(),
       py::arg("cutoff_length") = py::none(),
       "One-sided frequency spectrum S(omega), m^2 s/rad, at every omega (rad/s) of an array of "
-      "any shape. Keywords as the flags of `ocean spectrum`; with no sea state given, U10 = 10 "
-      "m/s over a 100 km fetch. gamma is a number >= 1 or 'auto'.");
+      "any shape. Keywords as the flags of `ocean spectrum`; with no sea state given, the "
+      "default wind sea (DEFAULT_WIND_SPEED_MPS over DEFAULT_FETCH_M). gamma is a number >= 1 or "
+      "'auto'.");
   def_with_sea(
       m, "spectrum_info",
       [](const std::string& model, OptionalNumber hs, OptionalNumber tp, OptionalNumber wind_speed,
