@@ -24,15 +24,15 @@
 #include <vector>
 
 #include "ocean/backends.hpp"
-#include "ocean/cpu_backend.hpp"
+#include "ocean/backends/cpu.hpp"
 #include "ocean/half.hpp"
 #include "ocean/waves.hpp"
 #include "support/require_devices.hpp"
 #ifdef OCEAN_HAS_VULKAN
-#include "ocean/vk/simulation.hpp"
+#include "ocean/backends/vulkan.hpp"
 #endif
 #ifdef OCEAN_HAS_CUDA
-#include "ocean/cuda/simulation.hpp"
+#include "ocean/backends/cuda.hpp"
 #endif
 
 namespace {

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "gpu_state.hpp"
-#include "ocean/vk/simulation.hpp"
+#include "ocean/backends/vulkan.hpp"
 #include "sim/far_noise_map.hpp"
 
 namespace ocean::vk {
