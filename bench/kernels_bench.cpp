@@ -8,6 +8,7 @@
 
 #include "cpu/cpu_backend.hpp"
 #include "cpu/kernels.hpp"
+#include "ocean/plan.hpp"
 
 namespace {
 
@@ -25,9 +26,8 @@ struct Fixture {
     backend.step(1.0, frame);
     state.resolution = n;
     state.patch_size_m = 500.0;
-    state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
-                                                  ocean::cascade_spectrum_params(config, 0))
-                         .value();
+    const ocean::SimulationPlan plan = ocean::SimulationPlan::make(config).value();
+    state.spectrum = ocean::make_initial_spectrum(plan.sea(), plan.cascades()[0].spectrum).value();
     state.planes = ocean::cpu::plane_count(config.normals);
     state.choppiness = config.choppiness;
     ocean::cpu::build_kernel_inputs(state, config.loop_period_s);

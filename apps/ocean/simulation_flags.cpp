@@ -3,6 +3,7 @@
 
 #include <cmath>
 
+#include "ocean/plan.hpp"
 #include "ocean/preset.hpp"
 
 namespace ocean::cli {
@@ -16,11 +17,11 @@ constexpr NumberOption<double> kCascadeSizes{.flag = "--cascades"};
 // The power-of-two range is ocean::validate's ("resolution = 100 is out of range ..."); here only
 // a whole number small enough for an int.
 constexpr NumberOption<int> kGridResolution{.flag = "--resolution",
-                                        .accept = Accept::integer_in_range,
-                                        .lo = -1e6,
-                                        .hi = 1e6,
-                                        .echo = Echo::text,
-                                        .says = "a power of two in [16, 2048]"};
+                                            .accept = Accept::integer_in_range,
+                                            .lo = -1e6,
+                                            .hi = 1e6,
+                                            .echo = Echo::text,
+                                            .says = "a power of two in [16, 2048]"};
 // Below 2^53, where every integer is exact as a double.
 constexpr NumberOption<std::uint64_t> kSeed{.flag = "--seed",
                                             .accept = Accept::integer_in_range,
@@ -40,7 +41,8 @@ void add_simulation_flags(CLI::App& command, SimulationFlags& f) {
       name_list(preset::builtin_names(), ", ", ", ") + " or a preset JSON file (see presets/)");
   command.add_option("--set", f.set, "override a preset key: --set sea.wind_sea.fetch_m=5e4");
   add_spectrum_flags(command, f.sea);
-  add_option(command, kGridResolution, f.resolution, "grid size N per cascade (power of two, 16-2048)");
+  add_option(command, kGridResolution, f.resolution,
+             "grid size N per cascade (power of two, 16-2048)");
   add_option(command, kSeed, f.seed, "random seed (integer)");
   add_option(command, kChoppiness, f.choppiness, "horizontal displacement lambda >= 0");
   add_option(command, kCascadeSizes, f.cascades, "patch sizes L1,L2,... in metres, largest first");
@@ -125,8 +127,7 @@ Result<SimulationConfig> resolve_config(const SimulationFlags& f) {
       return Status(roles.status().code(), "--band-roles: " + roles.status().message());
     c.band_roles = std::move(roles).value();
   }
-  if (Status st = validate(c); !st.ok()) return st;
-  if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
+  if (Result<SimulationPlan> plan = SimulationPlan::make(c); !plan.ok()) return plan.status();
   return c;
 }
 

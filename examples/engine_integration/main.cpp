@@ -337,7 +337,8 @@ int main(int argc, char** argv) {
   std::unique_ptr<ocean::render::Renderer> renderer = std::move(renderer_made).value();
   // The CPU simulation's frame is uploaded into the renderer's images (with the Vulkan backend,
   // ocean/scene.hpp samples the simulation's images instead, with no copy).
-  if (ocean::Status st = renderer->configure(config); !st.ok()) return fail(st.message());
+  if (ocean::Status st = renderer->configure(simulator.plan().surface()); !st.ok())
+    return fail(st.message());
   if (ocean::Status st = renderer->upload(simulator.frame()); !st.ok()) return fail(st.message());
   const ocean::render::View view{.camera = {.position_m = {0.0, 6.0, 0.0},
                                             .target_m = {300.0, -2.0, 60.0},

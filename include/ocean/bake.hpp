@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "ocean/core.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/waves.hpp"
 
@@ -128,6 +129,7 @@ struct FrameDone {
   const Frame* frame =
       nullptr;  ///< the simulated fields (null when calm); valid only during the callback
   const waves::LocalFrame* local = nullptr;  ///< the local layer's frame, or null
+  double height_png_range_m = 0.0;           ///< the bake's height_png_range_m
 };
 
 /// Called after each frame's files are written, on the calling thread. A non-ok Status stops the
@@ -140,9 +142,9 @@ using FrameCallback = std::function<Status(const FrameDone&)>;
 long long loop_frame_count(const SimulationConfig& config, double fps);
 
 /// The half-range of the PNG height maps, m: four standard deviations of the sea surface height
-/// of `config`'s spectrum (the significant wave height Hs), at least 1 mm. Written to the
+/// of the plan's spectrum (the significant wave height Hs), at least 1 mm. Written to the
 /// manifest as "height_png_range_m".
-double height_png_range_m(const SimulationConfig& config);
+double height_png_range_m(const SimulationPlan& plan);
 
 /// Bakes `params.frame_count` frames of a simulation of `config` on the backend named `backend`
 /// (see make_backend), writing the files listed at the top of this header and, last,

@@ -23,7 +23,7 @@ struct FarFieldRange {
 };
 /// invalid_argument for a negative or non-finite distance, or near_m ≥ far_m (one line).
 Status validate(const FarFieldRange& range);
-/// Seed 003's eq. 6: 0 up to near_m, 1 from far_m, the Hermite step −2t³ + 3t² between.
+/// [VR-GIS FFT+Perlin], eq. 6: 0 up to near_m, 1 from far_m, the Hermite step −2t³ + 3t² between.
 double far_field_ratio(const FarFieldRange& range, double distance_m);
 
 /// The far field's noise map around a moving camera (docs/rendering.md R.13b, eqs. R.13b-2 and

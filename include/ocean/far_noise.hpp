@@ -1,10 +1,10 @@
-// ocean/far_noise.hpp — the far field's noise (docs/rendering.md R.13, R.13a): seed 003's
-// gradient-noise octaves fitted so that their height variance and mean-square slope equal those
-// of the band they replace (cascade 0, the one whose period shows from afar), each octave
-// advected at the mean phase velocity of that band's waves. The renderer evaluates the noise in
-// its shaders (ocean/far_field.hpp); the backends compute it as a per-frame map
-// (SimulationConfig::far_noise, Frame::far_noise: the CPU, Vulkan and CUDA backends). This is the
-// CPU reference they mirror (one source: src/sim/far_noise.h) and what the statistics tests
+// ocean/far_noise.hpp — the far field's noise (docs/rendering.md R.13, R.13a): the
+// gradient-noise octaves of [VR-GIS FFT+Perlin] fitted so that their height variance and
+// mean-square slope equal those of the band they replace (cascade 0, the one whose period shows
+// from afar), each octave advected at the mean phase velocity of that band's waves. The renderer
+// evaluates the noise in its shaders (ocean/far_field.hpp); the backends compute it as a per-frame
+// map (SimulationConfig::far_noise, Frame::far_noise: the CPU, Vulkan and CUDA backends). This is
+// the CPU reference they mirror (one source: src/sim/far_noise.h) and what the statistics tests
 // measure.
 //
 // Contract: plain functions, no allocation beyond the returned values, thread-safe.
@@ -59,8 +59,11 @@ struct FarFieldNoise {
   std::array<std::array<double, 2>, 3> velocity_mps{};  ///< (x, z) drift of each octave, m/s
   BandStatistics target;
 };
-/// Fits the noise to cascade 0's statistics. A flat sea gives zero amplitudes.
+/// Fits the noise to cascade 0's statistics. A flat sea gives zero amplitudes. Errors of
+/// SeaState::make.
 Result<FarFieldNoise> fit_far_field_noise(const SimulationConfig& config);
+/// The same fit for the sea state already made from config.sea (SimulationPlan::far_noise).
+FarFieldNoise fit_far_field_noise(const SeaState& sea, const SimulationConfig& config);
 
 /// The far field's height, m, and surface gradient (∂h/∂x, ∂h/∂z) at a world point (x, z).
 struct FarFieldSample {

@@ -26,6 +26,7 @@
 #include "ocean/interop.hpp"
 #include "ocean/lod.hpp"
 #include "ocean/objects.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/tessellation.hpp"
 #include "ocean/underwater.hpp"
@@ -216,9 +217,10 @@ class Renderer {
   /// memory_budget() (ocean/memory_budget.hpp): the read-back buffer, and on a CPU device
   /// (lavapipe) the targets too.
   Status resize(int width, int height);
-  /// Sizes the cascade images for `config` (the CPU upload path) and reads the cascade sizes,
-  /// bands and Hs the shaders need. Call again after the simulation is reconfigured.
-  Status configure(const SimulationConfig& config);
+  /// Sizes the cascade images for the surface of a simulation plan (SimulationPlan::surface,
+  /// ocean/plan.hpp; the CPU upload path) and keeps the cascade sizes, tiling wavelengths, bounds
+  /// and noise fit the shaders need. Call again after the simulation is reconfigured.
+  Status configure(const SurfaceDescription& surface);
   /// CPU path: copies `frame` (configured as above) into a staging buffer; the next draw copies
   /// it into the images first. Its far-field noise map (Frame::far_noise, when the simulation
   /// computes one) is copied too and drawn inside its window (docs/rendering.md R.13b); the far

@@ -31,6 +31,7 @@ namespace waves {
 class LocalLayer;  // ocean/waves.hpp
 class Damping;     // ocean/waves.hpp
 }  // namespace waves
+class SimulationPlan;  // ocean/plan.hpp
 
 /// How surface normals and the Jacobian are obtained from the synthesised fields.
 enum class NormalMethod {
@@ -123,13 +124,13 @@ inline SeaStateParams default_sea_state() {
   return p;
 }
 
-/// Seed 003's noise maps (docs/rendering.md R.13a): the far field's noise (R.13, fitted to cascade
-/// 0 by fit_far_field_noise, ocean/far_noise.hpp) as per-frame data, height and surface gradient
-/// on a square window of the world, each octave advected at the mean phase velocity of the waves
-/// it stands for. Computed by the backend beside the cascades: on the CPU as a task of the frame
-/// graph next to the cascades' chains, on Vulkan as a dispatch in the frame's submission with no
-/// barrier between it and the FFT, on CUDA on a stream of its own in the frame's graph. Off by
-/// default (resolution 0): no map, no work.
+/// The noise maps of [VR-GIS FFT+Perlin] (docs/references.md; docs/rendering.md R.13a): the far
+/// field's noise (R.13, fitted to cascade 0 by fit_far_field_noise, ocean/far_noise.hpp) as
+/// per-frame data, height and surface gradient on a square window of the world, each octave
+/// advected at the mean phase velocity of the waves it stands for. Computed by the backend beside
+/// the cascades: on the CPU as a task of the frame graph next to the cascades' chains, on Vulkan as
+/// a dispatch in the frame's submission with no barrier between it and the FFT, on CUDA on a stream
+/// of its own in the frame's graph. Off by default (resolution 0): no map, no work.
 struct FarNoiseConfig {
   int resolution = 0;  ///< N texels per side: 0 (off) or in [16, 4096]
   /// World (x, z) of texel (0, 0), m; texel (col, row) is the point origin + (col, row)·size/N.
@@ -272,8 +273,11 @@ class Backend {
  public:
   virtual ~Backend() = default;
   [[nodiscard]] virtual std::string_view name() const = 0;
-  /// Validates, allocates, generates the spectra. May be called again with a new config.
-  virtual Status configure(const SimulationConfig& config, TaskRunner& runner) = 0;
+  /// Allocates and generates the spectra of a resolved plan (ocean/plan.hpp). May be called
+  /// again with a new plan. A backend keeps no reference to `plan`.
+  virtual Status configure(const SimulationPlan& plan, TaskRunner& runner) = 0;
+  /// Resolves `config` (SimulationPlan::make: validation, sea state) and configures from it.
+  Status configure(const SimulationConfig& config, TaskRunner& runner);
   /// Sizes the arrays of a frame for the configured simulation.
   virtual void allocate(Frame& frame) const = 0;
   /// Computes the frame at `time_s`, every cascade as BandRole::both (the Simulator applies the
@@ -304,8 +308,13 @@ class Simulator {
   Simulator(const Simulator&) = delete;
   Simulator& operator=(const Simulator&) = delete;
 
+  /// The same from a plan already resolved (the plan is copied; its far-noise fit is shared).
+  static Result<std::unique_ptr<Simulator>> make(const SimulationPlan& plan,
+                                                 std::unique_ptr<Backend> backend,
+                                                 std::shared_ptr<TaskRunner> runner = nullptr);
   /// Regenerates spectra and buffers for a new configuration (on demand, Aebi, VR Ocean, §4.2.1).
   Status reconfigure(const SimulationConfig& config);
+  Status reconfigure(const SimulationPlan& plan);
   /// Computes the frame at time_s synchronously and publishes it.
   void step(double time_s);
   /// Starts computing the frame at time_s in the background (into the back buffer).
@@ -316,6 +325,9 @@ class Simulator {
   /// The last published frame.
   [[nodiscard]] const Frame& frame() const;
   [[nodiscard]] const SimulationConfig& config() const { return config_; }
+  /// The plan the backend was configured from (its config() is the configuration before any
+  /// set_far_noise_origin).
+  [[nodiscard]] const SimulationPlan& plan() const { return *plan_; }
   [[nodiscard]] const Backend& backend() const { return *backend_; }
 
   /// Adds a local layer (ocean/waves.hpp: wakes, waveforms) to the surface the queries see, so
@@ -359,6 +371,7 @@ class Simulator {
   void compute_local_surface(Frame& back);
   struct Async;
   SimulationConfig config_;
+  std::shared_ptr<const SimulationPlan> plan_;
   std::unique_ptr<Backend> backend_;
   std::shared_ptr<TaskRunner> runner_;
   Frame frames_[2];

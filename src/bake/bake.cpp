@@ -19,6 +19,7 @@
 #include "manifest.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/io.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/preset.hpp"
 #include "ocean/spectrum.hpp"
 #include "output_folder.hpp"
@@ -283,7 +284,8 @@ Status write_frames(Simulator& sim, const BakeParams& p, const FrameCallback& on
                            .frame_count = p.frame_count,
                            .time_s = t,
                            .frame = p.calm ? nullptr : &frame,
-                           .local = p.local_layer != nullptr ? &local : nullptr};
+                           .local = p.local_layer != nullptr ? &local : nullptr,
+                           .height_png_range_m = range_m};
       if (Status s = on_frame(done); !s.ok()) return s;
     }
   }
@@ -300,7 +302,7 @@ Status run(Simulator& sim, std::string_view backend, const BakeParams& p,
   // The layer composited with the sea (M.7.9), its foam accumulated from the first frame.
   if (!p.calm && p.local_layer != nullptr && sim.local_layer() != p.local_layer.get())
     sim.set_local_layer(p.local_layer);
-  const double range_m = height_png_range_m(sim.config());
+  const double range_m = height_png_range_m(sim.plan());
   Json manifest = manifest_head(sim, backend, p, range_m);
   const Status stop = write_frames(sim, p, on_frame, range_m, folder, manifest);
   const FrameRange range = written_frames(p);
@@ -324,10 +326,8 @@ long long loop_frame_count(const SimulationConfig& config, double fps) {
   return std::llround(config.loop_period_s * fps);
 }
 
-double height_png_range_m(const SimulationConfig& config) {
-  const Result<SeaState> sea = SeaState::make(config.sea);
-  const double hs = sea.ok() ? 4.0 * std::sqrt(sea.value().variance_m2()) : 0.0;
-  return std::max(hs, 1e-3);
+double height_png_range_m(const SimulationPlan& plan) {
+  return std::max(plan.significant_wave_height_m(), 1e-3);
 }
 
 Status bake(const SimulationConfig& config, std::string_view backend, const BakeParams& params,

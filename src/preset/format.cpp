@@ -6,6 +6,7 @@
 
 #include "json_format.hpp"
 #include "object_reader.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/preset.hpp"
 
 namespace ocean::preset {
@@ -232,8 +233,7 @@ Result<SimulationConfig> from_value(const Json& document) {
   else
     return invalid_argument("blue_channel = '" + excerpt(blue) + "' is unknown: must be " +
                             name_list(kBlueChannelNames, ", ", " or "));
-  if (Status s = validate(c); !s.ok()) return s;
-  if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
+  if (Result<SimulationPlan> plan = SimulationPlan::make(c); !plan.ok()) return plan.status();
   return c;
 }
 

@@ -36,8 +36,8 @@ Result<std::uint32_t> select_frame(Renderer::State& st, const View& view, lod::V
   lp.quality = view.quality;
   lp.camera_position_m = lod_position;
   lp.frustum = frustum;
-  lp.max_vertical_displacement_m = 1.2 * st.hs_m + 0.5 + curvature_drop_bound_m(view);
-  lp.max_horizontal_displacement_m = st.choppiness * st.hs_m;
+  lp.max_vertical_displacement_m = st.crest_bound_m + curvature_drop_bound_m(view);
+  lp.max_horizontal_displacement_m = st.horizontal_reach_m;
   if (Status s = lod::select_patches(lp, st.selection); !s.ok()) return s;
   const lod::LodSelection& sel = st.selection;
   stats = {

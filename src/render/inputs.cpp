@@ -6,42 +6,39 @@
 #include <bit>
 #include <cmath>
 #include <cstring>
-#include <numbers>
 #include <string>
 
 #include "state.hpp"
 
 namespace ocean::render {
 
-Status Renderer::configure(const SimulationConfig& config) {
-  if (Status s = ocean::validate(config); !s.ok()) return s;
+Status Renderer::configure(const SurfaceDescription& surface) {
+  const auto cascade_count = surface.patch_sizes_m.size();
+  if (cascade_count == 0 || cascade_count > static_cast<std::size_t>(kMaxCascades) ||
+      surface.tiling_wavelengths_m.size() != cascade_count || surface.resolution < 16 ||
+      !std::has_single_bit(static_cast<unsigned>(surface.resolution)))
+    return invalid_argument(
+        "renderer: the surface description has " + std::to_string(cascade_count) +
+        " cascades (1 to " + std::to_string(kMaxCascades) +
+        ", one tiling wavelength each) at N = " + std::to_string(surface.resolution) +
+        " (a power of two, at least 16): describe a plan's surface");
   State& st = *state_;
-  Result<SeaState> sea = SeaState::make(config.sea);
-  if (!sea.ok()) return sea.status();
-  st.hs_m = 4.0 * std::sqrt(std::max(sea.value().variance_m2(), 0.0));
-  st.choppiness = config.choppiness;
-  st.foam_ramp = {config.foam.jacobian_start, config.foam.jacobian_full};
-  Result<FarFieldNoise> far = fit_far_field_noise(config);
-  if (!far.ok()) return far.status();
-  st.far_noise = far.value();
-  double peak_wavelength = 1e9;
-  for (const WaveSystem& w : sea.value().systems()) {
-    const double k = sea.value().dispersion().wavenumber(w.spectrum().peak_omega());
-    if (k > 0.0) peak_wavelength = std::min(peak_wavelength, 2.0 * std::numbers::pi / k);
-  }
-  const std::vector<std::array<double, 2>> bands = cascade_bands(config);
-  st.cascades = static_cast<int>(config.cascade_patch_sizes_m.size());
-  const int n = config.resolution;
+  st.hs_m = surface.significant_wave_height_m;
+  st.crest_bound_m = surface.crest_bound_m;
+  st.horizontal_reach_m = surface.horizontal_reach_m;
+  st.choppiness = surface.choppiness;
+  st.foam_ramp = surface.foam_ramp;
+  st.far_noise = surface.far_noise;
+  st.cascades = static_cast<int>(cascade_count);
+  const int n = surface.resolution;
   for (int c = 0; c < st.cascades; ++c) {
-    const double size = config.cascade_patch_sizes_m[static_cast<std::size_t>(c)];
-    const double k_min = bands[static_cast<std::size_t>(c)][0];
-    double wavelength = k_min > 0.0 ? 2.0 * std::numbers::pi / k_min : size;
-    wavelength = std::min(wavelength, std::max(peak_wavelength, 4.0 * size / n));
+    const double size = surface.patch_sizes_m[static_cast<std::size_t>(c)];
     st.patch_size_m[static_cast<std::size_t>(c)] = size;
     st.cascade_params[static_cast<std::size_t>(c)] = {
         .patch_size_m = static_cast<float>(size),
         .resolution = static_cast<float>(n),
-        .wavelength_m = static_cast<float>(wavelength),
+        .wavelength_m =
+            static_cast<float>(surface.tiling_wavelengths_m[static_cast<std::size_t>(c)]),
         .coarsest_mip = static_cast<float>(std::countr_zero(static_cast<unsigned>(n)))};
   }
   // Own images for the upload path.

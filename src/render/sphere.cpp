@@ -95,7 +95,7 @@ Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
       .camera_position_m = eye,
       .frustum = lod::frustum_from_view_projection(vp * planet_to_rel),
       .finest_patch_m = view.sphere.finest_patch_m,
-      .max_vertical_displacement_m = reach * (1.2 * st.hs_m + 0.5),
+      .max_vertical_displacement_m = reach * st.crest_bound_m,
       .max_horizontal_displacement_m = reach * st.choppiness * st.hs_m};
   if (Status s = sphere::select_sphere_patches(lp, st.sphere_selection); !s.ok()) return s;
   const sphere::SphereSelection& sel = st.sphere_selection;

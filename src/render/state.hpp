@@ -96,8 +96,10 @@ struct Renderer::State {
   std::array<shader::CascadeUniforms, kMaxCascades> cascade_params{};
   std::array<double, kMaxCascades> patch_size_m{};  // L_c in double, for the origin's phase (R.16)
   double hs_m = 1.0;
-  FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
-  FarMapPass far_map;       // the per-frame noise map and its window (far_map.cpp, R.13b)
+  double crest_bound_m = 1.7;       // SurfaceDescription's bound on |h|, m
+  double horizontal_reach_m = 1.0;  // SurfaceDescription's bound on |(Dx, Dz)|, m
+  FarFieldNoise far_noise;          // fitted to cascade 0 by configure() (R.13)
+  FarMapPass far_map;               // the per-frame noise map and its window (far_map.cpp, R.13b)
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
   // The local layer (R.19): an RGBA16F array of two layers, (Dx, h, Dz, 0) and (Δs, Δf, 0), 1×1

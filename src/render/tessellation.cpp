@@ -91,8 +91,8 @@ void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& vi
   // The visible quads: each quad's box, widened by the waves' reach and the curvature's drop.
   const lod::Frustum frustum =
       lod::frustum_from_view_projection(lod::view_projection(relative_camera(view.camera, sel)));
-  const double reach = st.choppiness * st.hs_m;
-  const lod::Vec3 half{0.5 * cell + reach, 1.2 * st.hs_m + 0.5 + curvature_drop_bound_m(view),
+  const double reach = st.horizontal_reach_m;
+  const lod::Vec3 half{0.5 * cell + reach, st.crest_bound_m + curvature_drop_bound_m(view),
                        0.5 * cell + reach};
   auto* out = static_cast<std::uint32_t*>(st.tess_cells.mapped);
   std::uint32_t count = 0;

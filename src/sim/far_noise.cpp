@@ -92,10 +92,9 @@ namespace {
 
 // Cascade 0's wave vectors (as make_initial_spectrum fills them and src/statistics sums them)
 // whose |k| lies in [k_from, k_to) ∩ its band: the sums of BandStatistics.
-Result<BandStatistics> band_statistics(const SimulationConfig& config, double k_from, double k_to) {
-  Result<SeaState> sea = SeaState::make(config.sea);
-  if (!sea.ok()) return sea.status();
-  const Dispersion& dispersion = sea.value().dispersion();
+BandStatistics band_statistics(const SeaState& sea, const SimulationConfig& config, double k_from,
+                               double k_to) {
+  const Dispersion& dispersion = sea.dispersion();
   const std::array<double, 2> band = cascade_bands(config).front();
   const int n = config.resolution, half = n / 2;
   const double dk = 2.0 * std::numbers::pi / config.cascade_patch_sizes_m.front();
@@ -108,7 +107,7 @@ Result<BandStatistics> band_statistics(const SimulationConfig& config, double k_
       const double kx = dk * (col - half), kz = dk * (row - half);
       const double k = std::hypot(kx, kz);
       if (k <= 0.0 || k < band[0] || k >= band[1] || k < k_from || k >= k_to) continue;
-      const double power = sea.value().wave_vector_spectrum(kx, kz) * dk * dk;
+      const double power = sea.wave_vector_spectrum(kx, kz) * dk * dk;
       const std::array<double, 2> t = slope_transfer(config.normals, kx, kz, spacing);
       const double slope_power = (t[0] * t[0] + t[1] * t[1]) * power;
       s.height_variance_m2 += power;
@@ -133,14 +132,20 @@ Result<BandStatistics> band_statistics(const SimulationConfig& config, double k_
 }  // namespace
 
 Result<BandStatistics> cascade0_statistics(const SimulationConfig& config) {
-  return band_statistics(config, 0.0, std::numeric_limits<double>::infinity());
+  Result<SeaState> sea = SeaState::make(config.sea);
+  if (!sea.ok()) return sea.status();
+  return band_statistics(sea.value(), config, 0.0, std::numeric_limits<double>::infinity());
 }
 
 Result<FarFieldNoise> fit_far_field_noise(const SimulationConfig& config) {
-  Result<BandStatistics> target = cascade0_statistics(config);
-  if (!target.ok()) return target.status();
+  Result<SeaState> sea = SeaState::make(config.sea);
+  if (!sea.ok()) return sea.status();
+  return fit_far_field_noise(sea.value(), config);
+}
+
+FarFieldNoise fit_far_field_noise(const SeaState& sea, const SimulationConfig& config) {
   FarFieldNoise noise;
-  noise.target = target.value();
+  noise.target = band_statistics(sea, config, 0.0, std::numeric_limits<double>::infinity());
   const UnitNoiseMoments unit = unit_noise_moments();
   // The band's wavenumbers on the grid, from the lowest (one period) to its upper edge or the
   // grid's corner, in three equal ratios: octave o stands for the waves of sub-band o.
@@ -154,16 +159,15 @@ Result<FarFieldNoise> fit_far_field_noise(const SimulationConfig& config) {
   for (std::size_t o = 0; o < 3; ++o) {
     const double k_to = o == 2 ? std::numeric_limits<double>::infinity()
                                : k_lo * std::pow(step, static_cast<double>(o + 1));
-    Result<BandStatistics> sub = band_statistics(config, k_from, k_to);
-    if (!sub.ok()) return sub.status();
-    const double var_h = sub.value().height_variance_m2, var_s = sub.value().slope_variance;
+    const BandStatistics sub = band_statistics(sea, config, k_from, k_to);
+    const double var_h = sub.height_variance_m2, var_s = sub.slope_variance;
     // One octave of spacing ℓ and amplitude a has a²G = var_h and 2a²Gs/ℓ² = var_s.
     if (var_h > 0.0 && var_s > 0.0) {
       noise.cell_m[o] =
           std::sqrt(2.0 * unit.slope_variance * var_h / (unit.height_variance * var_s));
       noise.amplitude_m[o] = std::sqrt(var_h / unit.height_variance);
       noise.slope_variance[o] = var_s;
-      noise.velocity_mps[o] = sub.value().phase_velocity_mps;
+      noise.velocity_mps[o] = sub.phase_velocity_mps;
     } else {  // an empty sub-band: an octave of zero amplitude at the sub-band's scale
       noise.cell_m[o] = std::numbers::pi / (k_lo * std::pow(step, static_cast<double>(o) + 0.5));
     }

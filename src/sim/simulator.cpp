@@ -3,6 +3,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "ocean/plan.hpp"
 #include "ocean/sim.hpp"
 
 namespace ocean {
@@ -24,7 +25,22 @@ Simulator::~Simulator() {
   if (async_) async_->slot->wait();
 }
 
+Status Backend::configure(const SimulationConfig& config, TaskRunner& runner) {
+  Result<SimulationPlan> plan = SimulationPlan::make(config);
+  if (!plan.ok()) return plan.status();
+  return configure(plan.value(), runner);
+}
+
 Result<std::unique_ptr<Simulator>> Simulator::make(const SimulationConfig& config,
+                                                   std::unique_ptr<Backend> backend,
+                                                   std::shared_ptr<TaskRunner> runner) {
+  if (!backend) return invalid_argument("no backend given");
+  Result<SimulationPlan> plan = SimulationPlan::make(config);
+  if (!plan.ok()) return plan.status();
+  return make(plan.value(), std::move(backend), std::move(runner));
+}
+
+Result<std::unique_ptr<Simulator>> Simulator::make(const SimulationPlan& plan,
                                                    std::unique_ptr<Backend> backend,
                                                    std::shared_ptr<TaskRunner> runner) {
   if (!backend) return invalid_argument("no backend given");
@@ -34,14 +50,21 @@ Result<std::unique_ptr<Simulator>> Simulator::make(const SimulationConfig& confi
   sim->async_ = std::make_unique<Async>();
   sim->async_->slot = sim->runner_->make_async_slot();
   sim->async_->job.sim = sim.get();
-  if (Status s = sim->reconfigure(config); !s.ok()) return s;
+  if (Status s = sim->reconfigure(plan); !s.ok()) return s;
   return sim;
 }
 
 Status Simulator::reconfigure(const SimulationConfig& config) {
+  Result<SimulationPlan> plan = SimulationPlan::make(config);
+  if (!plan.ok()) return plan.status();
+  return reconfigure(plan.value());
+}
+
+Status Simulator::reconfigure(const SimulationPlan& plan) {
   wait();
-  if (Status s = backend_->configure(config, *runner_); !s.ok()) return s;
-  config_ = config;
+  if (Status s = backend_->configure(plan, *runner_); !s.ok()) return s;
+  plan_ = std::make_shared<const SimulationPlan>(plan);
+  config_ = plan.config();
   for (Frame& f : frames_) {
     f = Frame{};
     backend_->allocate(f);

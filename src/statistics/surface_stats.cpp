@@ -9,6 +9,7 @@
 
 #include "ocean/backends.hpp"
 #include "ocean/fft.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/statistics.hpp"
 
 namespace ocean {
@@ -79,13 +80,12 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
     return invalid_argument("seeds = " + std::to_string(seeds) + " is out of range: must be >= 1");
   }
   if (Status s = require_finite("time_s", time_s); !s.ok()) return s;
-  if (Status s = validate(config); !s.ok()) return s;
-  Result<SeaState> sea_result = SeaState::make(config.sea);
-  if (!sea_result.ok()) return sea_result.status();
-  const SeaState& sea = sea_result.value();
+  Result<SimulationPlan> resolved = SimulationPlan::make(config);
+  if (!resolved.ok()) return resolved.status();
+  const SeaState& sea = resolved.value().sea();
   const int n = config.resolution;
   const double patch = config.cascade_patch_sizes_m.front();
-  const std::array<double, 2> band = cascade_bands(config).front();
+  const std::array<double, 2> band = resolved.value().cascades().front().band_radpm;
   const auto texels = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
 
   SurfaceStats out;
@@ -183,7 +183,8 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
 
     // Imaginary residue of the height transform, independent of the backend: cascade 0's
     // spectrum exactly as the backends generate it.
-    Result<InitialSpectrum> spectrum = make_initial_spectrum(sea, cascade_spectrum_params(c, 0));
+    Result<InitialSpectrum> spectrum =
+        make_initial_spectrum(sim.plan().sea(), sim.plan().cascades().front().spectrum);
     if (!spectrum.ok()) return spectrum.status();
     max_imag =
         std::max(max_imag, max_imaginary_height(spectrum.value(), time_s, config.loop_period_s,

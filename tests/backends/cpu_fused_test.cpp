@@ -13,6 +13,7 @@
 #include "cpu/cpu_backend.hpp"
 #include "cpu/kernels.hpp"
 #include "ocean/half.hpp"
+#include "ocean/plan.hpp"
 
 namespace {
 
@@ -115,9 +116,8 @@ ocean::cpu::CascadeState kernel_state(int n, int planes, double loop_period_s,
   state.patch_size_m = 250.0;
   state.planes = planes;
   state.choppiness = 1.3;
-  state.spectrum = ocean::make_initial_spectrum(ocean::SeaState::make(config.sea).value(),
-                                                ocean::cascade_spectrum_params(config, 0))
-                       .value();
+  const ocean::SimulationPlan plan = ocean::SimulationPlan::make(config).value();
+  state.spectrum = ocean::make_initial_spectrum(plan.sea(), plan.cascades()[0].spectrum).value();
   ocean::cpu::build_kernel_inputs(state, loop_period_s);
   return state;
 }

@@ -107,7 +107,7 @@ TEST(BakeLibrary, FilesMatchTheSimulatorAndTheManifestListsThem) {
     EXPECT_TRUE(fs::exists(dir.path / name.get<std::string>())) << name;
   }
   EXPECT_DOUBLE_EQ(manifest["height_png_range_m"].get<double>(),
-                   ocean::bake::height_png_range_m(c));
+                   ocean::bake::height_png_range_m(ocean::SimulationPlan::make(c).value()));
 }
 
 // With a local layer the bake writes the composited local surface (Frame::local, M.7.9) of each

@@ -64,7 +64,7 @@ TEST(Environment, TheSkyAndItsReflectionComeFromTheMap) {
   auto sim = ocean::make_simulator(config);
   ASSERT_TRUE(sim.ok()) << sim.status().message();
   sim.value()->step(2.0);
-  ASSERT_TRUE(r.configure(config).ok());
+  ASSERT_TRUE(r.configure(ocean::SimulationPlan::make(config).value().surface()).ok());
   ASSERT_TRUE(r.upload(sim.value()->frame()).ok());
   ASSERT_TRUE(r.set_environment(&env.value()).ok());
   // Mean linear radiance of the top and bottom quarter of the picture looking along `dir`.

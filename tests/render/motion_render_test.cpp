@@ -71,7 +71,8 @@ std::unique_ptr<Rig> make_rig(const ocean::SimulationConfig& config) {
   rig->ctx = graphics_context();
   if (rig->ctx == nullptr) return nullptr;
   auto r = Renderer::make(rig->ctx, {.width = kW, .height = kH});
-  if (!r.ok() || !r.value()->configure(config).ok()) return nullptr;
+  if (!r.ok() || !r.value()->configure(ocean::SimulationPlan::make(config).value().surface()).ok())
+    return nullptr;
   rig->renderer = std::move(r).value();
   return rig;
 }

@@ -40,7 +40,7 @@ TEST(Reflection, ABoxAppearsWhereTheMirrorPutsIt) {
   auto sim = ocean::make_simulator(config).value();
   sim->step(1.0);
   auto renderer = Renderer::make(ctx, {.width = kReflW, .height = kReflH}).value();
-  ASSERT_TRUE(renderer->configure(config).ok());
+  ASSERT_TRUE(renderer->configure(ocean::SimulationPlan::make(config).value().surface()).ok());
   ASSERT_TRUE(renderer->upload(sim->frame()).ok());
   renderer->set_calm(true);  // no layer either: the sea is the mirror y = 0
   const auto hull = ocean::bodies::box_hull({2 * kHalf, 2 * kHalf, 2 * kHalf}).value();
@@ -80,7 +80,8 @@ TEST(Reflection, ABoxAppearsWhereTheMirrorPutsIt) {
   std::vector<int> kind(kReflW * kReflH, 0);
   for (int py = 0; py < kReflH; ++py)
     for (int px = 0; px < kReflW; ++px) {
-      const double sx = ((px + 0.5) / kReflW * 2.0 - 1.0) * tx, sy = (1.0 - (py + 0.5) / kReflH * 2.0) * ty;
+      const double sx = ((px + 0.5) / kReflW * 2.0 - 1.0) * tx,
+                   sy = (1.0 - (py + 0.5) / kReflH * 2.0) * ty;
       std::array<double, 3> d{};
       for (std::size_t i = 0; i < 3; ++i) d[i] = f[i] + sx * right[i] + sy * up[i];
       int& k = kind[static_cast<std::size_t>(py * kReflW + px)];

@@ -57,7 +57,8 @@ inline std::unique_ptr<Rig> make_rig(std::shared_ptr<vk::Context> ctx,
   auto r = Renderer::make(rig->ctx, {.width = w, .height = h});
   if (!r.ok()) return nullptr;
   rig->renderer = std::move(r).value();
-  if (!rig->renderer->configure(config).ok()) return nullptr;
+  if (!rig->renderer->configure(ocean::SimulationPlan::make(config).value().surface()).ok())
+    return nullptr;
   rig->sim->step(3.0);
   if (!rig->renderer->upload(rig->sim->frame()).ok()) return nullptr;
   return rig;

@@ -74,7 +74,7 @@ std::unique_ptr<BareRig> make_rig(const ocean::SimulationConfig& config, int w, 
   EXPECT_TRUE(r.ok()) << r.status().message();
   if (!r.ok()) return nullptr;
   rig->renderer = std::move(r).value();
-  EXPECT_TRUE(rig->renderer->configure(config).ok());
+  EXPECT_TRUE(rig->renderer->configure(ocean::SimulationPlan::make(config).value().surface()).ok());
   return rig;
 }
 

@@ -34,7 +34,7 @@ std::unique_ptr<Rig> make_bed_rig() {
   auto sim = ocean::make_simulator(c).value();
   sim->step(1.0);
   rig->renderer = Renderer::make(rig->ctx, {.width = kBedW, .height = kBedH}).value();
-  EXPECT_TRUE(rig->renderer->configure(c).ok());
+  EXPECT_TRUE(rig->renderer->configure(ocean::SimulationPlan::make(c).value().surface()).ok());
   EXPECT_TRUE(rig->renderer->upload(sim->frame()).ok());
   return rig;
 }

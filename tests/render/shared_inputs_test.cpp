@@ -147,7 +147,7 @@ TEST(SharedInputs, ASecondDeviceWritesWhatTheRendererSamplesInStep) {
   auto renderer = render::Renderer::make(ctx, {.width = kSharedWidth, .height = kSharedHeight});
   ASSERT_TRUE(renderer.ok()) << renderer.status().message();
   render::Renderer& r = *renderer.value();
-  ASSERT_TRUE(r.configure(config).ok());
+  ASSERT_TRUE(r.configure(ocean::SimulationPlan::make(config).value().surface()).ok());
 
   // Two frames a second apart, and the pictures of them uploaded the ordinary way.
   auto sim = Simulator::make(config, make_backend("cpu").value());
@@ -255,7 +255,9 @@ TEST(SharedInputs, NeedsTheExtensionsAndAConfiguration) {
   ASSERT_TRUE(renderer.ok());
   Result<interop::SharedInputs> early = renderer.value()->share_inputs();
   EXPECT_EQ(early.status().code(), ErrorCode::invalid_argument);
-  ASSERT_TRUE(renderer.value()->configure(small_config()).ok());
+  ASSERT_TRUE(renderer.value()
+                  ->configure(ocean::SimulationPlan::make(small_config()).value().surface())
+                  .ok());
   Result<interop::SharedInputs> refused = renderer.value()->share_inputs();
   ASSERT_FALSE(refused.ok());
   EXPECT_EQ(refused.status().code(), ErrorCode::unsupported);

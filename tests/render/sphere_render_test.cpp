@@ -37,7 +37,8 @@ std::unique_ptr<Rig> make_rig(int w, int h) {
   ocean::SimulationConfig c = ocean::render::testing::small_config();
   c.sea.wind_sea.spectrum.wind_speed_mps = 6.0;
   auto sim = ocean::Simulator::make(c, std::move(ocean::make_backend("cpu")).value());
-  if (!sim.ok() || !rig->renderer->configure(c).ok()) return nullptr;
+  if (!sim.ok() || !rig->renderer->configure(ocean::SimulationPlan::make(c).value().surface()).ok())
+    return nullptr;
   sim.value()->step(3.0);
   if (!rig->renderer->upload(sim.value()->frame()).ok()) return nullptr;
   return rig;
@@ -166,7 +167,8 @@ TEST(SphereRender, TheHorizonSitsAtTheDipOfAnEyeAboveTheSphere) {
     const int expected =
         static_cast<int>(std::floor((kH * (1.0 + std::tan(dip) / std::tan(fov / 2)) - 1.0) / 2.0)) +
         1;
-    EXPECT_NEAR(sphere_first_sea_row(hdr, kW, kH), expected, 2) << "R " << k.radius_m << ", h " << k.h_m;
+    EXPECT_NEAR(sphere_first_sea_row(hdr, kW, kH), expected, 2)
+        << "R " << k.radius_m << ", h " << k.h_m;
   }
 }
 

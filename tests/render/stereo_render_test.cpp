@@ -49,7 +49,9 @@ struct StereoRig {
     auto r = Renderer::make(ctx, {.width = w, .height = h});
     if (!r.ok()) return nullptr;
     const ocean::SimulationConfig config = ocean::render::testing::small_config();
-    if (!r.value()->configure(config).ok() || !r.value()->upload(sim->frame()).ok()) return nullptr;
+    if (!r.value()->configure(ocean::SimulationPlan::make(config).value().surface()).ok() ||
+        !r.value()->upload(sim->frame()).ok())
+      return nullptr;
     return std::move(r).value();
   }
 };

@@ -30,7 +30,7 @@ std::unique_ptr<Rig> make_rig(int width, int height) {
   rig->sim = ocean::make_simulator(c).value();
   rig->sim->step(3.0);
   rig->renderer = Renderer::make(rig->ctx, {.width = width, .height = height}).value();
-  EXPECT_TRUE(rig->renderer->configure(c).ok());
+  EXPECT_TRUE(rig->renderer->configure(ocean::SimulationPlan::make(c).value().surface()).ok());
   EXPECT_TRUE(rig->renderer->upload(rig->sim->frame()).ok());
   return rig;
 }

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "ocean/fft.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/statistics.hpp"
 
 namespace {
@@ -61,8 +62,8 @@ struct SamplingStd {
 };
 
 SamplingStd sampling_std(const SimulationConfig& c, int seeds) {
-  auto sea = ocean::SeaState::make(c.sea);
-  EXPECT_TRUE(sea.ok());
+  auto resolved = ocean::SimulationPlan::make(c);
+  EXPECT_TRUE(resolved.ok());
   const int n = c.resolution;
   const double dk = 2.0 * ocean::kPi / c.cascade_patch_sizes_m[0];
   const auto count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
@@ -71,7 +72,8 @@ SamplingStd sampling_std(const SimulationConfig& c, int seeds) {
     for (int col = 1; col < n; ++col) {
       if (row == n / 2 && col == n / 2) continue;
       f[static_cast<std::size_t>(row * n + col)] =
-          sea.value().wave_vector_spectrum(dk * (col - n / 2), dk * (row - n / 2)) * dk * dk;
+          resolved.value().sea().wave_vector_spectrum(dk * (col - n / 2), dk * (row - n / 2)) * dk *
+          dk;
     }
   }
   std::vector<float> re(count), im(count, 0.0f);
@@ -88,7 +90,7 @@ SamplingStd sampling_std(const SimulationConfig& c, int seeds) {
   }
   // C(x) = Σ σ²(k)·e^{ik·x}: the centred inverse transform.
   auto plan = ocean::fft::Plan2D::make(n);
-  EXPECT_TRUE(plan.ok());
+  EXPECT_TRUE(resolved.ok());
   auto runner = ocean::make_serial_runner();
   const ocean::fft::SplitComplex plane{re.data(), im.data()};
   plan.value().inverse({&plane, 1}, *runner, true);

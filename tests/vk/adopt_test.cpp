@@ -267,7 +267,8 @@ TEST_F(EngineGraphicsDevice, RendererOnAnAdoptedDeviceDrawsTheSamePixels) {
   const auto draw = [&](std::shared_ptr<ocean::vk::Context> ctx, std::vector<std::uint8_t>& rgba) {
     auto renderer = ocean::render::Renderer::make(std::move(ctx), {.width = 96, .height = 64});
     ASSERT_TRUE(renderer.ok()) << renderer.status().message();
-    ASSERT_TRUE(renderer.value()->configure(config).ok());
+    ASSERT_TRUE(
+        renderer.value()->configure(ocean::SimulationPlan::make(config).value().surface()).ok());
     ASSERT_TRUE(renderer.value()->upload(frame).ok());
     const ocean::Status drawn = renderer.value()->draw(view);
     ASSERT_TRUE(drawn.ok()) << drawn.message();

@@ -18,6 +18,7 @@
 
 #include "cpu_backend.hpp"
 #include "ocean/fft.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/spectrum.hpp"
 #include "ocean/task_runner.hpp"
@@ -36,7 +37,7 @@ struct WebSea {
   ocean::CascadeFrame frame;           // the reference outputs
   std::vector<float> surface;          // (nx, ny, nz, J) per texel, the GPU's layout
   double choppiness = -1.0;            // λ the plane factors were built for
-  double geometry_wavelength_m = 0.0;  // the render's fade length of this cascade (R.9)
+  double geometry_wavelength_m = 0.0;  // the plan's tiling wavelength of this cascade (R.9)
   std::string error;
 };
 
@@ -49,24 +50,6 @@ int fail(const ocean::Status& status) {
   sea().error = status.message();
   sea().sea.reset();
   return 1;
-}
-
-// The length the native renderer fades cascade `cascade`'s displacement against (R.9: full while
-// the vertex spacing is below a quarter of it, none at half), as src/render/inputs.cpp sets it:
-// the longest wave of the cascade's band, 2π/k_min (its patch side when the band starts at 0),
-// but no longer than the sea's shortest peak wavelength, and no shorter than four texels.
-double geometry_wavelength_m(const ocean::SeaState& sea, const ocean::SimulationConfig& config,
-                             int cascade) {
-  const auto c = static_cast<std::size_t>(cascade);
-  double peak_m = 1e9;
-  for (const ocean::WaveSystem& w : sea.systems()) {
-    const double k = sea.dispersion().wavenumber(w.spectrum().peak_omega());
-    if (k > 0.0) peak_m = std::min(peak_m, 2.0 * std::numbers::pi / k);
-  }
-  const double size = config.cascade_patch_sizes_m[c];
-  const double k_min = ocean::cascade_bands(config)[c][0];
-  const double longest_m = k_min > 0.0 ? 2.0 * std::numbers::pi / k_min : size;
-  return std::min(longest_m, std::max(peak_m, 4.0 * size / config.resolution));
 }
 
 }  // namespace
@@ -99,17 +82,16 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
   config.cascade_patch_sizes_m.assign(patch_sizes_m, patch_sizes_m + cascade_count);
   config.loop_period_s = loop_period_s;
   config.seed = static_cast<std::uint64_t>(seed);
-  if (ocean::Status valid = ocean::validate(config); !valid.ok()) return fail(valid);
-  ocean::Result<ocean::SeaState> made = ocean::SeaState::make(config.sea);
+  ocean::Result<ocean::SimulationPlan> made = ocean::SimulationPlan::make(config);
   if (!made.ok()) return fail(made.status());
   const double patch_size_m = config.cascade_patch_sizes_m[static_cast<std::size_t>(cascade)];
   ocean::Result<ocean::InitialSpectrum> spectrum = ocean::make_initial_spectrum(
-      made.value(), ocean::cascade_spectrum_params(config, static_cast<std::size_t>(cascade)));
+      made.value().sea(), made.value().cascades()[static_cast<std::size_t>(cascade)].spectrum);
   if (!spectrum.ok()) return fail(spectrum.status());
   ocean::Result<ocean::fft::Plan2D> plan = ocean::fft::Plan2D::make(resolution);
   if (!plan.ok()) return fail(plan.status());
 
-  s.sea.emplace(std::move(made.value()));
+  s.sea.emplace(made.value().sea());
   s.plan.emplace(std::move(plan.value()));
   s.loop_period_s = loop_period_s;
   s.state = {};
@@ -140,13 +122,14 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
   s.frame.packed_mips.assign(texels, 0);  // level 0 only: the reference computes no mips
   s.surface.resize(4 * texels);
   s.choppiness = -1.0;
-  s.geometry_wavelength_m = geometry_wavelength_m(*s.sea, config, cascade);
+  s.geometry_wavelength_m =
+      made.value().cascades()[static_cast<std::size_t>(cascade)].tiling_wavelength_m;
   s.error.clear();
   return 0;
 }
 
-/// The configured cascade's geometry fade length, m (see geometry_wavelength_m); NaN when nothing
-/// is configured.
+/// The configured cascade's geometry fade length, m (CascadePlan::tiling_wavelength_m); NaN
+/// when nothing is configured.
 EMSCRIPTEN_KEEPALIVE double ocean_web_geometry_wavelength() {
   const WebSea& s = sea();
   return s.sea ? s.geometry_wavelength_m : std::nan("");

@@ -151,8 +151,8 @@ int run_bake(const BakeOptions& o) {
       char title[200];
       std::snprintf(
           title, sizeof title, "ocean bake: %s, Hs %.2f m, t = %.2f s, %d^2 × %zu cascades",
-          std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(),
-          bake::height_png_range_m(c), done.time_s, c.resolution, c.cascade_patch_sizes_m.size());
+          std::string(to_string(c.sea.wind_sea.spectrum.model)).c_str(), done.height_png_range_m,
+          done.time_s, c.resolution, c.cascade_patch_sizes_m.size());
       const Result<SheetSize> sheet =
           write_contact_sheet(frame_maps_sheet(*done.frame, title), o.contact_sheet);
       if (!sheet.ok()) return sheet.status();

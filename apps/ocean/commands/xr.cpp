@@ -72,7 +72,7 @@ int run_xr(const XrOptions& o) {
       {.width = (one_pass ? 2 : 1) * session.eye_width(), .height = session.eye_height()});
   if (!renderer.ok()) return report(renderer.status());
   render::Renderer& r = *renderer.value();
-  if (Status s = r.configure(c); !s.ok()) return report(s);
+  if (Status s = r.configure(sim.value()->plan().surface()); !s.ok()) return report(s);
   render::View view;
   Result<lod::QualityPreset> quality = lod::parse_preset(o.quality);
   if (!quality.ok()) {

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "ocean/plan.hpp"
 #include "ocean/spectrum.hpp"
 
 namespace ocean::cli::view {
@@ -73,8 +74,7 @@ Result<SimulationConfig> to_config(const SeaControls& s, const SimulationConfig&
   c.cascade_patch_sizes_m.assign(s.cascade_sizes_m.begin(), s.cascade_sizes_m.begin() + s.cascades);
   c.seed = static_cast<std::uint64_t>(s.seed);
   c.loop_period_s = s.loop_period_s;
-  if (Status st = ocean::validate(c); !st.ok()) return st;
-  if (Result<SeaState> sea = SeaState::make(c.sea); !sea.ok()) return sea.status();
+  if (Result<SimulationPlan> plan = SimulationPlan::make(c); !plan.ok()) return plan.status();
   return c;
 }
 

@@ -8,6 +8,7 @@
 #include "arrays.hpp"
 #include "bindings.hpp"
 #include "errors.hpp"
+#include "ocean/plan.hpp"
 
 namespace py = pybind11;
 
@@ -17,7 +18,7 @@ void bind_sea_state(py::module_& m) {
   py::class_<SeaState>(m, "SeaState",
                        "The sea of a preset: wave systems (wind sea, swell) and dispersion.")
       .def(py::init([](const py::object& preset) {
-             return take(SeaState::make(config_of(preset).sea));
+             return SeaState(take(SimulationPlan::make(config_of(preset))).sea());
            }),
            py::arg("preset") = py::none(),
            "preset: an ocean.Preset, a built-in name or a preset file; None = the defaults.")

@@ -60,7 +60,8 @@ class CudaBackend final : public Backend, public DeviceCapabilities {
 
   [[nodiscard]] std::string_view name() const override { return "cuda"; }
   /// Out of device memory and unsupported configurations answer `unsupported` naming the limit.
-  Status configure(const SimulationConfig& config, TaskRunner& runner) override;
+  using Backend::configure;
+  Status configure(const SimulationPlan& plan, TaskRunner& runner) override;
   void allocate(Frame& frame) const override;
   /// submit(time_s) then read(out).
   void step(double time_s, Frame& out) override;

@@ -40,7 +40,8 @@ class VulkanBackend final : public Backend, public DeviceCapabilities {
   [[nodiscard]] std::string_view name() const override { return "vulkan"; }
   /// Unsupported configurations (a resolution beyond the device's shared memory or storage-buffer
   /// range) answer `unsupported` with a message naming the limit.
-  Status configure(const SimulationConfig& config, TaskRunner& runner) override;
+  using Backend::configure;
+  Status configure(const SimulationPlan& plan, TaskRunner& runner) override;
   void allocate(Frame& frame) const override;
   /// submit(time_s) then read(out).
   void step(double time_s, Frame& out) override;

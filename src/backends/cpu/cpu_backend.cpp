@@ -12,6 +12,8 @@
 #include <cstring>
 #include <string>
 
+#include "ocean/plan.hpp"
+
 namespace ocean::cpu {
 
 namespace {
@@ -21,22 +23,16 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 
 }  // namespace
 
-Status CpuBackendImpl::configure(const SimulationConfig& config, TaskRunner& runner) {
-  if (Status s = validate(config); !s.ok()) return s;
+Status CpuBackendImpl::configure(const SimulationPlan& resolved, TaskRunner& runner) {
+  const SimulationConfig& config = resolved.config();
   if (options_.pipeline == CpuPipeline::external_fft && options_.fft == nullptr)
     return invalid_argument("CPU backend: the external FFT pipeline needs an FFT engine");
-  Result<SeaState> sea = SeaState::make(config.sea);
-  if (!sea.ok()) return sea.status();
   Result<fft::Plan2D> plan = fft::Plan2D::make(config.resolution);
   if (!plan.ok()) return plan.status();
   Result<fft::LanePlan2D> simd_plan = fft::LanePlan2D::make(config.resolution);
   if (!simd_plan.ok()) return simd_plan.status();
   FarFieldNoise far_noise;
-  if (config.far_noise.resolution > 0) {
-    Result<FarFieldNoise> fitted = fit_far_field_noise(config);
-    if (!fitted.ok()) return fitted.status();
-    far_noise = fitted.value();
-  }
+  if (config.far_noise.resolution > 0) far_noise = resolved.far_noise();
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
   const auto texels =
       static_cast<std::size_t>(config.resolution) * static_cast<std::size_t>(config.resolution);
@@ -50,7 +46,7 @@ Status CpuBackendImpl::configure(const SimulationConfig& config, TaskRunner& run
     state.resolution = config.resolution;
     state.patch_size_m = config.cascade_patch_sizes_m[c];
     Result<InitialSpectrum> spectrum =
-        make_initial_spectrum(sea.value(), cascade_spectrum_params(config, c));
+        make_initial_spectrum(resolved.sea(), resolved.cascades()[c].spectrum);
     if (!spectrum.ok()) {
       return Status(spectrum.status().code(),
                     "cascade " + std::to_string(c) + ": " + spectrum.status().message());

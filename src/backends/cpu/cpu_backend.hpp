@@ -96,7 +96,8 @@ class CpuBackendImpl final : public CpuBackend {
  public:
   explicit CpuBackendImpl(CpuOptions options = {}) : options_(options) {}
   [[nodiscard]] std::string_view name() const override { return "cpu"; }
-  Status configure(const SimulationConfig& config, TaskRunner& runner) override;
+  using Backend::configure;
+  Status configure(const SimulationPlan& plan, TaskRunner& runner) override;
   void allocate(Frame& frame) const override;
   void step(double time_s, Frame& out) override;
   [[nodiscard]] const StageTimes& last_stage_times() const override { return times_; }

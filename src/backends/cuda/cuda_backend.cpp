@@ -18,6 +18,7 @@
 #include "device_state.hpp"
 #include "errors.hpp"
 #include "far_noise_state.hpp"
+#include "ocean/plan.hpp"
 
 namespace ocean::cuda {
 
@@ -68,16 +69,13 @@ CudaBackend::~CudaBackend() {
   gpu_.reset();
 }
 
-Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runner*/) {
+Status CudaBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner*/) {
+  const SimulationConfig& config = plan.config();
   Result<detail::Layout> layout = detail::make_layout(config);
   if (!layout.ok()) return layout.status();
   const detail::Layout& l = layout.value();
-  Result<SeaState> sea = SeaState::make(config.sea);
-  if (!sea.ok()) return sea.status();
-  Result<FarFieldNoise> far_noise = config.far_noise.resolution > 0
-                                        ? fit_far_field_noise(config)
-                                        : Result<FarFieldNoise>(FarFieldNoise{});
-  if (!far_noise.ok()) return far_noise.status();
+  const FarFieldNoise far_noise =
+      config.far_noise.resolution > 0 ? plan.far_noise() : FarFieldNoise{};
   const detail::CufftLibrary* cufft = nullptr;
   if (fft_ == FftEngine::cufft) {
     Result<const detail::CufftLibrary*> loaded = detail::load_cufft();
@@ -103,8 +101,8 @@ Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runn
     args.dk = static_cast<float>(2.0 * kPi / size_m);
     args.inv_spacing = static_cast<float>(l.resolution / size_m);
     // Spectra on the host (the CPU reference code) and the phase rate of EvolutionPhase (M.7.3).
-    Result<InitialSpectrum> h0 = make_initial_spectrum(
-        sea.value(), cascade_spectrum_params(config, static_cast<std::size_t>(c)));
+    Result<InitialSpectrum> h0 =
+        make_initial_spectrum(plan.sea(), plan.cascades()[static_cast<std::size_t>(c)].spectrum);
     if (!h0.ok())
       return Status(h0.status().code(),
                     "cascade " + std::to_string(c) + ": " + h0.status().message());
@@ -133,14 +131,14 @@ Status CudaBackend::configure(const SimulationConfig& config, TaskRunner& /*runn
   // One eager frame (loads every kernel and cuFFT's, and reports a failure where it happens),
   // then the same schedule captured once into the graph every step launches.
   const detail::Schedule frame = detail::make_schedule(l, true, true);
-  detail::write_noise_params(*gpu, far_noise.value(), config.far_noise, 0.0);
+  detail::write_noise_params(*gpu, far_noise, config.far_noise, 0.0);
   if (Status s = detail::issue(*gpu, frame, false); !s.ok()) return s;
   if (Status s = to_status(cudaStreamSynchronize(gpu->streams.front()), "the first frame"); !s.ok())
     return s;
   if (Status s = detail::issue(*gpu, frame, true, &gpu->frame); !s.ok()) return s;
   gpu_ = std::move(gpu);
   config_ = config;
-  far_noise_ = far_noise.value();
+  far_noise_ = far_noise;
   status_ = {};
   has_stepped_ = false;
   pending_ = false;

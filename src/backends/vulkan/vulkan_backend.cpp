@@ -14,6 +14,7 @@
 
 #include "gpu_state.hpp"
 #include "ocean/backends/vulkan.hpp"
+#include "ocean/plan.hpp"
 #include "sim/far_noise_map.hpp"
 
 namespace ocean::vk {
@@ -44,10 +45,8 @@ Status limit(bool ok, const std::string& what) {
 VulkanBackend::VulkanBackend(std::shared_ptr<Context> context) : context_(std::move(context)) {}
 VulkanBackend::~VulkanBackend() = default;
 
-Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*runner*/) {
-  if (Status s = validate(config); !s.ok()) return s;
-  Result<SeaState> sea = SeaState::make(config.sea);
-  if (!sea.ok()) return sea.status();
+Status VulkanBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner*/) {
+  const SimulationConfig& config = plan.config();
   const auto n = static_cast<std::uint32_t>(config.resolution);
   const auto cascades = static_cast<std::uint32_t>(config.cascade_patch_sizes_m.size());
   const std::uint32_t planes = config.normals == NormalMethod::analytic ? 4u : 2u;
@@ -80,8 +79,7 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
   // a loop the integer harmonic j = ω'/ω0, else ω itself.
   std::vector<float> spectrum(4 * cascades * texels), phase_rate(cascades * texels);
   for (std::uint32_t c = 0; c < cascades; ++c) {
-    Result<InitialSpectrum> h0 =
-        make_initial_spectrum(sea.value(), cascade_spectrum_params(config, c));
+    Result<InitialSpectrum> h0 = make_initial_spectrum(plan.sea(), plan.cascades()[c].spectrum);
     if (!h0.ok())
       return Status(h0.status().code(),
                     "cascade " + std::to_string(c) + ": " + h0.status().message());
@@ -125,11 +123,7 @@ Status VulkanBackend::configure(const SimulationConfig& config, TaskRunner& /*ru
   p.mip_offset[levels + 1] = static_cast<std::uint32_t>(mip_chain_texels(config.resolution));
 
   FarFieldNoise far_noise;
-  if (config.far_noise.resolution > 0) {
-    Result<FarFieldNoise> fitted = fit_far_field_noise(config);
-    if (!fitted.ok()) return fitted.status();
-    far_noise = fitted.value();
-  }
+  if (config.far_noise.resolution > 0) far_noise = plan.far_noise();
 
   gpu_.reset();  // frees the previous configuration first (lower peak memory)
   auto gpu = std::make_unique<detail::GpuState>();

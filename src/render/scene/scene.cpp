@@ -91,7 +91,8 @@ Result<std::unique_ptr<Scene>> Scene::make(std::shared_ptr<vk::Context> context,
       Renderer::make(scene->context_, {.width = p.width, .height = p.height});
   if (!renderer.ok()) return renderer.status();
   scene->renderer_ = std::move(renderer).value();
-  if (Status s = scene->renderer_->configure(p.config); !s.ok()) return s;
+  if (Status s = scene->renderer_->configure(scene->simulator_->plan().surface()); !s.ok())
+    return s;
   if (Status s = scene->renderer_->set_environment(p.environment.get()); !s.ok()) return s;
   scene->shared_ = zero_copy;
   if (Status s = scene->share(); !s.ok()) return s;
@@ -164,7 +165,7 @@ Status Scene::warm_up(double time_s, double warmup_s, double rate_hz) {
 
 Status Scene::reconfigure(const SimulationConfig& config) {
   if (Status s = simulator_->reconfigure(config); !s.ok()) return s;
-  if (Status s = renderer_->configure(config); !s.ok()) return s;
+  if (Status s = renderer_->configure(simulator_->plan().surface()); !s.ok()) return s;
   return share();
 }
 

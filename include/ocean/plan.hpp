@@ -1,0 +1,94 @@
+// ocean/plan.hpp — the resolved simulation plan: a validated configuration with everything
+// derived from it computed once (the sea state, each cascade's band and spectrum parameters, the
+// far field's noise fit, the constants a renderer sizes its work by). The backends configure
+// from a plan, the Simulator keeps the one it was configured with, and the renderer receives the
+// plan's SurfaceDescription instead of the configuration; nothing else rebuilds a sea state.
+//
+// Contract: a plan is immutable once made and safe to read from any thread; copies share the
+// far-noise fit, which is computed on first use (it visits every wave vector of cascade 0 four
+// times: tens of milliseconds at N = 512, about a second at 2048).
+#pragma once
+
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "ocean/core.hpp"
+#include "ocean/far_noise.hpp"
+#include "ocean/sim.hpp"
+#include "ocean/spectrum.hpp"
+
+namespace ocean {
+
+/// One cascade as the plan resolves it.
+struct CascadePlan {
+  double patch_size_m = 0.0;  ///< L of the periodic patch, m
+  /// [k_min, k_max) of the band this cascade synthesises, rad/m (M.7.1, cascade_bands).
+  std::array<double, 2> band_radpm{};
+  /// The band's representative wavenumber for the damping, rad/m (W.14, band_wavenumbers).
+  double band_wavenumber_radpm = 0.0;
+  /// How its initial spectrum is generated: grid, band and seed (cascade_spectrum_params).
+  InitialSpectrumParams spectrum;
+  /// The wavelength, m, a renderer fades this cascade's displacement against and hex-tiles its
+  /// lookups at (docs/rendering.md R.9, R.14): its band's longest wave 2π/k_min (the patch side
+  /// when the band starts at 0), at most the sea's shortest peak wavelength and at least four
+  /// texels.
+  double tiling_wavelength_m = 0.0;
+};
+
+/// What a renderer needs to know of the surface it draws, and nothing of the configuration:
+/// heights that bound the waves, each cascade's patch and the scale its tiling is hidden at, the
+/// foam ramp and the far field's noise.
+struct SurfaceDescription {
+  double significant_wave_height_m = 0.0;  ///< Hs = 4·√m0 of the sea state (M.1)
+  /// A bound on |h| of the displaced surface, m, for culling and the horizon skirt:
+  /// kCrestHeightPerHs·Hs + kCrestMarginM (docs/rendering.md, Frame, step 2).
+  double crest_bound_m = 0.0;
+  double choppiness = 1.0;  ///< λ of the horizontal displacement
+  /// A bound on |(Dx, Dz)|, m: λ·Hs (docs/rendering.md, Frame, step 2).
+  double horizontal_reach_m = 0.0;
+  std::array<double, 2> foam_ramp{0.8, 0.5};  ///< FoamParams' Jacobian start and full
+  int resolution = 0;                         ///< N texels per side of every cascade
+  std::vector<double> patch_sizes_m;          ///< L of each cascade, largest first
+  std::vector<double> tiling_wavelengths_m;   ///< CascadePlan::tiling_wavelength_m of each
+
+  FarFieldNoise far_noise;  ///< fitted to cascade 0 (R.13)
+};
+
+/// The crest bound's factor: the highest crest of a few thousand Rayleigh-distributed waves is
+/// about 1.2·Hs (Longuet-Higgins 1952, "On the statistical distribution of the heights of sea
+/// waves": H_max ≈ 1.86–2·Hs, crests about 0.6 of the height in steep seas).
+inline constexpr double kCrestHeightPerHs = 1.2;
+/// What the crest bound adds for the local layer's wakes and waveforms and a calm sea, m.
+inline constexpr double kCrestMarginM = 0.5;
+
+class SimulationPlan {
+ public:
+  /// Validates `config` (ocean::validate) and resolves it: the sea state (SeaState::make) and the
+  /// cascades. The errors are those of validate and SeaState::make.
+  static Result<SimulationPlan> make(const SimulationConfig& config);
+
+  [[nodiscard]] const SimulationConfig& config() const { return config_; }
+  [[nodiscard]] const SeaState& sea() const { return *sea_; }
+  [[nodiscard]] const std::vector<CascadePlan>& cascades() const { return cascades_; }
+  /// Hs = 4·√m0 of the sea state, m.
+  [[nodiscard]] double significant_wave_height_m() const { return hs_m_; }
+  /// The shortest peak wavelength 2π/k(ω_p) over the sea's wave systems, m (1e9 when none has a
+  /// peak).
+  [[nodiscard]] double peak_wavelength_m() const { return peak_wavelength_m_; }
+  /// The far field's noise fitted to cascade 0 (fit_far_field_noise), computed on first use.
+  [[nodiscard]] const FarFieldNoise& far_noise() const;
+  /// What a renderer draws this plan's surface by.
+  [[nodiscard]] SurfaceDescription surface() const;
+
+ private:
+  struct FarNoiseFit;
+  SimulationConfig config_;
+  std::shared_ptr<const SeaState> sea_;
+  std::vector<CascadePlan> cascades_;
+  double hs_m_ = 0.0;
+  double peak_wavelength_m_ = 1e9;
+  std::shared_ptr<FarNoiseFit> far_noise_;
+};
+
+}  // namespace ocean
