@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "ocean/backends.hpp"
+#include "ocean/backends/cpu.hpp"
 #include "ocean/conformance.hpp"
-#include "ocean/cpu_backend.hpp"
 #include "ocean/fft.hpp"
 
 namespace {

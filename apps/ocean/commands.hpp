@@ -23,12 +23,15 @@ Command add_validate_command(CLI::App& app);
 Command add_bench_command(CLI::App& app);
 Command add_lod_command(CLI::App& app);
 Command add_query_command(CLI::App& app);
+// The optional subcommands: CMake compiles commands/<name>.cpp where the build has what the command
+// needs, else commands/absent/<name>.cpp, whose add_* registers nothing and returns a Command with
+// app = nullptr.
 Command add_render_command(CLI::App& app);  // Vulkan builds only
 Command add_view_command(CLI::App& app);    // builds with GLFW and Dear ImGui only
 Command add_xr_command(CLI::App& app);      // builds with the OpenXR loader only
 
-/// Registers every subcommand this build has (the ones above that it was built with), in the
-/// order `ocean --help` lists them.
+/// Registers every subcommand this build has (the optional ones above where it was built with
+/// them), in the order `ocean --help` lists them.
 std::vector<Command> add_commands(CLI::App& app);
 
 }  // namespace ocean::cli

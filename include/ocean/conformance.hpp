@@ -3,7 +3,7 @@
 // `ocean validate` and tests/backends/conformance_test.cpp both run.
 //
 // The reference is the scalar reference pipeline (cpu::CpuPipeline::scalar_reference of
-// ocean/cpu_backend.hpp: scalar evolution, radix-2 FFT, scalar finalize and mips). The backend
+// ocean/backends/cpu.hpp: scalar evolution, radix-2 FFT, scalar finalize and mips). The backend
 // under test is a backend of the table (ocean/backends.hpp): "cpu" runs the fused SIMD pipeline,
 // so its conformance compares the two CPU pipelines; "vulkan" runs the compute shaders.
 //

@@ -25,11 +25,11 @@
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
 
+namespace ocean {
+class DeviceCapabilities;
+}
 namespace ocean::vk {
 class VulkanBackend;
-}
-namespace ocean::cuda {
-class CudaBackend;
 }
 
 namespace ocean::render {
@@ -93,9 +93,9 @@ class Scene {
   Scene() = default;
   std::shared_ptr<vk::Context> context_;
   std::unique_ptr<Simulator> simulator_;
-  vk::VulkanBackend* gpu_ = nullptr;   // owned by simulator_ when the backend is vulkan
-  cuda::CudaBackend* cuda_ = nullptr;  // owned by simulator_ when the backend is cuda
-  bool shared_ = false;                // cuda_ writes the renderer's shared inputs
+  vk::VulkanBackend* gpu_ = nullptr;    // owned by simulator_ when the backend is vulkan
+  DeviceCapabilities* cuda_ = nullptr;  // of simulator_'s backend when it is cuda
+  bool shared_ = false;                 // cuda_ writes the renderer's shared inputs
   std::string interop_;
   Status share();      // cuda_ ↔ renderer_ shared inputs, or the upload notice
   Status hand_over();  // the simulator's frame to the renderer

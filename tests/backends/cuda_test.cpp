@@ -6,6 +6,8 @@
 // after the fork and before the join and with no cascade operation), the map's place in both
 // allocations, and its timings' overlap. On this machine class (CI: no GPU, no driver) the
 // backend's factory must answer the mapped runtime error; where a device exists it must succeed.
+#include "ocean/backends/cuda.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -20,7 +22,6 @@
 #include "cuda/errors.hpp"
 #include "cuda/plan.hpp"
 #include "ocean/backends.hpp"
-#include "ocean/cuda/simulation.hpp"
 #include "sim/far_noise.h"
 
 namespace {

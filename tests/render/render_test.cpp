@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "ocean/backends.hpp"
-#include "ocean/vk/simulation.hpp"
+#include "ocean/backends/vulkan.hpp"
 #include "render/render_helpers.hpp"
 #include "support/require_devices.hpp"
 

@@ -17,7 +17,7 @@
 #include <utility>
 #include <vector>
 
-#include "ocean/cpu_backend.hpp"
+#include "ocean/backends/cpu.hpp"
 #include "sim/far_noise_map.hpp"
 
 namespace {

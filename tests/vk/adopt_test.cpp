@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "ocean/backends.hpp"
+#include "ocean/backends/cpu.hpp"
+#include "ocean/backends/vulkan.hpp"
 #include "ocean/conformance.hpp"
-#include "ocean/cpu_backend.hpp"
 #include "ocean/render.hpp"
 #include "ocean/vk.hpp"
-#include "ocean/vk/simulation.hpp"
 #include "support/require_devices.hpp"
 
 namespace {

@@ -8,22 +8,21 @@
 #include "bench/harness.hpp"
 #include "bench/report.hpp"
 #include "cli_common.hpp"
+#include "ocean/backends.hpp"
 #include "progress.hpp"
-#ifdef OCEAN_HAS_CUDA
-#include "ocean/cuda/simulation.hpp"
-#endif
 
 namespace ocean::cli::bench {
 
 int run_cuda_bench(const std::vector<int>& resolutions, const std::vector<int>& cascades,
                    const FrameOutputs& outputs, const std::string& outputs_name, bool json) {
-#ifdef OCEAN_HAS_CUDA
+  if (Status s = compiled_in("cuda"); !s.ok())
+    return report(unsupported("ocean bench --backend cuda: " + s.message()));
   constexpr int kFrames = 50;
   // Both FFT engines where cuFFT loads (which wins where), else the own kernels alone.
-  std::vector<std::unique_ptr<cuda::CudaBackend>> backends;
+  std::vector<std::unique_ptr<Backend>> backends;
   std::string note;
   for (const cuda::FftEngine fft : {cuda::FftEngine::cufft, cuda::FftEngine::kernels}) {
-    Result<std::unique_ptr<cuda::CudaBackend>> made = cuda::make_cuda_backend(fft);
+    Result<std::unique_ptr<Backend>> made = make_backend("cuda", {.fft = fft});
     if (made.ok()) {
       backends.push_back(std::move(made).value());
     } else if (fft == cuda::FftEngine::cufft && made.status().message().starts_with("cuFFT")) {
@@ -33,7 +32,7 @@ int run_cuda_bench(const std::vector<int>& resolutions, const std::vector<int>& 
     }
   }
   if (!note.empty()) std::cerr << "ocean bench: " << note << "; cuFFT rows omitted\n";
-  const std::string device = backends.front()->device_name();
+  const std::string device = capabilities(*backends.front())->device_name();
   std::unique_ptr<TaskRunner> runner = make_serial_runner();
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   Progress progress("bench",
@@ -42,15 +41,16 @@ int run_cuda_bench(const std::vector<int>& resolutions, const std::vector<int>& 
   for (int n : resolutions) {
     for (int c : cascades) {
       const SimulationConfig config = bench_config(n, c, outputs);
-      for (const std::unique_ptr<cuda::CudaBackend>& b : backends) {
+      for (const std::unique_ptr<Backend>& b : backends) {
         if (Status s = b->configure(config, *runner); !s.ok()) return report(s);
-        Result<cuda::FrameTimings> t = b->time_frames(kFrames);
+        DeviceCapabilities& gpu = *capabilities(*b);
+        Result<cuda::FrameTimings> t = gpu.time_frames(kFrames);
         if (!t.ok()) return report(t.status());
         const cuda::FrameTimings& v = t.value();
         rows.push_back({{"resolution", n},
                         {"cascades", c},
                         {"backend", "cuda"},
-                        {"fft", cuda::to_string(b->fft_engine())},
+                        {"fft", gpu.fft_engine()},
                         {"device", device},
                         {"outputs", outputs_name},
                         {"gpu_total_ms", v.simulation_ms},
@@ -80,10 +80,6 @@ int run_cuda_bench(const std::vector<int>& resolutions, const std::vector<int>& 
     }
   }
   return kExitOk;
-#else
-  (void)resolutions, (void)cascades, (void)outputs, (void)outputs_name, (void)json;
-  return report(unsupported("ocean bench --backend cuda: built without CUDA"));
-#endif
 }
 
 }  // namespace ocean::cli::bench

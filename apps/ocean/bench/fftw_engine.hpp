@@ -7,8 +7,8 @@
 #include <span>
 #include <vector>
 
+#include "ocean/backends/cpu.hpp"
 #include "ocean/core.hpp"
-#include "ocean/cpu_backend.hpp"
 
 namespace ocean::cli {
 

@@ -8,7 +8,7 @@
 #include <thread>
 #include <vector>
 
-#include "ocean/cpu_backend.hpp"
+#include "ocean/backends/cpu.hpp"
 #include "ocean/fft.hpp"
 
 namespace ocean::cli::bench {

@@ -11,14 +11,9 @@
 #include "bench/harness.hpp"
 #include "bench/report.hpp"
 #include "cli_common.hpp"
-#include "ocean/cpu_backend.hpp"
+#include "ocean/backends.hpp"
+#include "ocean/backends/cpu.hpp"
 #include "progress.hpp"
-#ifdef OCEAN_HAS_VULKAN
-#include "ocean/vk/simulation.hpp"
-#endif
-#ifdef OCEAN_HAS_CUDA
-#include "ocean/cuda/simulation.hpp"
-#endif
 
 namespace ocean::cli::bench {
 
@@ -74,18 +69,19 @@ Result<Timed> time_cpu(const SimulationConfig& with, double min_time, TaskRunner
       [&](double t) { noisy->step_far_noise(t, b); }, [&](double t) { noisy->step(t, b); });
 }
 
-#ifdef OCEAN_HAS_VULKAN
 // Wall time of whole frames (submit, wait, copy into the Frame): two backends on one device,
 // one without the map and one with it.
 Result<Timed> time_vulkan(const SimulationConfig& with, double min_time, std::string& device) {
   SimulationConfig without = with;
   without.far_noise.resolution = 0;
-  Result<std::unique_ptr<vk::Context>> ctx = vk::create_context();
-  if (!ctx.ok()) return ctx.status();
-  std::shared_ptr<vk::Context> context(std::move(ctx).value());
-  device = context->info.name;
+  Result<std::vector<std::unique_ptr<Backend>>> made = make_backends("vulkan", 2);
+  if (!made.ok()) return made.status();
+  Backend& plain = *made.value()[0];
+  Backend& noisy = *made.value()[1];
+  DeviceCapabilities& plain_gpu = *capabilities(plain);
+  DeviceCapabilities& noisy_gpu = *capabilities(noisy);
+  device = plain_gpu.device_name();
   std::unique_ptr<TaskRunner> serial = make_serial_runner();
-  vk::VulkanBackend plain(context), noisy(context);
   if (Status s = plain.configure(without, *serial); !s.ok()) return s;
   if (Status s = noisy.configure(with, *serial); !s.ok()) return s;
   Frame a, b;
@@ -93,28 +89,26 @@ Result<Timed> time_vulkan(const SimulationConfig& with, double min_time, std::st
   noisy.allocate(b);
   const Timed timed = time_three(
       min_time, [&](double t) { plain.step(t, a); },
-      [&](double t) { (void)noisy.step_far_noise(t, b); }, [&](double t) { noisy.step(t, b); });
-  if (!plain.status().ok()) return plain.status();
-  if (!noisy.status().ok()) return noisy.status();
+      [&](double t) { (void)noisy_gpu.step_far_noise(t, b); }, [&](double t) { noisy.step(t, b); });
+  if (!plain_gpu.status().ok()) return plain_gpu.status();
+  if (!noisy_gpu.status().ok()) return noisy_gpu.status();
   return timed;
 }
-#endif
 
 // CUDA: GPU time from CUDA events (CudaBackend::time_frames: the frame, the cascades alone and the
 // map alone as three graphs on the same streams, alternating launch by launch, means of
 // kCudaFrames after a warm-up): the device's time, no host round trip.
 constexpr int kCudaFrames = 50;
-#ifdef OCEAN_HAS_CUDA
 Result<cuda::FrameTimings> time_cuda(const SimulationConfig& with, std::string& device) {
-  Result<std::unique_ptr<cuda::CudaBackend>> made = cuda::make_cuda_backend();
+  Result<std::unique_ptr<Backend>> made = make_backend("cuda");
   if (!made.ok()) return made.status();
-  cuda::CudaBackend& backend = *made.value();
-  device = backend.device_name() + ", " + std::string(cuda::to_string(backend.fft_engine()));
+  Backend& backend = *made.value();
+  DeviceCapabilities& gpu = *capabilities(backend);
+  device = gpu.device_name() + ", " + std::string(gpu.fft_engine());
   std::unique_ptr<TaskRunner> serial = make_serial_runner();
   if (Status s = backend.configure(with, *serial); !s.ok()) return s;
-  return backend.time_frames(kCudaFrames);
+  return gpu.time_frames(kCudaFrames);
 }
-#endif
 
 }  // namespace
 
@@ -134,15 +128,15 @@ int run_overlap(const OverlapOptions& o) {
       config.far_noise.resolution = o.noise_resolution;
       std::vector<std::pair<std::string, Result<Timed>>> measured;
       measured.emplace_back("cpu", time_cpu(config, o.min_time, *runner));
-#ifdef OCEAN_HAS_VULKAN
-      Result<Timed> gpu = time_vulkan(config, o.min_time, device);
-      if (gpu.ok() || gpu.status().code() != ErrorCode::unsupported)
-        measured.emplace_back("vulkan", gpu);
-      else
-        vulkan_note = gpu.status().message();
-#else
-      vulkan_note = "built without Vulkan";
-#endif
+      if (Status built = compiled_in("vulkan"); built.ok()) {
+        Result<Timed> gpu = time_vulkan(config, o.min_time, device);
+        if (gpu.ok() || gpu.status().code() != ErrorCode::unsupported)
+          measured.emplace_back("vulkan", gpu);
+        else
+          vulkan_note = gpu.status().message();
+      } else {
+        vulkan_note = built.message();
+      }
       const auto row = [&](const std::string& backend, double cascades_ms, double noise_ms,
                            double both_ms) {
         return nlohmann::ordered_json{{"backend", backend},
@@ -164,9 +158,10 @@ int run_overlap(const OverlapOptions& o) {
         r["both_min_max_ms"] = {t.both.min_ms, t.both.max_ms};
         rows.push_back(r);
       }
-#ifdef OCEAN_HAS_CUDA
-      Result<cuda::FrameTimings> cuda_timed = time_cuda(config, cuda_device);
-      if (cuda_timed.ok()) {
+      if (Status built = compiled_in("cuda"); !built.ok()) {
+        cuda_note = built.message();
+      } else if (Result<cuda::FrameTimings> cuda_timed = time_cuda(config, cuda_device);
+                 cuda_timed.ok()) {
         const cuda::FrameTimings& t = cuda_timed.value();
         nlohmann::ordered_json r = row("cuda", t.cascades_ms, t.noise_ms, t.simulation_ms);
         r["gpu_mean_of_frames"] = kCudaFrames;
@@ -177,9 +172,6 @@ int run_overlap(const OverlapOptions& o) {
       } else {
         return report(cuda_timed.status());
       }
-#else
-      cuda_note = "built without CUDA";
-#endif
       progress.update(++done);
     }
   }

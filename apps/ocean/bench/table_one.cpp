@@ -9,10 +9,8 @@
 #include "bench/harness.hpp"
 #include "bench/report.hpp"
 #include "cli_common.hpp"
+#include "ocean/backends.hpp"
 #include "progress.hpp"
-#ifdef OCEAN_HAS_VULKAN
-#include "ocean/vk/simulation.hpp"
-#endif
 
 namespace ocean::cli::bench {
 
@@ -26,7 +24,8 @@ const std::map<int, std::pair<double, double>> kSource = {
 }  // namespace
 
 int run_table_one(const std::vector<int>& resolutions, int cascades, double min_time, bool json) {
-#ifdef OCEAN_HAS_VULKAN
+  if (Status s = compiled_in("vulkan"); !s.ok())
+    return report(unsupported("ocean bench --table-one: " + s.message()));
   const std::vector<double> sizes = {1000.0, 233.0, 57.0, 13.0};
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   std::string device;
@@ -39,7 +38,7 @@ int run_table_one(const std::vector<int>& resolutions, int cascades, double min_
     config.cascade_patch_sizes_m.assign(sizes.begin(), sizes.begin() + cascades);
     Result<PipelineResult> cpu = run_pipeline(config, {}, *runner, min_time, 0.0);
     if (!cpu.ok()) return report(cpu.status());
-    Result<vk::StageTimings> gpu = vk::benchmark(config, 20);
+    Result<vk::StageTimings> gpu = vulkan_stage_timings(config, 20);
     if (!gpu.ok()) return report(gpu.status());
     device = gpu.value().device;
     const double cpu_ms = cpu.value().frame.median_ms, gpu_ms = gpu.value().total_ms;
@@ -77,10 +76,6 @@ int run_table_one(const std::vector<int>& resolutions, int cascades, double min_
     std::cout << "\n";
   }
   return kExitOk;
-#else
-  (void)resolutions, (void)cascades, (void)min_time, (void)json;
-  return report(unsupported("ocean bench --table-one: built without Vulkan"));
-#endif
 }
 
 }  // namespace ocean::cli::bench

@@ -7,23 +7,22 @@
 #include "bench/harness.hpp"
 #include "bench/report.hpp"
 #include "cli_common.hpp"
+#include "ocean/backends.hpp"
 #include "progress.hpp"
-#ifdef OCEAN_HAS_VULKAN
-#include "ocean/vk/simulation.hpp"
-#endif
 
 namespace ocean::cli::bench {
 
 int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>& cascades,
                      const FrameOutputs& outputs, const std::string& outputs_name, bool json) {
-#ifdef OCEAN_HAS_VULKAN
+  if (Status s = compiled_in("vulkan"); !s.ok())
+    return report(unsupported("ocean bench --backend vulkan: " + s.message()));
   nlohmann::ordered_json rows = nlohmann::ordered_json::array();
   Progress progress("bench", static_cast<long long>(resolutions.size() * cascades.size()));
   long long done = 0;
   for (int n : resolutions) {
     for (int c : cascades) {
       const SimulationConfig config = bench_config(n, c, outputs);
-      Result<vk::StageTimings> t = vk::benchmark(config, 20);
+      Result<vk::StageTimings> t = vulkan_stage_timings(config, 20);
       if (!t.ok()) return report(t.status());
       const vk::StageTimings& v = t.value();
       rows.push_back({{"resolution", n},
@@ -61,10 +60,6 @@ int run_vulkan_bench(const std::vector<int>& resolutions, const std::vector<int>
     }
   }
   return kExitOk;
-#else
-  (void)resolutions, (void)cascades, (void)outputs, (void)outputs_name, (void)json;
-  return report(unsupported("ocean bench --backend vulkan: built without Vulkan"));
-#endif
 }
 
 }  // namespace ocean::cli::bench

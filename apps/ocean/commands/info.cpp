@@ -2,20 +2,12 @@
 // and CUDA devices of this machine, as a table or JSON.
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "ocean/backends.hpp"
-#ifdef OCEAN_HAS_VULKAN
-#include "ocean/vk.hpp"
-#endif
-#ifdef OCEAN_HAS_CUDA
-#include "ocean/cuda/simulation.hpp"
-#endif
-#if defined(OCEAN_HAS_VULKAN) && defined(OCEAN_HAS_CUDA)
-#include "ocean/interop.hpp"
-#include "ocean/vk/external.hpp"
-#endif
 
 namespace ocean::cli {
 
@@ -26,13 +18,11 @@ int run_info(bool json) {
   for (const BackendInfo& b : list_backends())
     backends.push_back({{"name", b.name}, {"available", b.available}, {"detail", b.detail}});
   nlohmann::ordered_json devices = nlohmann::ordered_json::array();
-  std::string vulkan_status = "built without Vulkan";
-#ifdef OCEAN_HAS_VULKAN
-  Result<std::vector<vk::DeviceInfo>> found = vk::list_devices();
+  std::string vulkan_status = "ok";
+  Result<std::vector<VulkanDeviceInfo>> found = list_vulkan_devices();
   if (found.ok()) {
-    vulkan_status = "ok";
     for (std::size_t i = 0; i < found.value().size(); ++i) {
-      const vk::DeviceInfo& d = found.value()[i];
+      const VulkanDeviceInfo& d = found.value()[i];
       devices.push_back({{"index", i},
                          {"name", d.name},
                          {"type", d.type},
@@ -44,13 +34,10 @@ int run_info(bool json) {
   } else {
     vulkan_status = found.status().message();
   }
-#endif
   nlohmann::ordered_json cuda_devices = nlohmann::ordered_json::array();
-  std::string cuda_status = "built without CUDA", cuda_versions;
-#ifdef OCEAN_HAS_CUDA
-  cuda_versions = cuda::runtime_versions();
-  Result<std::vector<cuda::DeviceInfo>> cuda_found = cuda::list_devices();
-  cuda_status = cuda_found.ok() ? "ok" : cuda_found.status().message();
+  const std::string cuda_versions = ocean::cuda_versions();
+  Result<std::vector<cuda::DeviceInfo>> cuda_found = list_cuda_devices();
+  const std::string cuda_status = cuda_found.ok() ? "ok" : cuda_found.status().message();
   for (const cuda::DeviceInfo& d :
        cuda_found.ok() ? cuda_found.value() : std::vector<cuda::DeviceInfo>{}) {
     cuda_devices.push_back({{"index", d.index},
@@ -62,33 +49,8 @@ int run_info(bool json) {
                             {"usable", d.usable},
                             {"reason", d.reason}});
   }
-#endif
-  // Whether `--backend cuda` renders with no host copy: the first Vulkan device that is the same
-  // GPU as a usable CUDA device, else why not (interop::choose against the first Vulkan device).
-  std::string cuda_render = cuda_status;  // why there is no CUDA device, or "built without CUDA"
-#if defined(OCEAN_HAS_VULKAN) && defined(OCEAN_HAS_CUDA)
-  Result<std::vector<vk::DeviceInfo>> listed = vk::list_devices();
-  Result<std::vector<interop::VulkanSide>> sides = vk::list_interop_sides();
-  if (cuda_found.ok() && sides.ok() && listed.ok()) {
-    std::vector<interop::CudaSide> cuda_sides;
-    for (const cuda::DeviceInfo& d : cuda_found.value())
-      cuda_sides.push_back({.index = d.index, .name = d.name, .uuid = d.uuid, .usable = d.usable});
-    std::string first_reason;
-    for (std::size_t i = 0; i < sides.value().size(); ++i) {
-      if (!listed.value()[i].usable) continue;
-      const interop::Choice c = interop::choose(sides.value()[i], cuda_sides);
-      if (first_reason.empty()) first_reason = c.reason;
-      if (c.zero_copy) {
-        first_reason = "zero-copy with Vulkan device [" + std::to_string(i) + "]: " + c.reason;
-        break;
-      }
-    }
-    cuda_render = first_reason.empty() ? "no usable Vulkan device: CUDA frames cannot be rendered"
-                                       : first_reason;
-  } else if (cuda_found.ok()) {
-    cuda_render = "no Vulkan device: CUDA frames cannot be rendered";
-  }
-#endif
+  // Whether `--backend cuda` renders with no host copy (or why there is no CUDA device).
+  const std::string cuda_render = cuda_render_path(cuda_found);
   if (json) {
     print_json({{"backends", backends},
                 {"vulkan", {{"status", vulkan_status}, {"devices", devices}}},

@@ -9,14 +9,8 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "ocean/backends.hpp"
+#include "ocean/backends/cpu.hpp"
 #include "ocean/conformance.hpp"
-#include "ocean/cpu_backend.hpp"
-#ifdef OCEAN_HAS_VULKAN
-#include "ocean/vk/simulation.hpp"
-#endif
-#ifdef OCEAN_HAS_CUDA
-#include "ocean/cuda/simulation.hpp"
-#endif
 
 namespace ocean::cli {
 
@@ -51,28 +45,14 @@ int run_validate(const ValidateOptions& o) {
         cpu::make_cpu_backend({.pipeline = cpu::CpuPipeline::scalar_reference});
     Result<std::unique_ptr<Backend>> backend = make_backend(o.backend);
     if (!backend.ok()) return report(backend.status());
-#ifdef OCEAN_HAS_VULKAN
-    if (auto* v = dynamic_cast<vk::VulkanBackend*>(backend.value().get()))
-      device = v->context().info.name;
-#endif
-#ifdef OCEAN_HAS_CUDA
-    if (auto* cu = dynamic_cast<cuda::CudaBackend*>(backend.value().get()))
-      device = cu->device_name();
-#endif
+    const DeviceCapabilities* caps = capabilities(*backend.value());
+    if (caps != nullptr) device = caps->device_name();
     Result<std::vector<conformance::FrameResult>> frames =
         conformance::run_case(c, *reference, *backend.value(), *runner, bounds);
     if (!frames.ok()) return report(frames.status());
     conformance::Errors e;
     for (const conformance::FrameResult& f : frames.value()) e.merge(f.errors);
-#ifdef OCEAN_HAS_VULKAN
-    if (auto* v = dynamic_cast<vk::VulkanBackend*>(backend.value().get()); v && !v->status().ok())
-      return report(v->status());
-#endif
-#ifdef OCEAN_HAS_CUDA
-    if (auto* cu = dynamic_cast<cuda::CudaBackend*>(backend.value().get());
-        cu && !cu->status().ok())
-      return report(cu->status());
-#endif
+    if (caps != nullptr && !caps->status().ok()) return report(caps->status());
     all.merge(e);
     nlohmann::ordered_json j = {{"case", c.name}, {"pass", e.pass(bounds)}};
     j.update(errors_json(e));

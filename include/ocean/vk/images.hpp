@@ -1,5 +1,5 @@
 // ocean/vk/images.hpp — the simulation's output images on the GPU, as Vulkan handles: what a
-// simulation that runs on a vk::Context (the Vulkan backend, ocean/vk/simulation.hpp) hands to
+// simulation that runs on a vk::Context (the Vulkan backend, ocean/backends/vulkan.hpp) hands to
 // a consumer on the same context (the renderer, ocean/render.hpp) so that it samples them where
 // they are, with no copy. A plain description of the vk layer: neither side depends on the other.
 //

@@ -9,7 +9,7 @@
 
 #include "fft/lane_plan.hpp"
 #include "kernels.hpp"
-#include "ocean/cpu_backend.hpp"
+#include "ocean/backends/cpu.hpp"
 #include "ocean/fft.hpp"
 #include "ocean/sim.hpp"
 #include "sim/far_noise_map.hpp"
@@ -91,7 +91,7 @@ using packing::normal_length_from_roughness;
 using packing::pack_rgba8;
 using packing::smoothness_from_normal_length;
 
-/// The CPU backend (ocean/cpu_backend.hpp): configuration and the three pipelines' frames.
+/// The CPU backend (ocean/backends/cpu.hpp): configuration and the three pipelines' frames.
 class CpuBackendImpl final : public CpuBackend {
  public:
   explicit CpuBackendImpl(CpuOptions options = {}) : options_(options) {}

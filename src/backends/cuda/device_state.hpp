@@ -9,7 +9,7 @@
 #include "cufft_library.hpp"
 #include "far_noise_kernel.hpp"
 #include "kernels.hpp"
-#include "ocean/cuda/simulation.hpp"
+#include "ocean/backends/cuda.hpp"
 #include "ocean/interop.hpp"
 #include "plan.hpp"
 

@@ -4,7 +4,7 @@
 #include "cufft_library.hpp"
 #include "errors.hpp"
 #include "kernels.hpp"
-#include "ocean/cuda/simulation.hpp"
+#include "ocean/backends/cuda.hpp"
 
 namespace ocean::cuda {
 

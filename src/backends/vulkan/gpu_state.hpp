@@ -7,8 +7,8 @@
 #include <span>
 
 #include "far_noise_pass.hpp"
+#include "ocean/backends/vulkan.hpp"
 #include "ocean/vk.hpp"
-#include "ocean/vk/simulation.hpp"
 #include "shaders/ocean_shared.h"
 
 namespace ocean::vk::detail {

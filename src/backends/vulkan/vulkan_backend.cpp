@@ -13,8 +13,8 @@
 #include <vector>
 
 #include "gpu_state.hpp"
+#include "ocean/backends/vulkan.hpp"
 #include "ocean/plan.hpp"
-#include "ocean/vk/simulation.hpp"
 #include "sim/far_noise_map.hpp"
 
 namespace ocean::vk {

@@ -7,12 +7,9 @@
 #include <cmath>
 
 #include "ocean/backends.hpp"
+#include "ocean/backends/vulkan.hpp"
 #include "ocean/far_field.hpp"
 #include "ocean/vk/external.hpp"
-#include "ocean/vk/simulation.hpp"
-#ifdef OCEAN_HAS_CUDA
-#include "ocean/cuda/simulation.hpp"
-#endif
 
 namespace ocean::render {
 
@@ -24,20 +21,16 @@ Status check_backend(const std::string& name) {
                           " cannot render: must be cpu, vulkan or cuda");
 }
 
-// The CUDA devices as interop::choose reads them, or the backend's "no CUDA device: ..." (or
-// "built without CUDA") status.
+// The CUDA devices as interop::choose reads them, or the backend's "no CUDA device: ..." status
+// (or make_backend's "unsupported: backend 'cuda' built without CUDA: ...").
 Result<std::vector<interop::CudaSide>> cuda_devices() {
-#ifdef OCEAN_HAS_CUDA
-  Result<std::vector<cuda::DeviceInfo>> devices = cuda::list_devices();
+  if (!compiled_in("cuda").ok()) return make_backend("cuda").status();
+  Result<std::vector<cuda::DeviceInfo>> devices = list_cuda_devices();
   if (!devices.ok()) return devices.status();
   std::vector<interop::CudaSide> sides;
   for (const cuda::DeviceInfo& d : devices.value())
     sides.push_back({.index = d.index, .name = d.name, .uuid = d.uuid, .usable = d.usable});
   return sides;
-#else
-  Result<std::unique_ptr<Backend>> backend = make_backend("cuda");
-  return backend.ok() ? unsupported("built without CUDA") : backend.status();
-#endif
 }
 
 }  // namespace
@@ -78,18 +71,14 @@ Result<std::unique_ptr<Scene>> Scene::make(std::shared_ptr<vk::Context> context,
     if (!devices.ok()) return devices.status();
     const interop::Choice choice =
         interop::choose(vk::interop_side(*scene->context_), devices.value());
-#ifdef OCEAN_HAS_CUDA
     if (choice.cuda_device < 0)
       return unsupported("no CUDA device: none runs this build's kernels");
-    Result<std::unique_ptr<cuda::CudaBackend>> made = cuda::make_cuda_backend(choice.cuda_device);
+    Result<std::unique_ptr<Backend>> made = make_backend("cuda", {.device = choice.cuda_device});
     if (!made.ok()) return made.status();
-    scene->cuda_ = made.value().get();
+    scene->cuda_ = capabilities(*made.value());
     backend = std::move(made).value();
     zero_copy = choice.zero_copy;
     scene->interop_ = choice.reason;
-#else
-    return unsupported("built without CUDA: the CUDA backend is not part of this build");
-#endif
   } else {
     Result<std::unique_ptr<Backend>> cpu = make_backend("cpu");
     if (!cpu.ok()) return cpu.status();
@@ -114,7 +103,6 @@ Scene::~Scene() = default;
 
 Status Scene::share() {
   if (!shared_) return {};
-#ifdef OCEAN_HAS_CUDA
   Result<interop::SharedInputs> exported = renderer_->share_inputs();
   Status s = exported.status();
   if (s.ok()) {
@@ -127,7 +115,6 @@ Status Scene::share() {
     interop_ = "sharing memory with the renderer failed (" + s.message() +
                "): CUDA frames are read back and uploaded";
   }
-#endif
   return {};
 }
 
@@ -136,7 +123,6 @@ Status Scene::hand_over() {
     if (!gpu_->status().ok()) return gpu_->status();
     return renderer_->use_simulation_images(gpu_->images(), simulator_->frame());
   }
-#ifdef OCEAN_HAS_CUDA
   if (cuda_ != nullptr) {
     if (!cuda_->status().ok()) return cuda_->status();
     if (shared_) {
@@ -144,7 +130,6 @@ Status Scene::hand_over() {
       return renderer_->set_far_noise(simulator_->frame());  // the map is read back (R.13b)
     }
   }
-#endif
   return renderer_->upload(simulator_->frame());
 }
 

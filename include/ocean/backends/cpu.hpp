@@ -1,4 +1,4 @@
-// ocean/cpu_backend.hpp — the CPU backend's options for benchmarks and oracles: which pipeline
+// ocean/backends/cpu.hpp — the CPU backend's options for benchmarks and oracles: which pipeline
 // runs, an external FFT engine to measure the pipeline against, and the wall time of each
 // stage of the last step. make_backend("cpu") (ocean/backends.hpp) gives the default pipeline;
 // this header is for callers that choose.

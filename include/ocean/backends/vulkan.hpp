@@ -1,4 +1,4 @@
-// ocean/vk/simulation.hpp — the Vulkan compute simulation backend: the CPU reference pipeline
+// ocean/backends/vulkan.hpp — the Vulkan compute simulation backend: the CPU reference pipeline
 // (evolution, inverse FFT, displacement, normals, Jacobian, foam, packed mips) as compute
 // shaders, all cascades in one dispatch per stage, results in GPU images for the renderer and
 // read back into the Frame arrays for queries and tests.
@@ -15,6 +15,7 @@
 
 #include <memory>
 
+#include "ocean/backends/capabilities.hpp"
 #include "ocean/far_noise.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/vk.hpp"
@@ -26,18 +27,9 @@ namespace detail {
 struct GpuState;  // every Vulkan object of a configured simulation (src/backends/vulkan)
 }
 
-/// GPU time of each stage of one frame, from timestamp queries, milliseconds.
-struct StageTimings {
-  double evolve_fft_rows_ms = 0.0;  ///< evolution fused into the first FFT axis
-  double fft_columns_ms = 0.0;      ///< second FFT axis and the (−1)^(x+y) sign
-  double finalize_ms = 0.0;         ///< displacement, normals, Jacobian, foam, base packing
-  double mips_ms = 0.0;             ///< mip chain of the packed map, every level
-  double readback_ms = 0.0;         ///< copies of every output into host-visible memory
-  double total_ms = 0.0;            ///< first to last timestamp
-  std::string device;               ///< the device's name (benchmark() fills it)
-};
-
-class VulkanBackend final : public Backend {
+/// Implements DeviceCapabilities: asynchronous frames, GPU images, the noise map alone; no
+/// shared inputs and no time_frames (`unsupported`).
+class VulkanBackend final : public Backend, public DeviceCapabilities {
  public:
   /// Uses `context` (shared with a renderer, for instance); see make_vulkan_backend.
   explicit VulkanBackend(std::shared_ptr<Context> context);
@@ -59,20 +51,34 @@ class VulkanBackend final : public Backend {
 
   /// Asynchronous use: submit() starts the frame at time_s and returns; read() waits for it and
   /// copies the outputs into `out`. The GPU images are complete once read() returns.
-  Status submit(double time_s);
-  Status read(Frame& out);
+  Status submit(double time_s) override;
+  Status read(Frame& out) override;
 
   /// The far field's noise map alone (SimulationConfig::far_noise, docs/rendering.md R.13a):
   /// Frame::far_noise at time_s from its own pre-recorded command buffer, the cascades untouched
   /// (what `ocean bench --overlap` times against the whole frame). No-op when the map is off;
   /// returns status() while a submitted frame is pending. Allocates nothing.
-  Status step_far_noise(double time_s, Frame& out);
+  Status step_far_noise(double time_s, Frame& out) override;
 
   /// The first failure of a frame since configure(); ok while everything works.
-  [[nodiscard]] const Status& status() const { return status_; }
+  [[nodiscard]] const Status& status() const override { return status_; }
   /// Stage times of the last completed frame (zeros when the device has no timestamps).
   [[nodiscard]] const StageTimings& timings() const { return timings_; }
   [[nodiscard]] SimulationImages images() const;
+  Status gpu_images(SimulationImages& out) const override {
+    out = images();
+    return {};
+  }
+  /// The context's device name.
+  [[nodiscard]] const std::string& device_name() const override { return context_->info.name; }
+  [[nodiscard]] std::string_view fft_engine() const override { return "kernels"; }
+  Status share_inputs(interop::SharedInputs& /*shared*/) override {
+    return unsupported("the Vulkan backend shares its images (gpu_images), not inputs");
+  }
+  [[nodiscard]] std::uint64_t shared_frame() const override { return 0; }
+  Result<cuda::FrameTimings> time_frames(int /*frames*/) override {
+    return unsupported("the Vulkan backend times its stages (timings, benchmark)");
+  }
   [[nodiscard]] const Context& context() const { return *context_; }
 
  private:

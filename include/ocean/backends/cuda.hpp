@@ -1,4 +1,4 @@
-// ocean/cuda/simulation.hpp — the CUDA simulation backend: the CPU reference pipeline (evolution,
+// ocean/backends/cuda.hpp — the CUDA simulation backend: the CPU reference pipeline (evolution,
 // inverse FFTs of height, displacement and slopes, finalize: normals, Jacobian, foam, RGBA8 with
 // its mips, half4) as CUDA kernels and cuFFT (or its own FFT kernels) transforms, each cascade on
 // a stream of its own, the far field's noise map (SimulationConfig::far_noise) on another, the
@@ -17,7 +17,8 @@
 // unchanged and is reported by status() with a one-line message.
 // Threading: one thread drives a backend at a time (the Simulator guarantees this).
 // This header includes no CUDA header; its functions exist in builds with the CUDA backend
-// (CMake option OCEAN_CUDA; OCEAN_HAS_CUDA is defined for the code that links it).
+// (CMake option OCEAN_CUDA). Code outside the backends reaches them through ocean/backends.hpp,
+// which exists in every build.
 #pragma once
 
 #include <cstdint>
@@ -26,6 +27,7 @@
 #include <string_view>
 #include <vector>
 
+#include "ocean/backends/capabilities.hpp"
 #include "ocean/far_noise.hpp"
 #include "ocean/interop.hpp"
 #include "ocean/sim.hpp"
@@ -36,28 +38,8 @@ namespace detail {
 struct DeviceState;  // every CUDA object of a configured simulation (src/backends/cuda)
 }
 
-/// The inverse FFT between evolution and finalize.
-enum class FftEngine {
-  automatic,  ///< cuFFT where libcufft loads, else the own kernels
-  cufft,      ///< NVIDIA's cuFFT (loaded at run time); `unsupported` when it does not load
-  kernels,    ///< the backend's own shared-memory Stockham kernels (the Vulkan backend's port),
-              ///< with the evolution fused into the row transforms
-};
 /// "cufft" or "kernels" ("automatic" for automatic).
 std::string_view to_string(FftEngine engine);
-
-/// One CUDA device as the runtime reports it.
-struct DeviceInfo {
-  int index = 0;
-  std::string name;
-  int compute_major = 0;  ///< compute capability, e.g. 9.0 for an H100/H200
-  int compute_minor = 0;
-  std::uint64_t memory_bytes = 0;
-  int multiprocessors = 0;
-  bool usable = false;  ///< this build carries code the device runs (see reason otherwise)
-  std::string reason;
-  interop::Uuid uuid{};  ///< cudaDeviceProp::uuid: equal to the Vulkan deviceUUID of the same GPU
-};
 
 /// What the CUDA runtime sees: the devices, or an error whose message starts "no CUDA device: "
 /// (unsupported) saying why there are none.
@@ -65,31 +47,9 @@ Result<std::vector<DeviceInfo>> list_devices();
 /// Driver and runtime versions as "driver 13.0, runtime 13.0" (driver "none" without one).
 std::string runtime_versions();
 
-/// GPU time of one frame from CUDA events around the frame's graph, milliseconds.
-struct FrameTimings {
-  /// Every stage, the cascades and the far field's noise map (when configured) on concurrent
-  /// streams, no readback: the frame with both.
-  double simulation_ms = 0.0;
-  double serial_ms = 0.0;    ///< the same work with every cascade and the map on one stream
-  double readback_ms = 0.0;  ///< device → pinned host copies of the frame's outputs
-  /// The cascades alone on their streams (no map, no readback); simulation_ms without a map.
-  double cascades_ms = 0.0;
-  /// The noise map alone on its stream (no cascades, no readback); 0 without a map.
-  double noise_ms = 0.0;
-  /// serial_ms / simulation_ms: how much the concurrent streams gain (1 = none).
-  [[nodiscard]] double overlap() const {
-    return simulation_ms > 0.0 ? serial_ms / simulation_ms : 0.0;
-  }
-  /// How much of the shorter of the cascades and the map the frame hides, as `ocean bench
-  /// --overlap` defines it: (cascades_ms + noise_ms − simulation_ms) / min(cascades_ms,
-  /// noise_ms); 1 = hidden entirely, 0 = one after the other; 0 without a map.
-  [[nodiscard]] double noise_overlap() const {
-    const double shorter = cascades_ms < noise_ms ? cascades_ms : noise_ms;
-    return shorter > 0.0 ? (cascades_ms + noise_ms - simulation_ms) / shorter : 0.0;
-  }
-};
-
-class CudaBackend final : public Backend {
+/// Implements DeviceCapabilities: asynchronous frames, shared inputs, time_frames; no GPU images
+/// and no noise map alone (`unsupported`).
+class CudaBackend final : public Backend, public DeviceCapabilities {
  public:
   /// Runs on device `device` (an index of list_devices()) with `fft` (cufft or kernels, already
   /// resolved: cuFFT must have loaded); see make_cuda_backend.
@@ -111,8 +71,8 @@ class CudaBackend final : public Backend {
 
   /// Asynchronous use: submit() launches the frame's graph at time_s and returns; read() waits
   /// for it and copies the outputs into `out`.
-  Status submit(double time_s);
-  Status read(Frame& out);
+  Status submit(double time_s) override;
+  Status read(Frame& out) override;
 
   /// Zero-copy to a renderer on the same GPU (ocean/interop.hpp; Renderer::share_inputs): imports
   /// the shared buffer (cudaImportExternalMemory, cudaExternalMemoryGetMappedBuffer) and the two
@@ -123,20 +83,26 @@ class CudaBackend final : public Backend {
   /// before the next one is submitted, or the next one waits for ever. Imported descriptors are
   /// set to −1 (the runtime owns them); on failure the rest stay the caller's
   /// (interop::close_unimported). Needs configure() first; configure() ends the sharing.
-  Status share_inputs(interop::SharedInputs& shared);
+  Status share_inputs(interop::SharedInputs& shared) override;
   /// The last frame written into the shared buffer (1, 2, …), 0 before the first or unshared.
-  [[nodiscard]] std::uint64_t shared_frame() const;
+  [[nodiscard]] std::uint64_t shared_frame() const override;
 
   /// The first failure of a frame since configure(); ok while everything works.
-  [[nodiscard]] const Status& status() const { return status_; }
+  [[nodiscard]] const Status& status() const override { return status_; }
   /// The device's name, as list_devices() gives it.
-  [[nodiscard]] const std::string& device_name() const { return device_name_; }
+  [[nodiscard]] const std::string& device_name() const override { return device_name_; }
   /// The FFT engine in use: FftEngine::cufft or FftEngine::kernels.
-  [[nodiscard]] FftEngine fft_engine() const { return fft_; }
+  [[nodiscard]] std::string_view fft_engine() const override { return to_string(fft_); }
   /// Times `frames` launches of the simulation graph (concurrent and serial), of the readback
   /// and, with a noise map, of the cascades alone and the map alone, each after one warm-up
   /// frame; means. Needs a configured backend.
-  Result<FrameTimings> time_frames(int frames);
+  Result<FrameTimings> time_frames(int frames) override;
+  Status step_far_noise(double /*time_s*/, Frame& /*out*/) override {
+    return unsupported("the CUDA backend runs its noise map in the frame's graph (time_frames)");
+  }
+  Status gpu_images(vk::SimulationImages& /*out*/) const override {
+    return unsupported("the CUDA backend has no Vulkan images: it shares inputs (share_inputs)");
+  }
 
  private:
   Status submit_shared();  // the shared frame: wait `read`, graph, signal `written`
