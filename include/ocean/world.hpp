@@ -119,9 +119,9 @@ struct WorldParams {
   /// The objects float as rigid bodies on the sea; otherwise they stay where they are placed.
   bool floating = false;
   BodySea body_sea = BodySea::own;
-  /// The caller's local layer (wakes of given paths, waveforms, the square they are drawn in), or
-  /// null. The driven objects' wakes are added to a copy of it.
-  std::shared_ptr<const waves::LocalLayer> layer;
+  /// The caller's local layer: wakes of given paths, waveforms and the square they are drawn in,
+  /// built by make() (LocalLayer::make); the driven objects' wakes are added to it. Unset: none.
+  std::optional<waves::LayerParams> layer;
   /// The square the driven wakes are drawn in without a `layer`; unset: a kDrivenArea_m square
   /// laid round the first driven object when its first wake appears (its centre a third of the
   /// side behind it, so the wake trails into it), kept after.
@@ -155,10 +155,11 @@ struct AdvanceHooks {
 
 class World {
  public:
-  /// Builds a body per object (floating), their propulsion and wake tracks (driven ones) and,
-  /// with BodySea::own, a CPU simulator of `config` at start_time_s. Errors, naming the object:
-  /// a hull that cannot float (" cannot float: ..."), a speed without floating, a bad circle;
-  /// the simulator's for a bad configuration.
+  /// Builds a body per object (floating), their propulsion and wake tracks (driven ones), the
+  /// caller's layer and, with BodySea::own, a CPU simulator of `config` at start_time_s. Errors,
+  /// naming the object: a hull that cannot float (" cannot float: ..."), a speed without
+  /// floating, a bad circle; LocalLayer::make's for the layer; the simulator's for a bad
+  /// configuration.
   static Result<std::unique_ptr<World>> make(WorldParams params, const SimulationConfig& config);
   ~World();
   World(const World&) = delete;
@@ -212,7 +213,8 @@ class World {
   std::vector<Object> objects_;
   std::unique_ptr<Simulator> own_sea_;
   double time_s_ = 0.0;
-  std::shared_ptr<const waves::LocalLayer> driven_layer_;  // params_.layer + the driven wakes
+  std::shared_ptr<const waves::LocalLayer> given_layer_;   // built from params_.layer
+  std::shared_ptr<const waves::LocalLayer> driven_layer_;  // given_layer_ + the driven wakes
   std::optional<waves::LocalArea> driven_area_;            // laid round the first driven object
   std::vector<waves::KelvinWake> wakes_;                   // scratch
   std::size_t tables_computed_ = 0;

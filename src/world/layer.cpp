@@ -38,7 +38,7 @@ void World::driven_wakes(std::vector<waves::KelvinWake>& out) const {
 }
 
 const std::shared_ptr<const waves::LocalLayer>& World::local_layer() const {
-  return driven_layer_ != nullptr ? driven_layer_ : params_.layer;
+  return driven_layer_ != nullptr ? driven_layer_ : given_layer_;
 }
 
 Status World::update_layer() {
@@ -48,7 +48,7 @@ Status World::update_layer() {
     driven_layer_.reset();
     return {};
   }
-  const waves::LocalLayer* given = params_.layer.get();
+  const waves::LocalLayer* given = given_layer_.get();
   waves::LayerParams p;
   p.choppiness = params_.choppiness;
   if (given != nullptr) {

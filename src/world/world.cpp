@@ -115,6 +115,12 @@ Result<std::unique_ptr<World>> World::make(WorldParams params, const SimulationC
     }
     world->objects_.push_back(std::move(o));
   }
+  if (params.layer) {
+    Result<std::unique_ptr<waves::LocalLayer>> layer = waves::LocalLayer::make(std::move(*params.layer));
+    if (!layer.ok()) return layer.status();
+    world->given_layer_ = std::move(layer).value();
+    params.layer.reset();  // held by the layer
+  }
   if (params.wake_area) {
     if (Status s = waves::validate(*params.wake_area); !s.ok()) return s;
   }
@@ -213,7 +219,7 @@ Status World::set_wake_area(const waves::LocalArea& area) {
   const bool moved = !params_.wake_area || area.origin_m != params_.wake_area->origin_m ||
                      area.size_m != params_.wake_area->size_m;
   params_.wake_area = area;
-  if (moved && params_.layer == nullptr) driven_layer_.reset();  // tables for the old cells
+  if (moved && given_layer_ == nullptr) driven_layer_.reset();  // tables for the old cells
   return {};
 }
 

@@ -71,7 +71,7 @@ enum class OutputKind { png, exr, mp4 };
 constexpr int kDampingResolution = 512;
 
 struct Inputs {
-  std::shared_ptr<const waves::LocalLayer> layer;  // wakes and waveforms, or null
+  std::optional<waves::LayerParams> layer;         // wakes and waveforms, or none
   std::shared_ptr<const waves::Damping> damping;   // mask and bathymetry, or null
   bool calm = false;                               // only the layer, no sea
   render::SceneParams scene;
@@ -97,7 +97,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (!t.ok()) return t.status();
   in.time_s = t.value();
   // The local layer: wakes and waveforms drawn over the sea (docs/rendering.md R.19). Without
-  // --local-area, make_layer names one that holds the wakes at the first frame's time (W.19).
+  // --local-area, layer_params names one that holds the wakes at the first frame's time (W.19).
   in.calm = o.waves.calm;
   if (in.calm && o.waves.local_area.empty() && o.waves.wakes.empty() && o.waves.waveforms.empty())
     return invalid_argument("--calm draws only the local layer: give --local-area X0,Z0,SIZE_M");
@@ -108,10 +108,10 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   Result<std::shared_ptr<const waves::Damping>> damping = make_damping(o.waves, in.scene.config);
   if (!damping.ok()) return damping.status();
   in.damping = damping.value();
-  Result<std::shared_ptr<const waves::LocalLayer>> layer =
-      make_layer(o.waves, in.scene.config.choppiness, in.time_s);
+  Result<std::optional<waves::LayerParams>> layer =
+      layer_params(o.waves, in.scene.config.choppiness, in.time_s);
   if (!layer.ok()) return layer.status();
-  in.layer = layer.value();
+  in.layer = std::move(layer).value();
   // The preset's picture settings, under the flags (--far-field-range wins).
   if (Status s = parse_view_flags(o.picture, sim, 1, in.scene, in.view); !s.ok()) return s;
   if (in.calm) in.scene.config.far_noise.resolution = 0;  // no sea, no far field
@@ -375,7 +375,7 @@ int run_render(const RenderOptions& o) {
   // surface to the renderer (Scene::step, R.19), its foam accumulated through the warm-up.
   scene.simulator().set_damping(in.damping);
   scene.simulator().set_local_layer(world.local_layer());
-  if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
+  if (world.local_layer() != nullptr) print_warnings(*world.local_layer(), in.time_s);
   scene.follow(view);  // the far field's map around the camera (R.13b)
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
