@@ -293,10 +293,10 @@ DampingSamples sample_damping(const waves::Damping& damping, int resolution, std
   return out;
 }
 
-Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, double choppiness,
-                                                            double time_s) {
+Result<std::optional<waves::LayerParams>> layer_params(const WaveFlags& f, double choppiness,
+                                                       double time_s) {
   if (f.local_area.empty() && f.wakes.empty() && f.waveforms.empty())
-    return std::shared_ptr<const waves::LocalLayer>();
+    return std::optional<waves::LayerParams>();
   waves::LayerParams p;
   p.choppiness = choppiness;
   Result<int> n = parse(kLocalResolution, f.local_resolution);
@@ -318,9 +318,7 @@ Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& f, 
             .size_m = area.value()[2],
             .resolution = n.value()};
   if (Status s = waves::validate(p.area); !s.ok()) return flagged("--local-area", f.local_area, s);
-  Result<std::unique_ptr<waves::LocalLayer>> layer = waves::LocalLayer::make(std::move(p));
-  if (!layer.ok()) return layer.status();
-  return std::shared_ptr<const waves::LocalLayer>(std::move(layer).value());
+  return std::optional<waves::LayerParams>(std::move(p));
 }
 
 void print_warnings(const waves::LocalLayer& layer, double time_s) {

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,12 +26,13 @@ struct WaveFlags {
 };
 void add_wave_flags(CLI::App& command, WaveFlags& flags);
 
-/// The layer the flags describe, or null when they give no wake, waveform or area. A malformed
-/// value or an unreadable file is an error naming the flag and echoing the value
-/// (ocean::excerpt); wakes or waveforms without --local-area an error that names a square
-/// holding them at `time_s` (docs/waves.md W.19) and the --local-resolution it needs.
-Result<std::shared_ptr<const waves::LocalLayer>> make_layer(const WaveFlags& flags,
-                                                            double choppiness, double time_s = 0.0);
+/// The layer the flags describe (built by world::World::make), or nullopt when they give no
+/// wake, waveform or area. A malformed value or an unreadable file is an error naming the flag
+/// and echoing the value (ocean::excerpt); wakes or waveforms without --local-area an error that
+/// names a square holding them at `time_s` (docs/waves.md W.19) and the --local-resolution it
+/// needs.
+Result<std::optional<waves::LayerParams>> layer_params(const WaveFlags& flags, double choppiness,
+                                                       double time_s = 0.0);
 
 /// The damping of the sea's bands the flags describe (--damping-mask, --bathymetry), for the
 /// cascades of `config`, or null when neither is given. An unreadable file, a bad placement, a

@@ -1,6 +1,6 @@
-// The interaction scenes of `ocean view` (view/interaction.hpp): the circle the boat is steered
-// onto, the floating boat driven round it by its propulsion and the wake its track leaves,
-// measured from the layer's field, and the shallows' damping against the depth law and the mask
+// The interaction scenes of `ocean view` (view/interaction.hpp): the boat's world (the floating
+// boat driven round its circle by its propulsion on the view's sea, and the wake its track leaves,
+// measured from the layer's field), and the shallows' damping against the depth law and the mask
 // they are built from.
 #include <gtest/gtest.h>
 
@@ -10,70 +10,60 @@
 #include <numbers>
 #include <vector>
 
+#include "ocean/backends.hpp"
 #include "ocean/sim.hpp"
 #include "view/interaction.hpp"
 
 namespace {
 
 using ocean::cli::view::BoatControls;
-using ocean::cli::view::circle_heading_deg;
-using ocean::cli::view::circling_pose;
-using ocean::cli::view::CirclingBoat;
+using ocean::cli::view::make_boat_world;
 using ocean::cli::view::Shallows;
 using ocean::cli::view::shallows_damping;
 
-constexpr double kPi = std::numbers::pi;
-
-TEST(ViewBoat, CirclesAtItsSpeedAlongTheTangent) {
-  const BoatControls boat{.on = true, .speed_mps = 5.0, .radius_m = 40.0, .centre_m = {10, -20}};
-  const double t0 = 3.0;
-  for (double t : {3.0, 7.5, 20.0, 100.0}) {
-    const auto p = circling_pose(boat, t0, t);
-    EXPECT_NEAR(std::hypot(p.x_m - 10.0, p.z_m + 20.0), 40.0, 1e-9) << t;
-    // The heading is perpendicular to the radius, and a small step moves the boat along it.
-    const auto q = circling_pose(boat, t0, t + 1e-3);
-    const double dx = (q.x_m - p.x_m) / 1e-3, dz = (q.z_m - p.z_m) / 1e-3;
-    EXPECT_NEAR(std::hypot(dx, dz), 5.0, 1e-3) << t;
-    EXPECT_NEAR(dx, 5.0 * std::cos(p.heading_rad), 1e-3) << t;
-    EXPECT_NEAR(dz, 5.0 * std::sin(p.heading_rad), 1e-3) << t;
-  }
-  // One lap takes 2πr/U.
-  const auto start = circling_pose(boat, t0, t0), lap = circling_pose(boat, t0, t0 + 2 * kPi * 8.0);
-  EXPECT_NEAR(start.x_m, lap.x_m, 1e-9);
-  EXPECT_NEAR(start.z_m, lap.z_m, 1e-9);
+ocean::SimulationConfig view_sea() {
+  ocean::SimulationConfig c;
+  c.resolution = 16;
+  c.cascade_patch_sizes_m = {100.0};
+  return c;
 }
 
-TEST(ViewBoat, GuidanceSteersAlongTheCircleAndBackOntoIt) {
-  const BoatControls boat{.on = true, .speed_mps = 5.0, .radius_m = 40.0, .centre_m = {10, -20}};
-  // On the circle: the tangent (motion from +x towards +z).
-  EXPECT_NEAR(circle_heading_deg(boat, 50.0, -20.0), 90.0, 1e-9);
-  EXPECT_NEAR(circle_heading_deg(boat, 10.0, 20.0), 180.0, 1e-9);
-  // Outside it turns inwards, inside outwards, by atan(offset / look-ahead).
-  const double turn = std::atan(10.0 / ocean::cli::view::kBoatLookAhead_m) * 180 / kPi;
-  EXPECT_NEAR(circle_heading_deg(boat, 60.0, -20.0), 90.0 + turn, 1e-9);
-  EXPECT_NEAR(circle_heading_deg(boat, 40.0, -20.0), 90.0 - turn, 1e-9);
+// The view's sea made exactly calm: a bathymetry of depth 0 damps every band to nothing (W.12),
+// so that the boat rides on its own wake alone.
+std::unique_ptr<ocean::Simulator> calm_view_sea() {
+  const ocean::SimulationConfig c = view_sea();
+  auto sim = ocean::make_simulator(c).value();
+  auto map = std::make_shared<ocean::waves::HeightMap>();
+  map->rows = 2, map->cols = 2, map->values = {0.0f, 0.0f, 0.0f, 0.0f};
+  auto damping = ocean::waves::Damping::make(
+      {.bathymetry = ocean::waves::PlacedMap{.map = map, .origin_m = {-1e3, -1e3}, .size_m = 2e3},
+       .band_wavenumbers_radpm = ocean::band_wavenumbers(c)});
+  sim->set_damping(std::make_shared<const ocean::waves::Damping>(damping.value()));
+  sim->step(0.0);
+  return sim;
 }
 
-// The view's frames: the boat advanced every 1/30 s on calm water.
-void run(CirclingBoat& boat, double from, double to) {
+// The view's frames: the boat's world advanced every 1/30 s.
+void run(ocean::world::World& boat, ocean::Simulator& sea, double from, double to) {
   for (double t = from; t <= to + 1e-9; t += 1.0 / 30)
-    ASSERT_TRUE(boat.advance(t, ocean::bodies::calm_surface()).ok()) << t;
+    ASSERT_TRUE(boat.advance_to(t, sea).ok()) << t;
 }
 
 TEST(ViewBoat, FloatingBoatIsDrivenRoundTheCircleAndItsWakeTrailsBehindIt) {
   const BoatControls controls{.on = true, .speed_mps = 7.0, .radius_m = 80.0, .centre_m = {0, 0}};
   const double t0 = 10.0;
-  auto made = CirclingBoat::make(controls, t0, 1.0);
+  auto made = make_boat_world(controls, t0, view_sea());
   ASSERT_TRUE(made.ok()) << made.status().message();
-  CirclingBoat& boat = *made.value();
-  run(boat, t0, t0 + 15.0);  // settling onto the circle
+  ocean::world::World& boat = *made.value();
+  auto sea = calm_view_sea();
+  run(boat, *sea, t0, t0 + 15.0);  // settling onto the circle
   // Most of a lap (the lap is 2π·80/7 = 72 s): on the circle within 10 % of its radius (the
   // line-of-sight guidance holds the boat a little outside, where its inward turn equals the
   // hull's drift angle on the turn, B.11), at the commanded speed within 3 %.
   double farthest = 0.0;
   for (double t = t0 + 15.0; t < t0 + 60.0; t += 5.0) {
-    run(boat, t, t + 5.0);
-    const auto& s = boat.body().state();
+    run(boat, *sea, t, t + 5.0);
+    const auto& s = boat.body(0)->state();
     const double rho = std::hypot(s.position_m[0], s.position_m[2]);
     farthest = std::max(farthest, std::abs(rho - 80.0));
     EXPECT_NEAR(std::hypot(s.velocity_mps[0], s.velocity_mps[2]), 7.0, 0.21) << t;
@@ -84,12 +74,16 @@ TEST(ViewBoat, FloatingBoatIsDrivenRoundTheCircleAndItsWakeTrailsBehindIt) {
   // The layer was remade at every waypoint (2 per second, 130 times) but computed a table only
   // for the few 1 % speed steps the boat passed while it settled into the turn.
   EXPECT_LE(boat.tables_computed(), 6u);
-  ASSERT_NE(boat.layer(), nullptr);
-  const ocean::waves::LocalLayer& layer = *boat.layer();
+  ASSERT_NE(boat.local_layer(), nullptr);
+  EXPECT_EQ(sea->local_layer(), boat.local_layer().get());  // handed to the view's sea
+  const ocean::waves::LocalLayer& layer = *boat.local_layer();
   EXPECT_EQ(layer.table_count(), 1u);
+  // The square centred on the circle, kBoatWakeMargin_m beyond it.
+  EXPECT_EQ(layer.params().area.size_m, 2.0 * (80.0 + ocean::cli::view::kBoatWakeMargin_m));
+  EXPECT_EQ(layer.params().area.resolution, ocean::cli::view::kBoatLayerResolution);
   const double t = boat.time_s();
   const auto wake = ocean::waves::pose_at(layer.params().wakes.at(0), t);
-  const auto& x = boat.body().state().position_m;
+  const auto& x = boat.body(0)->state().position_m;
   EXPECT_LT(std::hypot(wake.x_m - x[0], wake.z_m - x[2]), 1.0);  // the wake is at the boat
   // Heights along the boat's track: waves behind it (the transverse waves, 2πU²/g = 31 m long),
   // still water ahead of it (a Kelvin wake has none).
@@ -109,25 +103,23 @@ TEST(ViewBoat, FloatingBoatIsDrivenRoundTheCircleAndItsWakeTrailsBehindIt) {
 }
 
 TEST(ViewBoat, NewControlsDriveTheRunningBoat) {
-  auto made = CirclingBoat::make({.on = true, .speed_mps = 5.0, .radius_m = 150.0}, 0.0, 1.0);
+  auto made = make_boat_world({.on = true, .speed_mps = 5.0, .radius_m = 150.0}, 0.0, view_sea());
   ASSERT_TRUE(made.ok()) << made.status().message();
-  CirclingBoat& boat = *made.value();
-  run(boat, 0.0, 5.0);
-  ASSERT_TRUE(boat.set_controls({.on = true, .speed_mps = 8.0, .radius_m = 150.0}).ok());
-  run(boat, 5.0, 35.0);
-  const auto& v = boat.body().state().velocity_mps;
+  ocean::world::World& boat = *made.value();
+  auto sea = calm_view_sea();
+  run(boat, *sea, 0.0, 5.0);
+  ASSERT_TRUE(boat.set_course(0, 8.0, {.radius_m = 150.0}).ok());
+  run(boat, *sea, 5.0, 35.0);
+  const auto& v = boat.body(0)->state().velocity_mps;
   EXPECT_NEAR(std::hypot(v[0], v[2]), 8.0, 0.24);
-  EXPECT_FALSE(boat.set_controls({.on = true, .speed_mps = NAN}).ok());
-  // Time running backwards puts the boat back on the circle at angle 0.
-  ASSERT_TRUE(boat.advance(1.0, ocean::bodies::calm_surface()).ok());
-  EXPECT_NEAR(boat.body().state().position_m[0], 150.0, 1e-9);
-  EXPECT_NEAR(boat.body().state().position_m[2], 0.0, 1e-9);
+  EXPECT_FALSE(boat.set_course(0, NAN, {.radius_m = 150.0}).ok());
 }
 
 TEST(ViewBoat, BadControlsAreRefused) {
-  EXPECT_FALSE(CirclingBoat::make({.on = true, .speed_mps = -1.0}, 0.0, 1.0).ok());
-  EXPECT_FALSE(CirclingBoat::make({.on = true, .speed_mps = NAN}, 0.0, 1.0).ok());
-  EXPECT_FALSE(CirclingBoat::make({.on = true, .radius_m = 5.0}, 0.0, 1.0).ok());
+  EXPECT_FALSE(make_boat_world({.on = true, .speed_mps = -1.0}, 0.0, view_sea()).ok());
+  EXPECT_FALSE(make_boat_world({.on = true, .speed_mps = NAN}, 0.0, view_sea()).ok());
+  EXPECT_FALSE(make_boat_world({.on = true, .radius_m = 5.0}, 0.0, view_sea()).ok());
+  EXPECT_FALSE(make_boat_world({.on = true, .speed_mps = 25.0}, 0.0, view_sea()).ok());
 }
 
 TEST(ViewShallows, LagoonFollowsTheDepthLawAndLilyPadsTheMask) {

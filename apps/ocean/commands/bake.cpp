@@ -14,6 +14,7 @@
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "contact_sheet.hpp"
+#include "ocean/world.hpp"
 #include "output_name.hpp"
 #include "progress.hpp"
 #include "simulation_flags.hpp"
@@ -122,10 +123,14 @@ int run_bake(const BakeOptions& o) {
         "--damping-mask and --bathymetry are not applied by bake: its tiles are periodic and a "
         "world-space map has no place on them (ocean query applies them)"));
   }
-  Result<std::shared_ptr<const waves::LocalLayer>> layer =
-      make_layer(o.waves, c.choppiness, params.start_time_s);
+  Result<std::optional<waves::LayerParams>> layer =
+      layer_params(o.waves, c.choppiness, params.start_time_s);
   if (!layer.ok()) return report(layer.status());
-  params.local_layer = layer.value();
+  // The layer as the world builds it (ocean/world.hpp; a bake has no objects).
+  Result<std::unique_ptr<world::World>> world =
+      world::World::make({.layer = std::move(layer).value()}, c);
+  if (!world.ok()) return report(world.status());
+  params.local_layer = world.value()->local_layer();
   params.calm = o.waves.calm;
   if (params.calm && params.local_layer == nullptr)
     return report(invalid_argument("--calm needs --local-area X0,Z0,SIZE_M (the layer to write)"));

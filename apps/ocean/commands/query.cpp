@@ -1,13 +1,14 @@
 // `ocean query`: the height of the rendered surface above points (x, z) at a time — the sea of
 // the simulation flags (or none with --calm) plus the local layer's wakes and waveforms — through
 // the library's inverse-displacement query (Simulator::heights_at, ocean::heights_at), the sea's
-// bands damped by --damping-mask and --bathymetry.
+// bands damped by --damping-mask and --bathymetry. The layer is the world's (ocean/world.hpp).
 #include <iostream>
 #include <memory>
 
 #include "cli_common.hpp"
 #include "commands.hpp"
 #include "ocean/backends.hpp"
+#include "ocean/world.hpp"
 #include "simulation_flags.hpp"
 #include "wave_flags.hpp"
 
@@ -51,19 +52,25 @@ int run_query(const QueryOptions& o) {
   if (!time.ok()) return report(time.status());
   Result<SimulationConfig> config = resolve_config(o.sim);
   if (!config.ok()) return report(config.status());
-  Result<std::shared_ptr<const waves::LocalLayer>> layer =
-      make_layer(o.waves, config.value().choppiness, time.value());
+  Result<std::optional<waves::LayerParams>> layer =
+      layer_params(o.waves, config.value().choppiness, time.value());
   if (!layer.ok()) return report(layer.status());
   Result<std::shared_ptr<const waves::Damping>> damping = make_damping(o.waves, config.value());
   if (!damping.ok()) return report(damping.status());
-  if (layer.value() != nullptr) print_warnings(*layer.value(), time.value());
+  // The world holds the layer (no objects) and hands it to the simulator.
+  Result<std::unique_ptr<world::World>> world =
+      world::World::make({.layer = std::move(layer).value()}, config.value());
+  if (!world.ok()) return report(world.status());
+  const std::shared_ptr<const waves::LocalLayer>& local = world.value()->local_layer();
+  if (local != nullptr) print_warnings(*local, time.value());
   std::vector<HeightSample> out(points.value().size());
   if (o.waves.calm) {
-    if (layer.value() != nullptr) heights_at(*layer.value(), time.value(), points.value(), out);
+    if (local != nullptr) heights_at(*local, time.value(), points.value(), out);
   } else {
     Result<std::unique_ptr<Simulator>> sim = make_simulator(config.value(), o.backend);
     if (!sim.ok()) return report(sim.status());
-    sim.value()->set_local_layer(layer.value());
+    if (Result<bool> handed = world.value()->advance_to(time.value(), *sim.value()); !handed.ok())
+      return report(handed.status());
     sim.value()->set_damping(damping.value());
     sim.value()->step(time.value());
     sim.value()->heights_at(points.value(), out);

@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
-#include <numbers>
 #include <string>
 #include <vector>
 
@@ -72,7 +71,7 @@ enum class OutputKind { png, exr, mp4 };
 constexpr int kDampingResolution = 512;
 
 struct Inputs {
-  std::shared_ptr<const waves::LocalLayer> layer;  // wakes and waveforms, or null
+  std::optional<waves::LayerParams> layer;         // wakes and waveforms, or none
   std::shared_ptr<const waves::Damping> damping;   // mask and bathymetry, or null
   bool calm = false;                               // only the layer, no sea
   render::SceneParams scene;
@@ -98,7 +97,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   if (!t.ok()) return t.status();
   in.time_s = t.value();
   // The local layer: wakes and waveforms drawn over the sea (docs/rendering.md R.19). Without
-  // --local-area, make_layer names one that holds the wakes at the first frame's time (W.19).
+  // --local-area, layer_params names one that holds the wakes at the first frame's time (W.19).
   in.calm = o.waves.calm;
   if (in.calm && o.waves.local_area.empty() && o.waves.wakes.empty() && o.waves.waveforms.empty())
     return invalid_argument("--calm draws only the local layer: give --local-area X0,Z0,SIZE_M");
@@ -109,10 +108,10 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   Result<std::shared_ptr<const waves::Damping>> damping = make_damping(o.waves, in.scene.config);
   if (!damping.ok()) return damping.status();
   in.damping = damping.value();
-  Result<std::shared_ptr<const waves::LocalLayer>> layer =
-      make_layer(o.waves, in.scene.config.choppiness, in.time_s);
+  Result<std::optional<waves::LayerParams>> layer =
+      layer_params(o.waves, in.scene.config.choppiness, in.time_s);
   if (!layer.ok()) return layer.status();
-  in.layer = layer.value();
+  in.layer = std::move(layer).value();
   // The preset's picture settings, under the flags (--far-field-range wins).
   if (Status s = parse_view_flags(o.picture, sim, 1, in.scene, in.view); !s.ok()) return s;
   if (in.calm) in.scene.config.far_noise.resolution = 0;  // no sea, no far field
@@ -212,59 +211,6 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
                             "': an MP4 is one file, its name takes no frame-number field (%d "
                             "numbers the files of a PNG or EXR sequence)");
   return in;
-}
-
-// The side and grid of the local area laid round a driven object when --local-area is not
-// given: 0.3 m cells, 12 transverse wavelengths of a boat at 5 m/s behind it.
-constexpr double kDrivenArea_m = 320.0;
-constexpr int kDrivenAreaResolution = 1024;
-
-// Whether two lists of wakes are the same objects on the same paths (a driven object's wake
-// changes only when its track gains a waypoint, W.17).
-bool same_wakes(const std::vector<waves::KelvinWake>& a, const std::vector<waves::KelvinWake>& b) {
-  const auto same = [](const waves::KelvinWake& u, const waves::KelvinWake& v) {
-    const auto same_point = [](const waves::Waypoint& p, const waves::Waypoint& q) {
-      return p.time_s == q.time_s && p.x_m == q.x_m && p.z_m == q.z_m;
-    };
-    return u.x_m == v.x_m && u.z_m == v.z_m && u.heading_deg == v.heading_deg &&
-           u.speed_mps == v.speed_mps && u.hull_length_m == v.hull_length_m &&
-           u.peak_height_m == v.peak_height_m && u.fade_length_m == v.fade_length_m &&
-           std::equal(u.path.begin(), u.path.end(), v.path.begin(), v.path.end(), same_point);
-  };
-  return std::equal(a.begin(), a.end(), b.begin(), b.end(), same);
-}
-
-// The layer of a frame with driven objects: `given` (--local-area and its wakes and waveforms) or,
-// without it, the square of the previous frame's `driven` layer or one laid round the first
-// driven object (its centre a third of the side behind it, so the wake trails into it); plus the
-// wakes of the objects' tracks. Null when no object makes a wake; `driven` itself while the
-// wakes are unchanged. Tables shared with the previous layer (`driven`, else `given`).
-Result<std::shared_ptr<const waves::LocalLayer>> layer_with_wakes(
-    const std::shared_ptr<const waves::LocalLayer>& given, const SceneObjects& objects,
-    const std::shared_ptr<const waves::LocalLayer>& driven, double choppiness) {
-  const waves::LocalLayer* previous = driven != nullptr ? driven.get() : given.get();
-  std::vector<waves::KelvinWake> wakes;
-  objects.wakes(wakes);
-  if (wakes.empty()) return std::shared_ptr<const waves::LocalLayer>();
-  waves::LayerParams p;
-  p.choppiness = choppiness;
-  if (given != nullptr) {
-    p = given->params();
-  } else if (previous != nullptr) {  // a driven layer of an earlier frame
-    p.area = previous->params().area;
-  } else {
-    const std::array<double, 3> at = objects.first_driven().value_or(std::array<double, 3>{});
-    const double back = kDrivenArea_m / 3.0, heading = at[2] * std::numbers::pi / 180.0;
-    p.area = {.origin_m = {at[0] - back * std::cos(heading) - 0.5 * kDrivenArea_m,
-                           at[1] - back * std::sin(heading) - 0.5 * kDrivenArea_m},
-              .size_m = kDrivenArea_m,
-              .resolution = kDrivenAreaResolution};
-  }
-  for (waves::KelvinWake& w : wakes) p.wakes.push_back(std::move(w));
-  if (driven != nullptr && same_wakes(driven->params().wakes, p.wakes)) return driven;
-  Result<std::unique_ptr<waves::LocalLayer>> made = waves::LocalLayer::make(std::move(p), previous);
-  if (!made.ok()) return made.status();
-  return std::shared_ptr<const waves::LocalLayer>(std::move(made).value());
 }
 
 // Frame f's file: a single frame, and an MP4 of any length, is written under the name; a
@@ -392,16 +338,24 @@ int run_render(const RenderOptions& o) {
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.open(in.out.name(), w, h, in.fps); !s.ok()) return report(s);
   }
-  Result<std::unique_ptr<SceneObjects>> objects =
-      SceneObjects::make(in.objects, o.floating, in.scene.config);
+  Result<RenderObjects> objects = load_objects(in.objects, o.floating);
   if (!objects.ok()) return report(objects.status());
+  // The objects, their wakes and the layer, stepped to each frame's time (ocean/world.hpp).
+  Result<std::unique_ptr<world::World>> world_made =
+      world::World::make({.objects = std::move(objects.value().objects),
+                          .floating = o.floating,
+                          .layer = in.layer,
+                          .choppiness = in.scene.config.choppiness},
+                         in.scene.config);
+  if (!world_made.ok()) return report(world_made.status());
+  world::World& world = *world_made.value();
   Result<std::unique_ptr<render::Scene>> made = render::Scene::make(in.scene);
   if (!made.ok()) return report(made.status());
   render::Scene& scene = *made.value();
   if (!scene.interop().empty()) std::cerr << "ocean: note: " << scene.interop() << "\n";
   render::Renderer& renderer = scene.renderer();
   if (Status s = check_mesh_support(in.view, *scene.context()); !s.ok()) return report(s);
-  if (Status s = renderer.set_meshes(objects.value()->meshes()); !s.ok()) return report(s);
+  if (Status s = renderer.set_meshes(objects.value().meshes); !s.ok()) return report(s);
   if (Status s = check_stereo_device(in.ipd, *scene.context()); !s.ok()) return report(s);
   render::View view = in.view;
   std::vector<std::uint8_t> srgb;
@@ -420,9 +374,8 @@ int run_render(const RenderOptions& o) {
   // The layer composited with the sea by the simulator; each step hands the frame's local
   // surface to the renderer (Scene::step, R.19), its foam accumulated through the warm-up.
   scene.simulator().set_damping(in.damping);
-  scene.simulator().set_local_layer(in.layer);
-  std::shared_ptr<const waves::LocalLayer> driven_layer;  // in.layer plus the driven wakes
-  if (in.layer != nullptr) print_warnings(*in.layer, in.time_s);
+  scene.simulator().set_local_layer(world.local_layer());
+  if (world.local_layer() != nullptr) print_warnings(*world.local_layer(), in.time_s);
   scene.follow(view);  // the far field's map around the camera (R.13b)
   for (long long f = 0; f < in.frames; ++f) {
     const double t = in.time_s + static_cast<double>(f) / in.fps;
@@ -436,20 +389,18 @@ int run_render(const RenderOptions& o) {
       stepped = scene.step(t);
     }
     if (!stepped.ok()) return report(stepped);
-    if (Status s = objects.value()->place(t, view.objects, stop.flag()); !s.ok()) {
+    // The objects to the frame's time, and the driven objects' wakes from their tracks (W.17):
+    // a new layer goes to the simulator, and the frame is simulated again so that its
+    // composited surface holds it.
+    Result<bool> new_layer = advance_world(world, t, scene.simulator(), stop.flag());
+    if (!new_layer.ok()) {
+      const Status& s = new_layer.status();
       if (s.code() != ErrorCode::cancelled || stop.received() == 0) return report(s);
       progress.end_line();
       return report_render_stop(stop, in, f);
     }
-    // Driven objects' wakes from their tracks (W.17): the layer remade when a track gains a
-    // waypoint, sharing the previous one's tables while the speeds hold. A new layer goes to the
-    // simulator, and the frame is simulated again so that its composited surface holds it.
-    Result<std::shared_ptr<const waves::LocalLayer>> with_wakes =
-        layer_with_wakes(in.layer, *objects.value(), driven_layer, in.scene.config.choppiness);
-    if (!with_wakes.ok()) return report(with_wakes.status());
-    if (with_wakes.value() != nullptr && with_wakes.value() != driven_layer) {
-      driven_layer = with_wakes.value();
-      scene.simulator().set_local_layer(driven_layer);
+    place_objects(objects.value(), world, view.objects);
+    if (new_layer.value()) {
       if (Status s = scene.step(t); !s.ok()) return report(s);
     }
     const Status drawn =

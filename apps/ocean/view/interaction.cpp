@@ -3,19 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <utility>
 
 #include "object_flags.hpp"
-#include "ocean/bodies.hpp"
 #include "wave_flags.hpp"
 
 namespace ocean::cli::view {
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
-constexpr double kSettle_s = 4.0;    // calm-water settling before the boat starts
-constexpr double kMaxJump_s = 10.0;  // a longer jump in time restarts the boat on the circle
 
 // A square map of side `size` and `n` samples per side, centred on `centre`, whose value is
 // f(distance from the centre).
@@ -50,6 +44,10 @@ waves::LocalArea wake_area(const BoatControls& boat) {
           .resolution = kBoatLayerResolution};
 }
 
+world::Circle circle_of(const BoatControls& boat) {
+  return {.centre_m = boat.centre_m, .radius_m = boat.radius_m};
+}
+
 }  // namespace
 
 Status validate(const BoatControls& boat) {
@@ -64,129 +62,22 @@ Status validate(const BoatControls& boat) {
   return Status{};
 }
 
-waves::WakePose circling_pose(const BoatControls& boat, double t0_s, double time_s) {
-  const double angle = boat.speed_mps / boat.radius_m * (time_s - t0_s);
-  return {.x_m = boat.centre_m[0] + boat.radius_m * std::cos(angle),
-          .z_m = boat.centre_m[1] + boat.radius_m * std::sin(angle),
-          .heading_rad = angle + 0.5 * std::numbers::pi,
-          .speed_mps = boat.speed_mps};
-}
-
-double circle_heading_deg(const BoatControls& boat, double x_m, double z_m) {
-  // (B.11) Line-of-sight guidance onto the circle: the tangent at the boat's angle φ about the
-  // centre (motion from +x towards +z), turned inwards when the boat is outside the circle.
-  const double dx = x_m - boat.centre_m[0], dz = z_m - boat.centre_m[1];
-  const double phi = std::atan2(dz, dx), rho = std::hypot(dx, dz);
-  return (phi + 0.5 * std::numbers::pi + std::atan((rho - boat.radius_m) / kBoatLookAhead_m)) /
-         kDegree;
-}
-
-Result<std::unique_ptr<CirclingBoat>> CirclingBoat::make(const BoatControls& boat, double time_s,
-                                                         double choppiness) {
+Result<std::unique_ptr<world::World>> make_boat_world(const BoatControls& boat, double time_s,
+                                                      const SimulationConfig& config) {
   if (Status s = validate(boat); !s.ok()) return s;
-  Result<bodies::Hull> hull = bodies::boat_hull(8.0, 3.0, 1.2);
+  Result<bodies::Hull> hull = world::shape_hull(world::Shape::boat);
   if (!hull.ok()) return hull.status();
-  Result<bodies::BodyParams> params = bodies::solid_body(hull.value(), kBoatDensity);
-  if (!params.ok()) return params.status();
-  std::unique_ptr<CirclingBoat> b(new CirclingBoat());
-  b->controls_ = boat;
-  b->choppiness_ = choppiness;
-  b->centre_m_ = bodies::mass_properties(hull.value()).centroid_m;
-  Result<bodies::Propulsion> propulsion = bodies::Propulsion::make(propulsion_for(params.value()));
-  if (!propulsion.ok()) return propulsion.status();
-  b->propulsion_ = propulsion.value();
-  Result<waves::WakeTrack> track = waves::WakeTrack::make(wake_track_for(params.value().hull));
-  if (!track.ok()) return track.status();
-  b->track_ = std::move(track).value();
-  // Settled once in calm water, at rest: the draught and trim it starts each lap from.
-  Result<bodies::FloatingBody> body = bodies::FloatingBody::make(params.value(), {});
-  if (!body.ok()) return body.status();
-  b->body_ = std::make_unique<bodies::FloatingBody>(std::move(body).value());
-  for (double t = 0.0; t < kSettle_s; t += kBoatStep_s) {
-    if (Status s = b->body_->step(bodies::calm_surface(), kBoatStep_s); !s.ok()) return s;
-  }
-  b->settled_ = b->body_->state();
-  b->params_ = {.area = wake_area(boat), .choppiness = choppiness};
-  b->restart(time_s);
-  return b;
-}
-
-Status CirclingBoat::set_controls(const BoatControls& boat) {
-  if (Status s = validate(boat); !s.ok()) return s;
-  controls_ = boat;
-  const waves::LocalArea area = wake_area(boat);
-  if (area.origin_m != params_.area.origin_m || area.size_m != params_.area.size_m) {
-    params_.area = area;
-    layer_.reset();  // its tables were made for the old square's cells
-  }
-  return Status{};
-}
-
-void CirclingBoat::restart(double time_s) {
-  const waves::WakePose p = circling_pose(controls_, time_s, time_s);
-  const double y = settled_.position_m[1];
-  // The settled trim (a rotation about z) turned to the course's heading.
-  const bodies::Quat h = bodies::orientation_from_heading(p.heading_rad / kDegree);
-  const bodies::Quat& q = settled_.orientation;
-  const bodies::Quat turned{h[0] * q[0] - h[2] * q[2], h[0] * q[1] + h[2] * q[3],
-                            h[0] * q[2] + h[2] * q[0], h[0] * q[3] - h[2] * q[1]};
-  const double u = controls_.speed_mps;
-  // A valid state: the settled one, moved and turned.
-  (void)body_->set_state(
-      {.position_m = {p.x_m, y, p.z_m},
-       .orientation = turned,
-       .velocity_mps = {u * std::cos(p.heading_rad), 0.0, u * std::sin(p.heading_rad)}});
-  propulsion_->reset(u);
-  track_->clear();
-  track_->record(time_s, p.x_m, p.z_m);
-  layer_.reset();
-  time_s_ = time_s;
-}
-
-Status CirclingBoat::advance(double time_s, const bodies::SurfaceQuery& surface) {
-  if (time_s < time_s_ || time_s > time_s_ + kMaxJump_s) {
-    restart(time_s);
-    return Status{};
-  }
-  const double newest = track_->size() == 0 ? -1.0 : track_->waypoint(track_->size() - 1).time_s;
-  while (time_s_ + 0.5 * kBoatStep_s < time_s) {
-    const auto& x = body_->state().position_m;
-    const bodies::HelmCommand helm{
-        .speed_mps = controls_.speed_mps,
-        .heading_deg = circle_heading_deg(controls_, x[0], x[2]),
-        .turn_rate_degps = controls_.speed_mps / controls_.radius_m / kDegree};
-    Result<bodies::Wrench> thrust = propulsion_->control(*body_, helm, kBoatStep_s);
-    if (!thrust.ok()) return thrust.status();
-    if (Status s = body_->step(surface, kBoatStep_s, thrust.value()); !s.ok()) return s;
-    time_s_ += kBoatStep_s;
-    const auto& moved = body_->state().position_m;
-    track_->record(time_s_, moved[0], moved[2]);
-  }
-  if (track_->size() == 0 || track_->waypoint(track_->size() - 1).time_s == newest) return {};
-  // A new waypoint: the layer remade with the new path, sharing the previous one's table.
-  waves::KelvinWake wake;
-  if (!track_->wake(wake)) {
-    layer_.reset();
-    return Status{};
-  }
-  waves::LayerParams params = params_;
-  params.wakes.push_back(std::move(wake));
-  Result<std::unique_ptr<waves::LocalLayer>> layer =
-      waves::LocalLayer::make(std::move(params), layer_.get());
-  if (!layer.ok()) return layer.status();
-  layer_ = std::move(layer).value();
-  tables_computed_ += layer_->tables_computed();
-  return Status{};
-}
-
-render::ObjectInstance CirclingBoat::instance(std::uint32_t mesh) const {
-  // The body's centre is the mesh frame's point centre_m: origin = x − R·c.
-  const bodies::BodyState& s = body_->state();
-  const std::array<double, 3> c = bodies::rotate(s.orientation, centre_m_);
-  return {
-      .mesh = mesh,
-      .model = render::model_matrix(
-          {s.position_m[0] - c[0], s.position_m[1] - c[1], s.position_m[2] - c[2]}, s.orientation)};
+  return world::World::make({.objects = {{.name = "boat",
+                                          .hull = std::move(hull).value(),
+                                          .density_kgpm3 = world::kBoatDensity_kgpm3,
+                                          .speed_mps = boat.speed_mps,
+                                          .circle = circle_of(boat)}},
+                             .floating = true,
+                             .body_sea = world::BodySea::caller,
+                             .wake_area = wake_area(boat),
+                             .choppiness = config.choppiness,
+                             .start_time_s = time_s},
+                            config);
 }
 
 std::optional<Shallows> parse_shallows(std::string_view name) {
@@ -216,21 +107,24 @@ Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
 
 Result<std::unique_ptr<InteractionScene>> InteractionScene::make(render::Renderer& renderer,
                                                                  const SimulationConfig& config) {
-  Result<std::unique_ptr<SceneObjects>> boat =
-      SceneObjects::make({ObjectSpec{.kind = "boat"}}, false, config);
+  Result<render::Mesh> boat = built_in_mesh("boat");
   if (!boat.ok()) return boat.status();
-  if (Status s = renderer.set_meshes(boat.value()->meshes()); !s.ok()) return s;
+  if (Status s = renderer.set_meshes(std::span(&boat.value(), 1)); !s.ok()) return s;
   std::unique_ptr<InteractionScene> scene(new InteractionScene);
-  scene->choppiness_ = config.choppiness;
+  scene->config_ = config;
   return scene;
 }
 
 Status InteractionScene::set_boat(const BoatControls& boat, double time_s, Simulator& simulator) {
-  if (boat.on && boat_ != nullptr) return boat_->set_controls(boat);
+  if (boat.on && boat_ != nullptr) {  // the running boat takes the new controls where it is
+    if (Status s = validate(boat); !s.ok()) return s;
+    if (Status s = boat_->set_course(0, boat.speed_mps, circle_of(boat)); !s.ok()) return s;
+    return boat_->set_wake_area(wake_area(boat));
+  }
   boat_.reset();
   simulator.set_local_layer(nullptr);
   if (!boat.on) return Status{};
-  Result<std::unique_ptr<CirclingBoat>> made = CirclingBoat::make(boat, time_s, choppiness_);
+  Result<std::unique_ptr<world::World>> made = make_boat_world(boat, time_s, config_);
   if (!made.ok()) return made.status();
   boat_ = std::move(made).value();
   return Status{};
@@ -252,9 +146,12 @@ Status InteractionScene::set_shallows(Shallows scene, std::array<double, 2> cent
 Status InteractionScene::update(double time_s, Simulator& simulator, render::View& view) {
   view.objects.clear();
   if (boat_ == nullptr) return Status{};
-  if (Status s = boat_->advance(time_s, bodies::surface_of(simulator)); !s.ok()) return s;
-  view.objects.push_back(boat_->instance(0));
-  if (boat_->layer().get() != simulator.local_layer()) simulator.set_local_layer(boat_->layer());
+  if (time_s < boat_->time_s() || time_s > boat_->time_s() + kBoatMaxJump_s) boat_->restart(time_s);
+  if (Result<bool> advanced = boat_->advance_to(time_s, simulator); !advanced.ok())
+    return advanced.status();
+  const world::Pose pose = boat_->pose(0);
+  view.objects.push_back(
+      {.mesh = 0, .model = render::model_matrix(pose.position_m, pose.orientation)});
   return Status{};
 }
 
