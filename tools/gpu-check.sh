@@ -113,7 +113,7 @@ for backend in cuda vulkan; do
     --cascades 4 --json > "$out/bench-$backend.json" 2> "$out/bench-$backend.log"
 done
 
-# Seed 003's concurrent kernels: the cascades alone, the far field's noise map alone and both in
+# the concurrent kernels of [VR-GIS FFT+Perlin]: the cascades alone, the far field's noise map alone and both in
 # one frame (CUDA: the map on its own stream in the frame's graph, GPU time; CPU and Vulkan: wall
 # time), 4 cascades at 256² and 512², a 512² map; overlap = (t_c + t_n − t_both)/min(t_c, t_n).
 step bench-overlap 35 "$ocean" bench --overlap --resolution 256,512 --cascades 4 \

@@ -129,8 +129,9 @@ struct View {
   SphereView sphere;
   /// The water seen from a camera below the surface (R.50–R.52); absorption is seabed's.
   Underwater underwater;
-  /// The mesh: the quadtree (default) or seed 003's tessellated base grid (R.40–R.42), which
-  /// needs a device with tessellation shaders (`unsupported` from record() otherwise).
+  /// The mesh: the quadtree (default) or the tessellated base grid of [VR-GIS FFT+Perlin]
+  /// (R.40–R.42), which needs a device with tessellation shaders (`unsupported` from record()
+  /// otherwise).
   TessellationParams tessellation;
 };
 Status validate(const View& view);

@@ -1,9 +1,9 @@
-// `ocean bench --overlap`: seed 003's concurrent kernels measured — the cascades' frame alone, the
-// far field's noise map alone (docs/rendering.md R.13a) and both in one frame, on the CPU backend
-// (two tasks of the frame graph), the Vulkan backend (one submission, no barrier between the
-// noise dispatch and the FFT's first stage) and the CUDA backend (the map on a stream of its own
-// beside the cascades', one graph; GPU time from CudaBackend::time_frames), and how much of the
-// shorter one the frame hides.
+// `ocean bench --overlap`: the concurrent kernels of [VR-GIS FFT+Perlin] measured — the cascades'
+// frame alone, the far field's noise map alone (docs/rendering.md R.13a) and both in one frame, on
+// the CPU backend (two tasks of the frame graph), the Vulkan backend (one submission, no barrier
+// between the noise dispatch and the FFT's first stage) and the CUDA backend (the map on a stream
+// of its own beside the cascades', one graph; GPU time from CudaBackend::time_frames), and how much
+// of the shorter one the frame hides.
 #pragma once
 
 #include <vector>

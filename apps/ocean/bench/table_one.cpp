@@ -1,4 +1,4 @@
-// `ocean bench --table-one` (bench/table_one.hpp): seed 003's Table I, measured here.
+// `ocean bench --table-one` (bench/table_one.hpp): Table I of [VR-GIS FFT+Perlin], measured here.
 #include "bench/table_one.hpp"
 
 #include <iomanip>

@@ -286,7 +286,8 @@ Command add_bench_command(CLI::App& app) {
                 "128, 512, 1024 and 2048 (or --resolution), the first --cascades count");
   cmd->add_flag(
       "--overlap", options->overlap,
-      "Seed 003's concurrent kernels: the cascades alone, the far field's noise map "
+      "concurrent kernels (the FFT and Perlin noise of the VR-GIS paper, docs/references.md): the "
+      "cascades alone, the far field's noise map "
       "alone and both in one frame, on the CPU, Vulkan and CUDA backends, and the overlap "
       "(t_cascades + t_noise - t_both) / min(t_cascades, t_noise); the first "
       "--resolution and --cascades default to 256 and 4");

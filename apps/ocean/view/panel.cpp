@@ -8,6 +8,9 @@
 #include <cstdint>
 #include <cstdio>
 #include <numbers>
+#include <string_view>
+
+#include "ocean/spectrum.hpp"
 
 namespace ocean::cli::view {
 namespace {
@@ -28,6 +31,24 @@ void sim_slider(const char* label, double& v, double lo, double hi, const char* 
   changed = changed || ImGui::IsItemDeactivatedAfterEdit();
 }
 
+// The sliders' ranges: comfortable spans inside the library's ranges (kSeaStateParameters), so a
+// slider at either end is always a valid sea.
+struct SliderRange {
+  std::string_view field;
+  double lo, hi;  // in the field's unit
+};
+constexpr SliderRange kWindSlider{"wind_speed_mps", 0.5, 40.0};
+constexpr SliderRange kFetchSliderKm{"fetch_m", 1.0, 2000.0};
+constexpr SliderRange kHsSlider{"significant_wave_height_m", 0.1, 20.0};
+constexpr SliderRange kTpSlider{"peak_period_s", 1.0, 25.0};
+constexpr SliderRange kDepthSlider{"depth_m", 1.0, 1000.0};
+constexpr bool inside(const SliderRange& r, double scale = 1.0) {
+  const params::ParameterDoc& p = sea_state_parameter(r.field);
+  return r.lo * scale >= p.lo && r.hi * scale <= p.hi;
+}
+static_assert(inside(kWindSlider) && inside(kFetchSliderKm, 1e3) && inside(kHsSlider) &&
+              inside(kTpSlider) && inside(kDepthSlider));
+
 void sea_section(PanelState& state, bool& changed) {
   SeaControls& s = state.sea;
   if (ImGui::Combo("spectrum", &s.model, kSpectrumModelLabels.data(),
@@ -44,17 +65,17 @@ void sea_section(PanelState& state, bool& changed) {
   s.from_wind = form == 0;
   ImGui::EndDisabled();
   if (s.from_wind || phillips) {
-    sim_slider("wind speed", s.wind_speed_mps, 0.5, 40.0, "%.1f m/s", changed);
+    sim_slider("wind speed", s.wind_speed_mps, kWindSlider.lo, kWindSlider.hi, "%.1f m/s", changed);
     ImGui::BeginDisabled(!jonswap_family);
-    sim_slider("fetch", s.fetch_km, 1.0, 2000.0, "%.0f km", changed, kLog);
+    sim_slider("fetch", s.fetch_km, kFetchSliderKm.lo, kFetchSliderKm.hi, "%.0f km", changed, kLog);
     ImGui::EndDisabled();
   } else {
-    sim_slider("Hs", s.hs_m, 0.1, 20.0, "%.2f m", changed);
-    sim_slider("Tp", s.tp_s, 1.0, 25.0, "%.1f s", changed);
+    sim_slider("Hs", s.hs_m, kHsSlider.lo, kHsSlider.hi, "%.2f m", changed);
+    sim_slider("Tp", s.tp_s, kTpSlider.lo, kTpSlider.hi, "%.1f s", changed);
   }
   if (ImGui::Checkbox("deep water", &s.deep_water)) changed = true;
   ImGui::BeginDisabled(s.deep_water);
-  sim_slider("depth", s.depth_m, 1.0, 1000.0, "%.1f m", changed, kLog);
+  sim_slider("depth", s.depth_m, kDepthSlider.lo, kDepthSlider.hi, "%.1f m", changed, kLog);
   ImGui::EndDisabled();
   sim_slider("direction", s.direction_deg, -180.0, 180.0, "%.0f deg", changed);
   sim_slider("choppiness", s.choppiness, 0.0, 3.0, "%.2f", changed);

@@ -52,7 +52,7 @@ struct SeaControls {
 /// other form, so switching forms starts from something sensible.
 SeaControls sea_controls(const SimulationConfig& config);
 
-/// `base` with the controls applied and validated (ocean::validate and SeaState::make):
+/// `base` with the controls applied and validated (SimulationPlan::make: validate, sea state):
 /// invalid_argument naming the field otherwise, e.g. when a cascade is not smaller than the
 /// previous one. Phillips is always given by wind; fetch is set only for jonswap/tma from wind;
 /// gamma, the Phillips amplitude and cutoff are kept only for the models they apply to.

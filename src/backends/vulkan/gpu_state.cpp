@@ -144,9 +144,9 @@ void record_frame(const GpuState& gpu, VkCommandBuffer cmd) {
   if (gpu.far_noise.resolution > 0) {
     // The far field's noise map shares nothing with the cascades: its dispatch goes beside the
     // evolution and row FFT with no barrier between them, so the device may run both at once
-    // (seed 003's concurrent kernels). The barrier after the rows, their dependency for the
-    // columns, also waits for it (a pipeline barrier's first scope is every earlier command of
-    // the queue); the copies at the end read it.
+    // (the concurrent kernels of [VR-GIS FFT+Perlin]). The barrier after the rows, their dependency
+    // for the columns, also waits for it (a pipeline barrier's first scope is every earlier command
+    // of the queue); the copies at the end read it.
     record_far_noise(gpu.far_noise, cmd);
     vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, gpu.pipeline_layout, 0, 1,
                             &gpu.set, 0, nullptr);
