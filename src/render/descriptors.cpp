@@ -33,67 +33,35 @@ Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, b
 
 void write_scene_images(Renderer::State& st) {
   const VkDescriptorBufferInfo ubo{st.uniforms.buffer, 0, sizeof(shader::FrameUniforms)};
-  const VkDescriptorImageInfo disp{st.displacement_sampler, st.displacement_view,
-                                   VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo normal{st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo lut{st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL};
+  SceneImages images;
+  images.add(OCEAN_RENDER_BINDING_SKY_LUT, {st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL});
   // The environment map is addressed as the sky table: u repeats, v clamps.
-  const VkDescriptorImageInfo env{st.lut_sampler, st.environment.view, VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo local{st.local_sampler, st.local_image.view, VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo damping{st.damping_sampler, st.damping_image.view,
-                                      VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo far{st.far_map.sampler, st.far_map.image.view,
-                                  VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet writes[8] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_FAR_MAP,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &far},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_ENVIRONMENT,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &env},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_DAMPING,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &damping},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_LOCAL,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &local},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_SKY_LUT,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &lut},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_FRAME,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                     .pBufferInfo = &ubo},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_DISPLACEMENT,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &disp},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_NORMAL,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &normal}};
-  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 8u : 6u;
-  vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
+  images.add(OCEAN_RENDER_BINDING_ENVIRONMENT,
+             {st.lut_sampler, st.environment.view, VK_IMAGE_LAYOUT_GENERAL});
+  images.add(OCEAN_RENDER_BINDING_FAR_MAP,
+             {st.far_map.sampler, st.far_map.image.view, VK_IMAGE_LAYOUT_GENERAL});
+  if (st.displacement_view != VK_NULL_HANDLE) {
+    images.add(OCEAN_RENDER_BINDING_DISPLACEMENT,
+               {st.displacement_sampler, st.displacement_view, VK_IMAGE_LAYOUT_GENERAL});
+    images.add(OCEAN_RENDER_BINDING_NORMAL,
+               {st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL});
+  }
+  for_each_pass(st, [&](const auto& p) { p.scene_images(st, images); });
+  std::array<VkWriteDescriptorSet, OCEAN_RENDER_SCENE_BINDINGS> writes{};
+  writes[0] = {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+               .dstSet = st.scene_set,
+               .dstBinding = OCEAN_RENDER_BINDING_FRAME,
+               .descriptorCount = 1,
+               .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+               .pBufferInfo = &ubo};
+  for (std::uint32_t i = 0; i < images.count; ++i)
+    writes[i + 1] = {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                     .dstSet = st.scene_set,
+                     .dstBinding = images.bindings[i],
+                     .descriptorCount = 1,
+                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                     .pImageInfo = &images.infos[i]};
+  vkUpdateDescriptorSets(st.ctx->device, images.count + 1, writes.data(), 0, nullptr);
 }
 
 void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
@@ -126,12 +94,6 @@ Status create_descriptors(Renderer::State& st) {
   Result<VkSampler> s4 = make_sampler(ctx, true, false, true, 1.0f, false);
   if (!s4.ok()) return s4.status();
   st.lut_sampler = s4.value();
-  Result<VkSampler> s5 = make_sampler(ctx, true, false, false, 1.0f);
-  if (!s5.ok()) return s5.status();
-  st.local_sampler = s5.value();
-  Result<VkSampler> s6 = make_sampler(ctx, true, false, false, 1.0f);
-  if (!s6.ok()) return s6.status();
-  st.damping_sampler = s6.value();
 
   // The vertex stages (and the tessellation evaluation stage, R.41) and the fragment stage.
   const VkShaderStageFlags both =

@@ -24,7 +24,7 @@ void fill_frame_uniforms(const Renderer::State& st, const View& view, const lod:
   fill_uniforms(st, view, vp, u);
   fill_origin_uniforms(st, view, u);
   fill_environment_uniforms(st, view, u);
-  fill_underwater_uniforms(st, view, u);
+  for_each_pass(st, [&](const auto& p) { p.fill_uniforms(st, view, u); });
 }
 
 Result<std::uint32_t> select_frame(Renderer::State& st, const View& view, lod::Vec3 lod_position,
@@ -70,8 +70,7 @@ void begin_frame(Renderer::State& st, VkCommandBuffer cmd) {
     vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
     st.lut_pending = false;
   }
-  if (st.local_pending) record_local_upload(st, cmd);
-  if (st.damping_pending) record_damping_upload(st, cmd);
+  for_each_pass(st, [&](auto& p) { p.upload(st, cmd); });
   record_far_map(st, cmd);
   if (st.upload_pending) {
     record_uploads(st, cmd);
@@ -141,7 +140,7 @@ void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
     draw_sphere(st, cmd, stats);
   } else {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.ocean);
-    push_seabed(st, cmd, view);
+    pass<SeabedPass>(st).record(st, cmd, {.view = view, .stats = stats});
     const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
     if (tessellated) record_tessellated(st, cmd, view, stats);  // R.40–R.42, tessellation.cpp
     record_patches(st, cmd, skirt_instance, &stats, !tessellated);

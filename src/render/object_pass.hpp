@@ -42,8 +42,6 @@ void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& vie
                        RenderStats& stats);
 // invalid_argument for an instance whose mesh index is not below the meshes set.
 Status validate_objects(const Renderer::State& st, const View& view);
-// seabed.cpp: pushes view.seabed (R.22–R.23) for the ocean pipeline, which must be bound.
-void push_seabed(const Renderer::State& st, VkCommandBuffer cmd, const View& view);
 // Releases the meshes (and, with `all`, the pipeline and its layout).
 void destroy_objects(Renderer::State& st, bool all);
 

@@ -39,8 +39,11 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
                         VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
   if (!lut_staging.ok()) return lut_staging.status();
   st.lut_staging = lut_staging.value();
-  if (Status s = create_local_layer(st); !s.ok()) return s;
-  if (Status s = create_damping(st); !s.ok()) return s;
+  Status created;
+  for_each_pass(st, [&](auto& p) {
+    if (created.ok()) created = p.create(st);
+  });
+  if (!created.ok()) return created;
   if (Status s = create_far_map(st); !s.ok()) return s;
   if (Status s = r->set_environment(nullptr); !s.ok()) return s;  // writes the scene's set
   // Instances: the most any selection can hold (W² at S = 8192) and the skirt's one.

@@ -24,6 +24,7 @@
 #include "far_map_pass.hpp"
 #include "motion_pass.hpp"
 #include "object_pass.hpp"
+#include "passes.hpp"
 #include "ocean/render.hpp"
 #include "ocean/sphere.hpp"
 #include "shaders/render_shared.h"
@@ -100,24 +101,6 @@ struct Renderer::State {
   FarMapPass far_map;       // the per-frame noise map and its window (far_map.cpp, R.13b)
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
-  // The local layer (R.19): an RGBA16F array of two layers, (Dx, h, Dz, 0) and (Δs, Δf, 0), 1×1
-  // of zeros until set_local_layer() or set_local_surface(); its staging buffer and placement.
-  vk::Image local_image;
-  vk::Buffer local_staging;
-  VkSampler local_sampler = VK_NULL_HANDLE;
-  bool local_pending = false;
-  std::uint32_t local_side = 0;
-  shader::LocalLayerUniforms local{};
-  std::array<double, 2> local_origin_m{};  // world (x0, z0); the uniforms hold it relative to O
-  // The damping (R.24): an RGBA16F array of 3 layers (weights 0–3, weights 4–7, depth), 1×1
-  // until set_damping(); its staging buffer and placement.
-  vk::Image damping_image;
-  vk::Buffer damping_staging;
-  VkSampler damping_sampler = VK_NULL_HANDLE;
-  bool damping_pending = false;
-  std::uint32_t damping_side = 0;
-  shader::DampingUniforms damping{};
-  std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
   ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
   // The sea on a sphere (sphere.cpp, R.30–R.38): its pipeline, per-frame instances and selection.
   VkPipeline sphere_pipeline = VK_NULL_HANDLE;
@@ -128,6 +111,7 @@ struct Renderer::State {
   // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
   // coverage) and depth while there are meshes, 1×1 otherwise.
   vk::Image2D reflection, reflection_depth;
+  Passes passes;  // one object per feature (passes.hpp)
   // The tessellated mesh (R.40–R.42, tessellation.cpp): its pipelines where the device has
   // tessellation shaders, and the per-frame list of visible base quads (host-visible).
   VkPipeline tessellated = VK_NULL_HANDLE, tessellated_wire = VK_NULL_HANDLE;
@@ -138,6 +122,25 @@ struct Renderer::State {
   void destroy_sim_images();
   void destroy_shared();
 };
+
+// The pass P of the renderer (passes.hpp).
+template <class P>
+P& pass(Renderer::State& st) {
+  return std::get<P>(st.passes);
+}
+template <class P>
+const P& pass(const Renderer::State& st) {
+  return std::get<P>(st.passes);
+}
+// Calls f(pass) on each pass, in the order of passes.hpp.
+template <class F>
+void for_each_pass(Renderer::State& st, F&& f) {
+  std::apply([&](auto&... p) { (f(p), ...); }, st.passes);
+}
+template <class F>
+void for_each_pass(const Renderer::State& st, F&& f) {
+  std::apply([&](const auto&... p) { (f(p), ...); }, st.passes);
+}
 
 // targets.cpp: whether targets of this size fit the device and memory (Renderer::resize's
 // refusals, after its [1, kMaxTargetSize] check); allocates nothing.
@@ -199,12 +202,6 @@ void draw_sphere(Renderer::State& st, VkCommandBuffer cmd, RenderStats& stats);
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
 // The same copies from `source`, a buffer in interop::inputs_layout (inputs.cpp).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source);
-// local_layer.cpp: the 1×1 empty layer made at construction, and the copy of a staged layer.
-Status create_local_layer(Renderer::State& st);
-void record_local_upload(Renderer::State& st, VkCommandBuffer cmd);
-// damping.cpp: the same for the damping's weights and depth.
-Status create_damping(Renderer::State& st);
-void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd);
 
 // far_map.cpp: the far field's noise map (R.13b). Its sampler, compute pass and a 1×1 image of
 // zeros (at make()); a frame's map staged for the next record() (allocates when N changes); its
@@ -242,9 +239,6 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
 // environment.cpp: FrameUniforms::environment, and the sky's irradiance from the map (R.17).
 void fill_environment_uniforms(const Renderer::State& st, const View& view,
                                shader::FrameUniforms& u);
-// underwater.cpp: FrameUniforms::underwater, the water's optics below the surface (R.50–R.52).
-void fill_underwater_uniforms(const Renderer::State& st, const View& view,
-                              shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
 

@@ -21,6 +21,7 @@ Renderer::State::~State() {
   destroy_stereo(*this, true);
   destroy_motion(*this, true);
   destroy_far_map(*this);
+  for_each_pass(*this, [&](auto& p) { p.destroy(*this); });
   for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline, tessellated, tessellated_wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
@@ -32,12 +33,7 @@ Renderer::State::~State() {
   vk::destroy_image(*ctx, sky_lut);
   vk::destroy_image(*ctx, environment);
   vk::destroy_buffer(*ctx, lut_staging);
-  vk::destroy_image(*ctx, local_image);
-  vk::destroy_buffer(*ctx, local_staging);
-  vk::destroy_image(*ctx, damping_image);
-  vk::destroy_buffer(*ctx, damping_staging);
-  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler, local_sampler,
-                      damping_sampler})
+  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
   for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices,
                         &sphere_instances, &tess_cells})
@@ -47,6 +43,7 @@ Renderer::State::~State() {
 }
 
 void Renderer::State::destroy_targets() {
+  for_each_pass(*this, [&](auto& p) { p.release_targets(*this); });
   vk::destroy_image(*ctx, hdr);
   vk::destroy_image(*ctx, depth);
   vk::destroy_image(*ctx, srgb);
@@ -130,7 +127,12 @@ Status create_targets(Renderer::State& st, int width, int height) {
   if (!rb.ok()) return rb.status();
   st.readback = rb.value();
   write_tonemap_image(st);
-  return size_reflection(st);  // its size follows the picture's (R.53)
+  if (Status s = size_reflection(st); !s.ok()) return s;  // its size follows the picture's (R.53)
+  Status sized;
+  for_each_pass(st, [&](auto& p) {
+    if (sized.ok()) sized = p.resize(st);
+  });
+  return sized;
 }
 
 }  // namespace ocean::render

@@ -77,16 +77,6 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
       .enabled = u.cascade_count > 0.0f ? 1.0f : 0.0f,
       .far_pad = 0.0f};
   fill_far_uniforms(st, u);
-  u.local = st.local;  // its origin relative to the frame's origin O, as every position (R.16)
-  u.local.origin_m = {f(st.local_origin_m[0] - sel.grid_centre_x_m),
-                      f(st.local_origin_m[1] - sel.grid_centre_z_m)};
-  u.damping = st.damping;
-  u.damping.origin_m = {f(st.damping_origin_m[0] - sel.grid_centre_x_m),
-                        f(st.damping_origin_m[1] - sel.grid_centre_z_m)};
-  // Pure water's absorption at 650, 550 and 450 nm (Pope & Fry 1997: 0.340, 0.0565 and
-  // 0.0092 per m) and a sandy bottom's albedo, a chosen value (R.24).
-  u.damping.absorption_per_m = {0.340f, 0.0565f, 0.0092f};
-  u.damping.bottom_albedo = {0.45f, 0.40f, 0.30f};
 }
 
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).

@@ -1,0 +1,21 @@
+// The renderer's passes (src/render, private), one object per feature (pass.hpp), in frame
+// order: adding a feature is one line here. The shared state (state.hpp) holds them as a tuple;
+// pass<P>(st) reaches one, for_each_pass(st, f) calls f on each in this order.
+#pragma once
+
+#include <tuple>
+#include <utility>
+
+#include "damping.hpp"
+#include "local_layer.hpp"
+#include "seabed.hpp"
+#include "underwater.hpp"
+
+namespace ocean::render {
+
+using Passes = std::tuple<LocalSurfacePass,  // the local layer (R.19)
+                          DampingPass,       // the damping of the bands (R.24)
+                          SeabedPass,        // the seabed's push constants (R.22–R.23)
+                          UnderwaterPass>;   // the view from below the surface (R.50–R.52)
+
+}  // namespace ocean::render
