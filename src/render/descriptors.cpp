@@ -38,8 +38,6 @@ void write_scene_images(Renderer::State& st) {
   // The environment map is addressed as the sky table: u repeats, v clamps.
   images.add(OCEAN_RENDER_BINDING_ENVIRONMENT,
              {st.lut_sampler, st.environment.view, VK_IMAGE_LAYOUT_GENERAL});
-  images.add(OCEAN_RENDER_BINDING_FAR_MAP,
-             {st.far_map.sampler, st.far_map.image.view, VK_IMAGE_LAYOUT_GENERAL});
   if (st.displacement_view != VK_NULL_HANDLE) {
     images.add(OCEAN_RENDER_BINDING_DISPLACEMENT,
                {st.displacement_sampler, st.displacement_view, VK_IMAGE_LAYOUT_GENERAL});

@@ -71,7 +71,6 @@ void begin_frame(Renderer::State& st, VkCommandBuffer cmd) {
     st.lut_pending = false;
   }
   for_each_pass(st, [&](auto& p) { p.upload(st, cmd); });
-  record_far_map(st, cmd);
   if (st.upload_pending) {
     record_uploads(st, cmd);
     st.upload_pending = false;

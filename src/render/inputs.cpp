@@ -23,7 +23,7 @@ Status Renderer::configure(const SimulationConfig& config) {
   st.foam_ramp = {config.foam.jacobian_start, config.foam.jacobian_full};
   Result<FarFieldNoise> far = fit_far_field_noise(config);
   if (!far.ok()) return far.status();
-  st.far_noise = far.value();
+  pass<FarFieldPass>(st).noise = far.value();
   double peak_wavelength = 1e9;
   for (const WaveSystem& w : sea.value().systems()) {
     const double k = sea.value().dispersion().wavenumber(w.spectrum().peak_omega());
@@ -99,7 +99,8 @@ Status Renderer::upload(const Frame& frame) {
     std::memcpy(out, c.packed_mips.data(), chain * 4);
     out += chain * 4;
   }
-  if (Status s = upload_far_map(st, frame.far_noise, frame.time_s); !s.ok()) return s;
+  if (Status s = pass<FarFieldPass>(st).stage(st, frame.far_noise, frame.time_s); !s.ok())
+    return s;
   if (st.borrowed) {
     st.borrowed = false;
     st.displacement_view = st.displacement.view;

@@ -7,13 +7,15 @@
 #include <utility>
 
 #include "damping.hpp"
+#include "far_map.hpp"
 #include "local_layer.hpp"
 #include "seabed.hpp"
 #include "underwater.hpp"
 
 namespace ocean::render {
 
-using Passes = std::tuple<LocalSurfacePass,  // the local layer (R.19)
+using Passes = std::tuple<FarFieldPass,      // the far field and its noise map (R.13, R.13b)
+                          LocalSurfacePass,  // the local layer (R.19)
                           DampingPass,       // the damping of the bands (R.24)
                           SeabedPass,        // the seabed's push constants (R.22–R.23)
                           UnderwaterPass>;   // the view from below the surface (R.50–R.52)

@@ -44,7 +44,6 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
     if (created.ok()) created = p.create(st);
   });
   if (!created.ok()) return created;
-  if (Status s = create_far_map(st); !s.ok()) return s;
   if (Status s = r->set_environment(nullptr); !s.ok()) return s;  // writes the scene's set
   // Instances: the most any selection can hold (W² at S = 8192) and the skirt's one.
   if (Status s = lod::reserve_selection(st.selection, lod::kMaxOceanSize_m); !s.ok()) return s;

@@ -21,7 +21,6 @@
 #include <optional>
 #include <vector>
 
-#include "far_map_pass.hpp"
 #include "motion_pass.hpp"
 #include "object_pass.hpp"
 #include "passes.hpp"
@@ -97,8 +96,6 @@ struct Renderer::State {
   std::array<shader::CascadeUniforms, kMaxCascades> cascade_params{};
   std::array<double, kMaxCascades> patch_size_m{};  // L_c in double, for the origin's phase (R.16)
   double hs_m = 1.0;
-  FarFieldNoise far_noise;  // fitted to cascade 0 by configure() (R.13)
-  FarMapPass far_map;       // the per-frame noise map and its window (far_map.cpp, R.13b)
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
   ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
@@ -203,18 +200,10 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
 // The same copies from `source`, a buffer in interop::inputs_layout (inputs.cpp).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source);
 
-// far_map.cpp: the far field's noise map (R.13b). Its sampler, compute pass and a 1×1 image of
-// zeros (at make()); a frame's map staged for the next record() (allocates when N changes); its
-// conversion and mips recorded before the scene; its uniforms (the window, the lattice at O, t).
-Status create_far_map(Renderer::State& st);
 /// A sampler: linear or nearest, with or without linear mips, repeating or clamped (v clamped
 /// unless repeat_v_too), anisotropic above 1 (descriptors.cpp).
 Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
                                float anisotropy, bool repeat_v_too = true);
-void destroy_far_map(Renderer::State& st);
-Status upload_far_map(Renderer::State& st, const FarNoiseFrame& map, double time_s);
-void record_far_map(Renderer::State& st, VkCommandBuffer cmd);
-void fill_far_uniforms(const Renderer::State& st, shader::FrameUniforms& u);
 
 // tessellation.cpp: the tessellated mesh's pipelines and cell buffer (nothing where the device
 // lacks tessellation shaders), its push range in the scene layout, and its draw: the visible base

@@ -20,7 +20,6 @@ Renderer::State::~State() {
   destroy_objects(*this, true);
   destroy_stereo(*this, true);
   destroy_motion(*this, true);
-  destroy_far_map(*this);
   for_each_pass(*this, [&](auto& p) { p.destroy(*this); });
   for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline, tessellated, tessellated_wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);

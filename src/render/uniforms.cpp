@@ -65,18 +65,6 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.hs_m = static_cast<float>(st.hs_m);
   for (int c = 0; c < kMaxCascades; ++c)
     u.cascades[c] = st.cascade_params[static_cast<std::size_t>(c)];
-  const FarFieldNoise& far = st.far_noise;
-  const auto f = [](double x) { return static_cast<float>(x); };
-  u.far_field = {
-      .cell_m = {f(far.cell_m[0]), f(far.cell_m[1]), f(far.cell_m[2]), 0.0f},
-      .amplitude_m = {f(far.amplitude_m[0]), f(far.amplitude_m[1]), f(far.amplitude_m[2]), 0.0f},
-      .slope_variance = {f(far.slope_variance[0]), f(far.slope_variance[1]),
-                         f(far.slope_variance[2]), 0.0f},
-      .near_m = f(view.far_field.near_m),
-      .far_m = f(view.far_field.far_m),
-      .enabled = u.cascade_count > 0.0f ? 1.0f : 0.0f,
-      .far_pad = 0.0f};
-  fill_far_uniforms(st, u);
 }
 
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
