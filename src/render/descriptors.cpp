@@ -32,12 +32,9 @@ Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, b
 }
 
 void write_scene_images(Renderer::State& st) {
+  if (!st.scene_images_ready) return;  // make() writes them once every pass has its images
   const VkDescriptorBufferInfo ubo{st.uniforms.buffer, 0, sizeof(shader::FrameUniforms)};
   SceneImages images;
-  images.add(OCEAN_RENDER_BINDING_SKY_LUT, {st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL});
-  // The environment map is addressed as the sky table: u repeats, v clamps.
-  images.add(OCEAN_RENDER_BINDING_ENVIRONMENT,
-             {st.lut_sampler, st.environment.view, VK_IMAGE_LAYOUT_GENERAL});
   if (st.displacement_view != VK_NULL_HANDLE) {
     images.add(OCEAN_RENDER_BINDING_DISPLACEMENT,
                {st.displacement_sampler, st.displacement_view, VK_IMAGE_LAYOUT_GENERAL});
@@ -89,9 +86,6 @@ Status create_descriptors(Renderer::State& st) {
   Result<VkSampler> s3 = make_sampler(ctx, false, false, false, 1.0f);
   if (!s3.ok()) return s3.status();
   st.hdr_sampler = s3.value();
-  Result<VkSampler> s4 = make_sampler(ctx, true, false, true, 1.0f, false);
-  if (!s4.ok()) return s4.status();
-  st.lut_sampler = s4.value();
 
   // The vertex stages (and the tessellation evaluation stage, R.41) and the fragment stage.
   const VkShaderStageFlags both =

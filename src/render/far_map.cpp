@@ -70,7 +70,7 @@ Status allocate_far_map(Renderer::State& st, std::uint32_t side) {
   vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
   write_source(pass, *st.ctx, pass.source.buffer, bytes);
   pass.pending = true;
-  if (st.environment.view != VK_NULL_HANDLE) write_scene_images(st);  // else make() writes it
+  write_scene_images(st);
   return {};
 }
 

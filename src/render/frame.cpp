@@ -23,7 +23,6 @@ void fill_frame_uniforms(const Renderer::State& st, const View& view, const lod:
                          shader::FrameUniforms& u) {
   fill_uniforms(st, view, vp, u);
   fill_origin_uniforms(st, view, u);
-  fill_environment_uniforms(st, view, u);
   for_each_pass(st, [&](const auto& p) { p.fill_uniforms(st, view, u); });
 }
 
@@ -50,7 +49,7 @@ Result<std::uint32_t> select_frame(Renderer::State& st, const View& view, lod::V
   inst[skirt_instance] = {
       .centre_x_m = 0.0f, .centre_z_m = 0.0f, .size_m = 1.0f, .level = kSkirtLevel};
   if (Status s = write_skirt_vertices(st, view, skirt_extent_m(view, st.hs_m)); !s.ok()) return s;
-  update_sky(st, view.shading);
+  pass<SkyPass>(st).update(view.shading);
   return skirt_instance;
 }
 
@@ -58,17 +57,6 @@ void begin_frame(Renderer::State& st, VkCommandBuffer cmd) {
   if (st.has_timestamps) {
     vkCmdResetQueryPool(cmd, st.timestamps.pool, 0, 2);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, st.timestamps.pool, 0);
-  }
-  if (st.lut_pending) {
-    vk::image_barrier(cmd, st.sky_lut.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_WRITE_BIT);
-    const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                                   .imageExtent = {Sky::kLutWidth, Sky::kLutHeight, 1}};
-    vkCmdCopyBufferToImage(cmd, st.lut_staging.buffer, st.sky_lut.image, VK_IMAGE_LAYOUT_GENERAL, 1,
-                           &region);
-    vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
-    st.lut_pending = false;
   }
   for_each_pass(st, [&](auto& p) { p.upload(st, cmd); });
   if (st.upload_pending) {

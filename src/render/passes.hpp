@@ -10,11 +10,13 @@
 #include "far_map.hpp"
 #include "local_layer.hpp"
 #include "seabed.hpp"
+#include "sky_pass.hpp"
 #include "underwater.hpp"
 
 namespace ocean::render {
 
-using Passes = std::tuple<FarFieldPass,      // the far field and its noise map (R.13, R.13b)
+using Passes = std::tuple<SkyPass,           // the sky-view table and the environment map (R.1–R.4, R.17)
+                          FarFieldPass,      // the far field and its noise map (R.13, R.13b)
                           LocalSurfacePass,  // the local layer (R.19)
                           DampingPass,       // the damping of the bands (R.24)
                           SeabedPass,        // the seabed's push constants (R.22–R.23)

@@ -61,17 +61,8 @@ struct Renderer::State {
   bool shared_in_flight = false;
   // Samplers, descriptors, pipelines.
   VkSampler displacement_sampler = VK_NULL_HANDLE, normal_sampler = VK_NULL_HANDLE,
-            hdr_sampler = VK_NULL_HANDLE, lut_sampler = VK_NULL_HANDLE;
-  // The sky-view table (R.1–R.4) and what it was computed for.
-  vk::Image2D sky_lut;
-  vk::Buffer lut_staging;
-  bool lut_pending = false;
-  std::optional<ShadingParams> lut_params;  // what the table holds; none before the first draw
-  std::array<double, 3> sun_ground{}, sky_ambient{};
-  // The environment map (R.17): a 1×1 black image while there is none.
-  vk::Image2D environment;
-  bool has_environment = false;
-  std::array<double, 3> environment_irradiance{};  // on a horizontal plane, before the scale
+            hdr_sampler = VK_NULL_HANDLE;
+  bool scene_images_ready = false;  // every pass has made its images: the scene set may be written
   VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkDescriptorSet scene_set = VK_NULL_HANDLE, tonemap_set = VK_NULL_HANDLE;
@@ -220,14 +211,9 @@ VkPushConstantRange tessellation_push_range();
 void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                         RenderStats& stats);
 
-// uniforms.cpp: recomputes the sky-view table and the irradiances when the sky's parameters
-// changed.
-void update_sky(Renderer::State& st, const ShadingParams& shading);
+// uniforms.cpp: the frame's uniforms every pass shares.
 void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
                    shader::FrameUniforms& u);
-// environment.cpp: FrameUniforms::environment, and the sky's irradiance from the map (R.17).
-void fill_environment_uniforms(const Renderer::State& st, const View& view,
-                               shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
 

@@ -29,10 +29,7 @@ Renderer::State::~State() {
   if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(d, pool, nullptr);
   for (VkDescriptorSetLayout l : {scene_layout, tonemap_layout})
     if (l != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, l, nullptr);
-  vk::destroy_image(*ctx, sky_lut);
-  vk::destroy_image(*ctx, environment);
-  vk::destroy_buffer(*ctx, lut_staging);
-  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler})
+  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
   for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices,
                         &sphere_instances, &tess_cells})
