@@ -208,7 +208,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
   if (Status s = check_tessellation(*st.ctx, view.tessellation); !s.ok()) return s;
   const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
-  if ((view.sphere.enabled || tessellated) && st.motion.enabled)
+  if ((view.sphere.enabled || tessellated) && pass<MotionPass>(st).enabled)
     return unsupported(std::string("motion vectors: not drawn for ") +
                        (tessellated ? "the tessellated mesh" : "the sea on a sphere"));
   if (view.sphere.enabled && tessellated)
@@ -237,7 +237,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                {.sky = st.sky, .ocean = view.debug == DebugView::wireframe ? st.wire : st.ocean},
                sky_push, skirt_instance.value(), stats_);
   vkCmdEndRendering(cmd);
-  if (st.motion.enabled) record_motion(st, cmd, view.camera, skirt_instance.value());
+  pass<MotionPass>(st).record(st, cmd, {view, stats_, skirt_instance.value()});
   finish_frame(st, cmd, view.shading.exposure, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                stats_);

@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "ocean/render.hpp"
+#include "pass.hpp"
 
 namespace ocean::render {
 
-struct ObjectPass {
+struct ObjectPass : Pass {
   struct MeshBuffers {
     vk::Buffer vertices, indices;  // interleaved (position, normal) floats; uint32 indices
     std::uint32_t index_count = 0;
@@ -20,10 +21,18 @@ struct ObjectPass {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
   std::vector<MeshBuffers> meshes;
+  // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
+  // coverage) and depth while there are meshes, 1×1 otherwise.
+  vk::Image2D reflection, reflection_depth;
+
+  // The pipeline layout (the scene set, ObjectPush) and the pipeline.
+  Status create(Renderer::State& st);
+  void destroy(Renderer::State& st);
+  // The reflection target at the picture's size (size_reflection).
+  Status resize(Renderer::State& st);
+  void release_targets(Renderer::State& st);
 };
 
-// The pipeline layout (the scene set, ObjectPush) and the pipeline; called by create_pipelines.
-Status create_object_pipeline(Renderer::State& st);
 // An object pipeline on that layout from these shaders, drawing the views of `view_mask`
 // (0: one view; the stereo pass builds its multiview one this way). Owned by the caller.
 Result<VkPipeline> make_object_pipeline(Renderer::State& st, std::span<const std::uint32_t> vert,

@@ -9,8 +9,11 @@
 #include "damping.hpp"
 #include "far_map.hpp"
 #include "local_layer.hpp"
+#include "motion_pass.hpp"
+#include "object_pass.hpp"
 #include "seabed.hpp"
 #include "sky_pass.hpp"
+#include "stereo_pass.hpp"
 #include "underwater.hpp"
 
 namespace ocean::render {
@@ -20,6 +23,9 @@ using Passes = std::tuple<SkyPass,           // the sky-view table and the envir
                           LocalSurfacePass,  // the local layer (R.19)
                           DampingPass,       // the damping of the bands (R.24)
                           SeabedPass,        // the seabed's push constants (R.22–R.23)
-                          UnderwaterPass>;   // the view from below the surface (R.50–R.52)
+                          UnderwaterPass,    // the view from below the surface (R.50–R.52)
+                          ObjectPass,        // the objects and their reflection (R.20–R.21, R.53)
+                          StereoPass,        // both eyes in one multiview pass (R.25)
+                          MotionPass>;       // motion vectors (R.26)
 
 }  // namespace ocean::render

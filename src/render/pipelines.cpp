@@ -189,8 +189,7 @@ Status create_pipelines(Renderer::State& st) {
   if (!tonemap.ok()) return tonemap.status();
   st.tonemap = tonemap.value();
   if (Status s = create_sphere_pass(st); !s.ok()) return s;
-  if (Status s = create_tessellation(st); !s.ok()) return s;
-  return create_object_pipeline(st);
+  return create_tessellation(st);
 }
 
 }  // namespace ocean::render

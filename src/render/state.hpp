@@ -21,14 +21,11 @@
 #include <optional>
 #include <vector>
 
-#include "motion_pass.hpp"
-#include "object_pass.hpp"
 #include "passes.hpp"
 #include "ocean/render.hpp"
 #include "ocean/sphere.hpp"
 #include "shaders/render_shared.h"
 #include "shaders/tessellation.h"
-#include "stereo_pass.hpp"
 
 namespace ocean::render {
 
@@ -89,16 +86,10 @@ struct Renderer::State {
   double hs_m = 1.0;
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
-  ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
   // The sea on a sphere (sphere.cpp, R.30–R.38): its pipeline, per-frame instances and selection.
   VkPipeline sphere_pipeline = VK_NULL_HANDLE;
   vk::Buffer sphere_instances;  // host-visible, kMaxSphereInstances
   sphere::SphereSelection sphere_selection;
-  StereoPass stereo;  // layered targets and multiview pipelines (stereo.cpp), once used
-  MotionPass motion;  // motion vectors (motion.cpp), once enabled
-  // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
-  // coverage) and depth while there are meshes, 1×1 otherwise.
-  vk::Image2D reflection, reflection_depth;
   Passes passes;  // one object per feature (passes.hpp)
   // The tessellated mesh (R.40–R.42, tessellation.cpp): its pipelines where the device has
   // tessellation shaders, and the per-frame list of visible base quads (host-visible).

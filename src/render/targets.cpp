@@ -17,9 +17,6 @@ Renderer::State::~State() {
   destroy_targets();
   destroy_shared();
   destroy_sim_images();
-  destroy_objects(*this, true);
-  destroy_stereo(*this, true);
-  destroy_motion(*this, true);
   for_each_pass(*this, [&](auto& p) { p.destroy(*this); });
   for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline, tessellated, tessellated_wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
@@ -44,10 +41,6 @@ void Renderer::State::destroy_targets() {
   vk::destroy_image(*ctx, depth);
   vk::destroy_image(*ctx, srgb);
   vk::destroy_buffer(*ctx, readback);
-  destroy_stereo(*this, false);
-  destroy_motion(*this, false);
-  vk::destroy_image(*ctx, reflection);
-  vk::destroy_image(*ctx, reflection_depth);
 }
 
 void Renderer::State::destroy_sim_images() {
@@ -123,7 +116,6 @@ Status create_targets(Renderer::State& st, int width, int height) {
   if (!rb.ok()) return rb.status();
   st.readback = rb.value();
   write_tonemap_image(st);
-  if (Status s = size_reflection(st); !s.ok()) return s;  // its size follows the picture's (R.53)
   Status sized;
   for_each_pass(st, [&](auto& p) {
     if (sized.ok()) sized = p.resize(st);
