@@ -71,10 +71,6 @@ void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::u
   vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
 }
 
-void write_tonemap_image(Renderer::State& st) {
-  write_rendered_image(st, st.tonemap_set, OCEAN_RENDER_BINDING_HDR, st.hdr.view);
-}
-
 Status create_descriptors(Renderer::State& st) {
   const vk::Context& ctx = *st.ctx;
   Result<VkSampler> s1 = make_sampler(ctx, true, false, true, 1.0f);
@@ -115,40 +111,23 @@ Status create_descriptors(Renderer::State& st) {
                     "vkCreateDescriptorSetLayout");
       !s.ok())
     return s;
-  const VkDescriptorSetLayoutBinding tonemap_binding{OCEAN_RENDER_BINDING_HDR,
-                                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                                     VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  const VkDescriptorSetLayoutCreateInfo tonemap_info{
-      .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-      .bindingCount = 1,
-      .pBindings = &tonemap_binding};
-  if (Status s = vk::check(
-          vkCreateDescriptorSetLayout(ctx.device, &tonemap_info, nullptr, &st.tonemap_layout),
-          "vkCreateDescriptorSetLayout");
-      !s.ok())
-    return s;
-  const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 9}};
+  const VkDescriptorPoolSize sizes[] = {
+      {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
+      {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, OCEAN_RENDER_SCENE_BINDINGS - 1}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
-                                             .maxSets = 2,
+                                             .maxSets = 1,
                                              .poolSizeCount = 2,
                                              .pPoolSizes = sizes};
   if (Status s = vk::check(vkCreateDescriptorPool(ctx.device, &pool_info, nullptr, &st.pool),
                            "vkCreateDescriptorPool");
       !s.ok())
     return s;
-  const VkDescriptorSetLayout layouts[] = {st.scene_layout, st.tonemap_layout};
-  VkDescriptorSet sets[2];
   const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
                                           .descriptorPool = st.pool,
-                                          .descriptorSetCount = 2,
-                                          .pSetLayouts = layouts};
-  if (Status s =
-          vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, sets), "vkAllocateDescriptorSets");
-      !s.ok())
-    return s;
-  st.scene_set = sets[0], st.tonemap_set = sets[1];
-  return {};
+                                          .descriptorSetCount = 1,
+                                          .pSetLayouts = &st.scene_layout};
+  return vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, &st.scene_set),
+                   "vkAllocateDescriptorSets");
 }
 
 }  // namespace ocean::render

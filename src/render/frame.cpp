@@ -158,46 +158,13 @@ void record_patches(Renderer::State& st, VkCommandBuffer cmd, std::uint32_t skir
   stats->triangles += st.skirt_count / 3;
 }
 
-void finish_frame(Renderer::State& st, VkCommandBuffer cmd, double exposure,
+void finish_frame(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                   VkImageLayout hdr_layout, VkPipelineStageFlags src_stage,
                   VkAccessFlags src_access, RenderStats& stats) {
-  const std::uint32_t w = st.hdr.width, h = st.hdr.height;
   vk::image_barrier(cmd, st.hdr.image, hdr_layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                     src_stage, src_access, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                     VK_ACCESS_SHADER_READ_BIT);
-  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-  const VkRenderingAttachmentInfo out{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                      .imageView = st.srgb.view,
-                                      .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                      .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
-                                      .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-  const VkRenderingInfo tonemap{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                                .renderArea = {{0, 0}, {w, h}},
-                                .layerCount = 1,
-                                .colorAttachmentCount = 1,
-                                .pColorAttachments = &out};
-  vkCmdBeginRendering(cmd, &tonemap);
-  const VkViewport straight{0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, {w, h}};
-  vkCmdSetViewport(cmd, 0, 1, &straight);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap_pipeline_layout, 0, 1,
-                          &st.tonemap_set, 0, nullptr);
-  const shader::TonemapPush push{static_cast<float>(exposure)};
-  vkCmdPushConstants(cmd, st.tonemap_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
-                     &push);
-  vkCmdDraw(cmd, 3, 1, 0, 0);
-  ++stats.draw_calls;
-  vkCmdEndRendering(cmd);
-  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_READ_BIT);
+  pass<PostPass>(st).record(st, cmd, {.view = view, .stats = stats});
   if (st.has_timestamps)
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, st.timestamps.pool, 1);
 }
@@ -238,7 +205,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                sky_push, skirt_instance.value(), stats_);
   vkCmdEndRendering(cmd);
   pass<MotionPass>(st).record(st, cmd, {view, stats_, skirt_instance.value()});
-  finish_frame(st, cmd, view.shading.exposure, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                stats_);
   return {};

@@ -11,6 +11,7 @@
 #include "local_layer.hpp"
 #include "motion_pass.hpp"
 #include "object_pass.hpp"
+#include "post.hpp"
 #include "seabed.hpp"
 #include "sky_pass.hpp"
 #include "stereo_pass.hpp"
@@ -26,6 +27,7 @@ using Passes = std::tuple<SkyPass,           // the sky-view table and the envir
                           UnderwaterPass,    // the view from below the surface (R.50–R.52)
                           ObjectPass,        // the objects and their reflection (R.20–R.21, R.53)
                           StereoPass,        // both eyes in one multiview pass (R.25)
-                          MotionPass>;       // motion vectors (R.26)
+                          MotionPass,        // motion vectors (R.26)
+                          PostPass>;         // the tone map into the sRGB target
 
 }  // namespace ocean::render

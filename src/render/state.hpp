@@ -60,12 +60,11 @@ struct Renderer::State {
   VkSampler displacement_sampler = VK_NULL_HANDLE, normal_sampler = VK_NULL_HANDLE,
             hdr_sampler = VK_NULL_HANDLE;
   bool scene_images_ready = false;  // every pass has made its images: the scene set may be written
-  VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
+  VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
-  VkDescriptorSet scene_set = VK_NULL_HANDLE, tonemap_set = VK_NULL_HANDLE;
-  VkPipelineLayout scene_pipeline_layout = VK_NULL_HANDLE, tonemap_pipeline_layout = VK_NULL_HANDLE;
-  VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE,
-             tonemap = VK_NULL_HANDLE;
+  VkDescriptorSet scene_set = VK_NULL_HANDLE;
+  VkPipelineLayout scene_pipeline_layout = VK_NULL_HANDLE;
+  VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE;
   std::vector<VkShaderModule> modules;
   vk::Buffer uniforms;
   // Geometry.
@@ -132,8 +131,6 @@ Status create_targets(Renderer::State& st, int width, int height);
 Status create_descriptors(Renderer::State& st);
 // The scene set's uniform buffer and sky table, and the simulation images when there are any.
 void write_scene_images(Renderer::State& st);
-// The tone map's set: the HDR image.
-void write_tonemap_image(Renderer::State& st);
 // One image the renderer drew (SHADER_READ_ONLY_OPTIMAL, the HDR sampler) into a set's binding.
 void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
                           VkImageView view);

@@ -18,14 +18,13 @@ Renderer::State::~State() {
   destroy_shared();
   destroy_sim_images();
   for_each_pass(*this, [&](auto& p) { p.destroy(*this); });
-  for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline, tessellated, tessellated_wire})
+  for (VkPipeline p : {sky, ocean, wire, sphere_pipeline, tessellated, tessellated_wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
-  for (VkPipelineLayout l : {scene_pipeline_layout, tonemap_pipeline_layout})
-    if (l != VK_NULL_HANDLE) vkDestroyPipelineLayout(d, l, nullptr);
+  if (scene_pipeline_layout != VK_NULL_HANDLE)
+    vkDestroyPipelineLayout(d, scene_pipeline_layout, nullptr);
   if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(d, pool, nullptr);
-  for (VkDescriptorSetLayout l : {scene_layout, tonemap_layout})
-    if (l != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, l, nullptr);
+  if (scene_layout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, scene_layout, nullptr);
   for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
   for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices,
@@ -115,7 +114,6 @@ Status create_targets(Renderer::State& st, int width, int height) {
                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::readback);
   if (!rb.ok()) return rb.status();
   st.readback = rb.value();
-  write_tonemap_image(st);
   Status sized;
   for_each_pass(st, [&](auto& p) {
     if (sized.ok()) sized = p.resize(st);
