@@ -15,7 +15,7 @@
 
 #include "far_map.hpp"
 
-#include "../sim/far_noise.h"
+#include "sim/far_noise.h"
 #include "spirv.hpp"
 #include "state.hpp"
 

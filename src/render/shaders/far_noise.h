@@ -7,7 +7,7 @@
 #ifndef OCEAN_RENDER_FAR_NOISE_H
 #define OCEAN_RENDER_FAR_NOISE_H
 
-#include "../../sim/far_noise.h"
+#include "sim/far_noise.h"
 #include "render_shared.h"
 
 #ifdef __cplusplus
