@@ -1,12 +1,12 @@
 // The damping's pass (damping.hpp, docs/rendering.md R.24): its image filled from a DampingGrid
 // through a staging buffer. Until the first set_damping() it is 1×1 and the uniforms say "no
 // damping", so the descriptor is always valid.
+#include "damping.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
-
-#include "damping.hpp"
 
 #include "ocean/half.hpp"
 #include "state.hpp"
@@ -123,6 +123,5 @@ Status Renderer::set_damping(const DampingGrid& grid) {
   damping.pending = true;
   return {};
 }
-
 
 }  // namespace ocean::render

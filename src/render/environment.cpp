@@ -65,9 +65,9 @@ Status Renderer::set_environment(const Environment* environment) {
   }
   sky.environment = image.value();
   const Status copied = vk::run_once(*st.ctx, st.commands, [&](VkCommandBuffer cmd) {
-    vk::image_barrier(cmd, sky.environment.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                      VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_WRITE_BIT);
+    vk::image_barrier(cmd, sky.environment.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                    .imageExtent = {static_cast<std::uint32_t>(e.width),
                                                    static_cast<std::uint32_t>(e.height), 1}};

@@ -7,13 +7,13 @@
 // This work is based on: VR-GIS FFT+Perlin, §III (the noise height and normal maps the renderer
 // reads); Olano, M. & Baker, D. (2010) "LEAN mapping" (the first and second moments of the slope
 // filtered together, so the variance the mips remove becomes roughness).
+#include "far_map.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <string>
-
-#include "far_map.hpp"
 
 #include "sim/far_noise.h"
 #include "spirv.hpp"
@@ -154,7 +154,9 @@ noise::FarNoiseMapParams removed_octaves(const FarFieldPass& pass) {
                    .shift_u = l.cells_u,
                    .shift_v = l.cells_v,
                    .step = static_cast<float>(texel / s),
-                   .amplitude_m = octave_in_map(pass, o) ? 0.0f : static_cast<float>(pass.noise.amplitude_m[i]),
+                   .amplitude_m = octave_in_map(pass, o)
+                                      ? 0.0f
+                                      : static_cast<float>(pass.noise.amplitude_m[i]),
                    .inv_cell = static_cast<float>(1.0 / s),
                    .seed = kSeeds[i]};
   }

@@ -1,9 +1,10 @@
 // The far field (src/render, private; docs/rendering.md R.13, R.13b): the noise fitted to cascade
 // 0 by Renderer::configure (R.13), its uniforms (the octaves' lattice at the frame's origin, the
-// blend range), and the per-frame noise map as the renderer samples it (R.13b): an RGBA16F image with its mip chain, (h, ∂h/∂x, ∂h/∂z, (∂h/∂x)² + (∂h/∂z)²) of the
-// octaves whose cells span at least four texels, filled on the device from a float3 buffer — the
-// renderer's own (upload path) or a Vulkan backend's (no copy) — by shaders/far_map.comp, the
-// coarser levels by blits. 1×1 while there is no map.
+// blend range), and the per-frame noise map as the renderer samples it (R.13b): an RGBA16F image
+// with its mip chain, (h, ∂h/∂x, ∂h/∂z, (∂h/∂x)² + (∂h/∂z)²) of the octaves whose cells span at
+// least four texels, filled on the device from a float3 buffer — the renderer's own (upload path)
+// or a Vulkan backend's (no copy) — by shaders/far_map.comp, the coarser levels by blits. 1×1 while
+// there is no map.
 #pragma once
 
 #include <array>

@@ -99,8 +99,7 @@ Status Renderer::upload(const Frame& frame) {
     std::memcpy(out, c.packed_mips.data(), chain * 4);
     out += chain * 4;
   }
-  if (Status s = pass<FarFieldPass>(st).stage(st, frame.far_noise, frame.time_s); !s.ok())
-    return s;
+  if (Status s = pass<FarFieldPass>(st).stage(st, frame.far_noise, frame.time_s); !s.ok()) return s;
   if (st.borrowed) {
     st.borrowed = false;
     st.displacement_view = st.displacement.view;

@@ -2,12 +2,12 @@
 // staging buffer from the composited local surface (set_local_surface, M.7.9–M.7.10) or from the
 // layer alone (set_local_layer). Until the first call it is 1×1 of zeros and the uniforms say "no
 // layer", so the descriptor is always valid.
+#include "local_layer.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <string>
-
-#include "local_layer.hpp"
 
 #include "ocean/half.hpp"
 #include "state.hpp"
@@ -218,6 +218,5 @@ Status Renderer::set_local_surface(const LocalSurfaceFrame& local) {
   finish(st, local.origin_m, local.size_m, local.resolution);
   return {};
 }
-
 
 }  // namespace ocean::render

@@ -124,9 +124,8 @@ void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, 
                           static_cast<float>(m.material.metallic)};
     push.roughness_pad = {static_cast<float>(m.material.roughness), mirrored ? 1.0f : 0.0f, 0.0f,
                           0.0f};
-    vkCmdPushConstants(cmd, op.layout,
-                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
-                       &push);
+    vkCmdPushConstants(cmd, op.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
     vkCmdBindVertexBuffers(cmd, 0, 1, &m.vertices.buffer, &zero);
     vkCmdBindIndexBuffer(cmd, m.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, m.index_count, 1, 0, 0, 0);

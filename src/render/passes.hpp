@@ -19,7 +19,7 @@
 
 namespace ocean::render {
 
-using Passes = std::tuple<SkyPass,           // the sky-view table and the environment map (R.1–R.4, R.17)
+using Passes = std::tuple<SkyPass,  // the sky-view table and the environment map (R.1–R.4, R.17)
                           FarFieldPass,      // the far field and its noise map (R.13, R.13b)
                           LocalSurfacePass,  // the local layer (R.19)
                           DampingPass,       // the damping of the bands (R.24)

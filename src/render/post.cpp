@@ -34,8 +34,8 @@ Status PostPass::create(Renderer::State& st) {
                                           .descriptorPool = pool,
                                           .descriptorSetCount = 1,
                                           .pSetLayouts = &set_layout};
-  if (Status s = vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, &set),
-                           "vkAllocateDescriptorSets");
+  if (Status s =
+          vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, &set), "vkAllocateDescriptorSets");
       !s.ok())
     return s;
   const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(shader::TonemapPush)};

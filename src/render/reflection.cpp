@@ -61,11 +61,11 @@ void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& vie
                                         .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
                                         .clearValue = {.depthStencil = {1.0f, 0}}};
   const VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                             .renderArea = {{0, 0}, {w, h}},
-                             .layerCount = 1,
-                             .colorAttachmentCount = 1,
-                             .pColorAttachments = &colour,
-                             .pDepthAttachment = &depth};
+                                  .renderArea = {{0, 0}, {w, h}},
+                                  .layerCount = 1,
+                                  .colorAttachmentCount = 1,
+                                  .pColorAttachments = &colour,
+                                  .pDepthAttachment = &depth};
   vkCmdBeginRendering(cmd, &rendering);
   // The main pass's flipped viewport at this size: texel rows are the picture's rows, halved.
   const VkViewport flipped{

@@ -21,9 +21,9 @@
 #include <optional>
 #include <vector>
 
-#include "passes.hpp"
 #include "ocean/render.hpp"
 #include "ocean/sphere.hpp"
+#include "passes.hpp"
 #include "shaders/render_shared.h"
 #include "shaders/tessellation.h"
 

@@ -193,8 +193,8 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
                   .extent = {sp.hdr.width, sp.hdr.height, 1}};
   vkCmdCopyImage(cmd, sp.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, st.hdr.image,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 2, regions);
-  finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, stats_);
+  finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+               VK_ACCESS_TRANSFER_WRITE_BIT, stats_);
   return {};
 }
 
