@@ -57,7 +57,8 @@ void DampingPass::destroy(Renderer::State& st) {
 }
 
 void DampingPass::scene_images(const Renderer::State&, SceneImages& images) const {
-  images.add(OCEAN_RENDER_BINDING_DAMPING, {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
+  images.add(OCEAN_RENDER_BINDING_DAMPING, images.surface_stages,
+             {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
 }
 
 void DampingPass::fill_uniforms(const Renderer::State& st, const View&,

@@ -19,6 +19,8 @@
 #include "spirv.hpp"
 #include "state.hpp"
 
+OCEAN_RENDER_SPIRV(far_map)  // the map into its image (shaders/far_map.comp)
+
 namespace ocean::render {
 
 namespace {
@@ -200,7 +202,8 @@ void FarFieldPass::destroy(Renderer::State& st) {
 }
 
 void FarFieldPass::scene_images(const Renderer::State&, SceneImages& images) const {
-  images.add(OCEAN_RENDER_BINDING_FAR_MAP, {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
+  images.add(OCEAN_RENDER_BINDING_FAR_MAP, images.surface_stages,
+             {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
 }
 
 Status FarFieldPass::stage(Renderer::State& st, const FarNoiseFrame& map, double map_time_s) {

@@ -113,7 +113,8 @@ void LocalSurfacePass::destroy(Renderer::State& st) {
 }
 
 void LocalSurfacePass::scene_images(const Renderer::State&, SceneImages& images) const {
-  images.add(OCEAN_RENDER_BINDING_LOCAL, {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
+  images.add(OCEAN_RENDER_BINDING_LOCAL, images.surface_stages,
+             {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
 }
 
 void LocalSurfacePass::fill_uniforms(const Renderer::State& st, const View&,

@@ -31,6 +31,7 @@ struct ObjectPass : Pass {
   // The reflection target at the picture's size (size_reflection).
   Status resize(Renderer::State& st);
   void release_targets(Renderer::State& st);
+  void scene_images(const Renderer::State& st, SceneImages& images) const;  // the reflection
 };
 
 // An object pipeline on that layout from these shaders, drawing the views of `view_mask`

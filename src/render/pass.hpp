@@ -9,8 +9,9 @@
 //   destroy(st)                 when the renderer goes (the device is idle)
 //   resize(st)                  after the targets were made at a new size (st.hdr.width/height)
 //   release_targets(st)         before the targets go (a resize, the renderer's end)
-//   scene_images(st, images)    the scene set's bindings the pass owns (descriptors.cpp writes
-//                               them with the shared ones whenever one changes)
+//   scene_images(st, images)    the scene set's bindings the pass owns, with their stages and
+//                               images: descriptors.cpp builds the set's layout from them (before
+//                               create) and writes them with the shared ones whenever one changes
 //   fill_uniforms(st, view, u)  the pass's part of the frame's FrameUniforms
 //   upload(st, cmd)             before the scene: staged uploads and compute of the frame
 //   record(st, cmd, frame)      its draws, at the pass's point of the frame (frame.cpp)
@@ -25,13 +26,18 @@
 namespace ocean::render {
 
 // The images of the scene set (shaders/render_shared.h's OCEAN_RENDER_BINDING_*) that the passes
-// own, gathered for one vkUpdateDescriptorSets; no allocation.
+// own, gathered for the set's layout and for one vkUpdateDescriptorSets; no allocation.
 struct SceneImages {
+  // The stages that place the surface (vertex, tessellation evaluation where the device has it)
+  // and shade it: what a binding the displacement reads needs.
+  VkShaderStageFlags surface_stages = 0;
   std::array<std::uint32_t, OCEAN_RENDER_SCENE_BINDINGS> bindings{};
+  std::array<VkShaderStageFlags, OCEAN_RENDER_SCENE_BINDINGS> stages{};
   std::array<VkDescriptorImageInfo, OCEAN_RENDER_SCENE_BINDINGS> infos{};
   std::uint32_t count = 0;
-  void add(std::uint32_t binding, VkDescriptorImageInfo info) {
+  void add(std::uint32_t binding, VkShaderStageFlags binding_stages, VkDescriptorImageInfo info) {
     bindings[count] = binding;
+    stages[count] = binding_stages;
     infos[count] = info;
     ++count;
   }

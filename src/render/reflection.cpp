@@ -30,7 +30,7 @@ Status size_reflection(Renderer::State& st) {
                           VK_IMAGE_ASPECT_DEPTH_BIT);
   if (!depth.ok()) return depth.status();
   op.reflection_depth = depth.value();
-  write_rendered_image(st, st.scene_set, OCEAN_RENDER_BINDING_REFLECTION, op.reflection.view);
+  write_scene_images(st);
   return {};
 }
 
@@ -84,6 +84,11 @@ void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& vie
 }
 
 Status ObjectPass::resize(Renderer::State& st) { return size_reflection(st); }
+
+void ObjectPass::scene_images(const Renderer::State& st, SceneImages& images) const {
+  images.add(OCEAN_RENDER_BINDING_REFLECTION, VK_SHADER_STAGE_FRAGMENT_BIT,
+             {st.hdr_sampler, reflection.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+}
 
 void ObjectPass::release_targets(Renderer::State& st) {
   vk::destroy_image(*st.ctx, reflection);

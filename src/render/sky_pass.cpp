@@ -47,9 +47,10 @@ void SkyPass::destroy(Renderer::State& st) {
 }
 
 void SkyPass::scene_images(const Renderer::State&, SceneImages& images) const {
-  images.add(OCEAN_RENDER_BINDING_SKY_LUT, {sampler, lut.view, VK_IMAGE_LAYOUT_GENERAL});
+  images.add(OCEAN_RENDER_BINDING_SKY_LUT, VK_SHADER_STAGE_FRAGMENT_BIT,
+             {sampler, lut.view, VK_IMAGE_LAYOUT_GENERAL});
   // The environment map is addressed as the sky table: u repeats, v clamps.
-  images.add(OCEAN_RENDER_BINDING_ENVIRONMENT,
+  images.add(OCEAN_RENDER_BINDING_ENVIRONMENT, VK_SHADER_STAGE_FRAGMENT_BIT,
              {sampler, environment.view, VK_IMAGE_LAYOUT_GENERAL});
 }
 
