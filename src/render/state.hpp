@@ -1,19 +1,18 @@
-// What the renderer's files share (src/render, private): the Vulkan objects of a renderer
-// (Renderer::State), its formats and limits, and the steps the public methods are built from,
-// one concern per file:
+// What every pass of the renderer shares (src/render, private): the Vulkan objects of a renderer
+// that are not one feature's (Renderer::State: context, commands, targets, the simulation's
+// images, the scene set and pipelines, the patch mesh, the frame uniforms' buffer), its formats
+// and limits, the passes (passes.hpp: one object per feature, pass.hpp their shape) and the steps
+// the public methods are built from, one concern per file:
 //   targets.cpp      the state's lifetime and the HDR, depth and sRGB targets
-//   descriptors.cpp  samplers, descriptor set layouts, the descriptor sets and their writes
-//   pipelines.cpp    shader modules, pipeline layouts, the sky/ocean/wireframe/tone-map pipelines
+//   descriptors.cpp  the shared samplers, the scene set (its layout from the passes' bindings)
+//   pipelines.cpp    shader modules, the scene pipeline layout, the sky/ocean/wireframe pipelines
 //   mesh.cpp         the static patch mesh and the per-frame skirt vertices
 //   inputs.cpp       the simulation's images: own ones filled by upload, or borrowed ones
-//   uniforms.cpp     the sky table and the per-frame uniforms
-//   frame.cpp        the recorded frame: LOD selection, HDR pass, tone-map pass
+//   uniforms.cpp     the per-frame uniforms every pass shares
+//   frame.cpp        the recorded frame: LOD selection, the passes' uploads, HDR pass, post pass
 //   relative.cpp     large worlds and curvature: positions relative to the grid centre
-//   environment.cpp  the HDR environment map: reading, upload, its irradiance
 //   renderer.cpp     construction, resizing, submission, read-back
-//   objects.cpp      the object pass (object_pass.hpp); seabed.cpp the seabed's push constants
-//   stereo.cpp       both eyes in one multiview pass (stereo_pass.hpp, frame_steps.hpp)
-//   motion.cpp       motion vectors: the previous frame reprojected (motion_pass.hpp)
+// and the passes' own files (src/render/README.md lists them).
 #pragma once
 
 #include <array>
