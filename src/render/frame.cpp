@@ -123,13 +123,14 @@ void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                      sizeof(sky_push), &sky_push);
   vkCmdDraw(cmd, pipelines.sky_vertices, 1, 0, 0);
   ++stats.draw_calls;
+  const FrameContext frame{.view = view, .stats = stats, .skirt_instance = skirt_instance};
   if (view.sphere.enabled) {  // the sea on a sphere (R.30–R.38) instead of the flat patches
-    draw_sphere(st, cmd, stats);
+    pass<SpherePass>(st).record(st, cmd, frame);
   } else {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.ocean);
-    pass<SeabedPass>(st).record(st, cmd, {.view = view, .stats = stats});
+    pass<SeabedPass>(st).record(st, cmd, frame);
     const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
-    if (tessellated) record_tessellated(st, cmd, view, stats);  // R.40–R.42, tessellation.cpp
+    if (tessellated) pass<TessellationPass>(st).record(st, cmd, frame);  // R.40–R.42
     record_patches(st, cmd, skirt_instance, &stats, !tessellated);
     stats.patches_per_level = st.selection.patches_per_level;
   }

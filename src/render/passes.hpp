@@ -14,7 +14,9 @@
 #include "post.hpp"
 #include "seabed.hpp"
 #include "sky_pass.hpp"
+#include "sphere.hpp"
 #include "stereo_pass.hpp"
+#include "tessellation.hpp"
 #include "underwater.hpp"
 
 namespace ocean::render {
@@ -23,6 +25,8 @@ using Passes = std::tuple<SkyPass,  // the sky-view table and the environment ma
                           FarFieldPass,      // the far field and its noise map (R.13, R.13b)
                           LocalSurfacePass,  // the local layer (R.19)
                           DampingPass,       // the damping of the bands (R.24)
+                          SpherePass,        // the sea on a sphere (R.30–R.38)
+                          TessellationPass,  // the tessellated mesh (R.40–R.42)
                           SeabedPass,        // the seabed's push constants (R.22–R.23)
                           UnderwaterPass,    // the view from below the surface (R.50–R.52)
                           ObjectPass,        // the objects and their reflection (R.20–R.21, R.53)

@@ -166,8 +166,7 @@ Status create_pipelines(Renderer::State& st) {
     if (!wire.ok()) return wire.status();
     st.wire = wire.value();
   }
-  if (Status s = create_sphere_pass(st); !s.ok()) return s;
-  return create_tessellation(st);
+  return {};
 }
 
 }  // namespace ocean::render

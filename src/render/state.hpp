@@ -84,15 +84,7 @@ struct Renderer::State {
   double hs_m = 1.0;
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
-  // The sea on a sphere (sphere.cpp, R.30–R.38): its pipeline, per-frame instances and selection.
-  VkPipeline sphere_pipeline = VK_NULL_HANDLE;
-  vk::Buffer sphere_instances;  // host-visible, kMaxSphereInstances
-  sphere::SphereSelection sphere_selection;
-  Passes passes;  // one object per feature (passes.hpp)
-  // The tessellated mesh (R.40–R.42, tessellation.cpp): its pipelines where the device has
-  // tessellation shaders, and the per-frame list of visible base quads (host-visible).
-  VkPipeline tessellated = VK_NULL_HANDLE, tessellated_wire = VK_NULL_HANDLE;
-  vk::Buffer tess_cells;
+  Passes passes;                              // one object per feature (passes.hpp)
 
   ~State();
   void destroy_targets();
@@ -164,14 +156,11 @@ double curvature_drop_bound_m(const View& view);
 // FrameUniforms::planet and cascade_origin for this frame.
 void fill_origin_uniforms(const Renderer::State& st, const View& view, shader::FrameUniforms& u);
 
-// sphere.cpp: the sea on a sphere (R.30–R.38). The pipeline and the instance buffer (at make()).
-Status create_sphere_pass(Renderer::State& st);
-// Selects the cube-sphere's patches and writes their instances; sets `vp` (relative to the
+// sphere.cpp: the sea on a sphere (R.30–R.38, the pass: sphere.hpp). Selects the cube-sphere's
+// patches and writes their instances; sets `vp` (relative to the
 // camera, local axes) and the uniforms that differ from the flat sea's.
 Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
                       shader::FrameUniforms& u);
-// The instanced draws of the selection, by configuration.
-void draw_sphere(Renderer::State& st, VkCommandBuffer cmd, RenderStats& stats);
 
 // inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
@@ -183,11 +172,8 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source);
 Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
                                float anisotropy, bool repeat_v_too = true);
 
-// tessellation.cpp: the tessellated mesh's pipelines and cell buffer (nothing where the device
-// lacks tessellation shaders), its push range in the scene layout, and its draw: the visible base
-// quads and the tessellation stages, then the ocean (or wireframe) pipeline bound again for the
-// skirt. record_tessellated needs Context::tessellation (Renderer::record checks it).
-Status create_tessellation(Renderer::State& st);
+// tessellation.cpp: the tessellated mesh (its pass: tessellation.hpp) and its push range in the
+// scene layout.
 // `unsupported` when the parameters ask for the tessellated mesh on a device without tessellation
 // shaders or with a maxTessellationGenerationLevel below N; nothing for the quadtree.
 Status check_tessellation(const vk::Context& ctx, const TessellationParams& params);
@@ -195,8 +181,6 @@ Status check_tessellation(const vk::Context& ctx, const TessellationParams& para
 shader::TessellationPush tessellation_push(const TessellationParams& params,
                                            const TessellationGrid& grid);
 VkPushConstantRange tessellation_push_range();
-void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& view,
-                        RenderStats& stats);
 
 // uniforms.cpp: the frame's uniforms every pass shares.
 void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,

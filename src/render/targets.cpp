@@ -18,7 +18,7 @@ Renderer::State::~State() {
   destroy_shared();
   destroy_sim_images();
   for_each_pass(*this, [&](auto& p) { p.destroy(*this); });
-  for (VkPipeline p : {sky, ocean, wire, sphere_pipeline, tessellated, tessellated_wire})
+  for (VkPipeline p : {sky, ocean, wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
   if (scene_pipeline_layout != VK_NULL_HANDLE)
@@ -27,8 +27,13 @@ Renderer::State::~State() {
   if (scene_layout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, scene_layout, nullptr);
   for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
-  for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices,
-                        &sphere_instances, &tess_cells})
+  for (vk::Buffer* b : {
+           &uniforms,
+           &patch_vertices,
+           &indices,
+           &instances,
+           &skirt_vertices,
+       })
     vk::destroy_buffer(*ctx, *b);
   vk::destroy_timestamps(*ctx, timestamps);
   vk::destroy_commands(*ctx, commands);
