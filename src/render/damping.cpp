@@ -1,7 +1,8 @@
-// The damping of the bands as the renderer samples it (docs/rendering.md R.24): an RGBA16F 2-D
-// array of three layers (the weights of cascades 0–3 and 4–7, the depth), filled from a
-// DampingGrid through a staging buffer. Until the first set_damping() it is 1×1 and the uniforms
-// say "no damping", so the descriptor is always valid.
+// The damping's pass (damping.hpp, docs/rendering.md R.24): its image filled from a DampingGrid
+// through a staging buffer. Until the first set_damping() it is 1×1 and the uniforms say "no
+// damping", so the descriptor is always valid.
+#include "damping.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -18,37 +19,71 @@ namespace {
 constexpr std::uint32_t kLayers = 3;
 
 Status allocate_damping(Renderer::State& st, std::uint32_t side) {
+  DampingPass& damping = pass<DampingPass>(st);
   vkDeviceWaitIdle(st.ctx->device);
-  vk::destroy_image(*st.ctx, st.damping_image);
-  vk::destroy_buffer(*st.ctx, st.damping_staging);
-  st.damping_side = 0;
+  vk::destroy_image(*st.ctx, damping.image);
+  vk::destroy_buffer(*st.ctx, damping.staging);
+  damping.side = 0;
   Result<vk::Image> image =
       vk::create_image_array(*st.ctx, VK_FORMAT_R16G16B16A16_SFLOAT, side, kLayers, 1,
                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   if (!image.ok()) return image.status();
-  st.damping_image = image.value();
+  damping.image = image.value();
   const std::size_t bytes = static_cast<std::size_t>(side) * side * 8 * kLayers;
   Result<vk::Buffer> staging =
       vk::create_buffer(*st.ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
   if (!staging.ok()) return staging.status();
-  st.damping_staging = staging.value();
-  std::memset(st.damping_staging.mapped, 0, bytes);
-  st.damping_side = side;
-  st.damping_pending = true;
+  damping.staging = staging.value();
+  std::memset(damping.staging.mapped, 0, bytes);
+  damping.side = side;
+  damping.pending = true;
   return {};
 }
 
 }  // namespace
 
-Status create_damping(Renderer::State& st) {
-  st.damping = {};
+Status DampingPass::create(Renderer::State& st) {
+  Result<VkSampler> linear = make_sampler(*st.ctx, true, false, false, 1.0f);
+  if (!linear.ok()) return linear.status();
+  sampler = linear.value();
+  uniforms = {};
   return allocate_damping(st, 1);
+}
+
+void DampingPass::destroy(Renderer::State& st) {
+  vk::destroy_image(*st.ctx, image);
+  vk::destroy_buffer(*st.ctx, staging);
+  if (sampler != VK_NULL_HANDLE) vkDestroySampler(st.ctx->device, sampler, nullptr);
+}
+
+void DampingPass::scene_images(const Renderer::State&, SceneImages& images) const {
+  images.add(OCEAN_RENDER_BINDING_DAMPING, images.surface_stages,
+             {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
+}
+
+void DampingPass::fill_uniforms(const Renderer::State& st, const View&,
+                                shader::FrameUniforms& u) const {
+  const lod::LodSelection& sel = st.selection;
+  u.damping = uniforms;
+  u.damping.origin_m = {static_cast<float>(origin_m[0] - sel.grid_centre_x_m),
+                        static_cast<float>(origin_m[1] - sel.grid_centre_z_m)};
+  // Pure water's absorption at 650, 550 and 450 nm (Pope & Fry 1997: 0.340, 0.0565 and
+  // 0.0092 per m) and a sandy bottom's albedo, a chosen value (R.24).
+  u.damping.absorption_per_m = {0.340f, 0.0565f, 0.0092f};
+  u.damping.bottom_albedo = {0.45f, 0.40f, 0.30f};
+}
+
+void DampingPass::upload(Renderer::State&, VkCommandBuffer cmd) {
+  if (!pending) return;
+  record_world_grid_upload(cmd, staging.buffer, image.image, side, kLayers);
+  pending = false;
 }
 
 Status Renderer::set_damping(const DampingGrid& grid) {
   State& st = *state_;
+  DampingPass& damping = pass<DampingPass>(st);
   if (grid.band_weights.empty()) {
-    st.damping.resolution = 0.0f;
+    damping.uniforms.resolution = 0.0f;
     return {};
   }
   if (Status s = check_world_grid("damping", grid.origin_m, grid.size_m, grid.resolution); !s.ok())
@@ -60,16 +95,16 @@ Status Renderer::set_damping(const DampingGrid& grid) {
                             " weights and " + std::to_string(grid.depth_m.size()) + " depths for " +
                             std::to_string(side) + "² cells (" + std::to_string(kDampingBands) +
                             " and 1 each expected)");
-  if (side != st.damping_side) {
+  if (side != damping.side) {
     if (Status s = allocate_damping(st, side); !s.ok()) {
-      st.damping.resolution = 0.0f;
+      damping.uniforms.resolution = 0.0f;
       (void)allocate_damping(st, 1);
       write_scene_images(st);
       return s;
     }
     write_scene_images(st);
   }
-  auto* out = static_cast<std::uint16_t*>(st.damping_staging.mapped);
+  auto* out = static_cast<std::uint16_t*>(damping.staging.mapped);
   const auto clamped = [](float v, float hi) {
     return std::isfinite(v) ? std::clamp(v, 0.0f, hi) : hi;  // +inf: deep water, weight 1
   };
@@ -83,19 +118,11 @@ Status Renderer::set_damping(const DampingGrid& grid) {
     depth[0] = float_to_half(clamped(grid.depth_m[i], static_cast<float>(OCEAN_RENDER_DEEP_M)));
     depth[1] = depth[2] = depth[3] = 0;
   }
-  st.damping_origin_m = grid.origin_m;
-  st.damping.size_m = static_cast<float>(grid.size_m);
-  st.damping.resolution = static_cast<float>(side);
-  st.damping_pending = true;
+  damping.origin_m = grid.origin_m;
+  damping.uniforms.size_m = static_cast<float>(grid.size_m);
+  damping.uniforms.resolution = static_cast<float>(side);
+  damping.pending = true;
   return {};
-}
-
-void Renderer::set_calm(bool calm) { state_->local.calm = calm ? 1.0f : 0.0f; }
-
-void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd) {
-  record_world_grid_upload(cmd, st.damping_staging.buffer, st.damping_image.image, st.damping_side,
-                           kLayers);
-  st.damping_pending = false;
 }
 
 }  // namespace ocean::render

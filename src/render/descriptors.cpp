@@ -1,7 +1,9 @@
-// The renderer's samplers and descriptors: one set for the scene (frame uniforms, displacement
-// array, normal/foam array with its mips, the sky-view table, the local layer, the damping, the
-// objects' reflection, written by reflection.cpp) and one
-// for the tone map (the HDR image). Binding numbers: shaders/render_shared.h.
+// The renderer's shared samplers and the scene set every pass draws with: the frame's uniforms,
+// the simulation's displacement and normal/foam arrays, and the images the passes declare
+// (pass.hpp's scene_images: the sky table, the far map, the local layer, ...). Binding numbers:
+// shaders/render_shared.h.
+#include <cassert>
+
 #include "state.hpp"
 
 namespace ocean::render {
@@ -31,69 +33,49 @@ Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, b
   return s;
 }
 
+namespace {
+
+// The scene set's images: the simulation's (the displacement sampled where the surface is placed
+// and shaded, the normal and foam where it is shaded) and each pass's. Their views are null
+// before configure() and before a pass has made its images.
+SceneImages scene_images(const Renderer::State& st) {
+  SceneImages images;
+  // The vertex stages (and the tessellation evaluation stage, R.41) and the fragment stage.
+  images.surface_stages =
+      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT |
+      (st.ctx->tessellation ? VkShaderStageFlags{VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT} : 0u);
+  images.add(OCEAN_RENDER_BINDING_DISPLACEMENT, images.surface_stages,
+             {st.displacement_sampler, st.displacement_view, VK_IMAGE_LAYOUT_GENERAL});
+  images.add(OCEAN_RENDER_BINDING_NORMAL, VK_SHADER_STAGE_FRAGMENT_BIT,
+             {st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL});
+  for_each_pass(st, [&](const auto& p) { p.scene_images(st, images); });
+  return images;
+}
+
+}  // namespace
+
 void write_scene_images(Renderer::State& st) {
+  if (!st.scene_images_ready) return;  // make() writes them once every pass has its images
   const VkDescriptorBufferInfo ubo{st.uniforms.buffer, 0, sizeof(shader::FrameUniforms)};
-  const VkDescriptorImageInfo disp{st.displacement_sampler, st.displacement_view,
-                                   VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo normal{st.normal_sampler, st.normal_view, VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo lut{st.lut_sampler, st.sky_lut.view, VK_IMAGE_LAYOUT_GENERAL};
-  // The environment map is addressed as the sky table: u repeats, v clamps.
-  const VkDescriptorImageInfo env{st.lut_sampler, st.environment.view, VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo local{st.local_sampler, st.local_image.view, VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo damping{st.damping_sampler, st.damping_image.view,
-                                      VK_IMAGE_LAYOUT_GENERAL};
-  const VkDescriptorImageInfo far{st.far_map.sampler, st.far_map.image.view,
-                                  VK_IMAGE_LAYOUT_GENERAL};
-  VkWriteDescriptorSet writes[8] = {{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_FAR_MAP,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &far},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_ENVIRONMENT,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &env},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_DAMPING,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &damping},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_LOCAL,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &local},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_SKY_LUT,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &lut},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_FRAME,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                     .pBufferInfo = &ubo},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_DISPLACEMENT,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &disp},
-                                    {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
-                                     .dstSet = st.scene_set,
-                                     .dstBinding = OCEAN_RENDER_BINDING_NORMAL,
-                                     .descriptorCount = 1,
-                                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                                     .pImageInfo = &normal}};
-  const std::uint32_t count = st.displacement_view != VK_NULL_HANDLE ? 8u : 6u;
-  vkUpdateDescriptorSets(st.ctx->device, count, writes, 0, nullptr);
+  const SceneImages images = scene_images(st);
+  std::array<VkWriteDescriptorSet, OCEAN_RENDER_SCENE_BINDINGS> writes{};
+  writes[0] = {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+               .dstSet = st.scene_set,
+               .dstBinding = OCEAN_RENDER_BINDING_FRAME,
+               .descriptorCount = 1,
+               .descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+               .pBufferInfo = &ubo};
+  std::uint32_t count = 1;
+  for (std::uint32_t i = 0; i < images.count; ++i) {
+    if (images.infos[i].imageView == VK_NULL_HANDLE) continue;  // not made yet (its pass writes it)
+    writes[count++] = {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                       .dstSet = st.scene_set,
+                       .dstBinding = images.bindings[i],
+                       .descriptorCount = 1,
+                       .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                       .pImageInfo = &images.infos[i]};
+  }
+  vkUpdateDescriptorSets(st.ctx->device, count, writes.data(), 0, nullptr);
 }
 
 void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
@@ -108,10 +90,6 @@ void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::u
   vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
 }
 
-void write_tonemap_image(Renderer::State& st) {
-  write_rendered_image(st, st.tonemap_set, OCEAN_RENDER_BINDING_HDR, st.hdr.view);
-}
-
 Status create_descriptors(Renderer::State& st) {
   const vk::Context& ctx = *st.ctx;
   Result<VkSampler> s1 = make_sampler(ctx, true, false, true, 1.0f);
@@ -123,78 +101,42 @@ Status create_descriptors(Renderer::State& st) {
   Result<VkSampler> s3 = make_sampler(ctx, false, false, false, 1.0f);
   if (!s3.ok()) return s3.status();
   st.hdr_sampler = s3.value();
-  Result<VkSampler> s4 = make_sampler(ctx, true, false, true, 1.0f, false);
-  if (!s4.ok()) return s4.status();
-  st.lut_sampler = s4.value();
-  Result<VkSampler> s5 = make_sampler(ctx, true, false, false, 1.0f);
-  if (!s5.ok()) return s5.status();
-  st.local_sampler = s5.value();
-  Result<VkSampler> s6 = make_sampler(ctx, true, false, false, 1.0f);
-  if (!s6.ok()) return s6.status();
-  st.damping_sampler = s6.value();
 
-  // The vertex stages (and the tessellation evaluation stage, R.41) and the fragment stage.
-  const VkShaderStageFlags both =
-      VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT |
-      (ctx.tessellation ? VkShaderStageFlags{VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT} : 0u);
-  const VkDescriptorSetLayoutBinding scene_bindings[] = {
-      {OCEAN_RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1, both, nullptr},
-      {OCEAN_RENDER_BINDING_DISPLACEMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both,
-       nullptr},
-      {OCEAN_RENDER_BINDING_NORMAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {OCEAN_RENDER_BINDING_SKY_LUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {OCEAN_RENDER_BINDING_ENVIRONMENT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {OCEAN_RENDER_BINDING_LOCAL, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr},
-      {OCEAN_RENDER_BINDING_DAMPING, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr},
-      {OCEAN_RENDER_BINDING_REFLECTION, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-       VK_SHADER_STAGE_FRAGMENT_BIT, nullptr},
-      {OCEAN_RENDER_BINDING_FAR_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, both, nullptr}};
+  // The frame's uniforms, then the images (the passes' from their not yet created objects: only
+  // the bindings and stages are read).
+  const SceneImages images = scene_images(st);
+  assert(images.count + 1 <= OCEAN_RENDER_SCENE_BINDINGS);
+  std::array<VkDescriptorSetLayoutBinding, OCEAN_RENDER_SCENE_BINDINGS> scene_bindings{};
+  scene_bindings[0] = {OCEAN_RENDER_BINDING_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1,
+                       images.surface_stages, nullptr};
+  for (std::uint32_t i = 0; i < images.count; ++i)
+    scene_bindings[i + 1] = {images.bindings[i], VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
+                             images.stages[i], nullptr};
   const VkDescriptorSetLayoutCreateInfo scene_info{
       .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-      .bindingCount = OCEAN_RENDER_SCENE_BINDINGS,
-      .pBindings = scene_bindings};
+      .bindingCount = images.count + 1,
+      .pBindings = scene_bindings.data()};
   if (Status s =
           vk::check(vkCreateDescriptorSetLayout(ctx.device, &scene_info, nullptr, &st.scene_layout),
                     "vkCreateDescriptorSetLayout");
       !s.ok())
     return s;
-  const VkDescriptorSetLayoutBinding tonemap_binding{OCEAN_RENDER_BINDING_HDR,
-                                                     VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1,
-                                                     VK_SHADER_STAGE_FRAGMENT_BIT, nullptr};
-  const VkDescriptorSetLayoutCreateInfo tonemap_info{
-      .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-      .bindingCount = 1,
-      .pBindings = &tonemap_binding};
-  if (Status s = vk::check(
-          vkCreateDescriptorSetLayout(ctx.device, &tonemap_info, nullptr, &st.tonemap_layout),
-          "vkCreateDescriptorSetLayout");
-      !s.ok())
-    return s;
   const VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1},
-                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 9}};
+                                        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, images.count}};
   const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
-                                             .maxSets = 2,
+                                             .maxSets = 1,
                                              .poolSizeCount = 2,
                                              .pPoolSizes = sizes};
   if (Status s = vk::check(vkCreateDescriptorPool(ctx.device, &pool_info, nullptr, &st.pool),
                            "vkCreateDescriptorPool");
       !s.ok())
     return s;
-  const VkDescriptorSetLayout layouts[] = {st.scene_layout, st.tonemap_layout};
-  VkDescriptorSet sets[2];
   const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
                                           .descriptorPool = st.pool,
-                                          .descriptorSetCount = 2,
-                                          .pSetLayouts = layouts};
-  if (Status s =
-          vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, sets), "vkAllocateDescriptorSets");
-      !s.ok())
-    return s;
-  st.scene_set = sets[0], st.tonemap_set = sets[1];
-  return {};
+                                          .descriptorSetCount = 1,
+                                          .pSetLayouts = &st.scene_layout};
+  return vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, &st.scene_set),
+                   "vkAllocateDescriptorSets");
 }
 
 }  // namespace ocean::render

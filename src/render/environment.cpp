@@ -9,6 +9,7 @@
 #include <cstring>
 #include <numbers>
 
+#include "sky_pass.hpp"
 #include "state.hpp"
 
 namespace ocean::render {
@@ -51,8 +52,9 @@ Status Renderer::set_environment(const Environment* environment) {
     std::memcpy(rgba + 4 * p, e.rgb.data() + 3 * p, 3 * sizeof(float));
     rgba[4 * p + 3] = 1.0f;
   }
+  SkyPass& sky = pass<SkyPass>(st);
   vkDeviceWaitIdle(st.ctx->device);
-  vk::destroy_image(*st.ctx, st.environment);
+  vk::destroy_image(*st.ctx, sky.environment);
   Result<vk::Image2D> image =
       vk::create_image_2d(*st.ctx, VK_FORMAT_R32G32B32A32_SFLOAT,
                           static_cast<std::uint32_t>(e.width), static_cast<std::uint32_t>(e.height),
@@ -61,40 +63,24 @@ Status Renderer::set_environment(const Environment* environment) {
     vk::destroy_buffer(*st.ctx, buffer);
     return image.status();
   }
-  st.environment = image.value();
+  sky.environment = image.value();
   const Status copied = vk::run_once(*st.ctx, st.commands, [&](VkCommandBuffer cmd) {
-    vk::image_barrier(cmd, st.environment.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                      VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_WRITE_BIT);
+    vk::image_barrier(cmd, sky.environment.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                      VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                                    .imageExtent = {static_cast<std::uint32_t>(e.width),
                                                    static_cast<std::uint32_t>(e.height), 1}};
-    vkCmdCopyBufferToImage(cmd, buffer.buffer, st.environment.image, VK_IMAGE_LAYOUT_GENERAL, 1,
+    vkCmdCopyBufferToImage(cmd, buffer.buffer, sky.environment.image, VK_IMAGE_LAYOUT_GENERAL, 1,
                            &region);
     vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
   });
   vk::destroy_buffer(*st.ctx, buffer);
   if (!copied.ok()) return copied;
-  st.has_environment = environment != nullptr;
-  st.environment_irradiance = irradiance(e);
+  sky.has_environment = environment != nullptr;
+  sky.environment_irradiance = irradiance(e);
   write_scene_images(st);
   return {};
-}
-
-void fill_environment_uniforms(const Renderer::State& st, const View& view,
-                               shader::FrameUniforms& u) {
-  if (!st.has_environment) {
-    u.environment = {0.0f, 0.0f, 0.0f, 0.0f};
-    return;
-  }
-  // The map's radiance scaled by sky_brightness; > 0 marks it in use (a scale of 0 would be the
-  // black sky the analytic model gives for sky_brightness = 0 too).
-  const double scale = view.shading.sky_brightness;
-  u.environment = {static_cast<float>(std::max(scale, 1e-30)), 0.0f, 0.0f, 0.0f};
-  for (std::size_t c = 0; c < 3; ++c) {
-    const auto e = static_cast<float>(scale * st.environment_irradiance[c]);
-    (&u.sky_ambient.x)[c] = e;
-  }
 }
 
 }  // namespace ocean::render

@@ -7,15 +7,19 @@
 // This work is based on: VR-GIS FFT+Perlin, §III (the noise height and normal maps the renderer
 // reads); Olano, M. & Baker, D. (2010) "LEAN mapping" (the first and second moments of the slope
 // filtered together, so the variance the mips remove becomes roughness).
+#include "far_map.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstring>
 #include <string>
 
-#include "../sim/far_noise.h"
+#include "sim/far_noise.h"
 #include "spirv.hpp"
 #include "state.hpp"
+
+OCEAN_RENDER_SPIRV(far_map)  // the map into its image (shaders/far_map.comp)
 
 namespace ocean::render {
 
@@ -23,7 +27,7 @@ namespace {
 
 constexpr VkFormat kFarMapFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 
-void write_source(FarMapPass& pass, const vk::Context& ctx, VkBuffer buffer, VkDeviceSize bytes) {
+void write_source(FarFieldPass& pass, const vk::Context& ctx, VkBuffer buffer, VkDeviceSize bytes) {
   const VkDescriptorBufferInfo info{buffer, 0, bytes};
   const VkWriteDescriptorSet write{.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                                    .dstSet = pass.set,
@@ -37,7 +41,7 @@ void write_source(FarMapPass& pass, const vk::Context& ctx, VkBuffer buffer, VkD
 
 // The image (and the upload path's source buffer) for an N × N map; the old ones are destroyed.
 Status allocate_far_map(Renderer::State& st, std::uint32_t side) {
-  FarMapPass& pass = st.far_map;
+  FarFieldPass& pass = render::pass<FarFieldPass>(st);
   vkDeviceWaitIdle(st.ctx->device);
   vk::destroy_image(*st.ctx, pass.image);
   vk::destroy_buffer(*st.ctx, pass.source);
@@ -68,11 +72,11 @@ Status allocate_far_map(Renderer::State& st, std::uint32_t side) {
   vkUpdateDescriptorSets(st.ctx->device, 1, &write, 0, nullptr);
   write_source(pass, *st.ctx, pass.source.buffer, bytes);
   pass.pending = true;
-  if (st.environment.view != VK_NULL_HANDLE) write_scene_images(st);  // else make() writes it
+  write_scene_images(st);
   return {};
 }
 
-Status create_layouts(FarMapPass& pass, const vk::Context& ctx) {
+Status create_layouts(FarFieldPass& pass, const vk::Context& ctx) {
   const VkDescriptorSetLayoutBinding bindings[2] = {
       {OCEAN_RENDER_FAR_BINDING_SOURCE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 1,
        VK_SHADER_STAGE_COMPUTE_BIT, nullptr},
@@ -129,16 +133,14 @@ Status check_map(const FarNoiseFrame& map) {
 
 // Whether the map holds octave o (R.13b): its cells span at least four texels. Finer octaves
 // alias in the map's point samples; the per-pixel noise draws them.
-bool octave_in_map(const Renderer::State& st, int o) {
-  const FarMapPass& pass = st.far_map;
+bool octave_in_map(const FarFieldPass& pass, int o) {
   const double texel = pass.size_m / pass.resolution;
-  return st.far_noise.cell_m[static_cast<std::size_t>(o)] >= 4.0 * texel;
+  return pass.noise.cell_m[static_cast<std::size_t>(o)] >= 4.0 * texel;
 }
 
 // The octaves the conversion removes from the map: the map's own parameters at its window and
 // time (the split of far_noise_lattice, as the simulation's), the kept octaves' amplitudes 0.
-noise::FarNoiseMapParams removed_octaves(const Renderer::State& st) {
-  const FarMapPass& pass = st.far_map;
+noise::FarNoiseMapParams removed_octaves(const FarFieldPass& pass) {
   constexpr std::array<std::uint32_t, 3> kSeeds = {OCEAN_FAR_SEED0, OCEAN_FAR_SEED1,
                                                    OCEAN_FAR_SEED2};
   noise::FarNoiseMapParams p{};
@@ -146,24 +148,24 @@ noise::FarNoiseMapParams removed_octaves(const Renderer::State& st) {
   const double texel = pass.size_m / pass.resolution;
   for (int o = 0; o < 3; ++o) {
     const auto i = static_cast<std::size_t>(o);
-    const double s = st.far_noise.cell_m[i];
+    const double s = pass.noise.cell_m[i];
     const FarNoiseLattice l =
-        far_noise_lattice(st.far_noise, o, pass.origin_m[0], pass.origin_m[1], pass.time_s);
+        far_noise_lattice(pass.noise, o, pass.origin_m[0], pass.origin_m[1], pass.time_s);
     p.octave[i] = {.origin_u = l.rest_u,
                    .origin_v = l.rest_v,
                    .shift_u = l.cells_u,
                    .shift_v = l.cells_v,
                    .step = static_cast<float>(texel / s),
-                   .amplitude_m = octave_in_map(st, o)
+                   .amplitude_m = octave_in_map(pass, o)
                                       ? 0.0f
-                                      : static_cast<float>(st.far_noise.amplitude_m[i]),
+                                      : static_cast<float>(pass.noise.amplitude_m[i]),
                    .inv_cell = static_cast<float>(1.0 / s),
                    .seed = kSeeds[i]};
   }
   return p;
 }
 
-void place(FarMapPass& pass, const FarNoiseFrame& map, double time_s) {
+void place(FarFieldPass& pass, const FarNoiseFrame& map, double time_s) {
   pass.origin_m = map.origin_m;
   pass.size_m = map.size_m;
   pass.resolution = map.resolution;
@@ -172,23 +174,23 @@ void place(FarMapPass& pass, const FarNoiseFrame& map, double time_s) {
 
 }  // namespace
 
-Status create_far_map(Renderer::State& st) {
-  FarMapPass& pass = st.far_map;
+Status FarFieldPass::create(Renderer::State& st) {
+  FarFieldPass& pass = *this;
   const vk::Context& ctx = *st.ctx;
   // Linear with mips, clamped (the window does not repeat), anisotropic where the device is.
-  Result<VkSampler> sampler = make_sampler(ctx, true, true, false, ctx.max_anisotropy);
-  if (!sampler.ok()) return sampler.status();
-  pass.sampler = sampler.value();
+  Result<VkSampler> linear = make_sampler(ctx, true, true, false, ctx.max_anisotropy);
+  if (!linear.ok()) return linear.status();
+  pass.sampler = linear.value();
   if (Status s = create_layouts(pass, ctx); !s.ok()) return s;
-  Result<vk::ComputePipeline> pipeline =
+  Result<vk::ComputePipeline> compute =
       vk::create_compute_pipeline(ctx, spirv::far_map(), pass.layout);
-  if (!pipeline.ok()) return pipeline.status();
-  pass.pipeline = pipeline.value();
+  if (!compute.ok()) return compute.status();
+  pass.pipeline = compute.value();
   return allocate_far_map(st, 1);
 }
 
-void destroy_far_map(Renderer::State& st) {
-  FarMapPass& pass = st.far_map;
+void FarFieldPass::destroy(Renderer::State& st) {
+  FarFieldPass& pass = *this;
   const VkDevice d = st.ctx->device;
   vk::destroy_pipeline(*st.ctx, pass.pipeline);
   vk::destroy_image(*st.ctx, pass.image);
@@ -199,15 +201,20 @@ void destroy_far_map(Renderer::State& st) {
   if (pass.sampler != VK_NULL_HANDLE) vkDestroySampler(d, pass.sampler, nullptr);
 }
 
-Status upload_far_map(Renderer::State& st, const FarNoiseFrame& map, double time_s) {
+void FarFieldPass::scene_images(const Renderer::State&, SceneImages& images) const {
+  images.add(OCEAN_RENDER_BINDING_FAR_MAP, images.surface_stages,
+             {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
+}
+
+Status FarFieldPass::stage(Renderer::State& st, const FarNoiseFrame& map, double map_time_s) {
   if (Status s = check_map(map); !s.ok()) return s;
   const auto n = static_cast<std::size_t>(map.resolution);
   if (map.height_slope.size() != 3 * n * n)
     return invalid_argument("renderer: the far-field noise map holds " +
                             std::to_string(map.height_slope.size()) + " values for " +
                             std::to_string(n) + "² texels (3 each expected)");
-  FarMapPass& pass = st.far_map;
-  place(pass, map, time_s);
+  FarFieldPass& pass = *this;
+  place(pass, map, map_time_s);
   if (n == 0) return {};
   if (pass.side != n) {
     if (Status s = allocate_far_map(st, static_cast<std::uint32_t>(n)); !s.ok()) {
@@ -222,12 +229,12 @@ Status upload_far_map(Renderer::State& st, const FarNoiseFrame& map, double time
 }
 
 Status Renderer::set_far_noise(const Frame& frame) {
-  return upload_far_map(*state_, frame.far_noise, frame.time_s);
+  return pass<FarFieldPass>(*state_).stage(*state_, frame.far_noise, frame.time_s);
 }
 
 Status Renderer::use_simulation_images(const vk::SimulationImages& images, const Frame& frame) {
   State& st = *state_;
-  FarMapPass& pass = st.far_map;
+  FarFieldPass& pass = render::pass<FarFieldPass>(st);
   const FarNoiseFrame& map = frame.far_noise;
   if (Status s = check_map(map); !s.ok()) return s;
   if (static_cast<std::uint32_t>(map.resolution) != images.far_noise_resolution ||
@@ -251,8 +258,8 @@ Status Renderer::use_simulation_images(const vk::SimulationImages& images, const
   return {};
 }
 
-void record_far_map(Renderer::State& st, VkCommandBuffer cmd) {
-  FarMapPass& pass = st.far_map;
+void FarFieldPass::upload(Renderer::State&, VkCommandBuffer cmd) {
+  FarFieldPass& pass = *this;
   if (!pass.pending) return;
   pass.pending = false;
   const std::uint32_t n = pass.side;
@@ -278,7 +285,7 @@ void record_far_map(Renderer::State& st, VkCommandBuffer cmd) {
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.pipeline.pipeline);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pass.layout, 0, 1, &pass.set, 0,
                           nullptr);
-  const noise::FarNoiseMapParams removed = removed_octaves(st);
+  const noise::FarNoiseMapParams removed = removed_octaves(pass);
   vkCmdPushConstants(cmd, pass.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof(removed), &removed);
   const std::uint32_t groups = (n + OCEAN_RENDER_FAR_TILE - 1) / OCEAN_RENDER_FAR_TILE;
   vkCmdDispatch(cmd, groups, groups, 1);
@@ -299,16 +306,28 @@ void record_far_map(Renderer::State& st, VkCommandBuffer cmd) {
               VK_PIPELINE_STAGE_VERTEX_SHADER_BIT | VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
 }
 
-void fill_far_uniforms(const Renderer::State& st, shader::FrameUniforms& u) {
-  const FarMapPass& pass = st.far_map;
+void FarFieldPass::fill_uniforms(const Renderer::State& st, const View& view,
+                                 shader::FrameUniforms& u) const {
+  const FarFieldNoise& far = noise;
+  const auto f = [](double x) { return static_cast<float>(x); };
+  u.far_field = {
+      .cell_m = {f(far.cell_m[0]), f(far.cell_m[1]), f(far.cell_m[2]), 0.0f},
+      .amplitude_m = {f(far.amplitude_m[0]), f(far.amplitude_m[1]), f(far.amplitude_m[2]), 0.0f},
+      .slope_variance = {f(far.slope_variance[0]), f(far.slope_variance[1]),
+                         f(far.slope_variance[2]), 0.0f},
+      .near_m = f(view.far_field.near_m),
+      .far_m = f(view.far_field.far_m),
+      .enabled = u.cascade_count > 0.0f ? 1.0f : 0.0f,
+      .far_pad = 0.0f};
+  const FarFieldPass& pass = *this;
   const double ox = st.selection.grid_centre_x_m, oz = st.selection.grid_centre_z_m;
   for (int o = 0; o < 3; ++o) {  // the lattice at the frame's origin O and time t (R.13b)
-    const FarNoiseLattice l = far_noise_lattice(st.far_noise, o, ox, oz, pass.time_s);
+    const FarNoiseLattice l = far_noise_lattice(noise, o, ox, oz, pass.time_s);
     u.far_octaves[o] = {
         .rest_u = l.rest_u, .rest_v = l.rest_v, .cells_u = l.cells_u, .cells_v = l.cells_v};
   }
   const bool on = pass.resolution > 0 && pass.side == static_cast<std::uint32_t>(pass.resolution);
-  const auto in_map = [&](int o) { return on && octave_in_map(st, o) ? 1.0f : 0.0f; };
+  const auto in_map = [&](int o) { return on && octave_in_map(pass, o) ? 1.0f : 0.0f; };
   u.far_map = {.in_map = {in_map(0), in_map(1), in_map(2), 0.0f},
                .origin_m = {static_cast<float>(pass.origin_m[0] - ox),
                             static_cast<float>(pass.origin_m[1] - oz)},

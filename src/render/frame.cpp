@@ -23,8 +23,7 @@ void fill_frame_uniforms(const Renderer::State& st, const View& view, const lod:
                          shader::FrameUniforms& u) {
   fill_uniforms(st, view, vp, u);
   fill_origin_uniforms(st, view, u);
-  fill_environment_uniforms(st, view, u);
-  fill_underwater_uniforms(st, view, u);
+  for_each_pass(st, [&](const auto& p) { p.fill_uniforms(st, view, u); });
 }
 
 Result<std::uint32_t> select_frame(Renderer::State& st, const View& view, lod::Vec3 lod_position,
@@ -50,7 +49,7 @@ Result<std::uint32_t> select_frame(Renderer::State& st, const View& view, lod::V
   inst[skirt_instance] = {
       .centre_x_m = 0.0f, .centre_z_m = 0.0f, .size_m = 1.0f, .level = kSkirtLevel};
   if (Status s = write_skirt_vertices(st, view, skirt_extent_m(view, st.hs_m)); !s.ok()) return s;
-  update_sky(st, view.shading);
+  pass<SkyPass>(st).update(view.shading);
   return skirt_instance;
 }
 
@@ -59,20 +58,7 @@ void begin_frame(Renderer::State& st, VkCommandBuffer cmd) {
     vkCmdResetQueryPool(cmd, st.timestamps.pool, 0, 2);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, st.timestamps.pool, 0);
   }
-  if (st.lut_pending) {
-    vk::image_barrier(cmd, st.sky_lut.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                      VK_ACCESS_TRANSFER_WRITE_BIT);
-    const VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                                   .imageExtent = {Sky::kLutWidth, Sky::kLutHeight, 1}};
-    vkCmdCopyBufferToImage(cmd, st.lut_staging.buffer, st.sky_lut.image, VK_IMAGE_LAYOUT_GENERAL, 1,
-                           &region);
-    vk::barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT);
-    st.lut_pending = false;
-  }
-  if (st.local_pending) record_local_upload(st, cmd);
-  if (st.damping_pending) record_damping_upload(st, cmd);
-  record_far_map(st, cmd);
+  for_each_pass(st, [&](auto& p) { p.upload(st, cmd); });
   if (st.upload_pending) {
     record_uploads(st, cmd);
     st.upload_pending = false;
@@ -137,13 +123,14 @@ void record_scene(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                      sizeof(sky_push), &sky_push);
   vkCmdDraw(cmd, pipelines.sky_vertices, 1, 0, 0);
   ++stats.draw_calls;
+  const FrameContext frame{.view = view, .stats = stats, .skirt_instance = skirt_instance};
   if (view.sphere.enabled) {  // the sea on a sphere (R.30–R.38) instead of the flat patches
-    draw_sphere(st, cmd, stats);
+    pass<SpherePass>(st).record(st, cmd, frame);
   } else {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipelines.ocean);
-    push_seabed(st, cmd, view);
+    pass<SeabedPass>(st).record(st, cmd, frame);
     const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
-    if (tessellated) record_tessellated(st, cmd, view, stats);  // R.40–R.42, tessellation.cpp
+    if (tessellated) pass<TessellationPass>(st).record(st, cmd, frame);  // R.40–R.42
     record_patches(st, cmd, skirt_instance, &stats, !tessellated);
     stats.patches_per_level = st.selection.patches_per_level;
   }
@@ -172,46 +159,13 @@ void record_patches(Renderer::State& st, VkCommandBuffer cmd, std::uint32_t skir
   stats->triangles += st.skirt_count / 3;
 }
 
-void finish_frame(Renderer::State& st, VkCommandBuffer cmd, double exposure,
+void finish_frame(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                   VkImageLayout hdr_layout, VkPipelineStageFlags src_stage,
                   VkAccessFlags src_access, RenderStats& stats) {
-  const std::uint32_t w = st.hdr.width, h = st.hdr.height;
   vk::image_barrier(cmd, st.hdr.image, hdr_layout, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                     src_stage, src_access, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                     VK_ACCESS_SHADER_READ_BIT);
-  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_UNDEFINED,
-                    VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
-                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-  const VkRenderingAttachmentInfo out{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                      .imageView = st.srgb.view,
-                                      .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                      .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
-                                      .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-  const VkRenderingInfo tonemap{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                                .renderArea = {{0, 0}, {w, h}},
-                                .layerCount = 1,
-                                .colorAttachmentCount = 1,
-                                .pColorAttachments = &out};
-  vkCmdBeginRendering(cmd, &tonemap);
-  const VkViewport straight{0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
-  const VkRect2D scissor{{0, 0}, {w, h}};
-  vkCmdSetViewport(cmd, 0, 1, &straight);
-  vkCmdSetScissor(cmd, 0, 1, &scissor);
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.tonemap_pipeline_layout, 0, 1,
-                          &st.tonemap_set, 0, nullptr);
-  const shader::TonemapPush push{static_cast<float>(exposure)};
-  vkCmdPushConstants(cmd, st.tonemap_pipeline_layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
-                     &push);
-  vkCmdDraw(cmd, 3, 1, 0, 0);
-  ++stats.draw_calls;
-  vkCmdEndRendering(cmd);
-  vk::image_barrier(cmd, st.srgb.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-                    VK_ACCESS_TRANSFER_READ_BIT);
+  pass<PostPass>(st).record(st, cmd, {.view = view, .stats = stats});
   if (st.has_timestamps)
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, st.timestamps.pool, 1);
 }
@@ -222,7 +176,7 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
   if (Status s = prepare(view); !s.ok()) return s;  // a one-off submission of its own
   if (Status s = check_tessellation(*st.ctx, view.tessellation); !s.ok()) return s;
   const bool tessellated = view.tessellation.mesh == MeshMode::tessellation;
-  if ((view.sphere.enabled || tessellated) && st.motion.enabled)
+  if ((view.sphere.enabled || tessellated) && pass<MotionPass>(st).enabled)
     return unsupported(std::string("motion vectors: not drawn for ") +
                        (tessellated ? "the tessellated mesh" : "the sea on a sphere"));
   if (view.sphere.enabled && tessellated)
@@ -251,8 +205,8 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                {.sky = st.sky, .ocean = view.debug == DebugView::wireframe ? st.wire : st.ocean},
                sky_push, skirt_instance.value(), stats_);
   vkCmdEndRendering(cmd);
-  if (st.motion.enabled) record_motion(st, cmd, view.camera, skirt_instance.value());
-  finish_frame(st, cmd, view.shading.exposure, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  pass<MotionPass>(st).record(st, cmd, {view, stats_, skirt_instance.value()});
+  finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                stats_);
   return {};

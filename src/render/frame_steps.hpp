@@ -50,9 +50,9 @@ void record_motion(Renderer::State& st, VkCommandBuffer cmd, const lod::Camera& 
                    std::uint32_t skirt_instance);
 // stereo.cpp: a column-major double matrix as the shaders' float one.
 shader::mat4 to_mat4(const std::array<double, 16>& m);
-// Tone maps st.hdr (in `hdr_layout`, written by `src_stage`/`src_access`) into st.srgb, leaves
-// it in TRANSFER_SRC_OPTIMAL and writes the end timestamp.
-void finish_frame(Renderer::State& st, VkCommandBuffer cmd, double exposure,
+// Tone maps st.hdr (in `hdr_layout`, written by `src_stage`/`src_access`) into st.srgb with the
+// post pass, leaves it in TRANSFER_SRC_OPTIMAL and writes the end timestamp.
+void finish_frame(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                   VkImageLayout hdr_layout, VkPipelineStageFlags src_stage,
                   VkAccessFlags src_access, RenderStats& stats);
 

@@ -28,7 +28,7 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   st.horizontal_reach_m = surface.horizontal_reach_m;
   st.choppiness = surface.choppiness;
   st.foam_ramp = surface.foam_ramp;
-  st.far_noise = surface.far_noise;
+  pass<FarFieldPass>(st).noise = surface.far_noise;
   st.cascades = static_cast<int>(cascade_count);
   const int n = surface.resolution;
   for (int c = 0; c < st.cascades; ++c) {
@@ -96,7 +96,7 @@ Status Renderer::upload(const Frame& frame) {
     std::memcpy(out, c.packed_mips.data(), chain * 4);
     out += chain * 4;
   }
-  if (Status s = upload_far_map(st, frame.far_noise, frame.time_s); !s.ok()) return s;
+  if (Status s = pass<FarFieldPass>(st).stage(st, frame.far_noise, frame.time_s); !s.ok()) return s;
   if (st.borrowed) {
     st.borrowed = false;
     st.displacement_view = st.displacement.view;

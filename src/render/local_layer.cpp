@@ -1,8 +1,9 @@
-// The local layer as the renderer samples it (docs/rendering.md R.19): a 2-D RGBA16F array of two
-// layers per cell, (Dx, h, Dz, 0) of the layer and (Δs_x, Δs_z, Δf, 0), what the layer changes in
-// the surface's slope and foam, filled through a staging buffer from the composited local surface
-// (set_local_surface, M.7.9–M.7.10) or from the layer alone (set_local_layer). Until the first
-// call it is 1×1 of zeros and the uniforms say "no layer", so the descriptor is always valid.
+// The local layer's pass (local_layer.hpp, docs/rendering.md R.19): its image filled through a
+// staging buffer from the composited local surface (set_local_surface, M.7.9–M.7.10) or from the
+// layer alone (set_local_layer). Until the first call it is 1×1 of zeros and the uniforms say "no
+// layer", so the descriptor is always valid.
+#include "local_layer.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -20,23 +21,24 @@ constexpr std::uint32_t kLayers = 2;
 
 // The image and its staging buffer for a side × side layer; the old ones are destroyed first.
 Status allocate_local(Renderer::State& st, std::uint32_t side) {
+  LocalSurfacePass& local = pass<LocalSurfacePass>(st);
   vkDeviceWaitIdle(st.ctx->device);
-  vk::destroy_image(*st.ctx, st.local_image);
-  vk::destroy_buffer(*st.ctx, st.local_staging);
-  st.local_side = 0;
+  vk::destroy_image(*st.ctx, local.image);
+  vk::destroy_buffer(*st.ctx, local.staging);
+  local.side = 0;
   Result<vk::Image> image =
       vk::create_image_array(*st.ctx, VK_FORMAT_R16G16B16A16_SFLOAT, side, kLayers, 1,
                              VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
   if (!image.ok()) return image.status();
-  st.local_image = image.value();
+  local.image = image.value();
   const std::size_t bytes = static_cast<std::size_t>(side) * side * 8 * kLayers;
   Result<vk::Buffer> staging =
       vk::create_buffer(*st.ctx, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
   if (!staging.ok()) return staging.status();
-  st.local_staging = staging.value();
-  std::memset(st.local_staging.mapped, 0, bytes);
-  st.local_side = side;
-  st.local_pending = true;
+  local.staging = staging.value();
+  std::memset(local.staging.mapped, 0, bytes);
+  local.side = side;
+  local.pending = true;
   return {};
 }
 
@@ -50,9 +52,9 @@ Status prepare_grid(Renderer::State& st, const std::array<double, 2>& origin_m, 
     return invalid_argument("local layer: " + std::to_string(values) + " values for " +
                             std::to_string(side) + "² cells (" + std::to_string(per_cell) +
                             " each expected)");
-  if (side != st.local_side) {
+  if (side != pass<LocalSurfacePass>(st).side) {
     if (Status s = allocate_local(st, side); !s.ok()) {
-      st.local.resolution = 0.0f;
+      pass<LocalSurfacePass>(st).uniforms.resolution = 0.0f;
       (void)allocate_local(st, 1);  // keep a valid, empty image behind the descriptor
       write_scene_images(st);
       return s;
@@ -64,10 +66,11 @@ Status prepare_grid(Renderer::State& st, const std::array<double, 2>& origin_m, 
 
 void finish(Renderer::State& st, const std::array<double, 2>& origin_m, double size_m,
             int resolution) {
-  st.local_origin_m = origin_m;
-  st.local.size_m = static_cast<float>(size_m);
-  st.local.resolution = static_cast<float>(resolution);
-  st.local_pending = true;
+  LocalSurfacePass& local = pass<LocalSurfacePass>(st);
+  local.origin_m = origin_m;
+  local.uniforms.size_m = static_cast<float>(size_m);
+  local.uniforms.resolution = static_cast<float>(resolution);
+  local.pending = true;
 }
 
 // The surface gradient as the water shader sums it, (n_x/n_y, n_z/n_y), from a unit normal whose
@@ -95,15 +98,48 @@ void write_displacement(std::uint16_t* out, std::size_t i, const float* d) {
 
 }  // namespace
 
-Status create_local_layer(Renderer::State& st) {
-  st.local = {};
+Status LocalSurfacePass::create(Renderer::State& st) {
+  Result<VkSampler> linear = make_sampler(*st.ctx, true, false, false, 1.0f);
+  if (!linear.ok()) return linear.status();
+  sampler = linear.value();
+  uniforms = {};
   return allocate_local(st, 1);
+}
+
+void LocalSurfacePass::destroy(Renderer::State& st) {
+  vk::destroy_image(*st.ctx, image);
+  vk::destroy_buffer(*st.ctx, staging);
+  if (sampler != VK_NULL_HANDLE) vkDestroySampler(st.ctx->device, sampler, nullptr);
+}
+
+void LocalSurfacePass::scene_images(const Renderer::State&, SceneImages& images) const {
+  images.add(OCEAN_RENDER_BINDING_LOCAL, images.surface_stages,
+             {sampler, image.view, VK_IMAGE_LAYOUT_GENERAL});
+}
+
+void LocalSurfacePass::fill_uniforms(const Renderer::State& st, const View&,
+                                     shader::FrameUniforms& u) const {
+  // Its origin relative to the frame's origin O, as every position (R.16).
+  const lod::LodSelection& sel = st.selection;
+  u.local = uniforms;
+  u.local.origin_m = {static_cast<float>(origin_m[0] - sel.grid_centre_x_m),
+                      static_cast<float>(origin_m[1] - sel.grid_centre_z_m)};
+}
+
+void LocalSurfacePass::upload(Renderer::State&, VkCommandBuffer cmd) {
+  if (!pending) return;
+  record_world_grid_upload(cmd, staging.buffer, image.image, side, kLayers);
+  pending = false;
+}
+
+void Renderer::set_calm(bool calm) {
+  pass<LocalSurfacePass>(*state_).uniforms.calm = calm ? 1.0f : 0.0f;
 }
 
 Status Renderer::set_local_layer(const LocalLayerGrid& grid) {
   State& st = *state_;
   if (grid.displacement.empty()) {  // no layer: the uniforms switch it off; the image may stay
-    st.local.resolution = 0.0f;
+    pass<LocalSurfacePass>(st).uniforms.resolution = 0.0f;
     return {};
   }
   if (Status s = prepare_grid(st, grid.origin_m, grid.size_m, grid.resolution,
@@ -115,7 +151,7 @@ Status Renderer::set_local_layer(const LocalLayerGrid& grid) {
   const double cell_m = grid.size_m / n;
   const auto j_start = static_cast<float>(st.foam_ramp[0]);
   const auto j_range = static_cast<float>(st.foam_ramp[0] - st.foam_ramp[1]);
-  auto* out = static_cast<std::uint16_t*>(st.local_staging.mapped);
+  auto* out = static_cast<std::uint16_t*>(pass<LocalSurfacePass>(st).staging.mapped);
   const auto at = [&](int col, int row) {
     return grid.displacement.data() +
            3 * (static_cast<std::size_t>(row) * static_cast<std::size_t>(n) +
@@ -156,7 +192,7 @@ Status Renderer::set_local_layer(const LocalLayerGrid& grid) {
 Status Renderer::set_local_surface(const LocalSurfaceFrame& local) {
   State& st = *state_;
   if (local.resolution == 0) {
-    st.local.resolution = 0.0f;
+    pass<LocalSurfacePass>(st).uniforms.resolution = 0.0f;
     return {};
   }
   const auto n = static_cast<std::size_t>(std::max(local.resolution, 0));
@@ -169,7 +205,7 @@ Status Renderer::set_local_surface(const LocalSurfaceFrame& local) {
                               local.layer_displacement.size(), 3);
       !s.ok())
     return s;
-  auto* out = static_cast<std::uint16_t*>(st.local_staging.mapped);
+  auto* out = static_cast<std::uint16_t*>(pass<LocalSurfacePass>(st).staging.mapped);
   for (std::size_t i = 0; i < cells; ++i) {
     write_displacement(out, i, local.layer_displacement.data() + 3 * i);
     // What the layer changes (R.19): the composited surface's slope less the sea's on the same
@@ -182,12 +218,6 @@ Status Renderer::set_local_surface(const LocalSurfaceFrame& local) {
   }
   finish(st, local.origin_m, local.size_m, local.resolution);
   return {};
-}
-
-void record_local_upload(Renderer::State& st, VkCommandBuffer cmd) {
-  record_world_grid_upload(cmd, st.local_staging.buffer, st.local_image.image, st.local_side,
-                           kLayers);
-  st.local_pending = false;
 }
 
 }  // namespace ocean::render

@@ -20,7 +20,7 @@ namespace {
 constexpr VkFormat kMotionFormat = VK_FORMAT_R16G16_SFLOAT;
 
 Status create_motion_objects(Renderer::State& st) {
-  MotionPass& mp = st.motion;
+  MotionPass& mp = pass<MotionPass>(st);
   if (mp.ocean != VK_NULL_HANDLE) return {};
   const VkDevice d = st.ctx->device;
   const VkDescriptorSetLayoutBinding binding{OCEAN_MOTION_BINDING_PREVIOUS,
@@ -107,13 +107,13 @@ Status Renderer::set_motion_vectors(bool on) {
   if (on) {
     if (Status s = create_motion_objects(st); !s.ok()) return s;
   }
-  st.motion.enabled = on;
-  st.motion.previous_valid = false;
+  pass<MotionPass>(st).enabled = on;
+  pass<MotionPass>(st).previous_valid = false;
   return {};
 }
 
 Status prepare_motion(Renderer::State& st) {
-  MotionPass& mp = st.motion;
+  MotionPass& mp = pass<MotionPass>(st);
   if (!mp.enabled) return {};
   if (st.borrowed)
     return unsupported(
@@ -157,7 +157,7 @@ namespace {
 
 // displacement → previous, both GENERAL, after the vertex shaders' reads.
 void keep_displacement(Renderer::State& st, VkCommandBuffer cmd, bool first) {
-  MotionPass& mp = st.motion;
+  MotionPass& mp = pass<MotionPass>(st);
   if (first)
     vk::image_barrier(cmd, mp.previous.image, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
                       VK_PIPELINE_STAGE_VERTEX_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
@@ -180,7 +180,7 @@ void keep_displacement(Renderer::State& st, VkCommandBuffer cmd, bool first) {
 
 void record_motion(Renderer::State& st, VkCommandBuffer cmd, const lod::Camera& camera,
                    std::uint32_t skirt_instance) {
-  MotionPass& mp = st.motion;
+  MotionPass& mp = pass<MotionPass>(st);
   // The first frame has no previous one: itself (no motion).
   if (!mp.previous_valid) keep_displacement(st, cmd, true), mp.camera = camera;
   shader::MotionPush push{};
@@ -209,7 +209,7 @@ void record_motion(Renderer::State& st, VkCommandBuffer cmd, const lod::Camera& 
 }
 
 void destroy_motion(Renderer::State& st, bool all) {
-  MotionPass& mp = st.motion;
+  MotionPass& mp = pass<MotionPass>(st);
   vk::destroy_image(*st.ctx, mp.target);
   if (!all) return;
   vk::destroy_image(*st.ctx, mp.previous);
@@ -222,10 +222,18 @@ void destroy_motion(Renderer::State& st, bool all) {
   mp = {};
 }
 
+void MotionPass::destroy(Renderer::State& st) { destroy_motion(st, true); }
+void MotionPass::release_targets(Renderer::State& st) { destroy_motion(st, false); }
+
+void MotionPass::record(Renderer::State& st, VkCommandBuffer cmd, const FrameContext& frame) {
+  if (enabled) record_motion(st, cmd, frame.view.camera, frame.skirt_instance);
+}
+
 Status Renderer::read_motion(std::vector<float>& xy) {
   State& st = *state_;
-  const vk::Image2D& target = st.motion.target;
-  if (!st.motion.enabled || !st.motion.previous_valid || target.image == VK_NULL_HANDLE)
+  const MotionPass& mp = pass<MotionPass>(st);
+  const vk::Image2D& target = mp.target;
+  if (!mp.enabled || !mp.previous_valid || target.image == VK_NULL_HANDLE)
     return invalid_argument("read_motion: no frame drawn with motion vectors on");
   const std::uint32_t w = target.width, h = target.height;
   const Status s = vk::run_once(*st.ctx, st.commands, [&](VkCommandBuffer cmd) {

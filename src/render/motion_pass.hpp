@@ -7,10 +7,11 @@
 
 #include "ocean/lod.hpp"
 #include "ocean/vk.hpp"
+#include "pass.hpp"
 
 namespace ocean::render {
 
-struct MotionPass {
+struct MotionPass : Pass {
   bool enabled = false;
   vk::Image2D target;           // RG16F, NDC motion (now − previous), the renderer's size
   vk::Image previous;           // the displacement array of the previous frame (GENERAL)
@@ -21,6 +22,11 @@ struct MotionPass {
   VkDescriptorSet set = VK_NULL_HANDLE;
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE;
+
+  void destroy(Renderer::State& st);          // everything
+  void release_targets(Renderer::State& st);  // the target and the previous frame
+  // After the HDR pass, with motion vectors on: the motion pass over st.depth (record_motion).
+  void record(Renderer::State& st, VkCommandBuffer cmd, const FrameContext& frame);
 };
 
 }  // namespace ocean::render

@@ -8,10 +8,11 @@
 #include <vector>
 
 #include "ocean/render.hpp"
+#include "pass.hpp"
 
 namespace ocean::render {
 
-struct ObjectPass {
+struct ObjectPass : Pass {
   struct MeshBuffers {
     vk::Buffer vertices, indices;  // interleaved (position, normal) floats; uint32 indices
     std::uint32_t index_count = 0;
@@ -20,10 +21,19 @@ struct ObjectPass {
   VkPipelineLayout layout = VK_NULL_HANDLE;
   VkPipeline pipeline = VK_NULL_HANDLE;
   std::vector<MeshBuffers> meshes;
+  // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
+  // coverage) and depth while there are meshes, 1×1 otherwise.
+  vk::Image2D reflection, reflection_depth;
+
+  // The pipeline layout (the scene set, ObjectPush) and the pipeline.
+  Status create(Renderer::State& st);
+  void destroy(Renderer::State& st);
+  // The reflection target at the picture's size (size_reflection).
+  Status resize(Renderer::State& st);
+  void release_targets(Renderer::State& st);
+  void scene_images(const Renderer::State& st, SceneImages& images) const;  // the reflection
 };
 
-// The pipeline layout (the scene set, ObjectPush) and the pipeline; called by create_pipelines.
-Status create_object_pipeline(Renderer::State& st);
 // An object pipeline on that layout from these shaders, drawing the views of `view_mask`
 // (0: one view; the stereo pass builds its multiview one this way). Owned by the caller.
 Result<VkPipeline> make_object_pipeline(Renderer::State& st, std::span<const std::uint32_t> vert,
@@ -42,8 +52,6 @@ void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& vie
                        RenderStats& stats);
 // invalid_argument for an instance whose mesh index is not below the meshes set.
 Status validate_objects(const Renderer::State& st, const View& view);
-// seabed.cpp: pushes view.seabed (R.22–R.23) for the ocean pipeline, which must be bound.
-void push_seabed(const Renderer::State& st, VkCommandBuffer cmd, const View& view);
 // Releases the meshes (and, with `all`, the pipeline and its layout).
 void destroy_objects(Renderer::State& st, bool all);
 

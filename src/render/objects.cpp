@@ -32,28 +32,26 @@ Result<VkPipeline> make_object_pipeline(Renderer::State& st, std::span<const std
       .pVertexAttributeDescriptions = attributes};
   return make_pipeline(*st.ctx, {.vert = v.value(),
                                  .frag = f.value(),
-                                 .layout = st.objects.layout,
+                                 .layout = pass<ObjectPass>(st).layout,
                                  .vertex_input = &input,
                                  .view_mask = view_mask});
 }
 
-Status create_object_pipeline(Renderer::State& st) {
+Status ObjectPass::create(Renderer::State& st) {
   const VkPushConstantRange push{VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
                                  sizeof(shader::ObjectPush)};
-  const VkPipelineLayoutCreateInfo layout{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-                                          .setLayoutCount = 1,
-                                          .pSetLayouts = &st.scene_layout,
-                                          .pushConstantRangeCount = 1,
-                                          .pPushConstantRanges = &push};
-  if (Status s =
-          vk::check(vkCreatePipelineLayout(st.ctx->device, &layout, nullptr, &st.objects.layout),
-                    "vkCreatePipelineLayout");
+  const VkPipelineLayoutCreateInfo info{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                        .setLayoutCount = 1,
+                                        .pSetLayouts = &st.scene_layout,
+                                        .pushConstantRangeCount = 1,
+                                        .pPushConstantRanges = &push};
+  if (Status s = vk::check(vkCreatePipelineLayout(st.ctx->device, &info, nullptr, &layout),
+                           "vkCreatePipelineLayout");
       !s.ok())
     return s;
-  Result<VkPipeline> pipeline =
-      make_object_pipeline(st, spirv::object_vert(), spirv::object_frag(), 0);
-  if (!pipeline.ok()) return pipeline.status();
-  st.objects.pipeline = pipeline.value();
+  Result<VkPipeline> mono = make_object_pipeline(st, spirv::object_vert(), spirv::object_frag(), 0);
+  if (!mono.ok()) return mono.status();
+  pipeline = mono.value();
   return {};
 }
 
@@ -87,30 +85,32 @@ Status Renderer::set_meshes(std::span<const Mesh> meshes) {
     b.indices = ib.value();
     b.index_count = static_cast<std::uint32_t>(m.indices.size());
     b.material = m.material;
-    st.objects.meshes.push_back(b);
+    pass<ObjectPass>(st).meshes.push_back(b);
   }
   return size_reflection(st);  // the objects' reflections (R.53)
 }
 
 Status validate_objects(const Renderer::State& st, const View& view) {
+  const std::size_t meshes = pass<ObjectPass>(st).meshes.size();
   for (std::size_t i = 0; i < view.objects.size(); ++i)
-    if (view.objects[i].mesh >= st.objects.meshes.size())
-      return invalid_argument(
-          "objects[" + std::to_string(i) + "].mesh = " + std::to_string(view.objects[i].mesh) +
-          " is not one of the " + std::to_string(st.objects.meshes.size()) + " meshes set");
+    if (view.objects[i].mesh >= meshes)
+      return invalid_argument("objects[" + std::to_string(i) +
+                              "].mesh = " + std::to_string(view.objects[i].mesh) +
+                              " is not one of the " + std::to_string(meshes) + " meshes set");
   return {};
 }
 
 void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, RenderStats& stats,
                     VkPipeline pipeline, bool mirrored) {
   if (view.objects.empty()) return;
+  const ObjectPass& op = pass<ObjectPass>(st);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                    pipeline != VK_NULL_HANDLE ? pipeline : st.objects.pipeline);
-  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.objects.layout, 0, 1,
-                          &st.scene_set, 0, nullptr);
+                    pipeline != VK_NULL_HANDLE ? pipeline : op.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, op.layout, 0, 1, &st.scene_set, 0,
+                          nullptr);
   const VkDeviceSize zero = 0;
   for (const ObjectInstance& o : view.objects) {
-    const ObjectPass::MeshBuffers& m = st.objects.meshes[o.mesh];
+    const ObjectPass::MeshBuffers& m = op.meshes[o.mesh];
     shader::ObjectPush push{};
     // Positions the GPU sees are relative to the frame's origin O (R.16): the translation moves
     // by −O in double before it becomes float.
@@ -124,9 +124,8 @@ void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, 
                           static_cast<float>(m.material.metallic)};
     push.roughness_pad = {static_cast<float>(m.material.roughness), mirrored ? 1.0f : 0.0f, 0.0f,
                           0.0f};
-    vkCmdPushConstants(cmd, st.objects.layout,
-                       VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push),
-                       &push);
+    vkCmdPushConstants(cmd, op.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                       sizeof(push), &push);
     vkCmdBindVertexBuffers(cmd, 0, 1, &m.vertices.buffer, &zero);
     vkCmdBindIndexBuffer(cmd, m.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
     vkCmdDrawIndexed(cmd, m.index_count, 1, 0, 0, 0);
@@ -136,18 +135,19 @@ void record_objects(Renderer::State& st, VkCommandBuffer cmd, const View& view, 
 }
 
 void destroy_objects(Renderer::State& st, bool all) {
-  for (ObjectPass::MeshBuffers& m : st.objects.meshes) {
+  ObjectPass& op = pass<ObjectPass>(st);
+  for (ObjectPass::MeshBuffers& m : op.meshes) {
     vk::destroy_buffer(*st.ctx, m.vertices);
     vk::destroy_buffer(*st.ctx, m.indices);
   }
-  st.objects.meshes.clear();
+  op.meshes.clear();
   if (!all) return;
-  if (st.objects.pipeline != VK_NULL_HANDLE)
-    vkDestroyPipeline(st.ctx->device, st.objects.pipeline, nullptr);
-  if (st.objects.layout != VK_NULL_HANDLE)
-    vkDestroyPipelineLayout(st.ctx->device, st.objects.layout, nullptr);
-  st.objects.pipeline = VK_NULL_HANDLE;
-  st.objects.layout = VK_NULL_HANDLE;
+  if (op.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(st.ctx->device, op.pipeline, nullptr);
+  if (op.layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(st.ctx->device, op.layout, nullptr);
+  op.pipeline = VK_NULL_HANDLE;
+  op.layout = VK_NULL_HANDLE;
 }
+
+void ObjectPass::destroy(Renderer::State& st) { destroy_objects(st, true); }
 
 }  // namespace ocean::render

@@ -136,27 +136,13 @@ Status create_pipelines(Renderer::State& st) {
           "vkCreatePipelineLayout");
       !s.ok())
     return s;
-  const VkPushConstantRange tonemap_push{VK_SHADER_STAGE_FRAGMENT_BIT, 0,
-                                         sizeof(shader::TonemapPush)};
-  const VkPipelineLayoutCreateInfo tonemap_layout{
-      .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-      .setLayoutCount = 1,
-      .pSetLayouts = &st.tonemap_layout,
-      .pushConstantRangeCount = 1,
-      .pPushConstantRanges = &tonemap_push};
-  if (Status s = vk::check(
-          vkCreatePipelineLayout(ctx.device, &tonemap_layout, nullptr, &st.tonemap_pipeline_layout),
-          "vkCreatePipelineLayout");
-      !s.ok())
-    return s;
 
   Result<VkShaderModule> sky_vert = shader_module(st, spirv::sky_vert());
   Result<VkShaderModule> sky_frag = shader_module(st, spirv::sky_frag());
   Result<VkShaderModule> ocean_vert = shader_module(st, spirv::ocean_vert());
   Result<VkShaderModule> ocean_frag = shader_module(st, spirv::ocean_frag());
   Result<VkShaderModule> wire_frag = shader_module(st, spirv::wire_frag());
-  Result<VkShaderModule> tonemap_frag = shader_module(st, spirv::tonemap_frag());
-  for (const auto* m : {&sky_vert, &sky_frag, &ocean_vert, &ocean_frag, &wire_frag, &tonemap_frag})
+  for (const auto* m : {&sky_vert, &sky_frag, &ocean_vert, &ocean_frag, &wire_frag})
     if (!m->ok()) return m->status();
 
   Result<VkPipeline> sky = make_pipeline(ctx, {.vert = sky_vert.value(),
@@ -180,17 +166,7 @@ Status create_pipelines(Renderer::State& st) {
     if (!wire.ok()) return wire.status();
     st.wire = wire.value();
   }
-  Result<VkPipeline> tonemap = make_pipeline(ctx, {.vert = sky_vert.value(),
-                                                   .frag = tonemap_frag.value(),
-                                                   .layout = st.tonemap_pipeline_layout,
-                                                   .colour = kSrgbFormat,
-                                                   .depth = false,
-                                                   .depth_test = false});
-  if (!tonemap.ok()) return tonemap.status();
-  st.tonemap = tonemap.value();
-  if (Status s = create_sphere_pass(st); !s.ok()) return s;
-  if (Status s = create_tessellation(st); !s.ok()) return s;
-  return create_object_pipeline(st);
+  return {};
 }
 
 }  // namespace ocean::render

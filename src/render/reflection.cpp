@@ -14,71 +14,85 @@
 namespace ocean::render {
 
 Status size_reflection(Renderer::State& st) {
-  vk::destroy_image(*st.ctx, st.reflection);
-  vk::destroy_image(*st.ctx, st.reflection_depth);
+  ObjectPass& op = pass<ObjectPass>(st);
+  vk::destroy_image(*st.ctx, op.reflection);
+  vk::destroy_image(*st.ctx, op.reflection_depth);
   // Half the picture's resolution while there are objects to reflect; 1×1 of nothing otherwise.
-  const bool objects = !st.objects.meshes.empty();
+  const bool objects = !op.meshes.empty();
   const std::uint32_t w = objects ? (st.hdr.width + 1) / 2 : 1;
   const std::uint32_t h = objects ? (st.hdr.height + 1) / 2 : 1;
   Result<vk::Image2D> colour = vk::create_image_2d(
       *st.ctx, kHdrFormat, w, h, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
   if (!colour.ok()) return colour.status();
-  st.reflection = colour.value();
+  op.reflection = colour.value();
   Result<vk::Image2D> depth =
       vk::create_image_2d(*st.ctx, kDepthFormat, w, h, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
                           VK_IMAGE_ASPECT_DEPTH_BIT);
   if (!depth.ok()) return depth.status();
-  st.reflection_depth = depth.value();
-  write_rendered_image(st, st.scene_set, OCEAN_RENDER_BINDING_REFLECTION, st.reflection.view);
+  op.reflection_depth = depth.value();
+  write_scene_images(st);
   return {};
 }
 
 void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& view,
                        RenderStats& stats) {
-  const std::uint32_t w = st.reflection.width, h = st.reflection.height;
-  vk::image_barrier(cmd, st.reflection.image, VK_IMAGE_LAYOUT_UNDEFINED,
+  const ObjectPass& op = pass<ObjectPass>(st);
+  const std::uint32_t w = op.reflection.width, h = op.reflection.height;
+  vk::image_barrier(cmd, op.reflection.image, VK_IMAGE_LAYOUT_UNDEFINED,
                     VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                     0, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
   vk::image_barrier(
-      cmd, st.reflection_depth.image, VK_IMAGE_LAYOUT_UNDEFINED,
+      cmd, op.reflection_depth.image, VK_IMAGE_LAYOUT_UNDEFINED,
       VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT, 0,
       VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
       VK_IMAGE_ASPECT_DEPTH_BIT);
   const VkRenderingAttachmentInfo colour{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                         .imageView = st.reflection.view,
+                                         .imageView = op.reflection.view,
                                          .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                          .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                          .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
                                          .clearValue = {.color = {{0.0f, 0.0f, 0.0f, 0.0f}}}};
   const VkRenderingAttachmentInfo depth{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                        .imageView = st.reflection_depth.view,
+                                        .imageView = op.reflection_depth.view,
                                         .imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL,
                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                         .storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE,
                                         .clearValue = {.depthStencil = {1.0f, 0}}};
-  const VkRenderingInfo pass{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                             .renderArea = {{0, 0}, {w, h}},
-                             .layerCount = 1,
-                             .colorAttachmentCount = 1,
-                             .pColorAttachments = &colour,
-                             .pDepthAttachment = &depth};
-  vkCmdBeginRendering(cmd, &pass);
+  const VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                  .renderArea = {{0, 0}, {w, h}},
+                                  .layerCount = 1,
+                                  .colorAttachmentCount = 1,
+                                  .pColorAttachments = &colour,
+                                  .pDepthAttachment = &depth};
+  vkCmdBeginRendering(cmd, &rendering);
   // The main pass's flipped viewport at this size: texel rows are the picture's rows, halved.
   const VkViewport flipped{
       0.0f, static_cast<float>(h), static_cast<float>(w), -static_cast<float>(h), 0.0f, 1.0f};
   const VkRect2D scissor{{0, 0}, {w, h}};
   vkCmdSetViewport(cmd, 0, 1, &flipped);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
-  if (!st.objects.meshes.empty() && view.object_reflections)
+  if (!op.meshes.empty() && view.object_reflections)
     record_objects(st, cmd, view, stats, VK_NULL_HANDLE, true);
   vkCmdEndRendering(cmd);
-  vk::image_barrier(cmd, st.reflection.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+  vk::image_barrier(cmd, op.reflection.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                     VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
                     VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                     VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
                     VK_ACCESS_SHADER_READ_BIT);
+}
+
+Status ObjectPass::resize(Renderer::State& st) { return size_reflection(st); }
+
+void ObjectPass::scene_images(const Renderer::State& st, SceneImages& images) const {
+  images.add(OCEAN_RENDER_BINDING_REFLECTION, VK_SHADER_STAGE_FRAGMENT_BIT,
+             {st.hdr_sampler, reflection.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+}
+
+void ObjectPass::release_targets(Renderer::State& st) {
+  vk::destroy_image(*st.ctx, reflection);
+  vk::destroy_image(*st.ctx, reflection_depth);
 }
 
 }  // namespace ocean::render

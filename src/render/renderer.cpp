@@ -29,19 +29,12 @@ Result<std::unique_ptr<Renderer>> Renderer::make(std::shared_ptr<vk::Context> co
                         vk::MemoryUse::upload);
   if (!ubo.ok()) return ubo.status();
   st.uniforms = ubo.value();
-  Result<vk::Image2D> lut =
-      vk::create_image_2d(*st.ctx, VK_FORMAT_R32G32B32A32_SFLOAT, Sky::kLutWidth, Sky::kLutHeight,
-                          VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT);
-  if (!lut.ok()) return lut.status();
-  st.sky_lut = lut.value();
-  Result<vk::Buffer> lut_staging =
-      vk::create_buffer(*st.ctx, Sky::kLutWidth * Sky::kLutHeight * 4 * sizeof(float),
-                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT, vk::MemoryUse::upload);
-  if (!lut_staging.ok()) return lut_staging.status();
-  st.lut_staging = lut_staging.value();
-  if (Status s = create_local_layer(st); !s.ok()) return s;
-  if (Status s = create_damping(st); !s.ok()) return s;
-  if (Status s = create_far_map(st); !s.ok()) return s;
+  Status created;
+  for_each_pass(st, [&](auto& p) {
+    if (created.ok()) created = p.create(st);
+  });
+  if (!created.ok()) return created;
+  st.scene_images_ready = true;
   if (Status s = r->set_environment(nullptr); !s.ok()) return s;  // writes the scene's set
   // Instances: the most any selection can hold (W² at S = 8192) and the skirt's one.
   if (Status s = lod::reserve_selection(st.selection, lod::kMaxOceanSize_m); !s.ok()) return s;

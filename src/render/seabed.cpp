@@ -1,13 +1,14 @@
 // The seabed's push constants (docs/rendering.md R.22–R.23): View::seabed as the ocean
 // pipeline's SeabedPush (shaders/seabed_shared.h), written over the sky pass's push range.
-#include "object_pass.hpp"
+#include "seabed.hpp"
+
 #include "shaders/seabed_shared.h"
 #include "state.hpp"
 
 namespace ocean::render {
 
-void push_seabed(const Renderer::State& st, VkCommandBuffer cmd, const View& view) {
-  const Seabed& s = view.seabed;
+void SeabedPass::record(Renderer::State& st, VkCommandBuffer cmd, const FrameContext& frame) {
+  const Seabed& s = frame.view.seabed;
   const auto f = [](double v) { return static_cast<float>(v); };
   const shader::SeabedPush push{
       .absorption_enabled = {f(s.absorption_per_m[0]), f(s.absorption_per_m[1]),

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "pipeline_desc.hpp"
+#include "sphere.hpp"
 #include "sphere_view.hpp"
 #include "spirv.hpp"
 
@@ -32,12 +33,12 @@ constexpr std::size_t kMaxSphereInstances = 1u << 16;
 
 }  // namespace
 
-Status create_sphere_pass(Renderer::State& st) {
+Status SpherePass::create(Renderer::State& st) {
   Result<vk::Buffer> inst = vk::create_buffer(
       *st.ctx, static_cast<VkDeviceSize>(kMaxSphereInstances * sizeof(SphereInstance)),
       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
   if (!inst.ok()) return inst.status();
-  st.sphere_instances = inst.value();
+  instances = inst.value();
   Result<VkShaderModule> vert = shader_module(st, spirv::sphere_vert());
   if (!vert.ok()) return vert.status();
   Result<VkShaderModule> frag = shader_module(st, spirv::sphere_frag());
@@ -61,8 +62,13 @@ Status create_sphere_pass(Renderer::State& st) {
                                                  .layout = st.scene_pipeline_layout,
                                                  .vertex_input = &input});
   if (!p.ok()) return p.status();
-  st.sphere_pipeline = p.value();
+  pipeline = p.value();
   return {};
+}
+
+void SpherePass::destroy(Renderer::State& st) {
+  if (pipeline != VK_NULL_HANDLE) vkDestroyPipeline(st.ctx->device, pipeline, nullptr);
+  vk::destroy_buffer(*st.ctx, instances);
 }
 
 Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
@@ -97,13 +103,14 @@ Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
       .finest_patch_m = view.sphere.finest_patch_m,
       .max_vertical_displacement_m = reach * st.crest_bound_m,
       .max_horizontal_displacement_m = reach * st.choppiness * st.hs_m};
-  if (Status s = sphere::select_sphere_patches(lp, st.sphere_selection); !s.ok()) return s;
-  const sphere::SphereSelection& sel = st.sphere_selection;
+  SpherePass& sp = pass<SpherePass>(st);
+  if (Status s = sphere::select_sphere_patches(lp, sp.selection); !s.ok()) return s;
+  const sphere::SphereSelection& sel = sp.selection;
   if (sel.patches.size() > kMaxSphereInstances)
     return invalid_argument("the sphere's selection holds " + std::to_string(sel.patches.size()) +
                             " patches, more than " + std::to_string(kMaxSphereInstances) +
                             ": raise sphere.finest_patch_m");
-  auto* out = static_cast<SphereInstance*>(st.sphere_instances.mapped);
+  auto* out = static_cast<SphereInstance*>(sp.instances.mapped);
   for (std::size_t i = 0; i < sel.patches.size(); ++i) {
     const sphere::SpherePatch& p = sel.patches[i];
     const lod::Vec3 cube = sphere::cube_point(p.face, p.centre_u, p.centre_v);
@@ -140,19 +147,20 @@ Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
   return {};
 }
 
-void draw_sphere(Renderer::State& st, VkCommandBuffer cmd, RenderStats& stats) {
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, st.sphere_pipeline);
+void SpherePass::record(Renderer::State& st, VkCommandBuffer cmd, const FrameContext& frame) {
+  RenderStats& stats = frame.stats;
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
   const VkDeviceSize zero = 0;
   vkCmdBindVertexBuffers(cmd, 0, 1, &st.patch_vertices.buffer, &zero);
-  vkCmdBindVertexBuffers(cmd, 1, 1, &st.sphere_instances.buffer, &zero);
+  vkCmdBindVertexBuffers(cmd, 1, 1, &instances.buffer, &zero);
   vkCmdBindIndexBuffer(cmd, st.indices.buffer, 0, VK_INDEX_TYPE_UINT16);
-  for (const lod::Batch& b : st.sphere_selection.batches) {
+  for (const lod::Batch& b : selection.batches) {
     vkCmdDrawIndexed(cmd, st.index_count[b.config], b.count, st.index_first[b.config], 0, b.first);
     ++stats.draw_calls;
     stats.patches += b.count;
     stats.triangles += static_cast<std::uint64_t>(st.index_count[b.config] / 3) * b.count;
   }
-  for (const sphere::SpherePatch& p : st.sphere_selection.patches)
+  for (const sphere::SpherePatch& p : selection.patches)
     if (p.level <= lod::kMaxLevels) ++stats.patches_per_level[p.level];
 }
 

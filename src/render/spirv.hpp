@@ -1,5 +1,7 @@
-// The renderer's shaders as SPIR-V words, compiled from shaders/*.vert|frag by glslc at build
-// time and embedded by cmake/OceanShaders.cmake.
+// The renderer's shaders as SPIR-V words, compiled from shaders/*.vert|frag|comp by glslc at build
+// time and embedded by cmake/OceanShaders.cmake. OCEAN_RENDER_SPIRV(name) declares one as
+// spirv::name(); a pass's own shader is declared in the pass's source (far_map.cpp: far_map), the
+// shared ones here.
 #pragma once
 
 #include <cstddef>
@@ -36,10 +38,6 @@ OCEAN_RENDER_SPIRV(object_frag_mv)
 OCEAN_RENDER_SPIRV(ocean_vert_motion)
 OCEAN_RENDER_SPIRV(motion_frag)
 OCEAN_RENDER_SPIRV(motion_sky_frag)
-// The far field's map into its image (R.13b).
-OCEAN_RENDER_SPIRV(far_map)
 OCEAN_RENDER_SPIRV(ocean_tess_vert)
 OCEAN_RENDER_SPIRV(ocean_tesc)
 OCEAN_RENDER_SPIRV(ocean_tese)
-
-#undef OCEAN_RENDER_SPIRV

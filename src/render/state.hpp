@@ -1,19 +1,18 @@
-// What the renderer's files share (src/render, private): the Vulkan objects of a renderer
-// (Renderer::State), its formats and limits, and the steps the public methods are built from,
-// one concern per file:
+// What every pass of the renderer shares (src/render, private): the Vulkan objects of a renderer
+// that are not one feature's (Renderer::State: context, commands, targets, the simulation's
+// images, the scene set and pipelines, the patch mesh, the frame uniforms' buffer), its formats
+// and limits, the passes (passes.hpp: one object per feature, pass.hpp their shape) and the steps
+// the public methods are built from, one concern per file:
 //   targets.cpp      the state's lifetime and the HDR, depth and sRGB targets
-//   descriptors.cpp  samplers, descriptor set layouts, the descriptor sets and their writes
-//   pipelines.cpp    shader modules, pipeline layouts, the sky/ocean/wireframe/tone-map pipelines
+//   descriptors.cpp  the shared samplers, the scene set (its layout from the passes' bindings)
+//   pipelines.cpp    shader modules, the scene pipeline layout, the sky/ocean/wireframe pipelines
 //   mesh.cpp         the static patch mesh and the per-frame skirt vertices
 //   inputs.cpp       the simulation's images: own ones filled by upload, or borrowed ones
-//   uniforms.cpp     the sky table and the per-frame uniforms
-//   frame.cpp        the recorded frame: LOD selection, HDR pass, tone-map pass
+//   uniforms.cpp     the per-frame uniforms every pass shares
+//   frame.cpp        the recorded frame: LOD selection, the passes' uploads, HDR pass, post pass
 //   relative.cpp     large worlds and curvature: positions relative to the grid centre
-//   environment.cpp  the HDR environment map: reading, upload, its irradiance
 //   renderer.cpp     construction, resizing, submission, read-back
-//   objects.cpp      the object pass (object_pass.hpp); seabed.cpp the seabed's push constants
-//   stereo.cpp       both eyes in one multiview pass (stereo_pass.hpp, frame_steps.hpp)
-//   motion.cpp       motion vectors: the previous frame reprojected (motion_pass.hpp)
+// and the passes' own files (src/render/README.md lists them).
 #pragma once
 
 #include <array>
@@ -21,14 +20,11 @@
 #include <optional>
 #include <vector>
 
-#include "far_map_pass.hpp"
-#include "motion_pass.hpp"
-#include "object_pass.hpp"
 #include "ocean/render.hpp"
 #include "ocean/sphere.hpp"
+#include "passes.hpp"
 #include "shaders/render_shared.h"
 #include "shaders/tessellation.h"
-#include "stereo_pass.hpp"
 
 namespace ocean::render {
 
@@ -61,23 +57,13 @@ struct Renderer::State {
   bool shared_in_flight = false;
   // Samplers, descriptors, pipelines.
   VkSampler displacement_sampler = VK_NULL_HANDLE, normal_sampler = VK_NULL_HANDLE,
-            hdr_sampler = VK_NULL_HANDLE, lut_sampler = VK_NULL_HANDLE;
-  // The sky-view table (R.1–R.4) and what it was computed for.
-  vk::Image2D sky_lut;
-  vk::Buffer lut_staging;
-  bool lut_pending = false;
-  std::optional<ShadingParams> lut_params;  // what the table holds; none before the first draw
-  std::array<double, 3> sun_ground{}, sky_ambient{};
-  // The environment map (R.17): a 1×1 black image while there is none.
-  vk::Image2D environment;
-  bool has_environment = false;
-  std::array<double, 3> environment_irradiance{};  // on a horizontal plane, before the scale
-  VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE, tonemap_layout = VK_NULL_HANDLE;
+            hdr_sampler = VK_NULL_HANDLE;
+  bool scene_images_ready = false;  // every pass has made its images: the scene set may be written
+  VkDescriptorSetLayout scene_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
-  VkDescriptorSet scene_set = VK_NULL_HANDLE, tonemap_set = VK_NULL_HANDLE;
-  VkPipelineLayout scene_pipeline_layout = VK_NULL_HANDLE, tonemap_pipeline_layout = VK_NULL_HANDLE;
-  VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE,
-             tonemap = VK_NULL_HANDLE;
+  VkDescriptorSet scene_set = VK_NULL_HANDLE;
+  VkPipelineLayout scene_pipeline_layout = VK_NULL_HANDLE;
+  VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE;
   std::vector<VkShaderModule> modules;
   vk::Buffer uniforms;
   // Geometry.
@@ -98,48 +84,34 @@ struct Renderer::State {
   double hs_m = 1.0;
   double crest_bound_m = 1.7;       // SurfaceDescription's bound on |h|, m
   double horizontal_reach_m = 1.0;  // SurfaceDescription's bound on |(Dx, Dz)|, m
-  FarFieldNoise far_noise;          // fitted to cascade 0 by configure() (R.13)
-  FarMapPass far_map;               // the per-frame noise map and its window (far_map.cpp, R.13b)
   double choppiness = 1.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
-  // The local layer (R.19): an RGBA16F array of two layers, (Dx, h, Dz, 0) and (Δs, Δf, 0), 1×1
-  // of zeros until set_local_layer() or set_local_surface(); its staging buffer and placement.
-  vk::Image local_image;
-  vk::Buffer local_staging;
-  VkSampler local_sampler = VK_NULL_HANDLE;
-  bool local_pending = false;
-  std::uint32_t local_side = 0;
-  shader::LocalLayerUniforms local{};
-  std::array<double, 2> local_origin_m{};  // world (x0, z0); the uniforms hold it relative to O
-  // The damping (R.24): an RGBA16F array of 3 layers (weights 0–3, weights 4–7, depth), 1×1
-  // until set_damping(); its staging buffer and placement.
-  vk::Image damping_image;
-  vk::Buffer damping_staging;
-  VkSampler damping_sampler = VK_NULL_HANDLE;
-  bool damping_pending = false;
-  std::uint32_t damping_side = 0;
-  shader::DampingUniforms damping{};
-  std::array<double, 2> damping_origin_m{};  // world (x0, z0), as local_origin_m
-  ObjectPass objects;  // meshes and pipeline of View::objects (object_pass.hpp)
-  // The sea on a sphere (sphere.cpp, R.30–R.38): its pipeline, per-frame instances and selection.
-  VkPipeline sphere_pipeline = VK_NULL_HANDLE;
-  vk::Buffer sphere_instances;  // host-visible, kMaxSphereInstances
-  sphere::SphereSelection sphere_selection;
-  StereoPass stereo;  // layered targets and multiview pipelines (stereo.cpp), once used
-  MotionPass motion;  // motion vectors (motion.cpp), once enabled
-  // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
-  // coverage) and depth while there are meshes, 1×1 otherwise.
-  vk::Image2D reflection, reflection_depth;
-  // The tessellated mesh (R.40–R.42, tessellation.cpp): its pipelines where the device has
-  // tessellation shaders, and the per-frame list of visible base quads (host-visible).
-  VkPipeline tessellated = VK_NULL_HANDLE, tessellated_wire = VK_NULL_HANDLE;
-  vk::Buffer tess_cells;
+  Passes passes;                              // one object per feature (passes.hpp)
 
   ~State();
   void destroy_targets();
   void destroy_sim_images();
   void destroy_shared();
 };
+
+// The pass P of the renderer (passes.hpp).
+template <class P>
+P& pass(Renderer::State& st) {
+  return std::get<P>(st.passes);
+}
+template <class P>
+const P& pass(const Renderer::State& st) {
+  return std::get<P>(st.passes);
+}
+// Calls f(pass) on each pass, in the order of passes.hpp.
+template <class F>
+void for_each_pass(Renderer::State& st, F&& f) {
+  std::apply([&](auto&... p) { (f(p), ...); }, st.passes);
+}
+template <class F>
+void for_each_pass(const Renderer::State& st, F&& f) {
+  std::apply([&](const auto&... p) { (f(p), ...); }, st.passes);
+}
 
 // targets.cpp: whether targets of this size fit the device and memory (Renderer::resize's
 // refusals, after its [1, kMaxTargetSize] check); allocates nothing.
@@ -152,8 +124,6 @@ Status create_targets(Renderer::State& st, int width, int height);
 Status create_descriptors(Renderer::State& st);
 // The scene set's uniform buffer and sky table, and the simulation images when there are any.
 void write_scene_images(Renderer::State& st);
-// The tone map's set: the HDR image.
-void write_tonemap_image(Renderer::State& st);
 // One image the renderer drew (SHADER_READ_ONLY_OPTIMAL, the HDR sampler) into a set's binding.
 void write_rendered_image(const Renderer::State& st, VkDescriptorSet set, std::uint32_t binding,
                           VkImageView view);
@@ -188,44 +158,24 @@ double curvature_drop_bound_m(const View& view);
 // FrameUniforms::planet and cascade_origin for this frame.
 void fill_origin_uniforms(const Renderer::State& st, const View& view, shader::FrameUniforms& u);
 
-// sphere.cpp: the sea on a sphere (R.30–R.38). The pipeline and the instance buffer (at make()).
-Status create_sphere_pass(Renderer::State& st);
-// Selects the cube-sphere's patches and writes their instances; sets `vp` (relative to the
+// sphere.cpp: the sea on a sphere (R.30–R.38, the pass: sphere.hpp). Selects the cube-sphere's
+// patches and writes their instances; sets `vp` (relative to the
 // camera, local axes) and the uniforms that differ from the flat sea's.
 Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
                       shader::FrameUniforms& u);
-// The instanced draws of the selection, by configuration.
-void draw_sphere(Renderer::State& st, VkCommandBuffer cmd, RenderStats& stats);
 
 // inputs.cpp: copies the staged CPU frame into the own images (GENERAL).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
 // The same copies from `source`, a buffer in interop::inputs_layout (inputs.cpp).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source);
-// local_layer.cpp: the 1×1 empty layer made at construction, and the copy of a staged layer.
-Status create_local_layer(Renderer::State& st);
-void record_local_upload(Renderer::State& st, VkCommandBuffer cmd);
-// damping.cpp: the same for the damping's weights and depth.
-Status create_damping(Renderer::State& st);
-void record_damping_upload(Renderer::State& st, VkCommandBuffer cmd);
 
-// far_map.cpp: the far field's noise map (R.13b). Its sampler, compute pass and a 1×1 image of
-// zeros (at make()); a frame's map staged for the next record() (allocates when N changes); its
-// conversion and mips recorded before the scene; its uniforms (the window, the lattice at O, t).
-Status create_far_map(Renderer::State& st);
 /// A sampler: linear or nearest, with or without linear mips, repeating or clamped (v clamped
 /// unless repeat_v_too), anisotropic above 1 (descriptors.cpp).
 Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
                                float anisotropy, bool repeat_v_too = true);
-void destroy_far_map(Renderer::State& st);
-Status upload_far_map(Renderer::State& st, const FarNoiseFrame& map, double time_s);
-void record_far_map(Renderer::State& st, VkCommandBuffer cmd);
-void fill_far_uniforms(const Renderer::State& st, shader::FrameUniforms& u);
 
-// tessellation.cpp: the tessellated mesh's pipelines and cell buffer (nothing where the device
-// lacks tessellation shaders), its push range in the scene layout, and its draw: the visible base
-// quads and the tessellation stages, then the ocean (or wireframe) pipeline bound again for the
-// skirt. record_tessellated needs Context::tessellation (Renderer::record checks it).
-Status create_tessellation(Renderer::State& st);
+// tessellation.cpp: the tessellated mesh (its pass: tessellation.hpp) and its push range in the
+// scene layout.
 // `unsupported` when the parameters ask for the tessellated mesh on a device without tessellation
 // shaders or with a maxTessellationGenerationLevel below N; nothing for the quadtree.
 Status check_tessellation(const vk::Context& ctx, const TessellationParams& params);
@@ -233,20 +183,10 @@ Status check_tessellation(const vk::Context& ctx, const TessellationParams& para
 shader::TessellationPush tessellation_push(const TessellationParams& params,
                                            const TessellationGrid& grid);
 VkPushConstantRange tessellation_push_range();
-void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& view,
-                        RenderStats& stats);
 
-// uniforms.cpp: recomputes the sky-view table and the irradiances when the sky's parameters
-// changed.
-void update_sky(Renderer::State& st, const ShadingParams& shading);
+// uniforms.cpp: the frame's uniforms every pass shares.
 void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
                    shader::FrameUniforms& u);
-// environment.cpp: FrameUniforms::environment, and the sky's irradiance from the map (R.17).
-void fill_environment_uniforms(const Renderer::State& st, const View& view,
-                               shader::FrameUniforms& u);
-// underwater.cpp: FrameUniforms::underwater, the water's optics below the surface (R.50–R.52).
-void fill_underwater_uniforms(const Renderer::State& st, const View& view,
-                              shader::FrameUniforms& u);
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).
 std::array<double, 16> inverse(const std::array<double, 16>& m);
 

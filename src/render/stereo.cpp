@@ -19,7 +19,7 @@ constexpr std::uint32_t kBothEyes = 0b11;
 
 // The multiview pipelines, once per renderer.
 Status create_stereo_pipelines(Renderer::State& st) {
-  StereoPass& sp = st.stereo;
+  StereoPass& sp = pass<StereoPass>(st);
   if (sp.ocean != VK_NULL_HANDLE) return {};
   Result<VkShaderModule> sky_vert = shader_module(st, spirv::sky_vert_mv());
   Result<VkShaderModule> sky_frag = shader_module(st, spirv::sky_frag_mv());
@@ -52,7 +52,7 @@ Status create_stereo_pipelines(Renderer::State& st) {
 
 // Layered HDR and depth targets of one eye's size (after a resize, again).
 Status create_stereo_targets(Renderer::State& st) {
-  StereoPass& sp = st.stereo;
+  StereoPass& sp = pass<StereoPass>(st);
   const std::uint32_t w = st.hdr.width / 2, h = st.hdr.height;
   if (sp.hdr.image != VK_NULL_HANDLE && sp.hdr.width == w && sp.hdr.height == h) return {};
   destroy_stereo(st, false);
@@ -101,7 +101,7 @@ Result<std::array<lod::Camera, 2>> stereo_eyes(const lod::Camera& head, double i
 }
 
 void destroy_stereo(Renderer::State& st, bool all) {
-  StereoPass& sp = st.stereo;
+  StereoPass& sp = pass<StereoPass>(st);
   vk::destroy_image(*st.ctx, sp.hdr);
   vk::destroy_image(*st.ctx, sp.depth);
   if (!all) return;
@@ -110,6 +110,9 @@ void destroy_stereo(Renderer::State& st, bool all) {
     *p = VK_NULL_HANDLE;
   }
 }
+
+void StereoPass::destroy(Renderer::State& st) { destroy_stereo(st, true); }
+void StereoPass::release_targets(Renderer::State& st) { destroy_stereo(st, false); }
 
 Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view, double ipd_m) {
   Result<std::array<lod::Camera, 2>> eyes = stereo_eyes(view.camera, ipd_m);
@@ -164,7 +167,7 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
   View unmirrored = view;
   unmirrored.object_reflections = false;
   record_reflection(st, cmd, unmirrored, stats_);
-  const StereoPass& sp = st.stereo;
+  const StereoPass& sp = pass<StereoPass>(st);
   begin_scene(st, cmd, sp.hdr, sp.depth, kBothEyes);
   record_scene(st, cmd, view,
                {.sky = sp.sky,
@@ -190,8 +193,8 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
                   .extent = {sp.hdr.width, sp.hdr.height, 1}};
   vkCmdCopyImage(cmd, sp.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, st.hdr.image,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 2, regions);
-  finish_frame(st, cmd, view.shading.exposure, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
-               VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, stats_);
+  finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+               VK_ACCESS_TRANSFER_WRITE_BIT, stats_);
   return {};
 }
 

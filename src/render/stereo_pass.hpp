@@ -6,13 +6,17 @@
 #include <cstdint>
 
 #include "ocean/vk.hpp"
+#include "pass.hpp"
 
 namespace ocean::render {
 
-struct StereoPass {
+struct StereoPass : Pass {
   vk::Image2D hdr, depth;  // 2 layers each: eye 0 (left), eye 1 (right)
   VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE,
              objects = VK_NULL_HANDLE;
+
+  void destroy(Renderer::State& st);          // the targets and the pipelines
+  void release_targets(Renderer::State& st);  // the targets
 };
 
 }  // namespace ocean::render

@@ -17,44 +17,34 @@ Renderer::State::~State() {
   destroy_targets();
   destroy_shared();
   destroy_sim_images();
-  destroy_objects(*this, true);
-  destroy_stereo(*this, true);
-  destroy_motion(*this, true);
-  destroy_far_map(*this);
-  for (VkPipeline p : {sky, ocean, wire, tonemap, sphere_pipeline, tessellated, tessellated_wire})
+  for_each_pass(*this, [&](auto& p) { p.destroy(*this); });
+  for (VkPipeline p : {sky, ocean, wire})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   for (VkShaderModule m : modules) vkDestroyShaderModule(d, m, nullptr);
-  for (VkPipelineLayout l : {scene_pipeline_layout, tonemap_pipeline_layout})
-    if (l != VK_NULL_HANDLE) vkDestroyPipelineLayout(d, l, nullptr);
+  if (scene_pipeline_layout != VK_NULL_HANDLE)
+    vkDestroyPipelineLayout(d, scene_pipeline_layout, nullptr);
   if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(d, pool, nullptr);
-  for (VkDescriptorSetLayout l : {scene_layout, tonemap_layout})
-    if (l != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, l, nullptr);
-  vk::destroy_image(*ctx, sky_lut);
-  vk::destroy_image(*ctx, environment);
-  vk::destroy_buffer(*ctx, lut_staging);
-  vk::destroy_image(*ctx, local_image);
-  vk::destroy_buffer(*ctx, local_staging);
-  vk::destroy_image(*ctx, damping_image);
-  vk::destroy_buffer(*ctx, damping_staging);
-  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler, lut_sampler, local_sampler,
-                      damping_sampler})
+  if (scene_layout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, scene_layout, nullptr);
+  for (VkSampler s : {displacement_sampler, normal_sampler, hdr_sampler})
     if (s != VK_NULL_HANDLE) vkDestroySampler(d, s, nullptr);
-  for (vk::Buffer* b : {&uniforms, &patch_vertices, &indices, &instances, &skirt_vertices,
-                        &sphere_instances, &tess_cells})
+  for (vk::Buffer* b : {
+           &uniforms,
+           &patch_vertices,
+           &indices,
+           &instances,
+           &skirt_vertices,
+       })
     vk::destroy_buffer(*ctx, *b);
   vk::destroy_timestamps(*ctx, timestamps);
   vk::destroy_commands(*ctx, commands);
 }
 
 void Renderer::State::destroy_targets() {
+  for_each_pass(*this, [&](auto& p) { p.release_targets(*this); });
   vk::destroy_image(*ctx, hdr);
   vk::destroy_image(*ctx, depth);
   vk::destroy_image(*ctx, srgb);
   vk::destroy_buffer(*ctx, readback);
-  destroy_stereo(*this, false);
-  destroy_motion(*this, false);
-  vk::destroy_image(*ctx, reflection);
-  vk::destroy_image(*ctx, reflection_depth);
 }
 
 void Renderer::State::destroy_sim_images() {
@@ -129,8 +119,11 @@ Status create_targets(Renderer::State& st, int width, int height) {
                         VK_BUFFER_USAGE_TRANSFER_DST_BIT, vk::MemoryUse::readback);
   if (!rb.ok()) return rb.status();
   st.readback = rb.value();
-  write_tonemap_image(st);
-  return size_reflection(st);  // its size follows the picture's (R.53)
+  Status sized;
+  for_each_pass(st, [&](auto& p) {
+    if (sized.ok()) sized = p.resize(st);
+  });
+  return sized;
 }
 
 }  // namespace ocean::render

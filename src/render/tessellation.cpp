@@ -4,6 +4,8 @@
 // — the quad's cell — and subdivided by the tessellation stages (ocean_tess.vert, ocean.tesc,
 // ocean.tese) by the levels of shaders/tessellation.h. The skirt beyond the square is the
 // quadtree mode's, drawn after it with the ocean pipeline.
+#include "tessellation.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -18,7 +20,7 @@ VkPushConstantRange tessellation_push_range() {
           OCEAN_TESS_PUSH_OFFSET, sizeof(shader::TessellationPush)};
 }
 
-Status create_tessellation(Renderer::State& st) {
+Status TessellationPass::create(Renderer::State& st) {
   const vk::Context& ctx = *st.ctx;
   if (!ctx.tessellation) return {};
   Result<VkShaderModule> vert = shader_module(st, spirv::ocean_tess_vert());
@@ -44,22 +46,28 @@ Status create_tessellation(Renderer::State& st) {
                     .vertex_input = &input,
                     .tesc = tesc.value(),
                     .tese = tese.value()};
-  Result<VkPipeline> filled = make_pipeline(ctx, desc);
-  if (!filled.ok()) return filled.status();
-  st.tessellated = filled.value();
+  Result<VkPipeline> made = make_pipeline(ctx, desc);
+  if (!made.ok()) return made.status();
+  filled = made.value();
   if (ctx.wireframe) {
     desc.frag = wire.value();
     desc.lines = true;
-    Result<VkPipeline> lines = make_pipeline(ctx, desc);
-    if (!lines.ok()) return lines.status();
-    st.tessellated_wire = lines.value();
+    Result<VkPipeline> made_lines = make_pipeline(ctx, desc);
+    if (!made_lines.ok()) return made_lines.status();
+    lines = made_lines.value();
   }
-  Result<vk::Buffer> cells = vk::create_buffer(
+  Result<vk::Buffer> list = vk::create_buffer(
       ctx, static_cast<VkDeviceSize>(OCEAN_TESS_MAX_QUADS) * OCEAN_TESS_MAX_QUADS * 4,
       VK_BUFFER_USAGE_VERTEX_BUFFER_BIT, vk::MemoryUse::upload);
-  if (!cells.ok()) return cells.status();
-  st.tess_cells = cells.value();
+  if (!list.ok()) return list.status();
+  cells = list.value();
   return {};
+}
+
+void TessellationPass::destroy(Renderer::State& st) {
+  for (VkPipeline p : {filled, lines})
+    if (p != VK_NULL_HANDLE) vkDestroyPipeline(st.ctx->device, p, nullptr);
+  vk::destroy_buffer(*st.ctx, cells);
 }
 
 Status check_tessellation(const vk::Context& ctx, const TessellationParams& params) {
@@ -75,8 +83,9 @@ Status check_tessellation(const vk::Context& ctx, const TessellationParams& para
   return {};
 }
 
-void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& view,
-                        RenderStats& stats) {
+void TessellationPass::record(Renderer::State& st, VkCommandBuffer cmd, const FrameContext& frame) {
+  const View& view = frame.view;
+  RenderStats& stats = frame.stats;
   const TessellationParams& tp = view.tessellation;
   const lod::LodSelection& sel = st.selection;
   // Everything relative to the frame's origin, the grid centre (R.16): the grid is centred on it.
@@ -94,7 +103,7 @@ void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& vi
   const double reach = st.horizontal_reach_m;
   const lod::Vec3 half{0.5 * cell + reach, st.crest_bound_m + curvature_drop_bound_m(view),
                        0.5 * cell + reach};
-  auto* out = static_cast<std::uint32_t*>(st.tess_cells.mapped);
+  auto* out = static_cast<std::uint32_t*>(cells.mapped);
   std::uint32_t count = 0;
   for (int j = 0; j < tp.base_quads; ++j)
     for (int i = 0; i < tp.base_quads; ++i) {
@@ -103,12 +112,11 @@ void record_tessellated(Renderer::State& st, VkCommandBuffer cmd, const View& vi
         out[count++] = static_cast<std::uint32_t>(i) | static_cast<std::uint32_t>(j) << 16;
     }
   const bool wire = view.debug == DebugView::wireframe;
-  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS,
-                    wire ? st.tessellated_wire : st.tessellated);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, wire ? lines : filled);
   vkCmdPushConstants(cmd, st.scene_pipeline_layout, tessellation_push_range().stageFlags,
                      OCEAN_TESS_PUSH_OFFSET, sizeof(push), &push);
   const VkDeviceSize zero = 0;
-  vkCmdBindVertexBuffers(cmd, 0, 1, &st.tess_cells.buffer, &zero);
+  vkCmdBindVertexBuffers(cmd, 0, 1, &cells.buffer, &zero);
   // Draws of at most 2¹⁶ vertices the tessellator may generate, (N + 1)² a patch: lavapipe drops
   // larger tessellated draws whole (measured: 1026 patches at N = 16 vanished, 256 did not).
   const double per_patch = (tp.max_level + 1.0) * (tp.max_level + 1.0);

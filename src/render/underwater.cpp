@@ -1,16 +1,15 @@
 // The view from below the surface (ocean/underwater.hpp; docs/rendering.md R.50–R.52): the
 // water's optics (checked in params.cpp with the rest of the view) handed to the shaders
-// (FrameUniforms::underwater). The work is in shaders/underwater.glsl: the sky pass fills the
-// pixels whose near-plane point lies under the surface with the water's own light, the ocean pass
-// shades the surface seen from below, the object pass fogs what lies under water with the camera.
-#include "ocean/underwater.hpp"
+// (FrameUniforms::underwater).
+#include "underwater.hpp"
 
+#include "ocean/underwater.hpp"
 #include "state.hpp"
 
 namespace ocean::render {
 
-void fill_underwater_uniforms(const Renderer::State& st, const View& view,
-                              shader::FrameUniforms& u) {
+void UnderwaterPass::fill_uniforms(const Renderer::State& st, const View& view,
+                                   shader::FrameUniforms& u) const {
   const auto& a = view.seabed.absorption_per_m;  // one water: the seabed's absorption (R.23)
   u.underwater = {.absorption_per_m = {static_cast<float>(a[0]), static_cast<float>(a[1]),
                                        static_cast<float>(a[2])},

@@ -1,31 +1,9 @@
-// The per-frame inputs of the shaders: the sky-view table (recomputed only when the sky
-// changes) and FrameUniforms (shaders/render_shared.h) from the view, the shading and the
-// configured cascades.
+// The per-frame inputs of the shaders that every pass shares: FrameUniforms
+// (shaders/render_shared.h) from the view, the shading and the configured cascades; each pass
+// adds its own part (pass.hpp's fill_uniforms).
 #include "state.hpp"
 
 namespace ocean::render {
-
-namespace {
-
-bool same_sky(const ShadingParams& a, const ShadingParams& b) {
-  return a.sun_azimuth_deg == b.sun_azimuth_deg && a.sun_elevation_deg == b.sun_elevation_deg &&
-         a.sun_irradiance == b.sun_irradiance && a.sky_brightness == b.sky_brightness &&
-         a.aerosol == b.aerosol && a.aerosol_g == b.aerosol_g;
-}
-
-}  // namespace
-
-// Recomputes the sky-view table and the irradiances when the sky's parameters change.
-void update_sky(Renderer::State& st, const ShadingParams& shading) {
-  if (st.lut_params && same_sky(*st.lut_params, shading)) return;
-  const Sky sky(shading);
-  sky.fill_lut({static_cast<float*>(st.lut_staging.mapped),
-                static_cast<std::size_t>(Sky::kLutWidth * Sky::kLutHeight * 4)});
-  st.sun_ground = sky.sun_irradiance_ground();
-  st.sky_ambient = sky.sky_irradiance_horizontal();
-  st.lut_params = shading;
-  st.lut_pending = true;
-}
 
 namespace {
 
@@ -45,8 +23,6 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.fov_y_rad = static_cast<float>(lod::vertical_fov_rad(view.camera));
   const ShadingParams& sh = view.shading;
   u.sun_dir = to_vec3(sun_direction(sh.sun_azimuth_deg, sh.sun_elevation_deg));
-  u.sun_ground = to_vec3(st.sun_ground);
-  u.sky_ambient = to_vec3(st.sky_ambient);
   u.water_colour = to_vec3(sh.water_colour);
   u.crest_scatter = static_cast<float>(sh.crest_scatter);
   u.foam_brightness = static_cast<float>(sh.foam_brightness);
@@ -65,28 +41,6 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.hs_m = static_cast<float>(st.hs_m);
   for (int c = 0; c < kMaxCascades; ++c)
     u.cascades[c] = st.cascade_params[static_cast<std::size_t>(c)];
-  const FarFieldNoise& far = st.far_noise;
-  const auto f = [](double x) { return static_cast<float>(x); };
-  u.far_field = {
-      .cell_m = {f(far.cell_m[0]), f(far.cell_m[1]), f(far.cell_m[2]), 0.0f},
-      .amplitude_m = {f(far.amplitude_m[0]), f(far.amplitude_m[1]), f(far.amplitude_m[2]), 0.0f},
-      .slope_variance = {f(far.slope_variance[0]), f(far.slope_variance[1]),
-                         f(far.slope_variance[2]), 0.0f},
-      .near_m = f(view.far_field.near_m),
-      .far_m = f(view.far_field.far_m),
-      .enabled = u.cascade_count > 0.0f ? 1.0f : 0.0f,
-      .far_pad = 0.0f};
-  fill_far_uniforms(st, u);
-  u.local = st.local;  // its origin relative to the frame's origin O, as every position (R.16)
-  u.local.origin_m = {f(st.local_origin_m[0] - sel.grid_centre_x_m),
-                      f(st.local_origin_m[1] - sel.grid_centre_z_m)};
-  u.damping = st.damping;
-  u.damping.origin_m = {f(st.damping_origin_m[0] - sel.grid_centre_x_m),
-                        f(st.damping_origin_m[1] - sel.grid_centre_z_m)};
-  // Pure water's absorption at 650, 550 and 450 nm (Pope & Fry 1997: 0.340, 0.0565 and
-  // 0.0092 per m) and a sandy bottom's albedo, a chosen value (R.24).
-  u.damping.absorption_per_m = {0.340f, 0.0565f, 0.0092f};
-  u.damping.bottom_albedo = {0.45f, 0.40f, 0.30f};
 }
 
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).

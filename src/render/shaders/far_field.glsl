@@ -52,7 +52,7 @@ vec2 far_map_uv(vec2 xz) {
   return (xz - u.far_map.origin_m) / u.far_map.size_m + 0.5 / u.far_map.resolution;
 }
 
-// Seed 003's eq. 7 with weights whose squares sum to one: two independent fields of equal
+// The VR-GIS paper's eq. 7 with weights whose squares sum to one: two independent fields of equal
 // variance blend into one of the same variance (the printed (1 − R)·a + R·b has half of it at
 // R = 1/2, a calm band where the blend is). Returns the two weights.
 vec2 preserving_weights(float ratio) {

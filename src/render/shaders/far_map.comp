@@ -9,7 +9,7 @@
 // with the kept octaves' amplitudes 0, so they cancel to rounding. The coarser levels are blits
 // (2×2 means). Dispatch (⌈N/8⌉, ⌈N/8⌉, 1).
 #include "render_shared.h"
-#include "../../sim/far_noise.h"
+#include "sim/far_noise.h"
 
 layout(local_size_x = OCEAN_RENDER_FAR_TILE, local_size_y = OCEAN_RENDER_FAR_TILE) in;
 

@@ -1,13 +1,13 @@
 // far_noise.h — the renderer's side of the far field's noise (docs/rendering.md R.13, R.13b): the
 // sum of the three fitted octaves read through the uniforms on the lattice the CPU places at the
-// frame's origin and time, and seed 003's Hermite ratio. The noise
+// frame's origin and time, and the VR-GIS paper's Hermite ratio. The noise
 // itself (hash, gradient lattice, one octave) is src/sim/far_noise.h, one source for the C++
 // reference (src/sim/far_noise.cpp), the simulation backends' noise maps and these shaders
 // (ocean.vert, ocean.frag). Written in the subset C++ and GLSL share, as that header.
 #ifndef OCEAN_RENDER_FAR_NOISE_H
 #define OCEAN_RENDER_FAR_NOISE_H
 
-#include "../../sim/far_noise.h"
+#include "sim/far_noise.h"
 #include "render_shared.h"
 
 #ifdef __cplusplus
@@ -50,7 +50,7 @@ OCEAN_FN void far_field_noise(OCEAN_IN(FarFieldUniforms) f, OCEAN_IN(FarOctaveUn
   far_octave_at(o2, x_m, z_m, f.cell_m.z, f.amplitude_m.z, w2, OCEAN_FAR_SEED2, h, sx, sz);
 }
 
-// Seed 003's Hermite ratio (eq. 6): 0 nearer than D_min, 1 beyond D_max, −2t³ + 3t² between.
+// The VR-GIS paper's Hermite ratio (eq. 6): 0 nearer than D_min, 1 beyond D_max, −2t³ + 3t² between.
 OCEAN_FN float far_ratio(OCEAN_IN(FarFieldUniforms) f, float distance_m) {
   float t = (distance_m - f.near_m) / (f.far_m - f.near_m);
   t = t < 0.0f ? 0.0f : (t > 1.0f ? 1.0f : t);

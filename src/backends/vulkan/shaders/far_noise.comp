@@ -8,7 +8,7 @@
 // concurrently with the FFT). Mirrors far_noise_map::fill_rows (src/sim/far_noise.cpp); the
 // texel is far_noise_texel of src/sim/far_noise.h, one source for both.
 #include "ocean_shared.h"
-#include "../../../sim/far_noise.h"
+#include "sim/far_noise.h"
 
 layout(local_size_x = OCEAN_TILE, local_size_y = OCEAN_TILE) in;
 
