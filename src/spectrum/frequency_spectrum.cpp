@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "internal.hpp"
@@ -213,32 +214,21 @@ Result<FrequencySpectrumParams> resolve(const SpectrumInputs& in) {
   Result<SpectrumModel> model = parse_spectrum_model(in.model);
   if (!model.ok()) return Status(model.status().code(), "--model: " + model.status().message());
   p.model = model.value();
-  const std::pair<const std::optional<double>*, double*> numbers[] = {
-      {&in.hs, &p.significant_wave_height_m},
-      {&in.tp, &p.peak_period_s},
-      {&in.wind_speed, &p.wind_speed_mps},
-      {&in.fetch, &p.fetch_m},
-      {&in.depth, &p.depth_m},
-      {&in.gravity, &p.gravity_mps2},
-      {&in.phillips_amplitude, &p.phillips_amplitude},
-      {&in.cutoff_length, &p.small_wave_cutoff_m},
-      {&in.gamma, &p.gamma}};
-  for (std::size_t i = 0; i < std::size(numbers); ++i) {
-    const auto& [given, value] = numbers[i];
+  // Each number with the field that names its flag in kSeaStateParameters.
+  const std::tuple<std::string_view, const std::optional<double>*, double*> numbers[] = {
+      {"significant_wave_height_m", &in.hs, &p.significant_wave_height_m},
+      {"peak_period_s", &in.tp, &p.peak_period_s},
+      {"wind_speed_mps", &in.wind_speed, &p.wind_speed_mps},
+      {"fetch_m", &in.fetch, &p.fetch_m},
+      {"depth_m", &in.depth, &p.depth_m},
+      {"gravity_mps2", &in.gravity, &p.gravity_mps2},
+      {"phillips_amplitude", &in.phillips_amplitude, &p.phillips_amplitude},
+      {"small_wave_cutoff_m", &in.cutoff_length, &p.small_wave_cutoff_m},
+      {"gamma", &in.gamma, &p.gamma}};
+  for (const auto& [field, given, value] : numbers) {
     if (!given->has_value()) continue;
     // Any number but NaN: FrequencySpectrum::make checks the values and names the fields.
-    if (std::isnan(**given)) {
-      static constexpr std::array<std::string_view, 9> kFields = {"significant_wave_height_m",
-                                                                  "peak_period_s",
-                                                                  "wind_speed_mps",
-                                                                  "fetch_m",
-                                                                  "depth_m",
-                                                                  "gravity_mps2",
-                                                                  "phillips_amplitude",
-                                                                  "small_wave_cutoff_m",
-                                                                  "gamma"};
-      return require_finite(sea_state_parameter(kFields[i]).flag, **given);
-    }
+    if (std::isnan(**given)) return require_finite(sea_state_parameter(field).flag, **given);
     *value = **given;
   }
   Result<DepthFactor> depth_factor =
