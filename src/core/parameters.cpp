@@ -2,7 +2,10 @@
 #include "ocean/parameters.hpp"
 
 #include <cctype>
+#include <cerrno>
 #include <charconv>
+#include <cstdlib>
+#include <version>
 
 namespace ocean::params {
 
@@ -40,13 +43,35 @@ std::string requirement(const NumberOption<double>& o) {
   return range;
 }
 
+// std::from_chars for a double. emscripten 3.1.6's libc++ (the web page's build compiles this file)
+// has no floating-point from_chars; there strtod reads the same forms in the C locale the page runs
+// in, once the forms from_chars refuses and strtod takes (leading space or '+', hexadecimal) are
+// refused first.
+std::from_chars_result read_double(const char* first, const char* last, double& value) {
+#if defined(__cpp_lib_to_chars)
+  return std::from_chars(first, last, value);
+#else
+  const std::string text(first, last);
+  if (text.empty() || std::isspace(static_cast<unsigned char>(text[0])) || text[0] == '+' ||
+      text.find_first_of("xX") != std::string::npos)
+    return {first, std::errc::invalid_argument};
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(text.c_str(), &end);
+  const std::errc ec = end == text.c_str() ? std::errc::invalid_argument
+                       : errno == ERANGE   ? std::errc::result_out_of_range
+                                           : std::errc();
+  return {first + (end - text.c_str()), ec};
+#endif
+}
+
 }  // namespace
 
 Result<double> parse_number(std::string_view flag, const std::string& text) {
   double value = 0.0;
   const char* first = text.data();
   const char* last = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(first, last, value);
+  const auto [ptr, ec] = read_double(first, last, value);
   if (text.empty() || ec != std::errc() || ptr != last) {
     return invalid_argument(std::string(flag) + " = '" + excerpt(text) + "' is not a number");
   }

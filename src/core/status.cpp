@@ -18,12 +18,40 @@ std::string format_number(double value) {
   return std::string(buffer, result.ptr);
 #else
   // C++ libraries without floating-point to_chars (emscripten 3.1.6's libc++, the WebAssembly
-  // build): the shortest %g form that reads back as the same double.
-  for (int digits = 1; digits <= 17; ++digits) {
-    std::snprintf(buffer, sizeof(buffer), "%.*g", digits, value);
+  // build): what to_chars writes. The fewest significant digits that read back as the same
+  // double, then the shorter of the fixed and the scientific form, fixed on a tie.
+  int digits = 1;
+  for (; digits < 17; ++digits) {
+    std::snprintf(buffer, sizeof(buffer), "%.*e", digits - 1, value);
     if (std::strtod(buffer, nullptr) == value) break;
   }
-  return buffer;
+  std::snprintf(buffer, sizeof(buffer), "%.*e", digits - 1, value);
+  const std::string e_form(buffer);
+  const bool negative = e_form[0] == '-';
+  const std::size_t e_at = e_form.find('e');
+  std::string mantissa;
+  for (std::size_t i = negative ? 1 : 0; i < e_at; ++i)
+    if (e_form[i] != '.') mantissa += e_form[i];
+  while (mantissa.size() > 1 && mantissa.back() == '0') mantissa.pop_back();
+  const int exponent = std::atoi(e_form.c_str() + e_at + 1);
+  const int n = static_cast<int>(mantissa.size());
+  std::string scientific = mantissa.substr(0, 1);
+  if (n > 1) scientific += "." + mantissa.substr(1);
+  std::snprintf(buffer, sizeof(buffer), "e%c%02d", exponent < 0 ? '-' : '+', std::abs(exponent));
+  scientific += buffer;
+  std::string fixed;
+  if (exponent >= n - 1) {
+    // An integer: printf's %f writes its exact digits, which is what to_chars writes too.
+    if (static_cast<std::size_t>(exponent) + 1 > scientific.size())
+      return (negative ? "-" : "") + scientific;
+    std::snprintf(buffer, sizeof(buffer), "%.0f", std::fabs(value));
+    fixed = buffer;
+  } else if (exponent < 0)
+    fixed = "0." + std::string(static_cast<std::size_t>(-exponent - 1), '0') + mantissa;
+  else
+    fixed = mantissa.substr(0, static_cast<std::size_t>(exponent + 1)) + "." +
+            mantissa.substr(static_cast<std::size_t>(exponent + 1));
+  return (negative ? "-" : "") + (fixed.size() <= scientific.size() ? fixed : scientific);
 #endif
 }
 
