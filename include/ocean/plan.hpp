@@ -11,6 +11,7 @@
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "ocean/core.hpp"
@@ -53,6 +54,13 @@ struct SurfaceDescription {
   std::vector<double> tiling_wavelengths_m;   ///< CascadePlan::tiling_wavelength_m of each
 
   FarFieldNoise far_noise;  ///< fitted to cascade 0 (R.13)
+  /// σu² + σc² of the waves shorter than the finest cascade's grid, the roughness the cascades
+  /// leave out (SimulationPlan::unresolved_slope_variance; R.5); empty when no wind is given.
+  std::optional<double> unresolved_slope_variance;
+  /// α² a level-0 texel of the packed map stores: SimulationConfig::roughness as Aebi, VR Ocean,
+  /// eqs. 49–53 encode it, quantised to 8 bits. The filtering's slope variance is what a mip
+  /// stores above it (R.5).
+  double map_base_alpha_sq = 0.0;
 };
 
 /// The crest bound's factor: the highest crest of a few thousand Rayleigh-distributed waves is
@@ -76,6 +84,13 @@ class SimulationPlan {
   /// The shortest peak wavelength 2π/k(ω_p) over the sea's wave systems, m (1e9 when none has a
   /// peak).
   [[nodiscard]] double peak_wavelength_m() const { return peak_wavelength_m_; }
+  /// The slope variance of the waves shorter than the finest cascade's grid (wave vectors outside
+  /// its square |kx|, |kz| ≤ π·N/L): short_wave_slope_variance for the wind sea's U10 (U19.5/1.026
+  /// for Pierson–Moskowitz, Stewart 2008 §16.5) and direction. Empty when the wind sea is given
+  /// by Hs and Tp, which name no wind, or by a wind outside [0.5, 60] m/s.
+  [[nodiscard]] const std::optional<SlopeVariance>& unresolved_slope_variance() const {
+    return unresolved_slope_variance_;
+  }
   /// The far field's noise fitted to cascade 0 (fit_far_field_noise), computed on first use.
   [[nodiscard]] const FarFieldNoise& far_noise() const;
   /// What a renderer draws this plan's surface by.
@@ -88,6 +103,7 @@ class SimulationPlan {
   std::vector<CascadePlan> cascades_;
   double hs_m_ = 0.0;
   double peak_wavelength_m_ = 1e9;
+  std::optional<SlopeVariance> unresolved_slope_variance_;
   std::shared_ptr<FarNoiseFit> far_noise_;
 };
 

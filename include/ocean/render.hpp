@@ -49,7 +49,10 @@ struct ShadingParams {
   std::array<double, 3> water_colour = {0.004, 0.016, 0.028};
   double crest_scatter = 0.9;       ///< gain of the light through thin wave crests, ≥ 0
   double foam_brightness = 1.0;     ///< foam albedo scale, ≥ 0
-  double roughness = 0.08;          ///< base microfacet α of the calm surface, (0, 1]
+  /// Microfacet α of the waves shorter than the finest cascade, (0, 1], for a sea that names no
+  /// wind (given by Hs and Tp); a wind sea's is √ of its short-wave slope variance
+  /// (SurfaceDescription::unresolved_slope_variance, docs/rendering.md R.5).
+  double roughness = 0.08;
   double fog_density_per_m = 6e-5;  ///< ρ of the horizon fog (R.8), ≥ 0
   double exposure = 0.45;           ///< multiplies the HDR image before tone mapping, > 0
 };

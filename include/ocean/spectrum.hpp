@@ -474,4 +474,46 @@ double vr_ocean_phillips_power(double kx, double kz, const VrOceanPhillipsParams
 /// l_cutoff(β) = 0.001·(0.25·L/0.001)^β, m, for β ∈ [0, 1]  (Aebi, VR Ocean, eq. 11)
 double vr_ocean_cutoff_length(double beta, double patch_size_m);
 
+// ---------------------------------------------------------------------------------------------
+// The waves shorter than a grid resolves: their slope variance  (docs/math.md §9)
+// ---------------------------------------------------------------------------------------------
+
+/// Mean-square slopes along and across the wind (Cox & Munk 1954's σu², σc²).
+struct SlopeVariance {
+  double upwind = 0.0;     ///< ⟨s_u²⟩, the slope component along the wind
+  double crosswind = 0.0;  ///< ⟨s_c²⟩, across it
+  [[nodiscard]] double total() const { return upwind + crosswind; }
+};
+
+/// What the short-wave slope variance is computed from.
+struct ShortWaveParams {
+  double wind_speed_mps = 10.0;  ///< U10, m/s, in [0.5, 60]
+  /// The waves left out are those outside the square |k·x̂|, |k·ẑ| ≤ this, rad/m (a grid's
+  /// Nyquist wavenumber π·N/L: the finest cascade's); 0 gives every wave's slope variance.
+  double grid_nyquist_radpm = 0.0;
+  double wind_direction_rad = 0.0;  ///< from +x towards +z; the square is the grid's
+  /// Inverse wave age Ω = U10/c_p of the long waves (Elfouhaily et al. 1997, eq. 37): 0.84 for a
+  /// fully developed sea; it shapes only waves near the peak.
+  double inverse_wave_age = 0.84;
+  double gravity_mps2 = kDefaultGravity;
+};
+
+/// The slope variance of the waves outside a grid's square of wave vectors, integrated over the
+/// unified directional spectrum of Elfouhaily, Chapron, Katsaros & Vandemark (1997), "A unified
+/// directional spectrum for long and short wind-driven waves", J. Geophys. Res. 102(C7): the
+/// curvature spectrum B = B_l + B_h (eqs. 31–45: the long waves' and the gravity–capillary
+/// waves' parts, friction velocity from U10 with Wu's drag coefficient) and the spreading
+/// Φ = (1 + Δ(k)·cos 2φ)/2π (eqs. 49, 57). What a renderer adds to the slope variance of the
+/// cascades it draws (docs/rendering.md R.5). Over every wave (grid_nyquist_radpm = 0) it is
+/// the spectrum's own Cox–Munk figure. Errors: invalid_argument naming the field.
+Result<SlopeVariance> short_wave_slope_variance(const ShortWaveParams& params);
+
+/// Elfouhaily et al. (1997)'s omnidirectional curvature spectrum B(k) = k³·S(k) (eq. 30) and
+/// spreading Δ(k) (eq. 57) at wavenumber k > 0, rad/m, for U10 and Ω of `params`.
+struct CurvatureSample {
+  double curvature = 0.0;  ///< B(k), dimensionless
+  double spreading = 0.0;  ///< Δ(k) in [0, 1]: the up/crosswind contrast of cos 2φ
+};
+CurvatureSample elfouhaily_curvature(double k_radpm, const ShortWaveParams& params);
+
 }  // namespace ocean

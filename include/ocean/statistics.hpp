@@ -13,6 +13,7 @@
 #include <string>
 
 #include "ocean/sim.hpp"
+#include "ocean/spectrum.hpp"
 #include "ocean/task_runner.hpp"
 
 namespace ocean {
@@ -58,6 +59,16 @@ struct SurfaceStats {
   /// Cox & Munk (1954), clean surface: 0.003 + 5.12e-3·U12.5; set when the sea is given by wind.
   std::optional<double> cox_munk_mss;
 
+  // Slope variance of the whole surface along and across the wind sea's direction: every
+  // cascade's slopes (from its normals, each texel weighted by its area on the displaced surface,
+  // max(J, 0)), summed over the cascades as the renderer sums their slopes; and the waves shorter
+  // than the finest cascade's grid (short_wave_slope_variance), which the renderer adds as
+  // roughness. Their sum is what Cox & Munk (1954) measured from the sun's glitter.
+  SlopeVariance resolved_slope_variance;
+  std::optional<SlopeVariance> unresolved_slope_variance;  ///< set when the sea is given by wind
+  /// Cox & Munk (1954), clean surface: σu² = 3.16e-3·U, σc² = 0.003 + 1.92e-3·U (U at 12.5 m).
+  std::optional<SlopeVariance> cox_munk_slope_variance;
+
   // Jacobian of the horizontal map and foam.
   double min_jacobian = 0.0;
   double foam_coverage = 0.0;  ///< fraction of texels with J < 0
@@ -72,6 +83,8 @@ struct SurfaceStats {
 
 /// Cox & Munk (1954) clean-surface mean square slope 0.003 + 5.12e-3·U, U at 12.5 m in m/s.
 double cox_munk_mean_square_slope(double wind_speed_mps);
+/// Cox & Munk (1954)'s clean-surface up- and crosswind components, U at 12.5 m in m/s.
+SlopeVariance cox_munk_slope_variance(double wind_speed_mps);
 
 /// Simulates `seeds` realisations (config.seed + s) with the CPU backend at `time_s` and measures
 /// them. Invalid configurations, seeds < 1 and non-finite times are invalid_argument.

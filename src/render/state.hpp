@@ -85,6 +85,8 @@ struct Renderer::State {
   double crest_bound_m = 1.7;       // SurfaceDescription's bound on |h|, m
   double horizontal_reach_m = 1.0;  // SurfaceDescription's bound on |(Dx, Dz)|, m
   double choppiness = 1.0;
+  std::optional<double> unresolved_slope_variance;  // SurfaceDescription's, from configure()
+  double map_base_alpha_sq = 0.0;                   // SurfaceDescription's, from configure()
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
   Passes passes;                              // one object per feature (passes.hpp)
 

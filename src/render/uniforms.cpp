@@ -1,6 +1,8 @@
 // The per-frame inputs of the shaders that every pass shares: FrameUniforms
 // (shaders/render_shared.h) from the view, the shading and the configured cascades; each pass
 // adds its own part (pass.hpp's fill_uniforms).
+#include <cmath>
+
 #include "state.hpp"
 
 namespace ocean::render {
@@ -26,7 +28,12 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.water_colour = to_vec3(sh.water_colour);
   u.crest_scatter = static_cast<float>(sh.crest_scatter);
   u.foam_brightness = static_cast<float>(sh.foam_brightness);
-  u.roughness = static_cast<float>(sh.roughness);
+  // The waves shorter than the finest cascade: their slope variance where the sea names its wind,
+  // the shading's roughness parameter otherwise (R.5).
+  u.roughness = static_cast<float>(st.unresolved_slope_variance
+                                       ? std::sqrt(*st.unresolved_slope_variance)
+                                       : sh.roughness);
+  u.map_base_alpha_sq = static_cast<float>(st.map_base_alpha_sq);
   u.fog_density_per_m = static_cast<float>(sh.fog_density_per_m);
   u.grid_centre_m = {0.0f, 0.0f};  // the origin of the positions the GPU sees (R.16)
   u.ocean_size_m = static_cast<float>(view.ocean_size_m);

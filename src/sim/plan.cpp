@@ -6,6 +6,8 @@
 #include <mutex>
 #include <numbers>
 
+#include "packing.hpp"
+
 namespace ocean {
 
 struct SimulationPlan::FarNoiseFit {
@@ -41,6 +43,18 @@ Result<SimulationPlan> SimulationPlan::make(const SimulationConfig& config) {
     c.tiling_wavelength_m =
         std::min(longest_m, std::max(plan.peak_wavelength_m_, 4.0 * c.patch_size_m / n));
   }
+  const FrequencySpectrumParams& wind = config.sea.wind_sea.spectrum;
+  const double u10 = wind.model == SpectrumModel::pierson_moskowitz ? wind.wind_speed_mps / 1.026
+                                                                    : wind.wind_speed_mps;
+  if (u10 >= 0.5 && u10 <= 60.0) {  // false for NaN: an Hs/Tp sea
+    const std::size_t finest = config.cascade_patch_sizes_m.size() - 1;
+    Result<SlopeVariance> tail = short_wave_slope_variance(
+        {.wind_speed_mps = u10,
+         .grid_nyquist_radpm = std::numbers::pi * n / config.cascade_patch_sizes_m[finest],
+         .wind_direction_rad = config.sea.wind_sea.direction_rad,
+         .gravity_mps2 = wind.gravity_mps2});
+    if (tail.ok()) plan.unresolved_slope_variance_ = tail.value();
+  }
   plan.far_noise_ = std::make_shared<FarNoiseFit>();
   return plan;
 }
@@ -64,6 +78,11 @@ SurfaceDescription SimulationPlan::surface() const {
     d.tiling_wavelengths_m.push_back(c.tiling_wavelength_m);
   }
   d.far_noise = far_noise();
+  if (unresolved_slope_variance_) d.unresolved_slope_variance = unresolved_slope_variance_->total();
+  const float smoothness = packing::smoothness_from_normal_length(
+      packing::normal_length_from_roughness(static_cast<float>(config_.roughness)));
+  const double stored = std::floor(std::clamp(smoothness, 0.0f, 1.0f) * 255.0 + 0.5) / 255.0;
+  d.map_base_alpha_sq = std::pow(1.0 - stored, 4.0);  // the shaders' alpha_squared (R.5)
   return d;
 }
 

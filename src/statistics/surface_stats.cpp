@@ -74,6 +74,10 @@ double cox_munk_mean_square_slope(double wind_speed_mps) {
   return 0.003 + 5.12e-3 * wind_speed_mps;
 }
 
+SlopeVariance cox_munk_slope_variance(double wind_speed_mps) {
+  return {.upwind = 3.16e-3 * wind_speed_mps, .crosswind = 0.003 + 1.92e-3 * wind_speed_mps};
+}
+
 Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int seeds, double time_s,
                                            TaskRunner& runner_ref) {
   if (seeds < 1) {
@@ -102,7 +106,9 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
   if (std::isfinite(wind.wind_speed_mps)) {
     out.wind_speed_mps = wind.wind_speed_mps;
     out.cox_munk_mss = cox_munk_mean_square_slope(wind.wind_speed_mps);
+    out.cox_munk_slope_variance = cox_munk_slope_variance(wind.wind_speed_mps);
   }
+  out.unresolved_slope_variance = resolved.value().unresolved_slope_variance();
 
   // What the spectrum promises: Σ F·Δk² over the filled wave vectors, and the spread.
   const std::vector<double> power = expected_power(sea, n, patch, band);
@@ -131,6 +137,9 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
   double slope_sum = 0.0;
   std::size_t slope_count = 0, folded = 0, fold_j = 0;
   double foam_sum = 0.0;
+  const double wind_dir = config.sea.wind_sea.direction_rad;
+  const double cos_w = std::cos(wind_dir), sin_w = std::sin(wind_dir);
+  double up_sum = 0.0, cross_sum = 0.0;  // Σ over cascades of each one's area-weighted mean
   double min_j = std::numeric_limits<double>::infinity();
   double max_imag = 0.0;
   for (int s = 0; s < seeds; ++s) {
@@ -166,6 +175,24 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
     variance_sum += std::max(0.0, seed_sum2 / count - seed_mean * seed_mean);
     s1 += seed_sum;
     s2 += seed_sum2;
+
+    for (const CascadeFrame& cascade : sim.frame().cascades) {
+      double up = 0.0, cross = 0.0, area = 0.0;
+      for (std::size_t i = 0; i < texels; ++i) {
+        const double ny = cascade.normal[3 * i + 1];
+        const double w = std::max(static_cast<double>(cascade.jacobian[i]), 0.0);
+        if (ny <= 0.0 || w == 0.0) continue;
+        const double sx = -cascade.normal[3 * i] / ny, sz = -cascade.normal[3 * i + 2] / ny;
+        const double su = sx * cos_w + sz * sin_w, sc = sz * cos_w - sx * sin_w;
+        up += w * su * su;
+        cross += w * sc * sc;
+        area += w;
+      }
+      if (area > 0.0) {
+        up_sum += up / area;
+        cross_sum += cross / area;
+      }
+    }
 
     // Loop error, first seed: the surface at t + T against the one at t.
     if (s == 0 && config.loop_period_s > 0.0 && out.hs_spectrum_m > 0.0) {
@@ -205,6 +232,7 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
   }
   out.mean_square_slope = slope_count > 0 ? slope_sum / static_cast<double>(slope_count) : 0.0;
   out.folded_fraction = static_cast<double>(folded) / total;
+  out.resolved_slope_variance = {.upwind = up_sum / seeds, .crosswind = cross_sum / seeds};
   out.min_jacobian = min_j;
   out.foam_coverage = static_cast<double>(fold_j) / total;
   out.mean_foam = foam_sum / total;

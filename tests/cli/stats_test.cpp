@@ -17,9 +17,9 @@ using ocean_test::CliRun;
 const auto run_stats = ocean_test::run_cli;
 
 TEST(CliStats, JsonHasEveryKey) {
-  const CliRun r =
-      run_stats("stats --json --model pierson-moskowitz --wind-speed 8 --patch-size 800 --resolution 64 "
-          "--seeds 2");
+  const CliRun r = run_stats(
+      "stats --json --model pierson-moskowitz --wind-speed 8 --patch-size 800 --resolution 64 "
+      "--seeds 2");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"hs_measured_m",
@@ -30,6 +30,13 @@ TEST(CliStats, JsonHasEveryKey) {
                           "height_kurtosis",
                           "mean_square_slope",
                           "cox_munk_mss",
+                          "resolved_mss_upwind",
+                          "resolved_mss_crosswind",
+                          "unresolved_mss_upwind",
+                          "unresolved_mss_crosswind",
+                          "total_mss",
+                          "cox_munk_mss_upwind",
+                          "cox_munk_mss_crosswind",
                           "folded_fraction",
                           "min_jacobian",
                           "foam_coverage",
@@ -56,12 +63,14 @@ TEST(CliStats, JsonHasEveryKey) {
 
 TEST(CliStats, NullsAndDefaults) {
   // Hs/Tp sea: no wind speed, no Cox–Munk; no loop: no loop error. Default patch 1000 m.
-  const CliRun r =
-      run_stats("stats --json --model jonswap --hs 2 --tp 8 --resolution 32 --seeds 1 --loop-period 0 "
-          "--time 2.5");
+  const CliRun r = run_stats(
+      "stats --json --model jonswap --hs 2 --tp 8 --resolution 32 --seeds 1 --loop-period 0 "
+      "--time 2.5");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_TRUE(j["cox_munk_mss"].is_null());
+  EXPECT_TRUE(j["total_mss"].is_null());
+  EXPECT_TRUE(j["unresolved_mss_upwind"].is_null());
   EXPECT_TRUE(j["loop_error_rel_hs"].is_null());
   EXPECT_EQ(j["patch_size_m"].get<double>(), 1000.0);
   EXPECT_EQ(j["time_s"].get<double>(), 2.5);

@@ -261,3 +261,67 @@ TEST(SurfaceStats, RejectsBadArguments) {
 }
 
 }  // namespace
+
+// The moderate preset's sea (JONSWAP, 100 km fetch, Donelan–Banner spreading, cascades 1000,
+// 233, 57 and 13 m) at wind speed U.
+SimulationConfig moderate_sea(double wind_speed_mps, int resolution) {
+  SimulationConfig c;
+  c.sea.wind_sea.spectrum = {
+      .model = SpectrumModel::jonswap, .wind_speed_mps = wind_speed_mps, .fetch_m = 1e5};
+  c.sea.wind_sea.spreading.model = ocean::SpreadingModel::donelan_banner;
+  c.resolution = resolution;
+  c.cascade_patch_sizes_m = {1000.0, 233.0, 57.0, 13.0};
+  return c;
+}
+
+// Cox & Munk (1954) measured the slopes of the sea from the sun's glitter: clean surface,
+// σu² = 3.16e-3·U ± 0.004, σc² = 0.003 + 1.92e-3·U ± 0.004, σ² = 0.003 + 5.12e-3·U ± 0.004
+// (their regression lines and the scatter of their observations about them). The surface the
+// renderer shades is the cascades' slopes plus the roughness of the waves shorter than the finest
+// grid, both measured here: each figure must lie within the larger of Cox & Munk's ±0.004 and 20 %
+// of their line, from 3 to 15 m/s. The cascades alone hold 0.42–0.80 of it, so the short waves'
+// part is what the test checks as much as the fields.
+TEST(CoxMunk, CascadesAndTheShortWavesTheyLeaveOutHaveTheGlittersSlopes) {
+  for (const double u : {3.0, 5.0, 7.0, 10.0, 12.0, 15.0}) {
+    const SurfaceStats s = compute(moderate_sea(u, 128), 2);
+    ASSERT_TRUE(s.unresolved_slope_variance.has_value()) << u;
+    const ocean::SlopeVariance cm = ocean::cox_munk_slope_variance(u);
+    const ocean::SlopeVariance total{
+        .upwind = s.resolved_slope_variance.upwind + s.unresolved_slope_variance->upwind,
+        .crosswind = s.resolved_slope_variance.crosswind + s.unresolved_slope_variance->crosswind};
+    const auto tolerance = [](double v) { return std::max(0.004, 0.2 * v); };
+    const double cm_total = ocean::cox_munk_mean_square_slope(u);  // their own regression line
+    EXPECT_NEAR(total.total(), cm_total, tolerance(cm_total)) << "U = " << u;
+    EXPECT_NEAR(total.upwind, cm.upwind, tolerance(cm.upwind)) << "U = " << u;
+    EXPECT_NEAR(total.crosswind, cm.crosswind, tolerance(cm.crosswind)) << "U = " << u;
+    // Upwind slopes exceed crosswind ones, as in the glitter's elongated ellipse.
+    EXPECT_GT(total.upwind, 1.2 * total.crosswind) << "U = " << u;
+  }
+}
+
+// Where the cascades stop is a choice of the grid, not of the sea: a coarser grid resolves less
+// and leaves more to the short waves, and the sum is the same within 10 %.
+TEST(CoxMunk, TheTotalDoesNotDependOnTheGrid) {
+  const SurfaceStats coarse = compute(moderate_sea(10.0, 64), 2);
+  const SurfaceStats fine = compute(moderate_sea(10.0, 256), 1);
+  ASSERT_TRUE(coarse.unresolved_slope_variance && fine.unresolved_slope_variance);
+  EXPECT_LT(coarse.resolved_slope_variance.total(), 0.9 * fine.resolved_slope_variance.total());
+  EXPECT_GT(coarse.unresolved_slope_variance->total(),
+            1.2 * fine.unresolved_slope_variance->total());
+  const double a =
+      coarse.resolved_slope_variance.total() + coarse.unresolved_slope_variance->total();
+  const double b = fine.resolved_slope_variance.total() + fine.unresolved_slope_variance->total();
+  EXPECT_NEAR(a / b, 1.0, 0.1);
+}
+
+// A sea given by Hs and Tp names no wind: no short-wave roughness is invented for it.
+TEST(CoxMunk, AnHsTpSeaHasNoShortWavePart) {
+  SimulationConfig c;
+  c.sea.wind_sea.spectrum = {
+      .model = SpectrumModel::jonswap, .significant_wave_height_m = 2.0, .peak_period_s = 8.0};
+  c.resolution = 32;
+  const SurfaceStats s = compute(c, 1);
+  EXPECT_FALSE(s.unresolved_slope_variance.has_value());
+  EXPECT_FALSE(s.cox_munk_slope_variance.has_value());
+  EXPECT_GT(s.resolved_slope_variance.total(), 0.0);
+}

@@ -44,6 +44,18 @@ nlohmann::ordered_json optional_json(const std::optional<double>& v) {
   return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr);
 }
 
+std::optional<double> upwind(const std::optional<SlopeVariance>& v) {
+  return v ? std::optional<double>(v->upwind) : std::nullopt;
+}
+std::optional<double> crosswind(const std::optional<SlopeVariance>& v) {
+  return v ? std::optional<double>(v->crosswind) : std::nullopt;
+}
+// The cascades' slope variance and the waves shorter than they resolve: what Cox & Munk measured.
+std::optional<double> total_mss(const SurfaceStats& s) {
+  if (!s.unresolved_slope_variance) return std::nullopt;
+  return s.resolved_slope_variance.total() + s.unresolved_slope_variance->total();
+}
+
 std::vector<StatRow> rows(const SurfaceStats& s) {
   return {
       {"model", s.model, ""},
@@ -67,6 +79,13 @@ std::vector<StatRow> rows(const SurfaceStats& s) {
       {"height_kurtosis", optional_json(s.height_kurtosis), ""},
       {"mean_square_slope", s.mean_square_slope, ""},
       {"cox_munk_mss", optional_json(s.cox_munk_mss), ""},
+      {"resolved_mss_upwind", s.resolved_slope_variance.upwind, ""},
+      {"resolved_mss_crosswind", s.resolved_slope_variance.crosswind, ""},
+      {"unresolved_mss_upwind", optional_json(upwind(s.unresolved_slope_variance)), ""},
+      {"unresolved_mss_crosswind", optional_json(crosswind(s.unresolved_slope_variance)), ""},
+      {"total_mss", optional_json(total_mss(s)), ""},
+      {"cox_munk_mss_upwind", optional_json(upwind(s.cox_munk_slope_variance)), ""},
+      {"cox_munk_mss_crosswind", optional_json(crosswind(s.cox_munk_slope_variance)), ""},
       {"folded_fraction", s.folded_fraction, ""},
       {"min_jacobian", s.min_jacobian, ""},
       {"foam_coverage", s.foam_coverage, ""},

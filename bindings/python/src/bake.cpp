@@ -131,6 +131,19 @@ py::dict stats_dict(const SurfaceStats& s) {
   d["seeds"] = s.seeds;
   d["model"] = s.model;
   for (const auto& [name, field] : kNumbers) d[name] = s.*field;
+  d["resolved_mss_upwind"] = s.resolved_slope_variance.upwind;
+  d["resolved_mss_crosswind"] = s.resolved_slope_variance.crosswind;
+  const auto component = [](const std::optional<SlopeVariance>& v, double SlopeVariance::*field) {
+    return v ? py::object(py::float_((*v).*field)) : py::none();
+  };
+  d["unresolved_mss_upwind"] = component(s.unresolved_slope_variance, &SlopeVariance::upwind);
+  d["unresolved_mss_crosswind"] = component(s.unresolved_slope_variance, &SlopeVariance::crosswind);
+  d["total_mss"] = s.unresolved_slope_variance
+                       ? py::object(py::float_(s.resolved_slope_variance.total() +
+                                               s.unresolved_slope_variance->total()))
+                       : py::none();
+  d["cox_munk_mss_upwind"] = component(s.cox_munk_slope_variance, &SlopeVariance::upwind);
+  d["cox_munk_mss_crosswind"] = component(s.cox_munk_slope_variance, &SlopeVariance::crosswind);
   for (const auto& [name, field] : kOptionals)
     d[name] = (s.*field).has_value() ? py::object(py::float_(*(s.*field))) : py::none();
   return d;

@@ -48,16 +48,17 @@ float alpha_squared(float smoothness) {
   return r * r;
 }
 
-// One cascade's contribution to a pixel: surface gradient, foam, slope variance above α0².
+// One cascade's contribution to a pixel: surface gradient, foam, and the slope variance its mip
+// stores above a level-0 texel's: what the filtering averaged away (R.5).
 struct Shade {
   vec2 slope;
   float foam;
   float extra;
 };
-Shade shade_of(vec4 t, float alpha0_sq) {
+Shade shade_of(vec4 t) {
   vec2 n = t.xy * 2.0 - 1.0;
   float ny = sqrt(max(1.0 - dot(n, n), 0.05));
-  return Shade(n / ny, t.z, max(alpha_squared(t.w) - alpha0_sq, 0.0));
+  return Shade(n / ny, t.z, max(alpha_squared(t.w) - u.map_base_alpha_sq, 0.0));
 }
 
 void main() {
@@ -82,7 +83,7 @@ void main() {
     vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
     Shade plain = Shade(vec2(0.0), 0.0, 0.0), tiled = Shade(vec2(0.0), 0.0, 0.0);
     // Sampled in uniform control flow (implicit derivatives), used where the ratio is below 1.
-    plain = shade_of(texture(normal_map, vec3(uv, float(c))), alpha0_sq);
+    plain = shade_of(texture(normal_map, vec3(uv, float(c))));
     float taps_sum = 0.0;
     if (hex > 0.0) {
       HexTaps taps = hex_taps(uv, c);
@@ -90,7 +91,7 @@ void main() {
       for (int i = 0; i < 3; ++i) {
         vec4 t = textureGrad(normal_map, vec3(uv + taps.offset[i], float(c)), dx * inv_size,
                              dy * inv_size);
-        Shade one = shade_of(t, alpha0_sq);
+        Shade one = shade_of(t);
         float w = taps.weight[i];
         tiled.slope += w * one.slope;
         tiled.foam += w * one.foam;  // about the mean below, so flecks keep their contrast

@@ -187,9 +187,9 @@ struct FrameUniforms {
   vec3 water_colour;    // single-scattering albedo of the water body, RGB
   float crest_scatter;  // gain of the light through thin crests
   float foam_brightness;
-  float roughness;          // base microfacet α0 of the calm surface
+  float roughness;          // α0: √ of the slope variance of the waves below the finest cascade
   float fog_density_per_m;  // ρ of the horizon fog (R.8)
-  float shading_pad;
+  float map_base_alpha_sq;  // α² a level-0 texel of the normal map stores (R.5)
   vec2 grid_centre_m;   // world x, z of the quadtree's centre
   float ocean_size_m;   // side S of the quadtree square
   float border_fade_m;  // width over which the displacement fades out at the border (R.10)

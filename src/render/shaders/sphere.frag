@@ -29,7 +29,7 @@ void main() {
       vec2 slope = m / sqrt(max(1.0 - dot(m, m), 0.05));
       g += w[a] * (slope.x * kPlaneE1[a] + slope.y * kPlaneE2[a]);
       float r = (1.0 - t.w) * (1.0 - t.w);
-      variance += w[a] * w[a] * max(r * r - alpha0_sq, 0.0);
+      variance += w[a] * w[a] * max(r * r - u.map_base_alpha_sq, 0.0);  // as ocean.frag (R.5)
       foam += linear[a] * t.z;
     }
     no_foam *= 1.0 - foam / (1.0 + 0.6 * float(c));  // as ocean.frag (R.11)
