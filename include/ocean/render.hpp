@@ -47,8 +47,8 @@ struct ShadingParams {
   double aerosol_g = 0.76;          ///< Henyey–Greenstein asymmetry of the haze, [0, 0.99)
   /// Single-scattering albedo of the water body (deep Atlantic blue-green by default), [0, 1].
   std::array<double, 3> water_colour = {0.004, 0.016, 0.028};
-  double crest_scatter = 0.9;       ///< gain of the light through thin wave crests, ≥ 0
-  double foam_brightness = 1.0;     ///< foam albedo scale, ≥ 0
+  double crest_scatter = 0.9;    ///< gain of the light through thin wave crests, ≥ 0
+  double foam_brightness = 1.0;  ///< foam albedo scale, ≥ 0
   /// Microfacet α of the waves shorter than the finest cascade, (0, 1], for a sea that names no
   /// wind (given by Hs and Tp); a wind sea's is √ of its short-wave slope variance
   /// (SurfaceDescription::unresolved_slope_variance, docs/rendering.md R.5).
@@ -61,6 +61,19 @@ Status validate(const ShadingParams& params);
 /// Looks for the sky: "clear" (the defaults), "hazy", "overcast" (thick haze, no visible sun
 /// disc, grey water: storms), "sunset" (sun 4° up). invalid_argument for other names.
 Result<ShadingParams> sky_preset(std::string_view name);
+/// Supersampling's resolve (docs/rendering.md R.60): a picture drawn `factor` times wider and
+/// taller, averaged over factor × factor blocks in linear light — each sRGB value decoded
+/// (IEC 61966-2-1), the block's mean encoded again, rounded; alpha averaged as stored. `rgba` is
+/// width·height RGBA8, top row first; the result (width/factor)·(height/factor) pixels.
+/// invalid_argument when factor < 1, does not divide both sides, or the size does not match.
+Result<std::vector<std::uint8_t>> resolve_supersampled(std::span<const std::uint8_t> rgba,
+                                                       int width, int height, int factor);
+/// The same for linear HDR RGBA floats: the plain block mean.
+Result<std::vector<float>> resolve_supersampled(std::span<const float> rgba, int width, int height,
+                                                int factor);
+/// The largest supersampling factor `ocean render --supersample` takes.
+inline constexpr int kMaxSupersample = 4;
+
 /// The names sky_preset knows, in the order messages and help texts list them.
 inline constexpr std::array<std::string_view, 4> kSkyNames = {"clear", "hazy", "overcast",
                                                               "sunset"};

@@ -57,6 +57,31 @@ TEST(RenderCli, WritesAPngOfTheRequestedSize) {
   EXPECT_GT(blue(5, 2), blue(5, 43));
 }
 
+// --supersample N draws N times larger and writes the requested size, averaged in linear light
+// (R.60): a different picture from the plain one, of the same mean brightness within 2 %.
+TEST(RenderCli, SupersampleWritesTheRequestedSize) {
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const fs::path plain = scratch("plain.png"), super = scratch("super.png");
+  const ocean_test::CliRun a = ocean_test::run_cli("render --out " + plain.string() + kRenderSmall);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const ocean_test::CliRun b = ocean_test::run_cli("render --out " + super.string() + kRenderSmall +
+                                                   " --supersample 2 --json");
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  EXPECT_EQ(nlohmann::json::parse(b.out)["supersample"].get<int>(), 2);
+  auto p = ocean::io::read_png(plain);
+  auto q = ocean::io::read_png(super);
+  ASSERT_TRUE(p.ok() && q.ok());
+  EXPECT_EQ(q.value().width, 80);
+  EXPECT_EQ(q.value().height, 45);
+  EXPECT_NE(p.value().samples, q.value().samples);
+  double sp = 0.0, sq = 0.0;
+  for (std::size_t i = 0; i < p.value().samples.size(); ++i) {
+    sp += p.value().samples[i];
+    sq += q.value().samples[i];
+  }
+  EXPECT_NEAR(sq / sp, 1.0, 0.02);
+}
+
 // A preset's far_field_range (docs/rendering.md R.13) is the picture's unless --far-field-range
 // says otherwise: with [0, 1] the whole sea beyond a metre is the far field and the picture
 // changes; the flag with the default range gives back the default picture bit for bit.
@@ -120,6 +145,11 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --view xray", "--view");
   ocean_test::expect_usage_error("render --frames 1.5", "--frames");
   ocean_test::expect_usage_error("render --exposure nan", "--exposure");
+  ocean_test::expect_usage_error("render --supersample 5", "--supersample");
+  ocean_test::expect_usage_error("render --supersample 1.5", "--supersample");
+  ocean_test::expect_usage_error("render --supersample 4 --width 8192", "at most 16384 a side");
+  ocean_test::expect_usage_error("render --supersample 2 --motion-vectors m.png", "--supersample");
+  ocean_test::expect_usage_error("render --supersample 2 --contact-sheet s.png", "--supersample");
   // The far field's range (docs/rendering.md R.13): two finite distances, DMIN below DMAX.
   ocean_test::expect_usage_error("render --far-field-range 2000,1000", "DMIN must be below DMAX");
   ocean_test::expect_usage_error("render --far-field-range 500,500", "DMIN must be below DMAX");

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,7 @@ struct RenderOptions {
   WaveFlags waves;
   StereoFlags stereo;
   std::string motion_vectors;  // --motion-vectors FILE.png
+  std::string supersample = "1";
   bool json = false;
 };
 
@@ -62,6 +64,10 @@ constexpr NumberOption<double> kFps{
     .flag = "--fps", .accept = Accept::in_range, .lo = 1e-3, .hi = 1000.0};
 constexpr NumberOption<double> kSeabed{
     .flag = "--seabed", .accept = Accept::in_range, .lo = 1e-3, .hi = 1e4, .unit = "m"};
+constexpr NumberOption<int> kSupersample{.flag = "--supersample",
+                                         .accept = Accept::integer_in_range,
+                                         .lo = 1.0,
+                                         .hi = render::kMaxSupersample};
 constexpr NumberOption<double> kWarmup{
     .flag = "--warmup", .accept = Accept::in_range, .lo = 0.0, .hi = 600.0};
 
@@ -71,9 +77,9 @@ enum class OutputKind { png, exr, mp4 };
 constexpr int kDampingResolution = 512;
 
 struct Inputs {
-  std::optional<waves::LayerParams> layer;         // wakes and waveforms, or none
-  std::shared_ptr<const waves::Damping> damping;   // mask and bathymetry, or null
-  bool calm = false;                               // only the layer, no sea
+  std::optional<waves::LayerParams> layer;        // wakes and waveforms, or none
+  std::shared_ptr<const waves::Damping> damping;  // mask and bathymetry, or null
+  bool calm = false;                              // only the layer, no sea
   render::SceneParams scene;
   render::View view;
   OutputPattern out;  // --out, read by the output-name rule
@@ -82,6 +88,7 @@ struct Inputs {
   long long frames = 1;
   std::vector<ObjectSpec> objects;
   std::optional<double> ipd;  // --stereo: both eyes side by side, this far apart
+  int supersample = 1;        // the picture is drawn this many times wider and taller (R.60)
 };
 
 Result<Inputs> parse_inputs(const RenderOptions& o) {
@@ -129,6 +136,22 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
     if (in.scene.width > 8192)
       return invalid_argument("--stereo: --width is at most 8192 (the picture is twice as wide)");
     in.scene.width *= 2;
+  }
+  Result<int> supersample = parse(kSupersample, o.supersample);
+  if (!supersample.ok()) return supersample.status();
+  in.supersample = supersample.value();
+  if (in.supersample > 1) {
+    if (!o.motion_vectors.empty())
+      return invalid_argument("--motion-vectors are of the picture as drawn, not --supersample");
+    const long long drawn_w = static_cast<long long>(in.scene.width) * in.supersample;
+    const long long drawn_h = static_cast<long long>(in.scene.height) * in.supersample;
+    if (drawn_w > 16384 || drawn_h > 16384)
+      return invalid_argument("--supersample " + std::to_string(in.supersample) + " draws " +
+                              std::to_string(drawn_w) + " x " + std::to_string(drawn_h) +
+                              " pixels: at most 16384 a side (lower --width, --height or the "
+                              "factor)");
+    in.scene.width = static_cast<int>(drawn_w);
+    in.scene.height = static_cast<int>(drawn_h);
   }
   render::View& v = in.view;
   // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.
@@ -213,6 +236,17 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
   return in;
 }
 
+// The drawn picture averaged down to the written one (render::resolve_supersampled, R.60).
+template <class T>
+Status resolve(std::vector<T>& pixels, const Inputs& in) {
+  if (in.supersample == 1) return {};
+  Result<std::vector<T>> r = render::resolve_supersampled(
+      std::span<const T>(pixels), in.scene.width, in.scene.height, in.supersample);
+  if (!r.ok()) return r.status();
+  pixels = std::move(r).value();
+  return {};
+}
+
 // Frame f's file: a single frame, and an MP4 of any length, is written under the name; a
 // sequence's frames are numbered.
 std::filesystem::path frame_path(const Inputs& in, long long frame) {
@@ -243,6 +277,8 @@ constexpr SheetView kSheetViews[] = {{"low grazing (Hs + 1.5 m)", {0, 1.5, 0}, {
 constexpr const char* kSheetSeas[] = {"calm", "moderate", "storm"};
 
 int run_contact_sheet(const RenderOptions& o) {
+  if (o.supersample != RenderOptions{}.supersample)
+    return report(invalid_argument("--contact-sheet draws its tiles once: no --supersample"));
   if (Status s = check_output_name("--contact-sheet", o.contact_sheet); !s.ok()) return report(s);
   RenderOptions tile = o;
   if (o.picture.width == ViewFlags{}.width && o.picture.height == ViewFlags{}.height)
@@ -333,7 +369,8 @@ int run_render(const RenderOptions& o) {
           check_picture_memory(in.scene.width, in.scene.height, kBytesPerPixel[kind], kWhat[kind]);
       !s.ok())
     return report(s);
-  const int w = in.scene.width, h = in.scene.height;
+  // The picture written; the one drawn is --supersample times wider and taller.
+  const int w = in.scene.width / in.supersample, h = in.scene.height / in.supersample;
   VideoWriter video;
   if (in.kind == OutputKind::mp4) {
     if (Status s = video.open(in.out.name(), w, h, in.fps); !s.ok()) return report(s);
@@ -414,9 +451,11 @@ int run_render(const RenderOptions& o) {
     Status written;
     if (in.kind == OutputKind::exr) {
       if (Status s = renderer.read_hdr(hdr); !s.ok()) return report(s);
+      if (Status s = resolve(hdr, in); !s.ok()) return report(s);
       written = write_hdr_exr(path, w, h, hdr);
     } else {
       if (Status s = renderer.read_srgb(srgb); !s.ok()) return report(s);
+      if (Status s = resolve(srgb, in); !s.ok()) return report(s);
       written = in.kind == OutputKind::png ? write_srgb_png(path, w, h, srgb) : video.write(srgb);
     }
     if (!written.ok()) return report(written);
@@ -441,6 +480,7 @@ int run_render(const RenderOptions& o) {
     nlohmann::ordered_json j = {{"out", o.out},
                                 {"width", w},
                                 {"height", h},
+                                {"supersample", in.supersample},
                                 {"frames", in.frames},
                                 {"device", scene.context()->info.name},
                                 {"backend", in.scene.backend},
@@ -514,6 +554,9 @@ Command add_render_command(CLI::App& app) {
              "where the map covers it");
   add_wave_flags(*command, o->waves);
   add_stereo_flags(*command, o->stereo);
+  add_option(*command, kSupersample, o->supersample,
+             "draw the picture N times wider and taller and average each N x N block in linear "
+             "light (anti-aliasing; 1-4, default 1: N² times the drawing work)");
   command->add_option("--motion-vectors", o->motion_vectors,
                       "also write the last frame's motion vectors (camera and waves, pixels per "
                       "frame) as a PNG: red right, green down, grey still (docs/rendering.md "
