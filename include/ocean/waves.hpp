@@ -312,11 +312,13 @@ struct LocalFrame {
 class LocalLayer {
  public:
   /// Validates the parameters and computes each distinct (U, L) wake pattern once, on a table in
-  /// the object's frame (W.5–W.7; about 0.1–1 s for N = 512–1024). invalid_argument names the
-  /// offending wake or waveform ("wakes[1].speed_mps = -3 ...").
-  /// With `tables_from`, a pattern that layer holds for the same (U, L), g and area size and
-  /// resolution is shared instead of computed (W.17): a layer remade with a moving object's new
-  /// path costs the copy of its parameters, not a table. `tables_from` may be destroyed after.
+  /// the object's frame reaching twice the side behind the object, or the area's far corner from
+  /// an object farther away whose wake meets it (W.5–W.7; about 2 frames' evaluate, 0.02–0.7 s for
+  /// N = 512–2048). invalid_argument names the offending wake or waveform
+  /// ("wakes[1].speed_mps = -3 ..."). With `tables_from`, a pattern that layer holds for the same
+  /// (U, L), g and cell, reaching as far, is shared instead of computed (W.17): a layer remade
+  /// with a moving object's new path costs the copy of its parameters, not a table.
+  /// `tables_from` may be destroyed after.
   static Result<std::unique_ptr<LocalLayer>> make(LayerParams params,
                                                   const LocalLayer* tables_from = nullptr);
   ~LocalLayer();

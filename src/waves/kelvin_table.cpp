@@ -14,9 +14,12 @@
 //     with this project's sign, docs/math.md M.7.2).
 //
 // Evaluation (W.5): with u = tanθ the lateral wavenumber m = k0·u·√(1+u²) is monotonic in θ, so
-// each row s of the table is one inverse FFT over m of A(θ)·(dθ/dm)·i·e^{i·k_s(m)·s}; the FFT
-// period M·h must exceed twice the wake's half width (0.354·s for s within the table), which
-// bounds the aliasing to the Airy tail outside the cusps.
+// each row s of the table is one inverse FFT over m of A(θ)·(dθ/dm)·i·e^{i·k_s(m)·s}. Each row
+// keeps the columns of its own wedge and fringe, w(s) = 0.45·s + 2·2πU²/g + L (the cusp line is at
+// 0.354·s), and its transform's period M·h is at least 2·w(s) + w(0), which bounds the aliasing to
+// the Airy tail outside the cusps; M doubles in bands of rows as the wedge widens. The three
+// components travel in two transforms (the spectrum's even and odd parts), and a transform longer
+// than the FFT module's largest is split into S = M/P transforms of P points (W.5, W.7).
 #include "kelvin_table.hpp"
 
 #include <algorithm>
@@ -32,8 +35,6 @@ namespace ocean::waves::detail {
 namespace {
 
 constexpr double kPi = std::numbers::pi;
-constexpr int kMaxRows = 4096;              // bounds the table to ~100 MB at N = 4096
-constexpr int kMaxFftSize = fft::kMaxSize;  // the lateral transform
 
 double smoothstep(double t) {
   t = std::clamp(t, 0.0, 1.0);
@@ -83,6 +84,85 @@ std::vector<Mode> modes(const KelvinTableSpec& spec, double h, int m_count) {
   return out;
 }
 
+// The inverse DFT of M = S·P points from S transforms of P points (the FFT module's largest
+// is fft::kMaxSize): x[S·r + q] = Σ_{k<P} Y_q[k]·e^{2πi·k·r/P}, with
+// Y_q[k] = e^{2πi·q·k/M}·Σ_{j<S} X[k + j·P]·e^{2πi·q·j/S}. The combination runs in double
+// precision, the transforms in float. Two spectra at once: the table's three real components
+// travel as h + i·D_s and D_ζ (W.5).
+class LateralTransform {
+ public:
+  explicit LateralTransform(int m)
+      : m_(m), p_(std::min(m, fft::kMaxSize)), s_(m / p_), plan_(make_plan(p_)) {
+    const auto mm = static_cast<std::size_t>(m_), sm = static_cast<std::size_t>(s_);
+    if (s_ > 1) {
+      twiddle_.resize(mm);  // e^{2πi·t/M}
+      for (std::size_t t = 0; t < mm; ++t)
+        twiddle_[t] = std::polar(1.0, 2.0 * kPi * static_cast<double>(t) / m_);
+      roots_.resize(sm * sm);  // e^{2πi·q·j/S}
+      for (std::size_t q = 0; q < sm; ++q)
+        for (std::size_t j = 0; j < sm; ++j)
+          roots_[q * sm + j] = twiddle_[(q * j % sm) * (mm / sm)];
+    }
+    re_.resize(2 * mm);  // Y_q of spectrum c at [(q·2 + c)·P, …)
+    im_.resize(2 * mm);
+    for (auto& x : spectra_) x.resize(mm);
+  }
+  /// The two spectra to fill, each M long.
+  std::array<std::vector<std::complex<double>>, 2>& spectra() { return spectra_; }
+  /// Transforms them and writes, times `scale`, Re and Im of the first and Re of the second at
+  /// columns [0, cols) as out[3·col + 0, 1, 2].
+  void transform(int cols, double scale, float* out) {
+    const auto p = static_cast<std::size_t>(p_), sm = static_cast<std::size_t>(s_);
+    for (std::size_t c = 0; c < 2; ++c) {
+      const std::complex<double>* x = spectra_[c].data();
+      if (sm == 1) {
+        for (std::size_t k = 0; k < p; ++k) {
+          re_[c * p + k] = static_cast<float>(x[k].real());
+          im_[c * p + k] = static_cast<float>(x[k].imag());
+        }
+        continue;
+      }
+      for (std::size_t q = 0; q < sm; ++q) {
+        const std::complex<double>* root = roots_.data() + q * sm;
+        float* re = re_.data() + (q * 2 + c) * p;
+        float* im = im_.data() + (q * 2 + c) * p;
+        for (std::size_t k = 0; k < p; ++k) {
+          std::complex<double> y = x[k];
+          for (std::size_t j = 1; j < sm; ++j) y += x[k + j * p] * root[j];
+          y *= twiddle_[q * k];  // q·k < S·P = M
+          re[k] = static_cast<float>(y.real());
+          im[k] = static_cast<float>(y.imag());
+        }
+      }
+    }
+    for (std::size_t q = 0; q < sm; ++q) {
+      float* re = re_.data() + q * 2 * p;
+      float* im = im_.data() + q * 2 * p;
+      const std::array<fft::SplitComplex, 2> signals{{{re, im}, {re + p, im + p}}};
+      plan_.inverse(signals);
+      for (std::size_t r = 0; r < p; ++r) {
+        const std::size_t col = sm * r + q;
+        if (col >= static_cast<std::size_t>(cols)) break;
+        out[3 * col] = static_cast<float>(scale * re[r]);
+        out[3 * col + 1] = static_cast<float>(scale * im[r]);
+        out[3 * col + 2] = static_cast<float>(scale * re[p + r]);
+      }
+    }
+  }
+
+ private:
+  static fft::Plan1D make_plan(int p) {
+    Result<fft::Plan1D> plan = fft::Plan1D::make(p);
+    assert(plan.ok());
+    return std::move(plan).value();
+  }
+  int m_, p_, s_;
+  fft::Plan1D plan_;
+  std::vector<std::complex<double>> twiddle_, roots_;
+  std::array<std::vector<std::complex<double>>, 2> spectra_;
+  std::vector<float> re_, im_;
+};
+
 }  // namespace
 
 double KelvinTable::transverse_wavelength_m() const {
@@ -93,63 +173,79 @@ KelvinTable KelvinTable::make(const KelvinTableSpec& spec) {
   KelvinTable t;
   t.spec_ = spec;
   const double wavelength = t.transverse_wavelength_m();
-  // Half width: the cusp line (0.354·s) plus room for the Airy tail and the near field.
-  const double half_width = 0.45 * spec.length_m + 2.0 * wavelength + spec.hull_length_m;
+  // A row's half width: the cusp line (0.354·s) plus room for the Airy tail and the near field;
+  // its transform's period is at least twice that.
+  const double fringe = 2.0 * wavelength + spec.hull_length_m;
+  const auto width_at = [&](int row, double h) {
+    return static_cast<std::size_t>(std::ceil((0.45 * row * h + fringe) / h)) + 2;
+  };
+  const auto lateral_at = [&](int row, double h) {
+    return next_power_of_two(static_cast<int>(2 * width_at(row, h) + width_at(0, h)));
+  };
   double h = spec.spacing_m;
-  int m_count = 0;
   for (;; h *= 1.25) {
+    // Far too long or wide, before counting in integers.
+    if (std::ceil(spec.length_m / h) >= static_cast<double>(kMaxKelvinTableCells) ||
+        (0.45 * spec.length_m + fringe) / h >= kMaxKelvinLateral)
+      continue;
     t.rows_ = static_cast<int>(std::ceil(spec.length_m / h)) + 1;
-    t.cols_ = static_cast<int>(std::ceil(half_width / h)) + 2;
-    m_count = next_power_of_two(2 * t.cols_);
-    if (t.rows_ <= kMaxRows && m_count <= kMaxFftSize) break;
+    const int widest = lateral_at(t.rows_ - 1, h);
+    t.row_start_.assign(static_cast<std::size_t>(t.rows_) + 1, 0);
+    for (int row = 0; row < t.rows_; ++row) {
+      const auto r = static_cast<std::size_t>(row);
+      t.row_start_[r + 1] = t.row_start_[r] + width_at(row, h);
+    }
+    if (widest <= kMaxKelvinLateral && t.row_start_.back() <= kMaxKelvinTableCells) break;
   }
   t.spacing_m_ = h;
   const double k0 = 2.0 * kPi / wavelength;
   t.unresolved_ = k0 >= 2.0 * kPi / (3.0 * h);
-  const auto cells = static_cast<std::size_t>(t.rows_) * static_cast<std::size_t>(t.cols_);
-  t.values_.assign(3 * cells, 0.0f);
+  t.values_.assign(3 * t.row_start_.back(), 0.0f);
   if (t.unresolved_) return t;
 
-  const std::vector<Mode> mode = modes(spec, h, m_count);
-  Result<fft::Plan1D> plan = fft::Plan1D::make(m_count);
-  assert(plan.ok());
-  const auto m = static_cast<std::size_t>(m_count);
-  std::vector<float> re(3 * m), im(3 * m);
-  const std::array<fft::SplitComplex, 3> signals{{{re.data(), im.data()},
-                                                  {re.data() + m, im.data() + m},
-                                                  {re.data() + 2 * m, im.data() + 2 * m}}};
-  const double ramp_m = 0.5 * spec.hull_length_m, fade_m = 0.1 * spec.length_m;
-  // e^{i·k_s·s} of each mode, turned by e^{i·k_s·h} from one row to the next: the rotation's
-  // rounding grows by about 1e-16 a row, far below the table's float precision.
-  std::vector<std::complex<double>> phase(m, 1.0), turn(m);
-  for (std::size_t j = 0; j < m; ++j) turn[j] = std::polar(1.0, mode[j].k_s * h);
+  const double ramp_m = 0.5 * spec.hull_length_m;
   double peak = 0.0;
-  for (int row = 0; row < t.rows_; ++row) {
-    const double s = row * h;
+  // Rows in bands of one transform size, which doubles as the wedge widens.
+  for (int first = 0; first < t.rows_;) {
+    const int m_count = lateral_at(first, h);
+    int end = first;
+    while (end < t.rows_ && lateral_at(end, h) == m_count) ++end;
+    const std::vector<Mode> mode = modes(spec, h, m_count);
+    LateralTransform lateral(m_count);
+    auto& [packed, odd] = lateral.spectra();
+    const auto m = static_cast<std::size_t>(m_count);
+    // e^{i·k_s·s} of each mode, turned by e^{i·k_s·h} from one row to the next: the rotation's
+    // rounding grows by about 1e-16 a row, far below the table's float precision.
+    std::vector<std::complex<double>> phase(m), turn(m);
     for (std::size_t j = 0; j < m; ++j) {
-      const Mode& q = mode[j];
-      const double c = phase[j].real(), sn = phase[j].imag();
-      phase[j] *= turn[j];
-      // h̃ = w·i·e^{iψ} (W.5); D̃ = i·k̂·h̃ = −w·k̂·e^{iψ} (W.6).
-      re[j] = static_cast<float>(-q.weight * sn);
-      im[j] = static_cast<float>(q.weight * c);
-      re[m + j] = static_cast<float>(-q.weight * q.cos_theta * c);
-      im[m + j] = static_cast<float>(-q.weight * q.cos_theta * sn);
-      re[2 * m + j] = static_cast<float>(-q.weight * q.sin_theta * c);
-      im[2 * m + j] = static_cast<float>(-q.weight * q.sin_theta * sn);
+      phase[j] = std::polar(1.0, mode[j].k_s * first * h);
+      turn[j] = std::polar(1.0, mode[j].k_s * h);
     }
-    plan.value().inverse(signals);
-    // The wave part starts at the object: ramp it in over half a hull length, and fade it out
-    // over the last tenth of the table so that it ends without a step (W.7).
-    const double window = smoothstep(s / ramp_m) * smoothstep((spec.length_m - s) / fade_m);
-    float* out =
-        t.values_.data() + 3 * static_cast<std::size_t>(row) * static_cast<std::size_t>(t.cols_);
-    for (int col = 0; col < t.cols_; ++col) {
-      const auto c = static_cast<std::size_t>(col);
-      for (std::size_t k = 0; k < 3; ++k)
-        out[3 * c + k] = static_cast<float>(window * re[k * m + c]);
-      peak = std::max(peak, std::abs(static_cast<double>(out[3 * c])));
+    for (int row = first; row < end; ++row) {
+      const double s = row * h;
+      for (std::size_t j = 0; j < m; ++j) {
+        const Mode& q = mode[j];
+        const double c = phase[j].real(), sn = phase[j].imag();
+        phase[j] *= turn[j];
+        // h̃ = w·i·e^{iψ} (W.5); D̃ = i·k̂·h̃ = −w·k̂·e^{iψ} (W.6). Modes ±m share w, k_s and
+        // cosθ and have opposite sinθ, so the real parts of the three transforms are those of
+        // the spectra's even parts −w·sinψ and −w·cosθ·cosψ and odd part −i·w·sinθ·sinψ:
+        // h + i·D_s from one transform, D_ζ from another.
+        packed[j] = {-q.weight * sn, -q.weight * q.cos_theta * c};
+        odd[j] = {0.0, -q.weight * q.sin_theta * sn};
+      }
+      // The wave part starts at the object: ramp it in over half a hull length, and fade it
+      // out over the table's last fade_m so that it ends without a step (W.7).
+      const double window = smoothstep(s / ramp_m) * smoothstep((spec.length_m - s) / spec.fade_m);
+      const auto r = static_cast<std::size_t>(row);
+      const auto cols = static_cast<int>(t.row_start_[r + 1] - t.row_start_[r]);
+      float* out = t.values_.data() + 3 * t.row_start_[r];
+      lateral.transform(cols, window, out);
+      for (int col = 0; col < cols; ++col)
+        peak =
+            std::max(peak, std::abs(static_cast<double>(out[3 * static_cast<std::size_t>(col)])));
     }
+    first = end;
   }
   if (peak > 0.0) {
     const auto scale = static_cast<float>(1.0 / peak);
@@ -160,17 +256,19 @@ KelvinTable KelvinTable::make(const KelvinTableSpec& spec) {
 
 std::array<double, 3> KelvinTable::sample(double s, double zeta) const {
   const double u = s / spacing_m_, v = std::abs(zeta) / spacing_m_;
-  if (!(u >= 0.0 && v >= 0.0 && u < rows_ - 1 && v < cols_ - 1)) return {0.0, 0.0, 0.0};
-  const double r0 = std::floor(u), c0 = std::floor(v);
-  const double fr = u - r0, fc = v - c0;
-  const auto base = 3 * (static_cast<std::size_t>(r0) * static_cast<std::size_t>(cols_) +
-                         static_cast<std::size_t>(c0));
-  const std::size_t down = 3 * static_cast<std::size_t>(cols_);
+  if (!(u >= 0.0 && v >= 0.0 && u < rows_ - 1)) return {0.0, 0.0, 0.0};
+  const auto r0 = static_cast<std::size_t>(u);
+  const std::size_t top_row = row_start_[r0], bottom_row = row_start_[r0 + 1];
+  // The narrower row (the nearer one) bounds both: rows widen with s.
+  if (!(v < static_cast<double>(bottom_row - top_row - 1))) return {0.0, 0.0, 0.0};
+  const auto c0 = static_cast<std::size_t>(v);
+  const double fr = u - static_cast<double>(r0), fc = v - static_cast<double>(c0);
   std::array<double, 3> out{};
   for (std::size_t k = 0; k < 3; ++k) {
-    const float* p = values_.data() + base + k;
+    const float* p = values_.data() + 3 * (top_row + c0) + k;
+    const float* q = values_.data() + 3 * (bottom_row + c0) + k;
     const double top = p[0] * (1.0 - fc) + p[3] * fc;
-    const double bottom = p[down] * (1.0 - fc) + p[down + 3] * fc;
+    const double bottom = q[0] * (1.0 - fc) + q[3] * fc;
     out[k] = top * (1.0 - fr) + bottom * fr;
   }
   if (zeta < 0.0) out[2] = -out[2];  // D_ζ is odd in ζ, h and D_s even

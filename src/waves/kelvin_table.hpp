@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 namespace ocean::waves::detail {
@@ -14,7 +15,14 @@ struct KelvinTableSpec {
   double gravity_mps2 = 9.81;   ///< g
   double spacing_m = 1.0;       ///< wanted cell size (the layer's); grown if the table gets too big
   double length_m = 100.0;      ///< distance behind the object the table covers
+  double fade_m = 10.0;         ///< the pattern fades out over the table's last fade_m (W.7)
 };
+
+/// The most cells (s, ζ) a table holds: 2^24, 192 MiB of (h, D_s, D_ζ) floats. A table that
+/// would hold more at the wanted spacing is computed on a coarser one (W.7).
+inline constexpr std::size_t kMaxKelvinTableCells = std::size_t{1} << 24;
+/// The longest lateral transform: four transforms of fft::kMaxSize (W.5).
+inline constexpr int kMaxKelvinLateral = 16384;
 
 class KelvinTable {
  public:
@@ -30,6 +38,7 @@ class KelvinTable {
   [[nodiscard]] double hull_length_m() const { return spec_.hull_length_m; }
   [[nodiscard]] double gravity_mps2() const { return spec_.gravity_mps2; }
   [[nodiscard]] double length_m() const { return spec_.length_m; }
+  [[nodiscard]] double fade_m() const { return spec_.fade_m; }
   /// The spacing the spec asked for (spacing_m() may be larger).
   [[nodiscard]] double requested_spacing_m() const { return spec_.spacing_m; }
   [[nodiscard]] double spacing_m() const { return spacing_m_; }
@@ -42,9 +51,11 @@ class KelvinTable {
   KelvinTableSpec spec_;
   double spacing_m_ = 1.0;
   int rows_ = 0;  ///< s = row·spacing, row ∈ [0, rows)
-  int cols_ = 0;  ///< ζ = col·spacing, col ∈ [0, cols) (the pattern is mirror-symmetric)
   bool unresolved_ = false;
-  std::vector<float> values_;  ///< (h, D_s, D_ζ) per cell, index row·cols + col
+  /// Row r holds ζ = col·spacing for col ∈ [0, row_start_[r + 1] − row_start_[r]) (the pattern
+  /// is mirror-symmetric): the wedge and its Airy tail, 0.45·s + 2·2πU²/g + L, widening with s.
+  std::vector<std::size_t> row_start_;
+  std::vector<float> values_;  ///< (h, D_s, D_ζ) per cell, index row_start_[row] + col
 };
 
 }  // namespace ocean::waves::detail

@@ -2,8 +2,12 @@
 // made up front (or shared with an earlier layer that has it, W.17), and the per-frame
 // composition of wakes (tables moved and turned to each object's pose) and waveforms under the
 // soft edge (W.7–W.10).
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <numbers>
 #include <string>
 
 #include "kelvin_table.hpp"
@@ -51,11 +55,66 @@ std::size_t LocalLayer::tables_computed() const { return impl_->computed; }
 namespace {
 
 // Speeds equal to 1e-6 share a table: a path at constant speed gives segment speeds that differ
-// in their last bits (a circle of 5° chords, 400 of them, made 400 tables).
+// in their last bits (a circle of 5° chords, 400 of them, made 400 tables). A table that reaches
+// at least as far serves.
 bool same_table(const detail::KelvinTable& t, const detail::KelvinTableSpec& want) {
   return std::abs(t.speed_mps() - want.speed_mps) <= 1e-6 * want.speed_mps &&
          t.hull_length_m() == want.hull_length_m && t.gravity_mps2() == want.gravity_mps2 &&
-         t.requested_spacing_m() == want.spacing_m && t.length_m() == want.length_m;
+         t.requested_spacing_m() == want.spacing_m &&
+         t.length_m() - t.fade_m() >= want.length_m - want.fade_m;
+}
+
+// Whether the area meets the wedge |ζ| ≤ 0.5·s + w0, s ≥ 0 (26.6°, beyond the cusp's Airy tail,
+// widened by the table's fringe w0) of a straight-course object at t = 0: two convex regions are
+// apart exactly when their projections on one of their edges' normals are (separating axes).
+bool meets_wedge(const std::array<std::array<double, 2>, 4>& corners, double w0) {
+  const auto apart = [&](double ns, double nz) {  // along (ns, nz) in (s, ζ)
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& [cs, cz] : corners) {
+      lo = std::min(lo, ns * cs + nz * cz);
+      hi = std::max(hi, ns * cs + nz * cz);
+    }
+    // The wedge's projection: its front corners (0, ±w0) and its edges' directions (2, ±1).
+    double w_lo = std::min(nz * w0, -nz * w0), w_hi = std::max(nz * w0, -nz * w0);
+    for (const double side : {1.0, -1.0}) {
+      const double along = 2.0 * ns + side * nz;
+      if (along > 0.0) w_hi = std::numeric_limits<double>::infinity();
+      if (along < 0.0) w_lo = -std::numeric_limits<double>::infinity();
+    }
+    return hi < w_lo || lo > w_hi;
+  };
+  const double c = corners[1][0] - corners[0][0], d = corners[1][1] - corners[0][1];
+  return !(apart(1.0, 0.0) || apart(-0.5, 1.0) || apart(-0.5, -1.0) || apart(-d, c) || apart(c, d));
+}
+
+// How far behind its object a wake's table reaches (W.7): twice the area's side, or, for an
+// object farther away whose wake meets the area at t = 0, to the farthest of the area's corners
+// behind it (for a path, the farthest corner from any waypoint) and a fade more, in steps of a
+// quarter side (a layer remade as a distant object moves on shares the table until it has gone a
+// quarter side farther). The fade at its end: a tenth of it, at most a quarter side.
+std::array<double, 2> table_length(const KelvinWake& w, const LocalArea& area, double gravity) {
+  const double x0 = area.origin_m[0], z0 = area.origin_m[1], side = area.size_m;
+  const std::array<std::array<double, 2>, 4> corners{
+      {{x0, z0}, {x0 + side, z0}, {x0 + side, z0 + side}, {x0, z0 + side}}};
+  double reach = 0.0;
+  if (w.path.empty()) {
+    const WakePose p = pose_at(w, 0.0);
+    const double c = std::cos(p.heading_rad), sn = std::sin(p.heading_rad);
+    std::array<std::array<double, 2>, 4> local{};  // (s, ζ) of the corners
+    for (std::size_t i = 0; i < 4; ++i) {
+      const double dx = corners[i][0] - p.x_m, dz = corners[i][1] - p.z_m;
+      local[i] = {-(dx * c + dz * sn), -dx * sn + dz * c};
+      reach = std::max(reach, local[i][0]);
+    }
+    const double wavelength = 2.0 * std::numbers::pi * p.speed_mps * p.speed_mps / gravity;
+    if (!meets_wedge(local, 2.0 * wavelength + w.hull_length_m)) reach = 0.0;
+  } else {
+    for (const Waypoint& p : w.path)
+      for (const auto& [x, z] : corners) reach = std::max(reach, std::hypot(x - p.x_m, z - p.z_m));
+  }
+  const double step = 0.25 * side;
+  const double length = std::max(2.0 * side, step * std::ceil((reach + step) / step));
+  return {length, std::min(0.1 * length, step)};
 }
 
 }  // namespace
@@ -77,14 +136,36 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
   std::unique_ptr<LocalLayer> layer(new LocalLayer());
   layer->impl_ = std::make_unique<Impl>();
   Impl& impl = *layer->impl_;
+  // Each wake's speeds, with its table's reach; wakes of one (U, L) share the longest reach.
+  std::vector<std::vector<detail::KelvinTableSpec>> wanted;
   for (const KelvinWake& w : params.wakes) {
-    std::vector<std::size_t> mine;
+    std::vector<detail::KelvinTableSpec>& specs = wanted.emplace_back();
     for (double speed : speeds_of(w)) {
-      const detail::KelvinTableSpec spec{.speed_mps = speed,
-                                         .hull_length_m = w.hull_length_m,
-                                         .gravity_mps2 = params.gravity_mps2,
-                                         .spacing_m = params.area.size_m / params.area.resolution,
-                                         .length_m = 2.0 * params.area.size_m};
+      const auto [length, fade] = table_length(w, params.area, params.gravity_mps2);
+      specs.push_back({.speed_mps = speed,
+                       .hull_length_m = w.hull_length_m,
+                       .gravity_mps2 = params.gravity_mps2,
+                       .spacing_m = params.area.size_m / params.area.resolution,
+                       .length_m = length,
+                       .fade_m = fade});
+    }
+  }
+  for (auto& specs : wanted) {
+    for (detail::KelvinTableSpec& spec : specs) {
+      for (const auto& other : wanted) {
+        for (const detail::KelvinTableSpec& o : other) {
+          if (std::abs(o.speed_mps - spec.speed_mps) <= 1e-6 * spec.speed_mps &&
+              o.hull_length_m == spec.hull_length_m && o.length_m > spec.length_m) {
+            spec.length_m = o.length_m;
+            spec.fade_m = o.fade_m;
+          }
+        }
+      }
+    }
+  }
+  for (const auto& specs : wanted) {
+    std::vector<std::size_t> mine;
+    for (const detail::KelvinTableSpec& spec : specs) {
       std::size_t found = impl.tables.size();
       for (std::size_t t = 0; t < impl.tables.size(); ++t) {
         if (same_table(*impl.tables[t], spec)) found = t;

@@ -50,6 +50,32 @@ TEST(KelvinWake, SteadyWakeMovesWithItsObjectUnchanged) {
   EXPECT_GT(largest, 0.05);  // the comparison saw the wake, not an empty field
 }
 
+// An area the wake trails into from far behind its object (W.7): its heights and displacements
+// are those a layer holding the object gives at the same points, on the same cells (0.39 m). The
+// area lies 150–175 m behind a boat at Fr = 0.3, six times its own side: a table reaching twice
+// the side behind the object would give it no wake at all.
+TEST(KelvinWake, AnAreaFarBehindItsObjectSeesTheWakeOfALayerHoldingIt) {
+  const KelvinWake wake{
+      .x_m = 190.0, .z_m = 0.0, .heading_deg = 0.0, .speed_mps = 2.9714, .hull_length_m = 10.0};
+  LayerParams holding;
+  holding.area = {
+      .origin_m = {-10.0, -100.0}, .size_m = 200.0, .resolution = 512, .edge_fraction = 0.0};
+  holding.wakes = {wake};
+  LayerParams far = holding;
+  far.area = {.origin_m = {15.0, -5.0}, .size_m = 25.0, .resolution = 64, .edge_fraction = 0.0};
+  const auto whole = make(holding), part = make(far);
+  double largest = 0.0, differs = 0.0;
+  for (double x = 15.5; x < 40.0; x += 0.37) {
+    for (double z = -4.5; z < 20.0; z += 0.41) {
+      const auto a = whole->displacement_at(x, z, 0.0), b = part->displacement_at(x, z, 0.0);
+      for (int k = 0; k < 3; ++k) differs = std::max(differs, std::abs(a[k] - b[k]));
+      largest = std::max(largest, std::abs(a[1]));
+    }
+  }
+  EXPECT_GT(largest, 0.02);        // the wake is there, 150–175 m behind (peak 0.2 m)
+  EXPECT_LT(differs, 1e-6 * 0.2);  // float rounding of the tables (normalised to 1)
+}
+
 TEST(KelvinWake, TurnsWithItsHeading) {
   const auto east = make(boat(0.0));
   const auto north = make(boat(90.0));
