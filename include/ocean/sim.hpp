@@ -326,6 +326,14 @@ class Simulator {
 
   /// The last published frame.
   [[nodiscard]] const Frame& frame() const;
+  /// Hands one of the two frame buffers (`buffer`: frame() or the one the next step writes, the
+  /// back buffer) to the caller and puts a copy of it in its place. The returned Frame owns the
+  /// buffer's arrays at the same addresses, so pointers into them stay valid after later steps;
+  /// the simulation continues exactly as before (the copy holds the same data). Waits for a
+  /// kicked frame first. Allocates one frame. `buffer` must be one of the two buffers.
+  [[nodiscard]] Frame detach(const Frame& buffer);
+  /// The buffer the next step or kick writes (the one frame() is not).
+  [[nodiscard]] const Frame& back_buffer() const;
   [[nodiscard]] const SimulationConfig& config() const { return config_; }
   /// The plan the backend was configured from (its config() is the configuration before any
   /// set_far_noise_origin).

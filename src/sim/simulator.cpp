@@ -2,6 +2,7 @@
 // computation with reading the current one (Aebi, VR Ocean, §4.3: double buffering).
 #include <cassert>
 #include <cmath>
+#include <utility>
 
 #include "ocean/plan.hpp"
 #include "ocean/sim.hpp"
@@ -77,6 +78,9 @@ Status Simulator::reconfigure(const SimulationPlan& plan) {
 void Simulator::compute(double time_s) {
   Frame& back = frames_[1 - front_];
   backend_->step(time_s, back);
+  // Each of the two buffers is written every second frame: the published count is the front
+  // frame's plus one, not the buffer's own count of writes.
+  back.index = frames_[front_].index + 1;
   apply_band_roles(config_, back);
   compute_local_surface(back);
 }
@@ -102,6 +106,17 @@ void Simulator::wait() {
 }
 
 const Frame& Simulator::frame() const { return frames_[front_]; }
+
+const Frame& Simulator::back_buffer() const { return frames_[1 - front_]; }
+
+Frame Simulator::detach(const Frame& buffer) {
+  wait();
+  assert(&buffer == &frames_[0] || &buffer == &frames_[1]);
+  Frame& slot = frames_[&buffer == &frames_[0] ? 0 : 1];
+  Frame copy = slot;
+  std::swap(copy, slot);
+  return copy;
+}
 
 void Simulator::set_far_noise_origin(const std::array<double, 2>& origin_m) {
   assert(std::isfinite(origin_m[0]) && std::isfinite(origin_m[1]) && std::abs(origin_m[0]) <= 1e9 &&

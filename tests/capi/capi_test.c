@@ -115,6 +115,19 @@ static void test_reference(const struct reference* r) {
   OK(ocean_simulator_wait(sim));
   OK(ocean_simulator_heights(sim, r->x, r->z, r->points, heights));
   for (i = 0; i < r->points; ++i) CHECK(heights[i] == r->h[i]);
+  /* Frames are counted one by one, whichever of the two buffers holds them, stepped or kicked. */
+  OK(ocean_simulator_frame_time(sim, NULL, &index));
+  CHECK(index == 3);
+  for (i = 4; i <= 7; ++i) {
+    if (i % 2 == 0) {
+      OK(ocean_simulator_step(sim, r->time_s + (double)i));
+    } else {
+      OK(ocean_simulator_kick(sim, r->time_s + (double)i));
+      OK(ocean_simulator_wait(sim));
+    }
+    OK(ocean_simulator_frame_time(sim, NULL, &index));
+    CHECK(index == i);
+  }
   ocean_simulator_destroy(sim);
   ocean_config_destroy(config);
 

@@ -5,12 +5,17 @@
 // buffer (no copy), except `height`, a strided view of the displacement's h column (no copy
 // either). Every array of one fields() call shares one FrameView base object that keeps the
 // simulator alive, so an array never outlives the memory it points into. The Simulator double-
-// buffers: the frame published by step k is overwritten by step k + 2. A step (or kick) that
-// would overwrite a buffer some array still views raises RuntimeError instead: the data an array
-// shows never changes under it and never dangles. Copy what you keep (numpy.array(view)).
+// buffers: the frame published by step k is the buffer step k + 2 writes. When a step (or kick,
+// or reconfigure) is about to write a buffer that some array still views, the buffer is handed
+// to its views (Simulator::detach: the arrays keep their memory, the simulator continues in a
+// copy), so a held array never changes, never dangles and never blocks a step. The cost is one
+// frame's copy per step while views of that buffer are alive; arrays no longer referenced (and
+// collected) cost nothing.
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <memory>
 #include <mutex>
 #include <shared_mutex>
 #include <string>
@@ -28,48 +33,57 @@ namespace py = pybind11;
 namespace ocean::python {
 namespace {
 
-// The simulator and the count of live views of each frame buffer, shared with the views.
+class FrameView;
+
+// The simulator and the live views of each of its frame buffers, shared with the views.
 struct SimulatorState {
   std::unique_ptr<Simulator> sim;
   std::shared_mutex mutex;  // exclusive: step, kick, wait, reconfigure; shared: reads and queries
-  std::mutex views_mutex;
-  std::vector<std::pair<const Frame*, int>> views;  // buffer → live FrameView objects
+  std::mutex views_mutex;   // guards `views` and every view's frame and holder
+  std::vector<FrameView*> views;
 
-  void add_view(const Frame* f, int delta) {
+  void add(FrameView* v) {
     const std::lock_guard lock(views_mutex);
-    for (auto& [frame, n] : views) {
-      if (frame == f) {
-        n += delta;
-        return;
-      }
-    }
-    views.emplace_back(f, delta);
+    views.push_back(v);
   }
-  // Live views of every buffer but `keep` (null: of every buffer).
-  int views_except(const Frame* keep) {
+  void remove(FrameView* v) {
     const std::lock_guard lock(views_mutex);
-    int total = 0;
-    for (const auto& [frame, n] : views)
-      if (frame != keep) total += n;
-    return total;
+    std::erase(views, v);
   }
+  // With the exclusive lock held: gives `buffer` to the views that show it, if any.
+  void detach_if_viewed(const Frame& buffer);
 };
 
-// The base object of every field array: holds the simulator and counts as a view of its frame.
+// The base object of every field array: holds the simulator, and the frame's arrays once the
+// simulator has handed them over (detach_if_viewed).
 class FrameView {
  public:
   FrameView(std::shared_ptr<SimulatorState> state, const Frame* frame)
       : state_(std::move(state)), frame_(frame) {
-    state_->add_view(frame_, +1);
+    state_->add(this);
   }
-  ~FrameView() { state_->add_view(frame_, -1); }
+  ~FrameView() { state_->remove(this); }
   FrameView(const FrameView&) = delete;
   FrameView& operator=(const FrameView&) = delete;
 
  private:
+  friend struct SimulatorState;
   std::shared_ptr<SimulatorState> state_;
-  const Frame* frame_;
+  const Frame* frame_;                   // the simulator's buffer, or *owned_ once handed over
+  std::shared_ptr<const Frame> owned_;  // the handed-over buffer, shared by its views
 };
+
+void SimulatorState::detach_if_viewed(const Frame& buffer) {
+  const std::lock_guard lock(views_mutex);
+  if (std::none_of(views.begin(), views.end(), [&](FrameView* v) { return v->frame_ == &buffer; }))
+    return;
+  auto owned = std::make_shared<const Frame>(sim->detach(buffer));
+  for (FrameView* v : views) {
+    if (v->frame_ != &buffer) continue;
+    v->frame_ = owned.get();
+    v->owned_ = owned;
+  }
+}
 
 class PySimulator {
  public:
@@ -91,8 +105,10 @@ class PySimulator {
     {
       const py::gil_scoped_release release;
       const std::unique_lock lock(state_->mutex);
-      s = refuse_if_viewed(nullptr);
-      if (s.ok()) s = state_->sim->reconfigure(config);
+      state_->sim->wait();
+      state_->detach_if_viewed(state_->sim->frame());
+      state_->detach_if_viewed(state_->sim->back_buffer());
+      s = state_->sim->reconfigure(config);
     }
     check(s);
   }
@@ -187,31 +203,15 @@ class PySimulator {
   [[nodiscard]] std::string backend() const { return std::string(state_->sim->backend().name()); }
 
  private:
-  // Steps (kick = in the background) after publishing any kicked frame, unless the buffer the
-  // step writes is still viewed.
+  // Steps (kick = in the background) after publishing any kicked frame; a back buffer that is
+  // still viewed goes to its views first.
   void advance(double time_s, bool kick) {
     check(require_finite("time_s", time_s));
-    Status s;
-    {
-      const py::gil_scoped_release release;
-      const std::unique_lock lock(state_->mutex);
-      state_->sim->wait();
-      s = refuse_if_viewed(&state_->sim->frame());
-      if (s.ok()) kick ? state_->sim->kick(time_s) : state_->sim->step(time_s);
-    }
-    check(s);
-  }
-
-  // With the exclusive lock held: an error when a frame buffer other than `keep` (null: any)
-  // is still viewed.
-  Status refuse_if_viewed(const Frame* keep) {
-    const int live = state_->views_except(keep);
-    if (live == 0) return {};
-    return {ErrorCode::internal,
-            std::string(keep ? "this step would overwrite" : "reconfigure would free") +
-                " a frame that " + std::to_string(live) +
-                " field view(s) from fields() still show: copy what you keep "
-                "(numpy.array(view)) and delete the views first"};
+    const py::gil_scoped_release release;
+    const std::unique_lock lock(state_->mutex);
+    state_->sim->wait();
+    state_->detach_if_viewed(state_->sim->back_buffer());
+    kick ? state_->sim->kick(time_s) : state_->sim->step(time_s);
   }
 
   std::shared_ptr<SimulatorState> state_;
@@ -221,8 +221,8 @@ class PySimulator {
 
 void bind_simulator(py::module_& m) {
   py::class_<FrameView>(m, "FrameView",
-                        "The base object of field arrays: keeps the simulator alive and its "
-                        "frame from being overwritten while any array of it exists.");
+                        "The base object of field arrays: keeps the simulator alive, and its "
+                        "frame's memory once a step has moved on from it.");
   py::class_<PySimulator>(m, "Simulator",
                           "A simulation of the preset's sea on a backend ('cpu', 'vulkan').")
       .def(py::init(
