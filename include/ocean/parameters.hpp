@@ -104,5 +104,10 @@ constexpr const ParameterDoc& parameter(const std::array<ParameterDoc, N>& table
 /// `message` with every whole-word field name of `table` replaced by its flag ("--hs = -1 is out
 /// of range: ..."), fields in table order; a name already written as a flag stays.
 std::string with_flag_names(std::string message, std::span<const ParameterDoc> table);
+/// `message` with every whole-word field name of `table` replaced by its keyword ("hs = -1 is
+/// out of range: ..."), and every flag ("--wind-speed") by the keyword of the same name, hyphens
+/// as underscores ("wind_speed"); a flag followed by a placeholder in capitals ("--fetch M")
+/// becomes an assignment ("fetch=M"). The names a Python caller wrote.
+std::string with_keyword_names(std::string message, std::span<const ParameterDoc> table);
 
 }  // namespace ocean::params

@@ -142,8 +142,13 @@ Result<std::vector<double>> parse_list(const NumberOption<double>& option,
   return values;
 }
 
-std::string with_flag_names(std::string message, std::span<const ParameterDoc> table) {
+namespace {
+
+// Every whole-word field name of `table` in `message` replaced by the member `name` of its row.
+std::string with_names(std::string message, std::span<const ParameterDoc> table,
+                       std::string_view ParameterDoc::*name) {
   for (const ParameterDoc& p : table) {
+    const std::string_view replacement = p.*name;
     std::size_t pos = 0;
     while ((pos = message.find(p.field, pos)) != std::string::npos) {
       const std::size_t end = pos + p.field.size();
@@ -151,14 +156,52 @@ std::string with_flag_names(std::string message, std::span<const ParameterDoc> t
       const bool starts = pos == 0 || !(is_word_char(message[pos - 1]) || message[pos - 1] == '-');
       const bool ends = end == message.size() || !is_word_char(message[end]);
       if (starts && ends) {
-        message.replace(pos, p.field.size(), p.flag);
-        pos += p.flag.size();
+        message.replace(pos, p.field.size(), replacement);
+        pos += replacement.size();
       } else {
         pos = end;
       }
     }
   }
   return message;
+}
+
+bool is_placeholder_char(char c) { return (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9'); }
+
+}  // namespace
+
+std::string with_flag_names(std::string message, std::span<const ParameterDoc> table) {
+  return with_names(std::move(message), table, &ParameterDoc::flag);
+}
+
+std::string with_keyword_names(std::string message, std::span<const ParameterDoc> table) {
+  message = with_names(std::move(message), table, &ParameterDoc::keyword);
+  std::string out;
+  out.reserve(message.size());
+  for (std::size_t i = 0; i < message.size();) {
+    const bool flag = message.compare(i, 2, "--") == 0 && i + 2 < message.size() &&
+                      message[i + 2] >= 'a' && message[i + 2] <= 'z' &&
+                      (i == 0 || !(is_word_char(message[i - 1]) || message[i - 1] == '-'));
+    if (!flag) {
+      out += message[i++];
+      continue;
+    }
+    i += 2;
+    while (i < message.size() && (is_word_char(message[i]) || message[i] == '-'))
+      out += message[i] == '-' ? '_' : message[i], ++i;
+    // "--fetch M" → "fetch=M", "--k K1,..." → "k=K1,...".
+    if (i + 1 < message.size() && message[i] == ' ' && message[i + 1] >= 'A' &&
+        message[i + 1] <= 'Z') {
+      std::size_t j = i + 1;
+      while (j < message.size() && is_placeholder_char(message[j])) ++j;
+      if (j == message.size() || message[j] == ' ' || message[j] == ',' || message[j] == ')' ||
+          message[j] == ':') {
+        out += '=';
+        ++i;
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace ocean::params

@@ -1,15 +1,24 @@
 """Shared fixtures of the Python package's tests. ctest runs them with PYTHONPATH=<build>/python
 (the package in the build tree) and OCEAN_CLI=<the ocean tool> when the tool is built."""
 import os
+import re
 import subprocess
 
 import pytest
 
 
+def python_names(message):
+    """The tool's message in Python's names: each flag as its keyword ("--wind-speed" is
+    "wind_speed"), with its placeholder as an assignment ("--fetch M" is "fetch=M")."""
+    message = re.sub(r"(?<![\w-])--([a-z][\w-]*) (?=[A-Z][A-Z0-9]*(?:[ ,):]|$))",
+                     lambda m: m.group(1).replace("-", "_") + "=", message)
+    return re.sub(r"(?<![\w-])--([a-z][\w-]*)", lambda m: m.group(1).replace("-", "_"), message)
+
+
 @pytest.fixture
 def cli_message():
-    """The one-line message `ocean ARGS...` prints after "ocean: error: ", or None when the tool
-    was not built (OCEAN_CLI unset)."""
+    """The one-line message `ocean ARGS...` prints after "ocean: error: ", in Python's names
+    (python_names), or None when the tool was not built (OCEAN_CLI unset)."""
     tool = os.environ.get("OCEAN_CLI")
 
     def run(*args):
@@ -19,7 +28,7 @@ def cli_message():
         assert r.returncode != 0, f"ocean {' '.join(args)} succeeded"
         lines = r.stderr.strip().splitlines()
         assert len(lines) == 1 and lines[0].startswith("ocean: error: "), r.stderr
-        return lines[0][len("ocean: error: "):]
+        return python_names(lines[0][len("ocean: error: "):])
 
     return run
 

@@ -57,7 +57,7 @@ def test_surface_stats_threads_beyond_its_range(threads):
 def test_surface_stats_seeds_as_the_tool(seeds, cli_message):
     with pytest.raises(ValueError) as e:
         ocean.surface_stats("calm", seeds=seeds)
-    assert str(e.value) == (f"--seeds = {seeds} is out of range: must be an integer in "
+    assert str(e.value) == (f"seeds = {seeds} is out of range: must be an integer in "
                             "[1, 100000]")
     tool = cli_message("stats", "--seeds", str(seeds))
     if tool is not None:
@@ -103,7 +103,7 @@ def test_shard_frames_at_the_bounds():
 def test_bake_frames_beyond_64_bits(tmp_path, frames):
     with pytest.raises(ValueError) as e:
         ocean.bake("calm", tmp_path / "b", frames=frames)
-    assert str(e.value) == (f"--frames = {frames} is out of range: must be an integer in "
+    assert str(e.value) == (f"frames = {frames} is out of range: must be an integer in "
                             "[1, 1000000]")
     assert not (tmp_path / "b").exists()
 
@@ -111,7 +111,7 @@ def test_bake_frames_beyond_64_bits(tmp_path, frames):
 def test_surface_stats_time_as_the_tool(cli_message):
     with pytest.raises(ValueError) as e:
         ocean.surface_stats("calm", seeds=1, time=float("inf"))
-    assert str(e.value) == "--time = inf is out of range: must be a finite number"
+    assert str(e.value) == "time = inf is out of range: must be a finite number"
     tool = cli_message("stats", "--seeds", "1", "--time", "inf")
     if tool is not None:
         assert str(e.value) == tool
@@ -122,7 +122,7 @@ def test_spreading_nan_as_the_tool(name, cli_message):
     keywords = {"s": 10.0, name: float("nan")}
     with pytest.raises(ValueError) as e:
         ocean.spreading([0.0], model="cos2s", **keywords)
-    assert str(e.value) == f"--{name} = nan is out of range: must be a finite number"
+    assert str(e.value) == f"{name} = nan is out of range: must be a finite number"
     flags = [a for k, v in keywords.items() for a in (f"--{k}", str(v))]
     tool = cli_message("spreading", "--model", "cos2s", *flags, "--theta", "0")
     if tool is not None:

@@ -55,5 +55,5 @@ def test_command_line_bad_input_is_one_line(tmp_path):
                         "--tp", "9", "-o", str(tmp_path / "x.png")],
                        capture_output=True, text=True, env=os.environ, check=False)
     assert r.returncode == 2
-    assert r.stderr == "ocean.figures: error: --hs = -1 is out of range: must be in [1e-06, 50]\n"
+    assert r.stderr == "ocean.figures: error: hs = -1 is out of range: must be in [1e-06, 50]\n"
     assert not (tmp_path / "x.png").exists()

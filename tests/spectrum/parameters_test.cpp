@@ -61,6 +61,23 @@ TEST(SeaStateParameters, FlagsReplaceFieldsInMessages) {
             "my_fetch_m fetch_mx");
 }
 
+TEST(SeaStateParameters, KeywordsReplaceFieldsAndFlagsInMessages) {
+  using ocean::params::with_keyword_names;
+  EXPECT_EQ(with_keyword_names("significant_wave_height_m and peak_period_s must be given together",
+                               ocean::kSeaStateParameters),
+            "hs and tp must be given together");
+  EXPECT_EQ(with_keyword_names("--cutoff-length = -1 is out of range; see --gamma",
+                               ocean::kSeaStateParameters),
+            "cutoff_length = -1 is out of range; see gamma");
+  // A placeholder after a flag becomes the value of an assignment; other words do not.
+  EXPECT_EQ(with_keyword_names("needs --wind-speed MPS --fetch M, or --k K1,... (--depth the)",
+                               ocean::kSeaStateParameters),
+            "needs wind_speed=MPS fetch=M, or k=K1,... (depth the)");
+  // Not a flag: inside a word, after a hyphen, or "--" alone.
+  EXPECT_EQ(with_keyword_names("a--b x---y -- z --", ocean::kSeaStateParameters),
+            "a--b x---y -- z --");
+}
+
 TEST(SeaStateParameters, NothingGivenIsTheDefaultSeaOfTheSimulation) {
   const FrequencySpectrumParams p = ocean::resolve(SpectrumInputs{}).value();
   const FrequencySpectrumParams sim = ocean::default_sea_state().wind_sea.spectrum;

@@ -63,7 +63,7 @@ bake::Formats parse_formats(const std::vector<std::string>& names) {
     } else if (name == "exr") {
       f.exr = true;
     } else {
-      raise(invalid_argument("--format = '" + excerpt(name) +
+      raise(invalid_argument("formats: '" + excerpt(name) +
                              "' is unknown: must be exr, png or npy"));
     }
   }
@@ -162,7 +162,7 @@ void bind_bake(py::module_& m) {
   m.def(
       "merge",
       [](const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
-        if (out.empty()) raise(invalid_argument("--merge needs --out DIR"));
+        if (out.empty()) raise(invalid_argument("merge needs an output folder (out)"));
         interruptible("merge", [&](const std::atomic<bool>* cancel) {
           return bake::merge(shards, {.output_dir = out, .cancel = cancel});
         });

@@ -16,7 +16,7 @@ namespace ocean::python {
     case ErrorCode::ok:
     case ErrorCode::internal: break;
   }
-  PyErr_SetString(type, params::with_flag_names(status.message(), kSeaStateParameters).c_str());
+  PyErr_SetString(type, params::with_keyword_names(status.message(), kSeaStateParameters).c_str());
   throw pybind11::error_already_set();
 }
 

@@ -1,6 +1,7 @@
 // Status → Python exception: the one place the binding turns the library's errors into raised
-// exceptions. The message is the one the ocean tool prints after "ocean: error: " (library field
-// names rewritten to the tool's flags by the table kSeaStateParameters, ocean/spectrum.hpp).
+// exceptions. The message is the one the ocean tool prints after "ocean: error: ", in Python's
+// names: library fields and the tool's flags rewritten to keywords (params::with_keyword_names
+// with the table kSeaStateParameters, ocean/spectrum.hpp): "hs = -1 is out of range: ...".
 //
 //   invalid_argument → ValueError         io_error → OSError
 //   unsupported      → NotImplementedError cancelled → KeyboardInterrupt

@@ -5,6 +5,7 @@
 
 PYBIND11_MODULE(_ocean, m) {
   m.doc() = "Spectral ocean surface simulation (the C++ library ocean, wrapped with pybind11).";
+  m.attr("__version__") = OCEAN_VERSION;  // the project's version (CMakeLists.txt)
   ocean::python::bind_spectrum(m);
   ocean::python::bind_preset(m);
   ocean::python::bind_sea_state(m);
