@@ -21,4 +21,25 @@ struct Underwater {
 /// invalid_argument naming the field for a value outside the range above or not finite.
 Status validate(const Underwater& underwater);
 
+/// The refractive index of sea water the view from below uses (R.50).
+inline constexpr double kWaterIor = 1.333;
+
+/// Water-to-air transmittance T = 1 − (r_s² + r_p²)/2 of the unpolarised Fresnel equations at the
+/// cosine of the angle of incidence in the water (R.50): 0.980 at normal incidence, 0 from the
+/// critical angle arcsin(1/1.333) = 48.6° on (total internal reflection). The shaders' Snell's
+/// window box-filters this function over each pixel (shaders/underwater.glsl).
+double water_to_air_transmittance(double cos_incidence);
+
+/// Beam attenuation c = a + b, 1/m, of one channel (R.51): the fog's e^{−c·r}.
+inline double beam_attenuation_per_m(double absorption_per_m, double scattering_per_m) {
+  return absorption_per_m + scattering_per_m;
+}
+
+/// The distance at which a black target seen horizontally under water disappears, m (R.54):
+/// V = 4.8/c (Davies-Colley 1988; Zaneveld & Pegau 2003), c the beam attenuation at 550 nm, the
+/// green channel. With the defaults (Seabed::absorption_per_m[1] = 0.0565 m⁻¹ of pure water and
+/// b = 0.072 m⁻¹ of clear open ocean) 37 m.
+inline constexpr double kBlackTargetVisibilityProduct = 4.8;
+double visibility_m(double absorption_per_m, double scattering_per_m);
+
 }  // namespace ocean::render

@@ -1,12 +1,15 @@
-// The sea from below (lavapipe, validation layer on; docs/rendering.md R.50–R.51). Under calm
-// water looking straight up, the sky shows inside Snell's window, whose edge lies at the
-// critical angle arcsin(1/1.333) = 48.6° from the vertical, and total internal reflection fills
-// the rest. With the camera straddling a wavy surface, every pixel whose near-plane point the
-// CPU height query puts under the surface shows the water (no gap to the sky along the
-// waterline) and every one above it shows the air's side (no bar of water).
+// The sea from below (lavapipe, validation layer on; docs/rendering.md R.50–R.51, R.54). Under calm
+// water looking straight up, the sky shows inside Snell's window by the Fresnel transmittance,
+// which ends at the critical angle arcsin(1/1.333) = 48.6° from the vertical, and total internal
+// reflection fills the rest; a target's contrast fades by the beam attenuation e^{−c·r}. With the
+// camera straddling a wavy surface, every pixel whose near-plane point the CPU height query puts
+// under the surface shows the water (no gap to the sky along the waterline) and every one above it
+// shows the air's side (no bar of water).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -35,41 +38,115 @@ std::unique_ptr<Rig> make_rig(int width, int height) {
   return rig;
 }
 
-TEST(Underwater, SnellsWindowEndsAtTheCriticalAngle) {
+// Looking straight up from 3 m under calm water at a uniform grey sky, through water that neither
+// absorbs nor scatters and has no light of its own: a pixel at θ from the zenith shows n²·T(θ)·L,
+// T the water-to-air Fresnel transmittance (R.50), box-filtered over the pixel. The window's
+// half-level radius, read off the picture along eight directions and converted to an angle by
+// the projection, lies where T falls to half its zenith value (Fresnel's, 0.39° inside the
+// critical angle); the picture turns dark one pixel beyond the critical angle at most; and the
+// edge is a ramp of many pixels, each a level of its own.
+TEST(Underwater, SnellsWindowFollowsFresnelToTheCriticalAngle) {
   constexpr int kSide = 161;
   auto rig = make_rig(kSide, kSide);
   if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   rig->renderer->set_calm(true);  // no layer either: the surface is the plane y = 0
+  constexpr float kSky = 0.3f;
+  const Environment grey{.width = 4, .height = 2, .rgb = std::vector<float>(24, kSky)};
+  ASSERT_TRUE(rig->renderer->set_environment(&grey).ok());
   View v = helpers::eye_level_view(kSide, kSide);
   v.planet_radius_m = std::numeric_limits<double>::infinity();
-  v.camera.position_m = {0.0, -2.0, 0.0};
+  v.camera.position_m = {0.0, -3.0, 0.0};
   v.camera.target_m = {0.0, 10.0, 1e-3};  // straight up
   v.camera.fov_y_rad = 120.0 * kDeg;
+  v.shading.water_colour = {0.0, 0.0, 0.0};
+  v.shading.foam_brightness = 0.0;
+  v.seabed.absorption_per_m = {0.0, 0.0, 0.0};
+  v.underwater.scattering_per_m = 0.0;
   ASSERT_TRUE(rig->renderer->draw(v).ok());
   std::vector<float> hdr;
   ASSERT_TRUE(rig->renderer->read_hdr(hdr).ok());
-  const auto green = [&](int x, int y) {
-    return hdr[static_cast<std::size_t>(4 * (y * kSide + x) + 1)];
-  };
-  // Beyond the window the water mirrors itself: the picture's corners hold that level.
-  const double reflected = green(0, 0);
-  ASSERT_GT(reflected, 0.0);
-  const double focal_px = 0.5 * kSide / std::tan(0.5 * v.camera.fov_y_rad);
-  const double critical = std::asin(1.0 / 1.333);
+  std::vector<std::uint8_t> srgb;
+  ASSERT_TRUE(rig->renderer->read_srgb(srgb).ok());
+  const auto px = [&](int x, int y) { return static_cast<std::size_t>(y * kSide + x); };
+  const auto green = [&](int x, int y) { return static_cast<double>(hdr[4 * px(x, y) + 1]); };
+
+  const double n = ocean::render::kWaterIor, critical = std::asin(1.0 / n);
   EXPECT_NEAR(critical / kDeg, 48.6, 0.05);  // the angle the docs state
-  // Along the four half-axes from the centre: the last window pixel lies inside the critical
-  // angle and the first reflecting one outside it (the pixel centres' angles from the zenith).
-  const int c = kSide / 2;
-  const int dirs[4][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}};
-  for (const auto& d : dirs) {
-    int k = 0;
-    while (k < c && green(c + k * d[0], c + k * d[1]) > 2.0 * reflected) ++k;
-    ASSERT_GT(k, 0);
-    ASSERT_LT(k, c) << "no edge found";
-    const double inside = std::atan((k - 1) / focal_px), outside = std::atan(k / focal_px);
-    EXPECT_LT(inside, critical) << "direction " << d[0] << "," << d[1];
-    EXPECT_GT(outside, critical) << "direction " << d[0] << "," << d[1];
+  // The transmittance against its published values: ((n−1)/(n+1))² reflected at normal
+  // incidence, none at Brewster's angle for p (the unpolarised mean of r_s² alone), all beyond
+  // the critical angle.
+  EXPECT_NEAR(water_to_air_transmittance(1.0), 1.0 - std::pow((n - 1) / (n + 1), 2), 1e-12);
+  const double brewster = std::atan(1.0 / n);
+  const double ct = std::cos(std::asin(n * std::sin(brewster)));
+  const double r_s = (n * std::cos(brewster) - ct) / (n * std::cos(brewster) + ct);
+  EXPECT_NEAR(water_to_air_transmittance(std::cos(brewster)), 1.0 - 0.5 * r_s * r_s, 1e-12);
+  EXPECT_EQ(water_to_air_transmittance(std::cos(critical + 1e-9)), 0.0);
+  // Where Fresnel's transmittance is half its zenith value: bisection on the falling branch.
+  const double t0 = water_to_air_transmittance(1.0);
+  double lo = 0.0, hi = critical;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (water_to_air_transmittance(std::cos(mid)) > 0.5 * t0 ? lo : hi) = mid;
   }
+  const double half_fresnel = lo;
+
+  // Inside: the zenith pixel n²·T(0)·L (R.50's n² law); outside: the corners, dark.
+  const int c = kSide / 2;  // the optical axis passes through this pixel's centre
+  const double inside = green(c, c), outside = green(0, 0);
+  EXPECT_NEAR(inside, n * n * t0 * kSky, 0.01 * inside);
+  EXPECT_LT(outside, 1e-4 * inside);
+  const double focal_px = 0.5 * kSide / std::tan(0.5 * v.camera.fov_y_rad);
+  // One pixel's angle along a radius at θ from the axis: dθ = cos²θ/f.
+  const double pixel = std::pow(std::cos(critical), 2) / focal_px;
+  const int dirs[8][2] = {{1, 0}, {-1, 0}, {0, 1}, {0, -1}, {1, 1}, {-1, 1}, {1, -1}, {-1, -1}};
+  double worst_half = 0.0, mean_half = 0.0, widest = 0.0, narrowest = 1e9;
+  for (const auto& d : dirs) {
+    const double step = std::hypot(d[0], d[1]);
+    std::vector<double> profile;  // brightness over inside, outwards from the centre
+    for (int k = 0; k <= c; ++k)
+      profile.push_back((green(c + k * d[0], c + k * d[1]) - outside) / (inside - outside));
+    const auto angle = [&](double k) { return std::atan(k * step / focal_px); };
+    // The half-level crossing, linear between the two pixels on either side.
+    std::size_t k = 1;
+    while (k < profile.size() && profile[k] > 0.5) ++k;
+    ASSERT_LT(k, profile.size()) << "no edge found";
+    const double at =
+        static_cast<double>(k - 1) + (profile[k - 1] - 0.5) / (profile[k - 1] - profile[k]);
+    const double half = angle(at);
+    // The sampling's error: half a pixel (along a diagonal the pixels lie √2 apart).
+    EXPECT_NEAR(half, half_fresnel, 0.5 * step * pixel) << "direction " << d[0] << "," << d[1];
+    EXPECT_NEAR(half, critical, (critical - half_fresnel) + 0.5 * step * pixel);
+    worst_half = std::max(worst_half, std::abs(half - half_fresnel));
+    mean_half += half / 8.0;
+    // The window ends at the critical angle: the first dark pixel's footprint lies beyond it, the
+    // one before reaches inside it.
+    std::size_t dark = 1;
+    while (dark < profile.size() && profile[dark] > 1e-4) ++dark;
+    ASSERT_LT(dark, profile.size());
+    EXPECT_GE(angle(static_cast<double>(dark) + 0.5), critical) << d[0] << "," << d[1];
+    EXPECT_LE(angle(static_cast<double>(dark) - 1.5), critical) << d[0] << "," << d[1];
+    // A soft edge: the pixels between 90 % and 10 % of the inside level, at least two, and in the
+    // 8-bit picture each darker than the one before (no posterised steps, no flat run).
+    int ramp = 0, levels = 0;
+    int last = 256;
+    for (std::size_t j = 0; j < profile.size(); ++j) {
+      if (profile[j] > 0.9 || profile[j] < 0.1) continue;
+      ++ramp;
+      const int level =
+          srgb[4 * px(c + static_cast<int>(j) * d[0], c + static_cast<int>(j) * d[1]) + 1];
+      levels += level < last ? 1 : 0;
+      last = level;
+    }
+    EXPECT_GE(ramp, 2) << "direction " << d[0] << "," << d[1];
+    EXPECT_EQ(levels, ramp) << "direction " << d[0] << "," << d[1];
+    widest = std::max(widest, ramp * step);
+    narrowest = std::min(narrowest, ramp * step);
+  }
+  std::printf(
+      "Snell's window: half level at %.3f deg (Fresnel %.3f, worst %.3f deg off, pixel "
+      "%.3f deg), critical angle %.3f deg, 90-10 %% ramp %.1f-%.1f px\n",
+      mean_half / kDeg, half_fresnel / kDeg, worst_half / kDeg, pixel / kDeg, critical / kDeg,
+      narrowest, widest);
 }
 
 TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
@@ -160,6 +237,84 @@ TEST(Underwater, TheBedBelowShowsThroughTheWatersFog) {
     const double t = std::exp(-(a + b) * 3.0);
     const double expected = bed * t + water * (1.0 - t);
     EXPECT_NEAR(hdr[centre + c], expected, 0.01 * expected) << "channel " << c;
+  }
+}
+
+// Contrast through the water's fog (R.51, R.54): a white square facing a camera 5 m down is seen
+// at distances d on the view axis against the endless water behind it. Its apparent contrast
+// C(d) = (L_t − L_b)/L_b is its inherent contrast times e^{−c·d}, c = a + b per channel, whatever
+// the square's own light (Duntley's contrast transmittance), so the ratio between distances
+// gives c back; with the default water, 4.8/c at 550 nm (the green channel) is 20–40 m.
+TEST(Underwater, ContrastFadesByTheBeamAttenuation) {
+  constexpr int kSide = 33;
+  auto rig = make_rig(kSide, kSide);
+  if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  rig->renderer->set_calm(true);
+  const std::array<std::array<double, 3>, 4> corners{
+      {{0.0, -2.0, -2.0}, {0.0, 2.0, -2.0}, {0.0, 2.0, 2.0}, {0.0, -2.0, 2.0}}};
+  const std::array<std::array<std::uint32_t, 3>, 4> both_sides{
+      {{0, 1, 2}, {0, 2, 3}, {0, 2, 1}, {0, 3, 2}}};
+  const Mesh square = flat_mesh(corners, both_sides, {.base_colour = {1.0, 1.0, 1.0}});
+  ASSERT_TRUE(rig->renderer->set_meshes(std::span(&square, 1)).ok());
+  View v = helpers::eye_level_view(kSide, kSide);
+  v.planet_radius_m = std::numeric_limits<double>::infinity();
+  v.camera.position_m = {0.0, -5.0, 0.0};
+  v.camera.target_m = {10.0, -5.0, 0.0};  // along +x, level
+  v.camera.fov_y_rad = 20.0 * kDeg;
+  const std::size_t centre = static_cast<std::size_t>(4 * ((kSide / 2) * kSide + kSide / 2));
+  const auto centre_rgb = [&]() {
+    std::vector<float> hdr;
+    EXPECT_TRUE(rig->renderer->draw(v).ok());
+    EXPECT_TRUE(rig->renderer->read_hdr(hdr).ok());
+    return std::array<double, 3>{hdr[centre], hdr[centre + 1], hdr[centre + 2]};
+  };
+  const std::array<double, 3> background = centre_rgb();
+  const std::array<double, 3> distances{3.0, 8.0, 14.0};
+  std::array<std::array<double, 3>, 3> contrast{};
+  for (std::size_t i = 0; i < distances.size(); ++i) {
+    v.objects = {{.mesh = 0, .model = model_matrix({distances[i], -5.0, 0.0}, {1, 0, 0, 0})}};
+    const std::array<double, 3> target = centre_rgb();
+    for (std::size_t ch = 0; ch < 3; ++ch)
+      contrast[i][ch] = (target[ch] - background[ch]) / background[ch];
+  }
+  std::array<double, 3> c_measured{};
+  for (std::size_t ch = 0; ch < 3; ++ch) {
+    const double c = ocean::render::beam_attenuation_per_m(v.seabed.absorption_per_m[ch],
+                                                           v.underwater.scattering_per_m);
+    for (std::size_t i = 1; i < distances.size(); ++i) {
+      const double expected = std::exp(-c * (distances[i] - distances[0]));
+      EXPECT_NEAR(contrast[i][ch] / contrast[0][ch], expected, 0.03 * expected)
+          << "channel " << ch << ", " << distances[i] << " m";
+    }
+    c_measured[ch] = std::log(contrast[0][ch] / contrast[2][ch]) / (distances[2] - distances[0]);
+    EXPECT_NEAR(c_measured[ch], c, 0.03 * c) << "channel " << ch;
+  }
+  const double visibility =
+      ocean::render::visibility_m(v.seabed.absorption_per_m[1], v.underwater.scattering_per_m);
+  EXPECT_NEAR(visibility, 4.8 / (v.seabed.absorption_per_m[1] + v.underwater.scattering_per_m),
+              1e-12);
+  EXPECT_GE(visibility, 20.0);
+  EXPECT_LE(visibility, 40.0);
+  const double measured = 4.8 / c_measured[1];
+  EXPECT_GE(measured, 20.0);
+  EXPECT_LE(measured, 40.0);
+  std::printf(
+      "beam attenuation measured %.4f %.4f %.4f /m (a + b: %.4f %.4f %.4f); visibility "
+      "4.8/c at 550 nm %.1f m (measured %.1f m)\n",
+      c_measured[0], c_measured[1], c_measured[2],
+      v.seabed.absorption_per_m[0] + v.underwater.scattering_per_m,
+      v.seabed.absorption_per_m[1] + v.underwater.scattering_per_m,
+      v.seabed.absorption_per_m[2] + v.underwater.scattering_per_m, visibility, measured);
+}
+
+TEST(Underwater, RefusesBadOptics) {
+  for (const double a : {-0.1, std::numeric_limits<double>::quiet_NaN()}) {
+    View v;
+    v.seabed.absorption_per_m[1] = a;
+    const ocean::Status s = validate(v);
+    EXPECT_EQ(s.code(), ocean::ErrorCode::invalid_argument) << a;
+    EXPECT_NE(s.message().find("absorption_per_m"), std::string::npos) << s.message();
+    EXPECT_EQ(s.message().find('\n'), std::string::npos) << s.message();
   }
 }
 

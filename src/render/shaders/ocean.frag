@@ -158,6 +158,12 @@ void main() {
   vec3 V = to_camera / distance_m;
   vec3 L = u.sun_dir;
   vec3 N_up = N;
+  // Snell's window's filter (R.50), in uniform control flow: the spread of cos θ between the
+  // pixels (fwidth) and within the pixel, from the slope variance the filtering removed (a box
+  // of width √12·σ holds the spread σ = sin θ·σ_slope).
+  float cos_v = dot(V, N_up);
+  float cos_width = fwidth(cos_v) + 3.46 * sqrt(max(1.0 - cos_v * cos_v, 0.0)) *
+                                        sqrt(max(variance - alpha0_sq, 0.0));
   // Normals that face away from the viewer (grazing views of steep waves) are bent back.
   float n_dot_v = dot(N, V);
   if (n_dot_v < 1e-3) {
@@ -211,7 +217,7 @@ void main() {
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
 
   if (below) {  // the underside, through the water between it and the camera (R.50, R.51)
-    c = water_fog(underside_radiance(world_pos, N_up, V, foam), distance_m, V);
+    c = water_fog(underside_radiance(world_pos, N_up, V, cos_width, foam), distance_m, V);
   } else {  // horizon fog (Paleologue 2024, R.8)
     c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
   }

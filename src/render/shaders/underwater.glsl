@@ -4,7 +4,8 @@
 // fog of the water's own light along a path through it (Beer–Lambert with absorption and
 // scattering).
 //
-// Sources: Snell's law and the critical angle arcsin(1/n), n = 1.333; the n² law of radiance
+// Sources: Snell's law and the critical angle arcsin(1/n), n = 1.333; the unpolarised Fresnel
+// equations (Hecht, "Optics", 2002, §4.6) for the window's transmittance; the n² law of radiance
 // across an interface (Mobley, "Light and Water", 1994: L/n² is invariant along a ray); Beer–Lambert
 // attenuation with the absorption of pure water (Pope & Fry 1997) and the scattering of clear
 // ocean water (Morel 1988).
@@ -151,24 +152,51 @@ vec3 seen_under_water(vec3 eye, vec3 v) {
   return water_fog(bed, t, -v);
 }
 
+// Water-to-air transmittance of the unpolarised Fresnel equations at the cosine cos_i of the
+// angle of incidence in the water (R.50): 1 − (r_s² + r_p²)/2 with n = 1.333, falling to zero at
+// the critical angle (its slope there is infinite, an edge sharper than any pixel) and zero
+// beyond it (total internal reflection). Mirrors water_to_air_transmittance (ocean/underwater.hpp).
+float water_to_air_transmittance(float cos_i) {
+  float ci = clamp(cos_i, 0.0, 1.0), n = kUnderwaterIor;
+  float sin_t_sq = n * n * (1.0 - ci * ci);
+  if (sin_t_sq >= 1.0) return 0.0;
+  float ct = sqrt(1.0 - sin_t_sq);
+  float r_s = (n * ci - ct) / (n * ci + ct), r_p = (n * ct - ci) / (n * ct + ci);
+  return 1.0 - 0.5 * (r_s * r_s + r_p * r_p);
+}
+
+// The transmittance box-filtered over a pixel (R.50): the mean over [cos_i − w/2, cos_i + w/2],
+// w the pixel's spread of cos_i (its fwidth), by the midpoint rule on kWindowTaps points. The
+// transmittance is continuous (zero at the critical angle), so the mean moves smoothly with the
+// footprint: no pixel jumps from sky to mirror, and no level is skipped.
+const int kWindowTaps = 8;
+float window_transmittance(float cos_i, float width) {
+  float sum = 0.0;
+  for (int k = 0; k < kWindowTaps; ++k)
+    sum += water_to_air_transmittance(cos_i + width * ((float(k) + 0.5) / float(kWindowTaps) - 0.5));
+  return sum / float(kWindowTaps);
+}
+
 // The underside of the surface at P seen from the camera below (R.50): N the surface's upward
-// normal, V towards the camera. The ray from the water refracts into the air when it meets the
-// surface within the critical angle (Snell's window), carrying the sky's radiance times
-// n²·(1 − F); beyond it, total internal reflection returns the water's own light.
-vec3 underside_radiance(vec3 P, vec3 N, vec3 V, float foam) {
+// normal, V towards the camera, cos_width the pixel's spread of dot(V, N) (fwidth, taken in
+// uniform control flow). The ray from the water refracts into the air when it meets the surface
+// within the critical angle (Snell's window), carrying the sky's radiance times n²·T; the rest,
+// 1 − T, is reflected, and beyond the critical angle total internal reflection returns the
+// water's own light alone.
+vec3 underside_radiance(vec3 P, vec3 N, vec3 V, float cos_width, float foam) {
   vec3 n_water = -N;  // the normal on the camera's side
   float cos_i = dot(V, n_water);
   if (cos_i < 1e-3) n_water = normalize(n_water + (1e-3 - cos_i) * V);  // bent back, as above
-  vec3 T = refract(-V, n_water, kUnderwaterIor);
+  cos_i = max(cos_i, 1e-3);
   // Total internal reflection: the water below, or the seabed, mirrored.
   vec3 depth_light = seen_under_water(P, reflect(-V, n_water));
-  vec3 c = depth_light;
-  if (dot(T, T) > 0.0) {
-    // Fresnel is the same both ways through an interface; Schlick's form takes the air side's
-    // cosine, so the transmission falls to zero at the critical angle.
-    float F = fresnel_schlick(max(dot(T, -n_water), 0.0));
-    c = (1.0 - F) * kUnderwaterIor * kUnderwaterIor * sky_radiance(T) + F * depth_light;
-  }
+  float T = window_transmittance(cos_i, cos_width);
+  // The refracted ray (Snell's law), held at grazing beyond the critical angle, where the filtered
+  // transmittance of a pixel across the edge still looks through it.
+  float n = kUnderwaterIor;
+  float cos_t = sqrt(max(1.0 - n * n * (1.0 - cos_i * cos_i), 0.0));
+  vec3 refracted = normalize(-n * V + (n * cos_i - cos_t) * n_water);
+  vec3 c = T * n * n * sky_radiance(refracted) + (1.0 - T) * depth_light;
   // Foam seen from below: a bright diffuse layer lit from above through itself.
   vec3 foam_light =
       0.5 * u.foam_brightness * water_path_radiance(0.0, vec3(0.0, -1.0, 0.0)) /
