@@ -37,6 +37,37 @@ struct CascadePlan {
   double tiling_wavelength_m = 0.0;
 };
 
+/// How a foam source reads a Jacobian J (M.7.4): x = (threshold − J)·gain, and the source is
+/// clamp(x, 0, 1) for FoamSource::ramp, Φ(x) for FoamSource::breaking (Φ the standard normal
+/// distribution function).
+struct FoamSourceTerms {
+  double threshold = 0.8;
+  double gain = 1.0 / 0.3;
+};
+
+/// The foam sources a plan resolves (SimulationPlan::foam). For FoamSource::breaking, with
+/// λ the choppiness, α the breaking acceleration and σ² slope variances (both components):
+/// the sea breaks where J_true < 1 − λ·α (Longuet-Higgins 1969), J_true − 1 having the variance
+/// λ²·σ²_total of the whole slope spectrum (every cascade's band and the waves shorter than the
+/// finest). A cascade sees J_c − 1 through its normal method's differences (variance λ²·σ²_d,
+/// covariance λ²·σ²_x with the band's exact divergence); the rest is Gaussian and independent
+/// of it, so the probability of breaking given J_c is Φ((1 − λα − 1 − β(J_c − 1))/s) with
+/// β = σ²_x/σ²_d and s² = λ²(σ²_total − σ⁴_x/σ²_d) (the regression of J_true on J_c): threshold
+/// 1 − λα/β, gain β/s. Its mean over the cascade is the whitecap fraction of the whole sea.
+struct FoamPlan {
+  std::vector<FoamSourceTerms> cascades;  ///< each cascade's source
+  /// The local surface's (every cascade summed on one grid, M.7.9): β = 1, s² = λ² times the
+  /// variance no cascade's differences resolve.
+  FoamSourceTerms local;
+  /// FoamSource::breaking: each cascade's share of the bands' slope variance, what a renderer
+  /// weighs the cascades' foam by (their weighted mean is the coverage); empty for ramp, whose
+  /// cascades' foam a renderer unites.
+  std::vector<double> weights;
+  /// σ² of each cascade's band in expectation (expected_wave_power; 0 for ramp).
+  std::vector<double> band_slope_variance;
+  double total_slope_variance = 0.0;  ///< Σ of the bands' and the unresolved σ² (0 for ramp)
+};
+
 /// What a renderer needs to know of the surface it draws, and nothing of the configuration:
 /// heights that bound the waves, each cascade's patch and the scale its tiling is hidden at, the
 /// foam ramp and the far field's noise.
@@ -49,6 +80,8 @@ struct SurfaceDescription {
   /// A bound on |(Dx, Dz)|, m: λ·Hs (docs/rendering.md, Frame, step 2).
   double horizontal_reach_m = 0.0;
   std::array<double, 2> foam_ramp{0.8, 0.5};  ///< FoamParams' Jacobian start and full
+  /// FoamPlan::weights: empty when the cascades' foam is united (FoamSource::ramp).
+  std::vector<double> foam_weights;
   int resolution = 0;                         ///< N texels per side of every cascade
   std::vector<double> patch_sizes_m;          ///< L of each cascade, largest first
   std::vector<double> tiling_wavelengths_m;   ///< CascadePlan::tiling_wavelength_m of each
@@ -91,6 +124,9 @@ class SimulationPlan {
   [[nodiscard]] const std::optional<SlopeVariance>& unresolved_slope_variance() const {
     return unresolved_slope_variance_;
   }
+  /// The foam sources (FoamPlan), computed on first use: for FoamSource::breaking it visits every
+  /// wave vector of every cascade once (milliseconds at N = 256).
+  [[nodiscard]] const FoamPlan& foam() const;
   /// The far field's noise fitted to cascade 0 (fit_far_field_noise), computed on first use.
   [[nodiscard]] const FarFieldNoise& far_noise() const;
   /// What a renderer draws this plan's surface by.
@@ -98,6 +134,7 @@ class SimulationPlan {
 
  private:
   struct FarNoiseFit;
+  struct FoamFit;
   SimulationConfig config_;
   std::shared_ptr<const SeaState> sea_;
   std::vector<CascadePlan> cascades_;
@@ -105,6 +142,7 @@ class SimulationPlan {
   double peak_wavelength_m_ = 1e9;
   std::optional<SlopeVariance> unresolved_slope_variance_;
   std::shared_ptr<FarNoiseFit> far_noise_;
+  std::shared_ptr<FoamFit> foam_;
 };
 
 }  // namespace ocean

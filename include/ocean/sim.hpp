@@ -65,12 +65,35 @@ inline constexpr std::array<EnumName<BlueChannel>, 2> kBlueChannelNames{{
     {BlueChannel::jacobian, "jacobian"},
 }};
 
+/// Where foam comes from (M.7.4).
+enum class FoamSource {
+  /// A linear ramp on each cascade's own Jacobian, from `jacobian_start` to `jacobian_full`
+  /// (Vincevičius 2024, §2.4): one band of the spectrum rarely folds on its own, so the coverage
+  /// depends on the cascades and their constants, not on the sea.
+  ramp,
+  /// Breaking by Longuet-Higgins (1969)'s criterion: the surface breaks where its downward
+  /// acceleration exceeds α·g. For linear deep-water waves J − 1 = λ·a_z/g, so that is
+  /// J < 1 − λ·α on the whole surface (every cascade and the waves shorter than the finest). Each
+  /// cascade's map holds the probability of it given its own J, the rest of the sea's Jacobian
+  /// taken as Gaussian with the variance the spectrum gives it (SimulationPlan, CascadePlan::
+  /// foam_source): the whitecap fraction of the sea, whichever cascade one looks at.
+  breaking,
+};
+/// The names of the foam sources in presets and messages.
+inline constexpr std::array<EnumName<FoamSource>, 2> kFoamSourceNames{{
+    {FoamSource::ramp, "ramp"},
+    {FoamSource::breaking, "breaking"},
+}};
+
 struct FoamParams {
-  /// Foam appears where a cascade's Jacobian falls below `jacobian_start` and is full at
-  /// `jacobian_full` (linear ramp between, M.7.4). J < 0 is a fold (Aebi, VR Ocean, eq. 48),
-  /// but one band of the spectrum rarely folds on its own: the defaults give whitecap coverage of
-  /// the order of Monahan & O'Muircheartaigh (1980), W ≈ 3.84e-6·U10^3.41 (≈1 % at 10 m/s), for
-  /// the default 256² cascades.
+  FoamSource source = FoamSource::breaking;
+  /// α of FoamSource::breaking: the downward acceleration, as a fraction of g, beyond which a
+  /// crest breaks. ½ is the crest of Stokes's limiting wave (Longuet-Higgins 1969, "On wave
+  /// breaking and the equilibrium spectrum of wind-generated waves"). In (0, 2].
+  double breaking_acceleration = 0.5;
+  /// FoamSource::ramp: foam appears where a cascade's Jacobian falls below `jacobian_start` and
+  /// is full at `jacobian_full` (linear ramp between, M.7.4). J < 0 is a fold (Aebi, VR Ocean,
+  /// eq. 48).
   double jacobian_start = 0.8;
   double jacobian_full = 0.5;
   /// Decay of accumulated foam per second (Vincevičius 2024, §2.4.2); 0 keeps foam forever,

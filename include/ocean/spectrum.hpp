@@ -460,6 +460,13 @@ struct InitialSpectrum {
 /// component cannot carry the odd-symmetric displacement and slope fields (M.6.3).
 Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p);
 
+/// The variance each grid wave vector of make_initial_spectrum's patch adds to the height in
+/// expectation, 2·E|h0(k)|², m², row-major like InitialSpectrum::h0 (0 where h0 is): Σ of it is
+/// E[h²] of the patch, Σ k²· of it the patch's mean square slope. Not a realisation: no seed.
+/// The errors are make_initial_spectrum's.
+Result<std::vector<double>> expected_wave_power(const SeaState& sea,
+                                                const InitialSpectrumParams& p);
+
 /// The VR-Ocean Phillips power P'(k) of Aebi, VR Ocean, eqs. 3–11 (directional factor applied once,
 /// counter-wave factor σ(α) on the back half-plane).
 struct VrOceanPhillipsParams {

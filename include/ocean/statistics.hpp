@@ -72,7 +72,14 @@ struct SurfaceStats {
   // Jacobian of the horizontal map and foam.
   double min_jacobian = 0.0;
   double foam_coverage = 0.0;  ///< fraction of texels with J < 0
-  double mean_foam = 0.0;
+  double mean_foam = 0.0;      ///< cascade 0's mean foam
+  /// The whitecap fraction a renderer draws: for FoamSource::breaking every cascade's mean foam
+  /// weighted by FoamPlan::weights (each is the sea's breaking probability, M.7.4); for ramp
+  /// 1 − Π(1 − f̄_c/(1 + 0.6·c)) of the cascades' means, as R.11 unites them (independent
+  /// cascades). Over the seeds.
+  double whitecap_coverage = 0.0;
+  /// Monahan & O'Muircheartaigh (1980): W = 3.84e-6·U10^3.41, set when the sea is given by wind.
+  std::optional<double> monahan_whitecap_coverage;
 
   // Numerical checks, relative to hs_spectrum_m (empty when hs_spectrum_m is 0).
   /// Largest |imaginary part| of the inverse FFT of the height spectrum alone, over the seeds.
@@ -83,6 +90,8 @@ struct SurfaceStats {
 
 /// Cox & Munk (1954) clean-surface mean square slope 0.003 + 5.12e-3·U, U at 12.5 m in m/s.
 double cox_munk_mean_square_slope(double wind_speed_mps);
+/// Monahan & O'Muircheartaigh (1980)'s whitecap fraction 3.84e-6·U10^3.41, U10 in m/s.
+double monahan_whitecap_coverage(double wind_speed_mps);
 /// Cox & Munk (1954)'s clean-surface up- and crosswind components, U at 12.5 m in m/s.
 SlopeVariance cox_munk_slope_variance(double wind_speed_mps);
 

@@ -123,7 +123,9 @@ Json to_value(const SimulationConfig& c) {
                 {"normals", to_string(c.normals)},
                 {"roughness", c.roughness},
                 {"blue_channel", name_of(kBlueChannelNames, c.blue_channel)},
-                {"foam", Json{{"jacobian_start", c.foam.jacobian_start},
+                {"foam", Json{{"source", name_of(kFoamSourceNames, c.foam.source)},
+                              {"breaking_acceleration", c.foam.breaking_acceleration},
+                              {"jacobian_start", c.foam.jacobian_start},
                               {"jacobian_full", c.foam.jacobian_full},
                               {"decay_per_s", c.foam.decay_per_s}}}};
   if (!c.band_roles.empty()) {  // written only when set: every band both otherwise
@@ -201,6 +203,15 @@ Result<SimulationConfig> from_value(const Json& document) {
   r.string("blue_channel", blue);
   if (const Json* foam = r.child("foam")) {
     ObjectReader fr(*foam, "foam");
+    std::string source(name_of(kFoamSourceNames, c.foam.source));
+    fr.string("source", source);
+    if (std::optional<FoamSource> f = value_of(kFoamSourceNames, source)) {
+      c.foam.source = *f;
+    } else {
+      return invalid_argument("foam.source = '" + excerpt(source) + "' is unknown: must be " +
+                              name_list(kFoamSourceNames, ", ", " or "));
+    }
+    fr.number("breaking_acceleration", c.foam.breaking_acceleration);
     fr.number("jacobian_start", c.foam.jacobian_start);
     fr.number("jacobian_full", c.foam.jacobian_full);
     fr.number("decay_per_s", c.foam.decay_per_s);

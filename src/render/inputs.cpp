@@ -28,6 +28,7 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   st.horizontal_reach_m = surface.horizontal_reach_m;
   st.choppiness = surface.choppiness;
   st.foam_ramp = surface.foam_ramp;
+  st.foam_weights = surface.foam_weights;
   st.unresolved_slope_variance = surface.unresolved_slope_variance;
   st.map_base_alpha_sq = surface.map_base_alpha_sq;
   pass<FarFieldPass>(st).noise = surface.far_noise;

@@ -48,6 +48,14 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.hs_m = static_cast<float>(st.hs_m);
   for (int c = 0; c < kMaxCascades; ++c)
     u.cascades[c] = st.cascade_params[static_cast<std::size_t>(c)];
+  u.foam_weighted = st.foam_weights.empty() ? 0.0f : 1.0f;
+  for (std::size_t c = 0; c < st.foam_weights.size() && c < kMaxCascades; ++c) {
+    shader::vec4& w = u.foam_weights[c / 4];
+    (c % 4 == 0   ? w.x
+     : c % 4 == 1 ? w.y
+     : c % 4 == 2 ? w.z
+                  : w.w) = static_cast<float>(st.foam_weights[c]);
+  }
 }
 
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).

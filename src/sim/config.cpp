@@ -85,6 +85,11 @@ Status validate(const SimulationConfig& c) {
   if (Status s = require_in_range("choppiness", c.choppiness, 0.0, 10.0); !s.ok()) return s;
   if (Status s = require_in_range("loop_period_s", c.loop_period_s, 0.0, 1e6); !s.ok()) return s;
   if (Status s = require_in_range("roughness", c.roughness, 0.0, 1.0); !s.ok()) return s;
+  if (!(c.foam.breaking_acceleration > 0.0 && c.foam.breaking_acceleration <= 2.0)) {
+    return invalid_argument(
+        "foam.breaking_acceleration = " + format_number(c.foam.breaking_acceleration) +
+        " is out of range: must be in (0, 2] (a fraction of g)");
+  }
   if (Status s = require_in_range("foam.jacobian_start", c.foam.jacobian_start, -10.0, 10.0);
       !s.ok()) {
     return s;

@@ -58,7 +58,7 @@ packing::Gradients cell_gradients(const std::vector<float>& d, int n, int col, i
 
 }  // namespace
 
-void composite_local_surface(const SimulationConfig& config, const waves::Damping* damping,
+void composite_local_surface(const SimulationPlan& plan, const waves::Damping* damping,
                              const waves::LocalLayer& layer, const LocalSurfaceFrame& previous,
                              double dt_s, bool reset_foam, Frame& frame, TaskRunner& runner) {
   LocalSurfaceFrame& local = frame.local;
@@ -81,8 +81,8 @@ void composite_local_surface(const SimulationConfig& config, const waves::Dampin
     }
   });
   const double spacing_m = area.size_m / n;
-  const auto j_start = static_cast<float>(config.foam.jacobian_start);
-  const auto j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
+  const SimulationConfig& config = plan.config();
+  const packing::FoamTerms source = packing::foam_terms(config.foam, plan.foam().local);
   const auto decay = static_cast<float>(config.foam.decay_per_s * dt_s);
   const bool reset = reset_foam || previous.foam.size() != local.foam.size() ||
                      previous.sea_foam.size() != local.sea_foam.size();
@@ -94,8 +94,8 @@ void composite_local_surface(const SimulationConfig& config, const waves::Dampin
         const packing::SurfacePoint s = packing::surface_point(sum);
         local.jacobian[i] = s.jacobian;
         for (std::size_t k = 0; k < 3; ++k) local.normal[3 * i + k] = s.normal[k];
-        local.foam[i] = packing::accumulate_foam(s.jacobian, reset ? 0.0f : previous.foam[i], reset,
-                                                 j_start, j_range, decay);
+        local.foam[i] = packing::accumulate_foam(packing::foam_source(s.jacobian, source),
+                                                 reset ? 0.0f : previous.foam[i], reset, decay);
         // The sea alone (M.7.10): the sum's gradients less the layer's, exactly the sum's where
         // the layer's differences are 0.
         const packing::Gradients own =
@@ -104,8 +104,9 @@ void composite_local_surface(const SimulationConfig& config, const waves::Dampin
             {sum.dx_dx - own.dx_dx, sum.h_dx - own.h_dx, sum.dz_dx - own.dz_dx,
              sum.dx_dz - own.dx_dz, sum.h_dz - own.h_dz, sum.dz_dz - own.dz_dz});
         for (std::size_t k = 0; k < 3; ++k) local.sea_normal[3 * i + k] = sea.normal[k];
-        local.sea_foam[i] = packing::accumulate_foam(
-            sea.jacobian, reset ? 0.0f : previous.sea_foam[i], reset, j_start, j_range, decay);
+        local.sea_foam[i] =
+            packing::accumulate_foam(packing::foam_source(sea.jacobian, source),
+                                     reset ? 0.0f : previous.sea_foam[i], reset, decay);
       }
     }
   });
@@ -136,7 +137,7 @@ void Simulator::compute_local_surface(Frame& back) {
   if (local_layer_ == nullptr) return;
   const Frame& front = frames_[front_];
   const bool reset = local_foam_reset_ || !(back.time_s > front.time_s);
-  detail::composite_local_surface(config_, damping_.get(), *local_layer_, front.local,
+  detail::composite_local_surface(*plan_, damping_.get(), *local_layer_, front.local,
                                   back.time_s - front.time_s, reset, back, *runner_);
   local_foam_reset_ = false;
 }

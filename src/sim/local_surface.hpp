@@ -22,7 +22,7 @@ void allocate_local_surface(const waves::LocalArea& area, LocalSurfaceFrame& loc
 /// and the layer (M.7.9): displacement at the cell centres, then normal, Jacobian and foam of the
 /// sum, the foam accumulated from `previous`'s over dt_s (restarted when `reset_foam`); the
 /// layer alone and the sea's normal and foam beside them (M.7.10). Never allocates.
-void composite_local_surface(const SimulationConfig& config, const waves::Damping* damping,
+void composite_local_surface(const SimulationPlan& plan, const waves::Damping* damping,
                              const waves::LocalLayer& layer, const LocalSurfaceFrame& previous,
                              double dt_s, bool reset_foam, Frame& frame, TaskRunner& runner);
 

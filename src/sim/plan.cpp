@@ -15,6 +15,100 @@ struct SimulationPlan::FarNoiseFit {
   FarFieldNoise noise;
 };
 
+struct SimulationPlan::FoamFit {
+  std::once_flag once;
+  FoamPlan foam;
+};
+
+namespace {
+
+// The second moments of one cascade's band (FoamPlan): σ²_x = Σ P·|k|², σ²_d = Σ P·g², and
+// Σ P·|k|·g, where g·cos is what the normal method's differences make of the divergence
+// |k|·cos of a unit wave (λ aside): analytic g = |k|; central differences
+// (kx·sin(kx·Δ) + kz·sin(kz·Δ))/(Δ·|k|); Sobel the same with each derivative smoothed by
+// (1 + cos(k⊥·Δ))/2 across it.
+struct BandMoments {
+  double exact = 0.0, seen = 0.0, covariance = 0.0;
+};
+
+BandMoments band_moments(const std::vector<double>& power, int n, double patch_size_m,
+                         NormalMethod normals) {
+  BandMoments m;
+  const double dk = 2.0 * std::numbers::pi / patch_size_m, spacing = patch_size_m / n;
+  for (int row = 0; row < n; ++row) {
+    for (int col = 0; col < n; ++col) {
+      const double p = power[static_cast<std::size_t>(row) * static_cast<std::size_t>(n) +
+                             static_cast<std::size_t>(col)];
+      if (p == 0.0) continue;
+      const double kx = dk * (col - n / 2), kz = dk * (row - n / 2);
+      const double k = std::hypot(kx, kz);
+      double g = k;
+      if (normals != NormalMethod::analytic) {
+        double gx = kx * std::sin(kx * spacing) / spacing;
+        double gz = kz * std::sin(kz * spacing) / spacing;
+        if (normals == NormalMethod::sobel) {
+          gx *= 0.5 * (1.0 + std::cos(kz * spacing));
+          gz *= 0.5 * (1.0 + std::cos(kx * spacing));
+        }
+        g = (gx + gz) / k;
+      }
+      m.exact += p * k * k;
+      m.seen += p * g * g;
+      m.covariance += p * k * g;
+    }
+  }
+  return m;
+}
+
+// The least gain that keeps x finite where the rest of the sea has no slope at all.
+constexpr double kMinSpread = 1e-9;
+
+FoamPlan resolve_foam(const SimulationPlan& plan) {
+  const SimulationConfig& config = plan.config();
+  FoamPlan f;
+  const std::size_t count = plan.cascades().size();
+  if (config.foam.source == FoamSource::ramp) {
+    const FoamSourceTerms ramp{config.foam.jacobian_start,
+                               1.0 / (config.foam.jacobian_start - config.foam.jacobian_full)};
+    f.cascades.assign(count, ramp);
+    f.local = ramp;
+    f.band_slope_variance.assign(count, 0.0);
+    return f;
+  }
+  const double lambda = config.choppiness, alpha = config.foam.breaking_acceleration;
+  std::vector<BandMoments> bands;
+  for (const CascadePlan& c : plan.cascades()) {
+    Result<std::vector<double>> power = expected_wave_power(plan.sea(), c.spectrum);
+    bands.push_back(
+        power.ok() ? band_moments(power.value(), config.resolution, c.patch_size_m, config.normals)
+                   : BandMoments{});
+  }
+  const std::optional<SlopeVariance>& tail = plan.unresolved_slope_variance();
+  double total = tail ? tail->upwind + tail->crosswind : 0.0, exact = 0.0, unseen = total;
+  for (const BandMoments& b : bands) {
+    total += b.exact;
+    exact += b.exact;
+    unseen += b.exact - (b.seen > 0.0 ? b.covariance * b.covariance / b.seen : 0.0);
+  }
+  f.total_slope_variance = total;
+  const auto terms = [&](double beta, double residual) -> FoamSourceTerms {
+    if (!(lambda > 0.0)) return {0.0, 1.0 / kMinSpread};  // J ≡ 1: nothing breaks
+    const double s = std::max(lambda * std::sqrt(std::max(residual, 0.0)), kMinSpread);
+    return {1.0 - lambda * alpha / beta, beta / s};
+  };
+  for (const BandMoments& b : bands) {
+    const bool seen = b.seen > 0.0 && b.covariance > 0.0;
+    const double beta = seen ? b.covariance / b.seen : 1.0;
+    f.cascades.push_back(terms(beta, total - (seen ? b.covariance * b.covariance / b.seen : 0.0)));
+    f.band_slope_variance.push_back(b.exact);
+    f.weights.push_back(exact > 0.0 ? b.exact / exact : 1.0 / static_cast<double>(count));
+  }
+  f.local = terms(1.0, unseen);
+  return f;
+}
+
+}  // namespace
+
 Result<SimulationPlan> SimulationPlan::make(const SimulationConfig& config) {
   if (Status s = validate(config); !s.ok()) return s;
   Result<SeaState> sea = SeaState::make(config.sea);
@@ -56,7 +150,13 @@ Result<SimulationPlan> SimulationPlan::make(const SimulationConfig& config) {
     if (tail.ok()) plan.unresolved_slope_variance_ = tail.value();
   }
   plan.far_noise_ = std::make_shared<FarNoiseFit>();
+  plan.foam_ = std::make_shared<FoamFit>();
   return plan;
+}
+
+const FoamPlan& SimulationPlan::foam() const {
+  std::call_once(foam_->once, [this] { foam_->foam = resolve_foam(*this); });
+  return foam_->foam;
 }
 
 const FarFieldNoise& SimulationPlan::far_noise() const {
@@ -72,6 +172,7 @@ SurfaceDescription SimulationPlan::surface() const {
   d.choppiness = config_.choppiness;
   d.horizontal_reach_m = config_.choppiness * hs_m_;
   d.foam_ramp = {config_.foam.jacobian_start, config_.foam.jacobian_full};
+  d.foam_weights = foam().weights;
   d.resolution = config_.resolution;
   for (const CascadePlan& c : cascades_) {
     d.patch_sizes_m.push_back(c.patch_size_m);

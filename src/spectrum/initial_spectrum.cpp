@@ -36,9 +36,16 @@ Status validate_vr_ocean(const SeaState& sea) {
   return {};
 }
 
-}  // namespace
+// The standard deviation scale of h0 at every grid wave vector (E|h0|² = 2·amplitude², ξ has
+// E|ξ|² = 2) and ω', after the checks every use needs; 0 at DC, on the Nyquist row and column and
+// outside the band (M.6.3).
+struct GridAmplitudes {
+  std::vector<double> amplitude;
+  std::vector<unsigned char> drawn;  // 1 where h0 = ξ·amplitude (0: h0 = 0 without a draw)
+  std::vector<float> omega;
+};
 
-Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p) {
+Result<GridAmplitudes> grid_amplitudes(const SeaState& sea, const InitialSpectrumParams& p) {
   if (Status s = validate(p.grid); !s.ok()) return s;
   if (Status s = require_in_range("loop_period_s", p.loop_period_s, 0.0, 1e6); !s.ok()) return s;
   if (!(p.k_min_radpm >= 0.0) || !(p.k_max_radpm > p.k_min_radpm)) {
@@ -52,12 +59,10 @@ Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const Initial
   const int n = p.grid.resolution;
   const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
   const double dk = 2.0 * kPi / p.grid.patch_size_m;
-  InitialSpectrum out;
-  out.resolution = n;
-  out.patch_size_m = p.grid.patch_size_m;
-  out.h0.resize(count);
+  GridAmplitudes out;
+  out.amplitude.assign(count, 0.0);
+  out.drawn.assign(count, 0);
   out.omega.resize(count);
-  out.packed.resize(count);
 
   VrOceanPhillipsParams vr;
   if (p.convention == AmplitudeConvention::vr_ocean) {
@@ -83,21 +88,52 @@ Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const Initial
       // DC guard (Aebi, VR Ocean, eq. 14), Nyquist row/column and the band limits (M.6.3).
       const bool nyquist = row == 0 || col == 0;
       if ((col == half && row == half) || nyquist || k < p.k_min_radpm || k >= p.k_max_radpm) {
-        out.h0[i] = 0.0;
         if (col == half && row == half) out.omega[i] = 0.0f;
         continue;
       }
-      const auto [xi_re, xi_im] = gaussian_pair(p.seed, i);
-      double amplitude = 0.0;
+      out.drawn[i] = 1;
       if (p.convention == AmplitudeConvention::variance_preserving) {
         // E|h0|² = F·Δk²/2 with E|ξ|² = 2   (M.6.2)
-        amplitude = 0.5 * std::sqrt(sea.wave_vector_spectrum(kx, kz) * dk * dk);
+        out.amplitude[i] = 0.5 * std::sqrt(sea.wave_vector_spectrum(kx, kz) * dk * dk);
       } else {
-        amplitude =
+        out.amplitude[i] =
             std::sqrt(0.5 * vr_ocean_phillips_power(kx, kz, vr, p.grid));  // Aebi, VR Ocean, eq. 13
       }
-      out.h0[i] = {xi_re * amplitude, xi_im * amplitude};
     }
+  }
+  return out;
+}
+
+}  // namespace
+
+Result<std::vector<double>> expected_wave_power(const SeaState& sea,
+                                                const InitialSpectrumParams& p) {
+  Result<GridAmplitudes> grid = grid_amplitudes(sea, p);
+  if (!grid.ok()) return grid.status();
+  std::vector<double> power = std::move(grid.value().amplitude);
+  for (double& a : power) a = 4.0 * a * a;  // 2·E|h0|²: Σ over the grid is E[h²]
+  return power;
+}
+
+Result<InitialSpectrum> make_initial_spectrum(const SeaState& sea, const InitialSpectrumParams& p) {
+  Result<GridAmplitudes> grid = grid_amplitudes(sea, p);
+  if (!grid.ok()) return grid.status();
+  const int n = p.grid.resolution;
+  const std::size_t count = static_cast<std::size_t>(n) * static_cast<std::size_t>(n);
+  InitialSpectrum out;
+  out.resolution = n;
+  out.patch_size_m = p.grid.patch_size_m;
+  out.h0.resize(count);
+  out.omega = std::move(grid.value().omega);
+  out.packed.resize(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    const double amplitude = grid.value().amplitude[i];
+    if (grid.value().drawn[i] == 0) {
+      out.h0[i] = 0.0;
+      continue;
+    }
+    const auto [xi_re, xi_im] = gaussian_pair(p.seed, i);
+    out.h0[i] = {xi_re * amplitude, xi_im * amplitude};
   }
   // Pack (a, b) = h0(k), (c, d) = h0*(−k) and pre-transform   (M.6.5, Aebi, VR Ocean, eqs. 18–22).
   // −k of grid index (col, row) is ((N − col) mod N, (N − row) mod N).

@@ -74,6 +74,10 @@ double cox_munk_mean_square_slope(double wind_speed_mps) {
   return 0.003 + 5.12e-3 * wind_speed_mps;
 }
 
+double monahan_whitecap_coverage(double wind_speed_mps) {
+  return 3.84e-6 * std::pow(wind_speed_mps, 3.41);
+}
+
 SlopeVariance cox_munk_slope_variance(double wind_speed_mps) {
   return {.upwind = 3.16e-3 * wind_speed_mps, .crosswind = 0.003 + 1.92e-3 * wind_speed_mps};
 }
@@ -107,6 +111,10 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
     out.wind_speed_mps = wind.wind_speed_mps;
     out.cox_munk_mss = cox_munk_mean_square_slope(wind.wind_speed_mps);
     out.cox_munk_slope_variance = cox_munk_slope_variance(wind.wind_speed_mps);
+    // Monahan's U10: Pierson–Moskowitz's wind is at 19.5 m (Stewart 2008, §16.5).
+    out.monahan_whitecap_coverage = monahan_whitecap_coverage(
+        wind.model == SpectrumModel::pierson_moskowitz ? wind.wind_speed_mps / 1.026
+                                                       : wind.wind_speed_mps);
   }
   out.unresolved_slope_variance = resolved.value().unresolved_slope_variance();
 
@@ -136,7 +144,7 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
   double s1 = 0.0, s2 = 0.0, s3 = 0.0, s4 = 0.0;  // pooled raw power sums of h
   double slope_sum = 0.0;
   std::size_t slope_count = 0, folded = 0, fold_j = 0;
-  double foam_sum = 0.0;
+  double foam_sum = 0.0, whitecap_sum = 0.0;
   const double wind_dir = config.sea.wind_sea.direction_rad;
   const double cos_w = std::cos(wind_dir), sin_w = std::sin(wind_dir);
   double up_sum = 0.0, cross_sum = 0.0;  // Σ over cascades of each one's area-weighted mean
@@ -175,6 +183,18 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
     variance_sum += std::max(0.0, seed_sum2 / count - seed_mean * seed_mean);
     s1 += seed_sum;
     s2 += seed_sum2;
+
+    const std::vector<double>& weights = sim.plan().foam().weights;
+    double weighted = 0.0, united = 1.0;
+    for (std::size_t k = 0; k < sim.frame().cascades.size(); ++k) {
+      const LargeVector<float>& foam = sim.frame().cascades[k].foam;
+      double sum = 0.0;
+      for (float v : foam) sum += v;
+      const double mean = sum / static_cast<double>(foam.size());
+      if (!weights.empty()) weighted += weights[k] * mean;
+      united *= 1.0 - mean / (1.0 + 0.6 * static_cast<double>(k));
+    }
+    whitecap_sum += weights.empty() ? 1.0 - united : weighted;
 
     for (const CascadeFrame& cascade : sim.frame().cascades) {
       double up = 0.0, cross = 0.0, area = 0.0;
@@ -236,6 +256,7 @@ Result<SurfaceStats> compute_surface_stats(const SimulationConfig& config, int s
   out.min_jacobian = min_j;
   out.foam_coverage = static_cast<double>(fold_j) / total;
   out.mean_foam = foam_sum / total;
+  out.whitecap_coverage = whitecap_sum / seeds;
   if (out.hs_spectrum_m > 0.0) out.max_imaginary_rel_hs = max_imag / out.hs_spectrum_m;
   return out;
 }

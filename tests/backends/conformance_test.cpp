@@ -153,6 +153,7 @@ TEST_P(Conformance, OptionalOutputsAreLeftOutAndTheRestUnchanged) {
     config.resolution = 32;
     config.cascade_patch_sizes_m = {300.0, 71.0, 17.0};
     config.normals = normals;
+    config.foam.source = ocean::FoamSource::ramp;
     config.foam.jacobian_start = 1.0;  // foam on part of the patch: accumulation is exercised
     for (const ocean::FrameOutputs want :
          {ocean::FrameOutputs::textures(), ocean::FrameOutputs{.normal = false, .foam = false},
@@ -267,6 +268,7 @@ TEST_P(Conformance, LocalSurfaceConformsAsItsCascadesDo) {
   config.cascade_patch_sizes_m = {300.0, 71.0};
   config.sea.wind_sea.spectrum.wind_speed_mps = 14.0;
   config.choppiness = 1.5;
+  config.foam.source = ocean::FoamSource::ramp;  // the foam bound below is the ramp's
   ocean::waves::LayerParams params;
   params.area = {.origin_m = {-40.0, -40.0}, .size_m = 80.0, .resolution = 64};
   params.wakes.push_back({.x_m = 20.0,

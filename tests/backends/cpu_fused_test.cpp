@@ -309,6 +309,7 @@ TEST(CpuFused, TextureOutputsGiveTheSameBitsOnEveryTarget) {
     ocean::SimulationConfig config;
     config.resolution = 64;
     config.cascade_patch_sizes_m = {400.0, 93.0, 21.0, 5.0};
+    config.foam.source = ocean::FoamSource::ramp;
     config.foam.jacobian_start = 1.0;
     const ocean::Frame full = run(config, CpuPipeline::fused_simd, 3);
     config.outputs = ocean::FrameOutputs::textures();
@@ -380,6 +381,30 @@ TEST(CpuFused, ExternalPipelineNeedsAnEngine) {
   const ocean::Status s = backend.configure(ocean::SimulationConfig{}, *runner);
   ASSERT_FALSE(s.ok());
   EXPECT_NE(s.message().find("needs an FFT engine"), std::string::npos);
+}
+
+}  // namespace
+
+namespace {
+
+// The foam source's Φ (packing::normal_cdf, Abramowitz & Stegun eq. 7.1.26, which the SIMD,
+// Vulkan and CUDA kernels share) against ½·erfc(−x/√2) in double: the formula's bound of
+// 1.5e-7 on erf plus float rounding, and relative accuracy in the lower tail where whitecap
+// fractions live (Φ down to 1e-6).
+TEST(FoamSource, NormalCdfMatchesErfc) {
+  double worst_abs = 0.0, worst_rel = 0.0;
+  for (int i = -4000; i <= 4000; ++i) {
+    const double x = i * 0.002;
+    const double exact = 0.5 * std::erfc(-x / std::sqrt(2.0));
+    const double got = ocean::packing::normal_cdf(static_cast<float>(x));
+    worst_abs = std::max(worst_abs, std::abs(got - exact));
+    if (exact > 1e-6 && x < 0.0) worst_rel = std::max(worst_rel, std::abs(got / exact - 1.0));
+  }
+  EXPECT_LT(worst_abs, 3e-7);
+  EXPECT_LT(worst_rel, 2e-3);
+  EXPECT_EQ(ocean::packing::normal_cdf(-1e10f), 0.0f);  // the capped argument: no NaN
+  EXPECT_EQ(ocean::packing::normal_cdf(1e10f), 1.0f);
+  EXPECT_NEAR(ocean::packing::normal_cdf(0.0f), 0.5f, 1e-7f);
 }
 
 }  // namespace

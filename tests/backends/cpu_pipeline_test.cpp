@@ -151,7 +151,10 @@ TEST(CpuPipeline, FlatSeaHasUnitJacobianAndUpNormals) {
 TEST(CpuPipeline, FoamAccumulatesAndDecays) {
   const int n = 32;
   Pipeline p(n, 20.0, ocean::NormalMethod::central_difference, 1.0);
-  p.config.foam = {.jacobian_start = 0.3, .jacobian_full = -0.2, .decay_per_s = 0.5};
+  p.config.foam = {.source = ocean::FoamSource::ramp,
+                   .jacobian_start = 0.3,
+                   .jacobian_full = -0.2,
+                   .decay_per_s = 0.5};
   // A steep, very choppy wave folds (J < 0) at its crests.
   p.inject(n / 2 + 2, n / 2, 2.0, 1.0f);
   p.run(0.0);

@@ -115,7 +115,8 @@ TEST(BakeLibrary, FilesMatchTheSimulatorAndTheManifestListsThem) {
 // the same times (the foam accumulated over the frames before), and the wake does foam.
 TEST(BakeLibrary, WritesTheCompositedLocalSurface) {
   TempDir dir("bake_lib_local_");
-  const ocean::SimulationConfig c = small_config();
+  ocean::SimulationConfig c = small_config();
+  c.foam.source = ocean::FoamSource::ramp;  // foam where the wake folds the surface
   ocean::waves::LayerParams lp;
   lp.area = {.origin_m = {-40.0, -40.0}, .size_m = 80.0, .resolution = 32};
   lp.wakes.push_back({.x_m = 20.0,

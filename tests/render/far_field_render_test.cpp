@@ -35,8 +35,11 @@ ocean::SimulationConfig moderate() {
 std::vector<double> render_linear(int width, int height, std::array<double, 3> eye,
                                   std::array<double, 3> target, double fov_deg,
                                   ocean::render::FarFieldRange far_field = {},
-                                  double sun_elevation_deg = 20.0) {
-  auto scene = Scene::make({.config = moderate(), .width = width, .height = height});
+                                  double sun_elevation_deg = 20.0,
+                                  ocean::FoamSource foam = ocean::FoamSource::breaking) {
+  ocean::SimulationConfig config = moderate();
+  config.foam.source = foam;
+  auto scene = Scene::make({.config = config, .width = width, .height = height});
   if (!scene.ok()) return {};
   EXPECT_TRUE(scene.value()->warm_up(20.0, 4.0).ok());
   View view;
@@ -152,9 +155,11 @@ constexpr int kSide = 216;
 // picture does not correlate everything with everything.
 std::vector<double> straight_down_detail(double height_m,
                                          ocean::render::FarFieldRange far_field = {},
-                                         double sun_elevation_deg = 20.0) {
-  const std::vector<double> rgb = render_linear(kSide, kSide, {0.0, height_m, 0.0}, {1.0, 0.0, 0.0},
-                                                kStraightDownFovDeg, far_field, sun_elevation_deg);
+                                         double sun_elevation_deg = 20.0,
+                                         ocean::FoamSource foam = ocean::FoamSource::breaking) {
+  const std::vector<double> rgb =
+      render_linear(kSide, kSide, {0.0, height_m, 0.0}, {1.0, 0.0, 0.0}, kStraightDownFovDeg,
+                    far_field, sun_elevation_deg, foam);
   if (rgb.empty()) return {};
   const std::vector<double> lum = luminance(rgb, kSide, kSide, 1);
   std::vector<double> y(lum.size(), 0.0);
@@ -227,9 +232,11 @@ TEST(FarFieldRender, WhitecapsSurviveBeyondTheNearField) {
     return y[y.size() - 1 - y.size() / 1000];
   };
   constexpr double kLowSun = 5.0;  // the sun's glitter lies outside the picture
-  const std::vector<double> far = straight_down_detail(3000.0, {}, kLowSun);
+  // The ramp's foam is cascade 0's folds, so it shows what the far field does to cascade 0's foam.
+  constexpr ocean::FoamSource kRamp = ocean::FoamSource::ramp;
+  const std::vector<double> far = straight_down_detail(3000.0, {}, kLowSun, kRamp);
   const std::vector<double> near =
-      straight_down_detail(3000.0, {.near_m = 1e5, .far_m = 2e5}, kLowSun);
+      straight_down_detail(3000.0, {.near_m = 1e5, .far_m = 2e5}, kLowSun, kRamp);
   ASSERT_FALSE(far.empty());
   ASSERT_FALSE(near.empty());
   const double ratio = brightest(far) / brightest(near);

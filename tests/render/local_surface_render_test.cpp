@@ -55,7 +55,8 @@ std::array<int, 2> pixel_of(const View& view, double x, double y, double z) {
 ocean::SimulationConfig nearly_calm() {
   ocean::SimulationConfig c = ocean::render::testing::small_config();
   c.sea.wind_sea.spectrum.wind_speed_mps = 0.5;
-  c.foam.decay_per_s = 0.2;  // foam lingers behind a wake for seconds
+  c.foam.source = ocean::FoamSource::ramp;  // the checks name the ramp's start
+  c.foam.decay_per_s = 0.2;                 // foam lingers behind a wake for seconds
   return c;
 }
 

@@ -232,7 +232,10 @@ TEST(Renderer, FoamOnlyWhereTheJacobianIsLow) {
   c.sea.wind_sea.spectrum.wind_speed_mps = 20.0;
   c.sea.wind_sea.spectrum.fetch_m = 300e3;
   c.choppiness = 1.3;
-  c.foam = {.jacobian_start = 0.9, .jacobian_full = 0.6, .decay_per_s = 1e6};
+  c.foam = {.source = ocean::FoamSource::ramp,
+            .jacobian_start = 0.9,
+            .jacobian_full = 0.6,
+            .decay_per_s = 1e6};
   const int n = 96;
   auto rig = make_rig(c, n, n, false);
   REQUIRE_RIG(rig);

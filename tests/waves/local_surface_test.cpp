@@ -23,6 +23,7 @@ std::unique_ptr<ocean::Simulator> sea(std::vector<ocean::BandRole> roles = {}) {
   c.resolution = 64;
   c.cascade_patch_sizes_m = {300.0, 71.0};
   c.choppiness = 1.5;
+  c.foam.source = ocean::FoamSource::ramp;  // the checks below recompute the ramp
   c.band_roles = std::move(roles);
   auto sim = ocean::make_simulator(c);
   EXPECT_TRUE(sim.ok()) << sim.status().message();

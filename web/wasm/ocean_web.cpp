@@ -82,6 +82,7 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
   config.cascade_patch_sizes_m.assign(patch_sizes_m, patch_sizes_m + cascade_count);
   config.loop_period_s = loop_period_s;
   config.seed = static_cast<std::uint64_t>(seed);
+  config.foam.source = ocean::FoamSource::ramp;  // the page's compute shader's (common.wgsl)
   ocean::Result<ocean::SimulationPlan> made = ocean::SimulationPlan::make(config);
   if (!made.ok()) return fail(made.status());
   const double patch_size_m = config.cascade_patch_sizes_m[static_cast<std::size_t>(cascade)];
@@ -110,6 +111,7 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
     s.h0[2 * i + 1] = s.state.spectrum.h0[i].imag();
   }
   s.state.foam.assign(texels, 0.0f);
+  s.state.foam_source = ocean::packing::foam_terms(config.foam, {});
   s.state.mip_work.assign(4 * texels, 0.0f);
   s.frame = {};
   s.frame.resolution = resolution;

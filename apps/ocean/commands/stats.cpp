@@ -90,6 +90,8 @@ std::vector<StatRow> rows(const SurfaceStats& s) {
       {"min_jacobian", s.min_jacobian, ""},
       {"foam_coverage", s.foam_coverage, ""},
       {"mean_foam", s.mean_foam, ""},
+      {"whitecap_coverage", s.whitecap_coverage, ""},
+      {"monahan_whitecap_coverage", optional_json(s.monahan_whitecap_coverage), ""},
       {"max_imaginary_rel_hs", optional_json(s.max_imaginary_rel_hs), ""},
       {"loop_error_rel_hs", optional_json(s.loop_error_rel_hs), ""},
   };

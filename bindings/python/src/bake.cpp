@@ -118,11 +118,13 @@ py::dict stats_dict(const SurfaceStats& s) {
       {"folded_fraction", &SurfaceStats::folded_fraction},
       {"min_jacobian", &SurfaceStats::min_jacobian},
       {"foam_coverage", &SurfaceStats::foam_coverage},
-      {"mean_foam", &SurfaceStats::mean_foam}};
+      {"mean_foam", &SurfaceStats::mean_foam},
+      {"whitecap_coverage", &SurfaceStats::whitecap_coverage}};
   static constexpr std::pair<const char*, std::optional<double> SurfaceStats::*> kOptionals[] = {
       {"height_skewness", &SurfaceStats::height_skewness},
       {"height_kurtosis", &SurfaceStats::height_kurtosis},
       {"cox_munk_mss", &SurfaceStats::cox_munk_mss},
+      {"monahan_whitecap_coverage", &SurfaceStats::monahan_whitecap_coverage},
       {"max_imaginary_rel_hs", &SurfaceStats::max_imaginary_rel_hs},
       {"loop_error_rel_hs", &SurfaceStats::loop_error_rel_hs}};
   py::dict d;

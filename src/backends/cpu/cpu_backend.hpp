@@ -47,6 +47,7 @@ struct CascadeState {
   AlignedFloats tiles;
   std::vector<float*> tile_re, tile_im;  ///< each plane's parts in `tiles`
   LargeVector<float> foam;               ///< accumulated foam carried between frames
+  packing::FoamTerms foam_source;        ///< how this cascade's J makes foam (FoamPlan)
   LargeVector<float> mip_work;           ///< float4 (n·len, foam) from mip level mip_work_level on
   int mip_work_level = 0;
 };

@@ -59,8 +59,7 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
   const float inv_spacing = static_cast<float>(n / state.patch_size_m);  // N/L (eq. 45)
   const float base_length = normal_length_from_roughness(static_cast<float>(config.roughness));
   const float smoothness = smoothness_from_normal_length(base_length);
-  const float j_start = static_cast<float>(config.foam.jacobian_start);
-  const float j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
+  const packing::FoamTerms source = state.foam_source;
   const float decay = static_cast<float>(config.foam.decay_per_s * dt_s);
   const bool blue_is_foam = config.blue_channel == BlueChannel::foam;
   const FrameOutputs want = {
@@ -85,10 +84,10 @@ void gradients_pass(CascadeState& state, const SimulationConfig& config, double 
             const packing::SurfacePoint p = packing::surface_point(g);
             const float jacobian = p.jacobian;
             const float nx = p.normal[0], ny = p.normal[1], nz = p.normal[2];
-            // Foam: a ramp on J, accumulated with the decay of Vincevičius 2024, §2.4.2
+            // Foam: the source on J, accumulated with the decay of Vincevičius 2024, §2.4.2
             // (M.7.4).
-            const float foam = packing::accumulate_foam(jacobian, state.foam[i], reset_foam,
-                                                        j_start, j_range, decay);
+            const float foam = packing::accumulate_foam(packing::foam_source(jacobian, source),
+                                                        state.foam[i], reset_foam, decay);
             state.foam[i] = foam;
             if (want.jacobian) out.jacobian[i] = jacobian;
             if (want.foam) out.foam[i] = foam;

@@ -18,9 +18,7 @@ void CpuBackendImpl::prepare_surface(double dt_s, bool reset_foam, Frame& out) {
                .inv_spacing = static_cast<float>(n / state.patch_size_m),  // eq. 45
                .base_length = base_length,
                .smoothness = smoothness_from_normal_length(base_length),
-               .jacobian_start = static_cast<float>(config_.foam.jacobian_start),
-               .jacobian_range =
-                   static_cast<float>(config_.foam.jacobian_start - config_.foam.jacobian_full),
+               .foam_source = state.foam_source,
                .decay = static_cast<float>(config_.foam.decay_per_s * dt_s),
                .reset_foam = reset_foam,
                .blue_is_foam = config_.blue_channel == BlueChannel::foam,

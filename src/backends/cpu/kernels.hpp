@@ -7,6 +7,8 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "sim/packing.hpp"
+
 namespace ocean::cpu {
 
 /// Inputs of the evolution of one cascade, in column-block order so that a column block's
@@ -97,7 +99,8 @@ struct SurfaceArgs {
   float inv_spacing = 0.0f;             ///< N/L
   float base_length = 1.0f;             ///< normal length for the base roughness (eq. 49)
   float smoothness = 0.0f;              ///< smoothness of the base level (eq. 53)
-  float jacobian_start = 0.8f, jacobian_range = 0.3f, decay = 0.0f;  ///< foam ramp (M.7.4)
+  packing::FoamTerms foam_source;       ///< the foam source's terms (M.7.4)
+  float decay = 0.0f;                   ///< decay_per_s·Δt
   bool reset_foam = true;
   bool blue_is_foam = true;
   float* foam_state = nullptr;  ///< accumulated foam, read and written

@@ -8,9 +8,12 @@
 #define OCEAN_CPU_SIMD_MATH_INL_H_
 #endif
 
+#include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 
 #include <cstddef>
+
+#include "sim/packing.hpp"
 
 HWY_BEFORE_NAMESPACE();
 namespace ocean::cpu {
@@ -50,6 +53,23 @@ HWY_INLINE V Reciprocal(DF df, V x) {
   for (int i = 0; i < kNewtonSteps; ++i) y = hn::Mul(y, hn::NegMulAdd(x, y, hn::Set(df, 2.0f)));
   return y;
 #endif
+}
+
+// Φ(x), the standard normal distribution function, as packing::normal_cdf computes it
+// (Abramowitz & Stegun eq. 7.1.26; |z| capped at packing::kErfcZMax, beyond which erfc is 0 in
+// float).
+template <class DF, class V>
+HWY_INLINE V NormalCdf(DF df, V x) {
+  const auto z =
+      hn::Min(hn::Mul(hn::Abs(x), hn::Set(df, 0.70710678f)), hn::Set(df, packing::kErfcZMax));
+  const auto t = Reciprocal(df, hn::MulAdd(z, hn::Set(df, packing::kErfcP), hn::Set(df, 1.0f)));
+  const auto& a = packing::kErfcA;
+  auto poly = hn::MulAdd(t, hn::Set(df, a[4]), hn::Set(df, a[3]));
+  poly = hn::MulAdd(t, poly, hn::Set(df, a[2]));
+  poly = hn::MulAdd(t, poly, hn::Set(df, a[1]));
+  poly = hn::Mul(t, hn::MulAdd(t, poly, hn::Set(df, a[0])));
+  const auto tail = hn::Mul(hn::Mul(hn::Set(df, 0.5f), poly), hn::Exp(df, hn::Neg(hn::Mul(z, z))));
+  return hn::IfThenElse(hn::Lt(x, hn::Zero(df)), tail, hn::Sub(hn::Set(df, 1.0f), tail));
 }
 
 // Truncation to int32 of values known to be in [0, 2^31): the bare conversion instruction,

@@ -61,8 +61,9 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
   const auto half_inv = hn::Set(df, 0.5f * a.inv_spacing);
   const auto one = hn::Set(df, 1.0f), zero = hn::Zero(df);
   const auto base_length = hn::Set(df, a.base_length);
-  const auto j_start = hn::Set(df, a.jacobian_start);
-  const auto inv_range = hn::Set(df, 1.0f / a.jacobian_range);
+  const auto threshold = hn::Set(df, a.foam_source.threshold);
+  const auto gain = hn::Set(df, a.foam_source.gain);
+  const bool breaking = a.foam_source.breaking;
   // Locals: the stores below could alias `a` as far as the compiler knows.
   const bool reset_foam = a.reset_foam, blue_is_foam = a.blue_is_foam;
   float* const foam_state = a.foam_state;
@@ -114,7 +115,8 @@ HWY_INLINE void SurfaceRowValues(const SurfaceArgs& a, int row_int, const Planar
     nz = hn::Mul(nz, inv_length);
     // Foam ramp and accumulation (M.7.4).
     const std::size_t i = row * n + c;
-    const auto now = hn::Min(hn::Max(hn::Mul(hn::Sub(j_start, jac), inv_range), zero), one);
+    const auto x = hn::Mul(hn::Sub(threshold, jac), gain);
+    const auto now = breaking ? NormalCdf(df, x) : hn::Min(hn::Max(x, zero), one);
     auto foam = now;
     if (!reset_foam) {
       const auto accumulated =

@@ -19,6 +19,7 @@
 #include "errors.hpp"
 #include "far_noise_state.hpp"
 #include "ocean/plan.hpp"
+#include "sim/packing.hpp"
 
 namespace ocean::cuda {
 
@@ -38,8 +39,7 @@ detail::CascadeArgs base_args(const SimulationConfig& config, const detail::Layo
                                                              : detail::kNormalsCentral;
   a.blue_is_foam = config.blue_channel == BlueChannel::foam ? 1 : 0;
   a.choppiness = static_cast<float>(config.choppiness);
-  a.j_start = static_cast<float>(config.foam.jacobian_start);
-  a.j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
+  a.foam_breaking = config.foam.source == FoamSource::breaking ? 1 : 0;
   const float r = static_cast<float>(config.roughness);
   a.base_length = 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));      // Aebi, VR Ocean, eq. 49
   const float t = std::clamp(3.0f * a.base_length - 2.0f, 0.0f, 1.0f);  // eq. 53
@@ -100,6 +100,12 @@ Status CudaBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner*/
     detail::CascadeArgs& args = gpu->args[static_cast<std::size_t>(c)];
     args.dk = static_cast<float>(2.0 * kPi / size_m);
     args.inv_spacing = static_cast<float>(l.resolution / size_m);
+    const packing::FoamTerms foam =
+        packing::foam_terms(config.foam, config.foam.source == FoamSource::breaking
+                                             ? plan.foam().cascades[static_cast<std::size_t>(c)]
+                                             : FoamSourceTerms{});
+    args.foam_threshold = foam.threshold;
+    args.foam_gain = foam.gain;
     // Spectra on the host (the CPU reference code) and the phase rate of EvolutionPhase (M.7.3).
     Result<InitialSpectrum> h0 =
         make_initial_spectrum(plan.sea(), plan.cascades()[static_cast<std::size_t>(c)].spectrum);

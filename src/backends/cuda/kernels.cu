@@ -56,6 +56,18 @@ __device__ float2 evolved(const CascadeArgs& a, unsigned i, int plane) {
   return cmul(plane_factor(a, plane, kx, kz), h);
 }
 
+// Φ(x), the standard normal distribution function, by Abramowitz & Stegun eq. 7.1.26 with the
+// constants and the cap of src/sim/packing.hpp (normal_cdf).
+__device__ float normal_cdf(float x) {
+  const float z = fminf(fabsf(x) * 0.70710678f, 10.5f);
+  const float t = 1.0f / (1.0f + 0.3275911f * z);
+  const float poly =
+      t * (0.254829592f +
+           t * (-0.284496736f + t * (1.421413741f + t * (-1.453152027f + t * 1.061405429f))));
+  const float tail = 0.5f * poly * expf(-z * z);
+  return x < 0.0f ? tail : 1.0f - tail;
+}
+
 __global__ void evolve(CascadeArgs a) {
   const unsigned i = blockIdx.x * blockDim.x + threadIdx.x;
   const unsigned texels = 1u << (2 * a.log2n);
@@ -261,9 +273,10 @@ __global__ void finalize(CascadeArgs a, int tile_size, int levels) {
   const float len = sqrtf(n.x * n.x + n.y * n.y + n.z * n.z);
   n = len > 0.0f ? make_float3(n.x / len, n.y / len, n.z / len) : make_float3(0.0f, 1.0f, 0.0f);
 
-  // Foam: a ramp on J, accumulated with Vincevičius's (2024) decay, listing 2.4 (M.7.4).
+  // Foam: the source on J, accumulated with Vincevičius's (2024) decay, listing 2.4 (M.7.4).
   const FrameParams& f = *a.frame;
-  const float now = fminf(fmaxf((a.j_start - jacobian) / a.j_range, 0.0f), 1.0f);
+  const float x = (a.foam_threshold - jacobian) * a.foam_gain;
+  const float now = a.foam_breaking != 0 ? normal_cdf(x) : fminf(fmaxf(x, 0.0f), 1.0f);
   float foam = now;
   if (f.reset_foam == 0u) {
     const float accumulated = a.foam_state[i] - f.foam_decay / fmaxf(now, 0.5f);

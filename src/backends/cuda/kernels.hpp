@@ -35,8 +35,11 @@ struct CascadeArgs {
   float dk = 0.0f;           ///< 2π/L, rad/m
   float inv_spacing = 0.0f;  ///< N/L, 1/m
   float choppiness = 0.0f;   ///< λ
-  float j_start = 0.0f;      ///< foam ramp (M.7.4)
-  float j_range = 0.0f;      ///< jacobian_start − jacobian_full
+  /// The foam source x = (foam_threshold − J)·foam_gain: Φ(x) when foam_breaking, else
+  /// clamp(x, 0, 1) (M.7.4; FoamSourceTerms).
+  float foam_threshold = 0.0f;
+  float foam_gain = 0.0f;
+  int foam_breaking = 0;
   float base_length = 0.0f;  ///< normal length from roughness (Aebi, VR Ocean, eq. 49)
   float base_smoothness = 0.0f;
   std::uint32_t mip_offset[kMaxMipLevels + 1] = {};  ///< mip_offset(N, m) (eq. 55)

@@ -16,6 +16,7 @@
 #include "ocean/backends/vulkan.hpp"
 #include "ocean/plan.hpp"
 #include "sim/far_noise_map.hpp"
+#include "sim/packing.hpp"
 
 namespace ocean::vk {
 namespace {
@@ -106,8 +107,7 @@ Status VulkanBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner
   p.blue_is_foam = config.blue_channel == BlueChannel::foam ? 1u : 0u;
   p.reset_foam = 1u;
   p.choppiness = static_cast<float>(config.choppiness);
-  p.j_start = static_cast<float>(config.foam.jacobian_start);
-  p.j_range = static_cast<float>(config.foam.jacobian_start - config.foam.jacobian_full);
+  p.foam_breaking = config.foam.source == FoamSource::breaking ? 1u : 0u;
   const float r = static_cast<float>(config.roughness);
   p.base_length = 1.0f - r * (0.306f + r * (0.113f + r * 0.081f));      // Aebi, VR Ocean, eq. 49
   const float t = std::clamp(3.0f * p.base_length - 2.0f, 0.0f, 1.0f);  // eq. 53
@@ -116,6 +116,11 @@ Status VulkanBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner
     const double L = config.cascade_patch_sizes_m[c];
     p.dk[c] = static_cast<float>(2.0 * kPi / L);
     p.inv_spacing[c] = static_cast<float>(n / L);
+    const packing::FoamTerms foam = packing::foam_terms(
+        config.foam,
+        config.foam.source == FoamSource::breaking ? plan.foam().cascades[c] : FoamSourceTerms{});
+    p.foam_threshold[c] = foam.threshold;
+    p.foam_gain[c] = foam.gain;
   }
   const int levels = std::countr_zero(n);
   for (int m = 0; m <= levels; ++m)

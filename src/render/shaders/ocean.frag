@@ -140,9 +140,13 @@ void main() {
     sh.extra *= damped * damped;
     slope += sh.slope;
     variance += sh.extra;
-    // Whitecaps are the long waves' breaking crests; the short cascades' foam is weighted down
-    // so it reads as streaks and speckle rather than snow (R.11).
-    no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
+    // Breaking (R.11): each cascade's foam is the sea's breaking probability given that
+    // cascade, their weighted mean the coverage. Ramp: each cascade's own whitecaps, united, the
+    // short cascades' weighted down so they read as streaks and speckle rather than snow.
+    if (u.foam_weighted > 0.5)
+      no_foam -= u.foam_weights[c / 4][c % 4] * sh.foam;
+    else
+      no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
   }
   vec2 local_slope;  // wakes and waveforms (R.19): what they change in slope and foam adds
   float local_foam;

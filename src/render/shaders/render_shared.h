@@ -198,7 +198,10 @@ struct FrameUniforms {
   float debug_view;     // OCEAN_RENDER_DEBUG_*
   float cascade_count;  // cascades to sample; 0 before any simulation input
   float hs_m;           // significant wave height Hs of the configured sea
-  float hs_pad0, hs_pad1, hs_pad2;
+  // 1: the cascades' foam is each the sea's breaking probability (FoamSource::breaking), mixed
+  // by foam_weights; 0: each cascade's own ramp, united (R.11).
+  float foam_weighted;
+  float hs_pad1, hs_pad2;
   CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
   FarFieldUniforms far_field;
   PlanetUniforms planet;
@@ -211,6 +214,7 @@ struct FrameUniforms {
   UnderwaterUniforms underwater;
   FarOctaveUniforms far_octaves[3];  // the noise's lattice at O and t (R.13b)
   FarMapUniforms far_map;            // the per-frame map (R.13b)
+  vec4 foam_weights[OCEAN_RENDER_MAX_CASCADES / 4];  // cascade c's at [c / 4][c % 4] (R.11)
 };
 
 // Push constants of the sky pass (std430).
@@ -255,7 +259,8 @@ static_assert(sizeof(FarOctaveUniforms) == 16);
 static_assert(offsetof(FrameUniforms, far_octaves) == 784 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(FarMapUniforms) == 48);
 static_assert(offsetof(FrameUniforms, far_map) == 832 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 880 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, foam_weights) == 880 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 880 + 36 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

@@ -32,7 +32,10 @@ void main() {
       variance += w[a] * w[a] * max(r * r - u.map_base_alpha_sq, 0.0);  // as ocean.frag (R.5)
       foam += linear[a] * t.z;
     }
-    no_foam *= 1.0 - foam / (1.0 + 0.6 * float(c));  // as ocean.frag (R.11)
+    if (u.foam_weighted > 0.5)  // as ocean.frag (R.11)
+      no_foam -= u.foam_weights[c / 4][c % 4] * foam;
+    else
+      no_foam *= 1.0 - foam / (1.0 + 0.6 * float(c));
   }
   vec3 up = to_local(n);
   vec3 N = normalize(to_local(n + g - dot(g, n) * n));  // R.35

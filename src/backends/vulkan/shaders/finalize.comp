@@ -88,8 +88,9 @@ void main() {
   const float len = length(n);
   n = len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
 
-  // Foam: a ramp on J, accumulated with Vincevičius's (2024) decay, listing 2.4 (M.7.4).
-  const float now = clamp((params.j_start - jacobian) / params.j_range, 0.0, 1.0);
+  // Foam: the source on J, accumulated with Vincevičius's (2024) decay, listing 2.4 (M.7.4).
+  const float x = (params.foam_threshold[cascade] - jacobian) * params.foam_gain[cascade];
+  const float now = params.foam_breaking != 0u ? normal_cdf(x) : clamp(x, 0.0, 1.0);
   float foam = now;
   if (params.reset_foam == 0u) {
     const float accumulated = foam_state[texel] - params.foam_decay / max(now, 0.5);

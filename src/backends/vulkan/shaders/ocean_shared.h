@@ -58,16 +58,32 @@ struct SimParams {
   float foam_decay;  // per frame: decay_per_s·dt
   uint reset_foam;   // per frame: 1 on the first step or after a jump back in time
   float choppiness;  // λ
-  float j_start;     // foam ramp (M.7.4)
-  float j_range;     // jacobian_start − jacobian_full
+  uint foam_breaking;  // 1: foam source Φ(x), 0: clamp(x, 0, 1), x = (threshold − J)·gain (M.7.4)
+  uint pad0;
   float base_length;      // normal length from roughness (Aebi, VR Ocean, eq. 49)
   float base_smoothness;  // smoothness of base_length (eq. 53)
-  uint pad0;
   uint pad1;
+  uint pad2;
   float dk[OCEAN_MAX_CASCADES];           // 2π/L, rad/m
   float inv_spacing[OCEAN_MAX_CASCADES];  // N/L, 1/m
   uint mip_offset[OCEAN_MAX_MIPS + 4];    // mip_offset(N, m) (eq. 55)
+  float foam_threshold[OCEAN_MAX_CASCADES];  // each cascade's foam source (FoamSourceTerms)
+  float foam_gain[OCEAN_MAX_CASCADES];
 };
+
+// Φ(x), the standard normal distribution function, by Abramowitz & Stegun eq. 7.1.26, with the
+// constants and the cap of src/sim/packing.hpp (normal_cdf).
+#ifndef __cplusplus
+float normal_cdf(float x) {
+  const float z = min(abs(x) * 0.70710678, 10.5);
+  const float t = 1.0 / (1.0 + 0.3275911 * z);
+  const float poly =
+      t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 +
+                                                                      t * 1.061405429))));
+  const float tail = 0.5 * poly * exp(-z * z);
+  return x < 0.0 ? tail : 1.0 - tail;
+}
+#endif
 
 // Push constants of the mip kernel.
 struct MipPush {
