@@ -55,6 +55,10 @@ struct ShadingParams {
   double roughness = 0.08;
   double fog_density_per_m = 6e-5;  ///< ρ of the horizon fog (R.8), ≥ 0
   double exposure = 0.45;           ///< multiplies the HDR image before tone mapping, > 0
+  /// The air between the eye and the water dims and hazes it (R.8b): the sky's atmosphere
+  /// (R.1–R.4) along the segment, so the sea seen from altitude lies under the air it is seen
+  /// through.
+  bool aerial_perspective = true;
 };
 /// invalid_argument naming the field for non-finite values or values outside the ranges above.
 Status validate(const ShadingParams& params);
@@ -412,6 +416,26 @@ struct Sky {
   static constexpr int kLutWidth = 128;
   static constexpr int kLutHeight = 64;
   void fill_lut(std::span<float> rgba) const;
+
+  /// The atmosphere the sky and the aerial perspective share (R.1): Rayleigh extinction at sea
+  /// level per channel and its scale height, the haze's (times `aerosol`) and its scale height.
+  struct Air {
+    std::array<double, 3> rayleigh_per_m;
+    double rayleigh_height_m;
+    double mie_per_m;
+    double mie_height_m;
+  };
+  [[nodiscard]] Air air() const;
+  /// The air between an eye at height `eye_y_m` and a point at height `point_y_m`, `distance_m`
+  /// apart, seen along the unit `view_dir` from the eye (R.8b): what the point's radiance is
+  /// multiplied by (transmittance) and what the air adds (in-scattered sun light).
+  struct AerialPerspective {
+    std::array<double, 3> transmittance;
+    std::array<double, 3> inscattered;
+  };
+  [[nodiscard]] AerialPerspective aerial_perspective(double eye_y_m, double point_y_m,
+                                                     double distance_m,
+                                                     std::array<double, 3> view_dir) const;
 
   ShadingParams params;
   std::array<double, 3> sun;  ///< unit direction towards the sun

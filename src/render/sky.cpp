@@ -116,6 +116,46 @@ std::array<double, 3> Sky::radiance(std::array<double, 3> v) const {
   return out;
 }
 
+Sky::Air Sky::air() const {
+  return {kRayleighBeta, kRayleighHeight, kMieBeta * params.aerosol, kMieHeight};
+}
+
+namespace {
+
+// The mean of e^(−y/H) over heights from y_low to y_high (a straight path's mean density in a
+// plane-parallel exponential atmosphere): e^(−y_low/H)·(1 − e^(−x))/x, x = (y_high − y_low)/H.
+double mean_density(double y_low, double y_high, double scale_height_m) {
+  const double x = (y_high - y_low) / scale_height_m;
+  return std::exp(-y_low / scale_height_m) * (x < 1e-9 ? 1.0 : -std::expm1(-x) / x);
+}
+
+}  // namespace
+
+Sky::AerialPerspective Sky::aerial_perspective(double eye_y_m, double point_y_m,
+                                               double distance_m,
+                                               std::array<double, 3> view_dir) const {
+  const Air a = air();
+  const double low = std::min(eye_y_m, point_y_m), high = std::max(eye_y_m, point_y_m);
+  const double tau_m = a.mie_per_m * distance_m * mean_density(low, high, a.mie_height_m);
+  const double rayleigh_density = mean_density(low, high, a.rayleigh_height_m);
+  const double mu = view_dir[0] * sun[0] + view_dir[1] * sun[1] + view_dir[2] * sun[2];
+  const std::array<double, 3> sun_ground = sun_irradiance_ground();
+  AerialPerspective out{};
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double tau_r = a.rayleigh_per_m[c] * distance_m * rayleigh_density;
+    const double tau = tau_r + tau_m;
+    out.transmittance[c] = std::exp(-tau);
+    if (!(tau > 0.0)) continue;
+    // R.2 and R.4's phase and multiple-scattering share, weighted by the segment's own depths.
+    const double phase = (tau_r * 3.0 / (16.0 * kPi) * (1.0 + mu * mu) +
+                          tau_m * henyey_greenstein(mu, params.aerosol_g) +
+                          0.25 * tau_r / (4.0 * kPi)) /
+                         tau;
+    out.inscattered[c] = params.sky_brightness * sun_ground[c] * -std::expm1(-tau) * phase;
+  }
+  return out;
+}
+
 std::array<double, 3> Sky::sun_irradiance_ground() const {
   const double tau_m = kMieBeta * kMieHeight * params.aerosol;
   const double m = air_mass(std::max(sun[1], 0.0));

@@ -35,6 +35,13 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
                                        : sh.roughness);
   u.map_base_alpha_sq = static_cast<float>(st.map_base_alpha_sq);
   u.fog_density_per_m = static_cast<float>(sh.fog_density_per_m);
+  const Sky::Air air = Sky(sh).air();
+  u.air_rayleigh = {static_cast<float>(air.rayleigh_per_m[0]),
+                    static_cast<float>(air.rayleigh_per_m[1]),
+                    static_cast<float>(air.rayleigh_per_m[2]),
+                    sh.aerial_perspective ? static_cast<float>(air.rayleigh_height_m) : 0.0f};
+  u.air_mie = {static_cast<float>(air.mie_per_m), static_cast<float>(air.mie_height_m),
+               static_cast<float>(sh.aerosol_g), static_cast<float>(sh.sky_brightness)};
   u.grid_centre_m = {0.0f, 0.0f};  // the origin of the positions the GPU sees (R.16)
   u.ocean_size_m = static_cast<float>(view.ocean_size_m);
   u.border_fade_m = static_cast<float>(0.1 * view.ocean_size_m);  // R.10

@@ -9,12 +9,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <numbers>
 #include <vector>
 
 #include "ocean/scene.hpp"
+#include "ocean/statistics.hpp"
 #include "render/render_helpers.hpp"
 #include "support/require_devices.hpp"
 
@@ -243,6 +245,100 @@ TEST(FarFieldRender, WhitecapsSurviveBeyondTheNearField) {
   std::printf("whitecap detail (99.9th percentile) far field / none: %.3g / %.3g = %.2f\n",
               brightest(far), brightest(near), ratio);
   EXPECT_GE(ratio, 0.4);
+}
+
+// Straight down from `height_m`, the fraction of the picture that the renderer draws as foam:
+// the normals debug view writes each pixel's foam cover (R.11, after the mip filtering, the far
+// field and the distance fades) to the HDR image's alpha.
+double drawn_foam_fraction(double height_m, ocean::FoamSource foam) {
+  ocean::SimulationConfig config = moderate();
+  config.foam.source = foam;
+  constexpr int kFoamSide = 128;
+  auto scene = Scene::make({.config = config, .width = kFoamSide, .height = kFoamSide});
+  if (!scene.ok()) return -1.0;
+  EXPECT_TRUE(scene.value()->warm_up(20.0, 4.0).ok());
+  View view;
+  view.camera = {.position_m = {0.0, height_m, 0.0},
+                 .target_m = {1.0, 0.0, 0.0},
+                 .fov_y_rad = kStraightDownFovDeg * std::numbers::pi / 180.0,
+                 .aspect = 1.0,
+                 .near_m = 0.2,
+                 .far_m = 2e5};
+  view.shading = ocean::render::sky_preset("clear").value();
+  view.debug = ocean::render::DebugView::normals;
+  EXPECT_TRUE(scene.value()->renderer().draw(view).ok());
+  std::vector<float> rgba;
+  EXPECT_TRUE(scene.value()->renderer().read_hdr(rgba).ok());
+  if (rgba.size() != 4u * kFoamSide * kFoamSide) return -1.0;
+  double sum = 0.0;
+  for (std::size_t i = 3; i < rgba.size(); i += 4) sum += rgba[i];
+  return sum / (kFoamSide * kFoamSide);
+}
+
+// Monahan & O'Muircheartaigh (1980): W = 3.84·10⁻⁶·U¹⁰^3.41, about 1 % at the moderate preset's
+// 10 m/s. The breaking source's foam (M.7.4) is that fraction of the field, and the picture keeps
+// it from any height: straight down from 400 m, 3 km and 10 km the drawn foam cover lies within
+// the factor the field's own cover keeps from the law (2.2, the Whitecaps tests), where the
+// ramp's foam of folds alone, averaged down the mips, draws a tenth of it or less.
+TEST(FarFieldRender, DrawnWhitecapCoverFollowsMonahansLaw) {
+  REQUIRE_DEVICE();
+  const double law = ocean::monahan_whitecap_coverage(10.0);
+  for (const double height_m : {400.0, 3000.0, 10000.0}) {
+    const double breaking = drawn_foam_fraction(height_m, ocean::FoamSource::breaking);
+    const double ramp = drawn_foam_fraction(height_m, ocean::FoamSource::ramp);
+    std::printf("from %5.0f m: drawn foam %.3f %% (ramp %.3f %%), Monahan %.3f %%, ratio %.2f\n",
+                height_m, 100.0 * breaking, 100.0 * ramp, 100.0 * law, breaking / law);
+    EXPECT_GE(breaking, law / 2.2) << "from " << height_m << " m";
+    EXPECT_LE(breaking, law * 2.2) << "from " << height_m << " m";
+    EXPECT_LT(ramp, law / 10.0) << "from " << height_m << " m";
+  }
+}
+
+// Aerial perspective (R.8b) in the picture against the CPU's Sky::aerial_perspective: straight
+// down from 3 km and 10 km, the centre pixels drawn with the air are those drawn without it times
+// the path's transmittance plus its in-scattered light (HDR, half floats: 1 %).
+TEST(FarFieldRender, AerialPerspectiveIsTheSkysAirAlongThePath) {
+  REQUIRE_DEVICE();
+  constexpr int kAirSide = 64;
+  auto scene = Scene::make({.config = moderate(), .width = kAirSide, .height = kAirSide});
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  ASSERT_TRUE(scene.value()->warm_up(20.0, 4.0).ok());
+  for (const double height_m : {3000.0, 10000.0}) {
+    View view;
+    view.camera = {.position_m = {0.0, height_m, 0.0},
+                   .target_m = {1.0, 0.0, 0.0},
+                   .fov_y_rad = kStraightDownFovDeg * std::numbers::pi / 180.0,
+                   .aspect = 1.0,
+                   .near_m = 0.2,
+                   .far_m = 2e5};
+    view.shading = ocean::render::sky_preset("clear").value();
+    std::vector<float> with_air, without;
+    ASSERT_TRUE(scene.value()->renderer().draw(view).ok());
+    ASSERT_TRUE(scene.value()->renderer().read_hdr(with_air).ok());
+    view.shading.aerial_perspective = false;
+    ASSERT_TRUE(scene.value()->renderer().draw(view).ok());
+    ASSERT_TRUE(scene.value()->renderer().read_hdr(without).ok());
+    // The centre 2 × 2 pixels look within 0.5° of straight down at the mean sea level (the waves'
+    // metre of height changes the path by 3·10⁻⁴ of it).
+    const auto air = ocean::render::Sky(view.shading)
+                         .aerial_perspective(height_m, 0.0, height_m, {0.0, -1.0, 0.0});
+    for (int row = kAirSide / 2 - 1; row <= kAirSide / 2; ++row)
+      for (int col = kAirSide / 2 - 1; col <= kAirSide / 2; ++col)
+        for (std::size_t c = 0; c < 3; ++c) {
+          const std::size_t i = (static_cast<std::size_t>(row) * kAirSide + col) * 4 + c;
+          const double expected = without[i] * air.transmittance[c] + air.inscattered[c];
+          EXPECT_NEAR(with_air[i], expected, 0.01 * expected)
+              << "from " << height_m << " m, pixel " << col << "," << row << " channel " << c;
+        }
+    const std::size_t centre =
+        (static_cast<std::size_t>(kAirSide / 2) * kAirSide + kAirSide / 2) * 4;
+    std::printf(
+        "from %5.0f m straight down: transmittance %.3f %.3f %.3f, air light %.4f %.4f %.4f "
+        "over the water's %.4f %.4f %.4f\n",
+        height_m, air.transmittance[0], air.transmittance[1], air.transmittance[2],
+        air.inscattered[0], air.inscattered[1], air.inscattered[2], without[centre],
+        without[centre + 1], without[centre + 2]);
+  }
 }
 
 }  // namespace

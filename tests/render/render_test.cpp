@@ -168,6 +168,51 @@ TEST(Sky, SkyIrradianceIsTheCosineWeightedIntegral) {
   EXPECT_NEAR(e[1], fine, 0.03 * fine);
 }
 
+// Aerial perspective (R.8b) against exact identities of the plane-parallel exponential
+// atmosphere: the whole column straight up transmits what reaches sea level from a zenith sun
+// (air mass 1, R.3); a short horizontal path at height y has the optical depth β(y)·d of
+// constant density; no path, no change; the in-scattered light grows with the path and stays
+// below the light that reaches sea level.
+TEST(Sky, AerialPerspectiveMatchesTheColumnsOpticalDepth) {
+  ocean::render::ShadingParams p;
+  p.sun_elevation_deg = 90.0;
+  const ocean::render::Sky zenith(p);
+  const auto column = zenith.aerial_perspective(1e6, 0.0, 1e6, {0.0, -1.0, 0.0});
+  const auto ground = zenith.sun_irradiance_ground();
+  const ocean::render::Sky::Air column_air = zenith.air();
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double tau = column_air.rayleigh_per_m[c] * column_air.rayleigh_height_m +
+                       column_air.mie_per_m * column_air.mie_height_m;
+    EXPECT_NEAR(column.transmittance[c], std::exp(-tau), 1e-12) << c;
+    // Kasten–Young's air mass at the zenith is 0.9997, not 1: the sun's path is 3·10⁻⁴ shorter.
+    EXPECT_NEAR(column.transmittance[c], ground[c] / p.sun_irradiance, 1e-4) << c;
+  }
+
+  p.sun_elevation_deg = 20.0;
+  const ocean::render::Sky sky(p);
+  const ocean::render::Sky::Air air = sky.air();
+  const auto flat = sky.aerial_perspective(3000.0, 3000.0, 500.0, {1.0, 0.0, 0.0});
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double tau = 500.0 * (air.rayleigh_per_m[c] * std::exp(-3000.0 / air.rayleigh_height_m) +
+                                air.mie_per_m * std::exp(-3000.0 / air.mie_height_m));
+    EXPECT_NEAR(flat.transmittance[c], std::exp(-tau), 1e-9) << c;
+  }
+  const auto none = sky.aerial_perspective(20.0, 0.0, 0.0, {0.0, -1.0, 0.0});
+  const auto near = sky.aerial_perspective(3000.0, 0.0, 3000.0, {0.0, -1.0, 0.0});
+  const auto far = sky.aerial_perspective(10000.0, 0.0, 10000.0, {0.0, -1.0, 0.0});
+  const auto sun_ground = sky.sun_irradiance_ground();
+  for (std::size_t c = 0; c < 3; ++c) {
+    EXPECT_EQ(none.transmittance[c], 1.0);
+    EXPECT_EQ(none.inscattered[c], 0.0);
+    EXPECT_GT(far.inscattered[c], near.inscattered[c]);
+    EXPECT_LT(far.transmittance[c], near.transmittance[c]);
+    EXPECT_LT(far.inscattered[c], sun_ground[c]);
+  }
+  // Rayleigh: the air's light is bluest, its transmittance reddest.
+  EXPECT_GT(far.inscattered[2], far.inscattered[0]);
+  EXPECT_LT(far.transmittance[2], far.transmittance[0]);
+}
+
 TEST(Renderer, SkyAboveTheHorizonWaterBelowNoNanOrBlackPixels) {
   const int w = 160, h = 90;
   auto rig = make_rig(small_config(), w, h, false);

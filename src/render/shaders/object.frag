@@ -69,7 +69,8 @@ void main() {
     if (under_surface(world_pos) && under_surface(u.camera_pos_m))  // both in the water (R.51)
       c = water_fog(c, distance_m, V);
     else
-      c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+      c = mix(aerial_perspective(c, world_pos.y, distance_m, -V), fog_colour(-V),
+              horizon_fog(distance_m, V.y));
   }
   colour = vec4(c, 1.0);
 }

@@ -64,6 +64,30 @@ float horizon_fog(float distance_m, float view_y) {
   return (1.0 - exp(-d * d)) * w * w;
 }
 
+// The mean of e^(−y/H) along a straight path from height y_low to y_high (R.8b).
+float mean_air_density(float y_low, float y_high, float scale_height_m) {
+  float x = (y_high - y_low) / scale_height_m;
+  return exp(-y_low / scale_height_m) * (x < 1e-3 ? 1.0 - 0.5 * x : (1.0 - exp(-x)) / x);
+}
+
+// Aerial perspective (R.8b): radiance c from a point at height point_y, distance_m from the eye
+// along the unit view_dir (eye to point), as the eye sees it through the sky's atmosphere (R.1–R.4)
+// along that segment: c·T plus the sun light the segment scatters towards the eye.
+vec3 aerial_perspective(vec3 c, float point_y, float distance_m, vec3 view_dir) {
+  if (u.air_rayleigh.w <= 0.0) return c;
+  float eye_y = eye_position().y;
+  float low = min(eye_y, point_y), high = max(eye_y, point_y);
+  vec3 tau_r = u.air_rayleigh.rgb * (distance_m * mean_air_density(low, high, u.air_rayleigh.w));
+  float tau_m = u.air_mie.x * distance_m * mean_air_density(low, high, u.air_mie.y);
+  vec3 tau = tau_r + tau_m;
+  vec3 t = exp(-tau);
+  float mu = dot(view_dir, u.sun_dir), g = u.air_mie.z, d = 1.0 + g * g - 2.0 * g * mu;
+  float hg = (1.0 - g * g) / (4.0 * PI * d * sqrt(d));
+  vec3 phase = (tau_r * (3.0 / (16.0 * PI) * (1.0 + mu * mu) + 0.25 / (4.0 * PI)) + tau_m * hg) /
+               max(tau, vec3(1e-20));
+  return c * t + u.air_mie.w * u.sun_ground * (1.0 - t) * phase;
+}
+
 // The colour distant water and the sky fade to: the sky just above the horizon, this azimuth.
 vec3 fog_colour(vec3 view_dir) {
   vec2 h = view_dir.xz;

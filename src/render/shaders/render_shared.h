@@ -215,6 +215,11 @@ struct FrameUniforms {
   FarOctaveUniforms far_octaves[3];  // the noise's lattice at O and t (R.13b)
   FarMapUniforms far_map;            // the per-frame map (R.13b)
   vec4 foam_weights[OCEAN_RENDER_MAX_CASCADES / 4];  // cascade c's at [c / 4][c % 4] (R.11)
+  // The air between the eye and the water (R.8b): Rayleigh extinction at sea level (rgb, 1/m)
+  // and its scale height (w, m; 0: no aerial perspective); the haze's extinction (x), scale
+  // height (y), Henyey–Greenstein g (z) and the sky's brightness (w).
+  vec4 air_rayleigh;
+  vec4 air_mie;
 };
 
 // Push constants of the sky pass (std430).
@@ -260,7 +265,8 @@ static_assert(offsetof(FrameUniforms, far_octaves) == 784 + 32 * OCEAN_RENDER_MA
 static_assert(sizeof(FarMapUniforms) == 48);
 static_assert(offsetof(FrameUniforms, far_map) == 832 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, foam_weights) == 880 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 880 + 36 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, air_rayleigh) == 880 + 36 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(FrameUniforms) == 912 + 36 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
