@@ -8,6 +8,7 @@
 // Skips where no Vulkan device exists (fails with OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -169,6 +170,66 @@ TEST(SphereRender, TheHorizonSitsAtTheDipOfAnEyeAboveTheSphere) {
         1;
     EXPECT_NEAR(sphere_first_sea_row(hdr, kW, kH), expected, 2)
         << "R " << k.radius_m << ", h " << k.h_m;
+  }
+}
+
+// From orbit (R.8c) the sky is the planet's air marched along each ray, so where a ray meets no
+// air, space, the picture is black; and straight down the sea lies under its whole column: the
+// transmittance, measured as the change of the centre pixel with the water's colour over the
+// same change without the air, is exp(−(β_R·H_R + β_M·H_M)) per channel within 1 % (the
+// log-mean steps integrate a vertical ray exactly; the air's top at 80 km leaves e^(−10) of the
+// Rayleigh column; half-float pixels).
+TEST(SphereRender, FromOrbitSpaceIsBlackAndTheSeaLiesUnderItsColumnOfAir) {
+  constexpr int kSide = 64;
+  auto rig = make_rig(kSide, kSide);
+  REQUIRE_RIG(rig);
+  rig->renderer->set_calm(true);  // a level mirror: the centre pixel sees the water alone
+  View v;
+  v.sphere = {.enabled = true, .latitude_deg = 10.0, .longitude_deg = 20.0};
+  v.camera = {.position_m = {0.0, 15e6, 0.0},
+              .target_m = {1.0, 0.0, 0.0},
+              .fov_y_rad = 60.0 * kSpherePi / 180.0,
+              .aspect = 1.0,
+              .near_m = 1000.0,
+              .far_m = 1e8};
+  v.quality = ocean::lod::quality_preset(ocean::lod::QualityPreset::low);
+  const auto centre = [&](const std::array<double, 3>& water, bool air) {
+    v.shading.water_colour = water;
+    v.shading.aerial_perspective = air;
+    std::vector<float> hdr;
+    EXPECT_TRUE(rig->renderer->draw(v).ok());
+    EXPECT_TRUE(rig->renderer->read_hdr(hdr).ok());
+    std::array<double, 3> mean{};
+    for (int y = kSide / 2 - 1; y <= kSide / 2; ++y)
+      for (int x = kSide / 2 - 1; x <= kSide / 2; ++x)
+        for (std::size_t c = 0; c < 3; ++c)
+          mean[c] += 0.25 * hdr[static_cast<std::size_t>(4 * (y * kSide + x)) + c];
+    // The planet's disc spans asin(R/(R + h)) = 17.3° of the 30° half field: each corner's
+    // 6 × 6 pixels look past the air.
+    if (air) {
+      for (const int cy : {0, kSide - 6})
+        for (const int cx : {0, kSide - 6})
+          for (int y = cy; y < cy + 6; ++y)
+            for (int x = cx; x < cx + 6; ++x)
+              for (std::size_t c = 0; c < 3; ++c) {
+                EXPECT_EQ(hdr[static_cast<std::size_t>(4 * (y * kSide + x)) + c], 0.0f)
+                    << "pixel " << x << "," << y;
+              }
+    }
+    return mean;
+  };
+  const std::array<double, 3> dark = {0.004, 0.016, 0.028}, light = {0.3, 0.3, 0.3};
+  const auto with_dark = centre(dark, true), with_light = centre(light, true);
+  const auto bare_dark = centre(dark, false), bare_light = centre(light, false);
+  const ocean::render::Sky::Air air = ocean::render::Sky(v.shading).air();
+  for (std::size_t c = 0; c < 3; ++c) {
+    const double measured = (with_light[c] - with_dark[c]) / (bare_light[c] - bare_dark[c]);
+    const double column = std::exp(-(air.rayleigh_per_m[c] * air.rayleigh_height_m *
+                                          (1.0 - std::exp(-80e3 / air.rayleigh_height_m)) +
+                                      air.mie_per_m * air.mie_height_m));
+    std::printf("channel %zu: transmittance %.4f, column %.4f; air light %.4f over water %.4f\n", c,
+                measured, column, with_dark[c] - bare_dark[c] * measured, bare_dark[c]);
+    EXPECT_NEAR(measured, column, 0.01 * column) << "channel " << c;
   }
 }
 

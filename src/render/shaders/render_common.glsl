@@ -88,6 +88,76 @@ vec3 aerial_perspective(vec3 c, float point_y, float distance_m, vec3 view_dir) 
   return c * t + u.air_mie.w * u.sun_ground * (1.0 - t) * phase;
 }
 
+// --- the air of a planet seen from any height (R.8c) ------------------------------------------
+
+// Kasten & Young's (1989) relative air mass for a zenith cosine μ ∈ [0, 1] (R.3).
+float air_mass(float mu) {
+  mu = clamp(mu, 0.0, 1.0);
+  return 1.0 / (mu + 0.50572 * pow(96.07995 - degrees(acos(mu)), -1.6364));
+}
+
+// The mean of an exponential between its values a and b at the ends of a step (exact when the
+// density falls exponentially along the step).
+float log_mean(float a, float b) {
+  return abs(a - b) <= 1e-4 * max(a, b) ? 0.5 * (a + b) : (a - b) / log(a / b);
+}
+
+const float kAirTopM = 80e3;  // the air's top over the sphere: e^(−10) of the Rayleigh density
+const int kAirSteps = 32;
+
+// The eye (the origin of the local axes on a sphere) looking along the unit v for at most t_end
+// m: the spherical exponential atmosphere of R.1 between, marched in kAirSteps steps from the
+// ray's entry into the air to its exit, its end, or the planet (Nishita et al. 1993): the
+// transmittance along the ray and the sun light scattered towards the eye (the sun seen from each
+// step through its column above it along the Kasten–Young air mass of its own zenith angle, none
+// in the planet's shadow; R.2's phases and R.4's multiple-scattering share). x: transmittance,
+// y: in-scattered radiance.
+mat2x3 planet_air(vec3 v, float t_end) {
+  vec3 centre = vec3(u.sphere.local_from_planet[0].w, u.sphere.local_from_planet[1].w,
+                     u.sphere.local_from_planet[2].w);
+  float radius = u.sphere.radius_m;
+  float b = dot(-centre, v), c_top = dot(centre, centre) - (radius + kAirTopM) * (radius + kAirTopM);
+  float disc = b * b - c_top;
+  if (disc <= 0.0) return mat2x3(vec3(1.0), vec3(0.0));
+  float t0 = max(-b - sqrt(disc), 0.0), t1 = min(-b + sqrt(disc), t_end);
+  float c_ground = dot(centre, centre) - radius * radius, disc_ground = b * b - c_ground;
+  if (disc_ground > 0.0 && -b - sqrt(disc_ground) > 0.0) t1 = min(t1, -b - sqrt(disc_ground));
+  if (!(t1 > t0)) return mat2x3(vec3(1.0), vec3(0.0));
+  float mu = dot(v, u.sun_dir), g = u.air_mie.z, d = 1.0 + g * g - 2.0 * g * mu;
+  float phase_m = (1.0 - g * g) / (4.0 * PI * d * sqrt(d));
+  float phase_r = 3.0 / (16.0 * PI) * (1.0 + mu * mu) + 0.25 / (4.0 * PI);
+  float h_r = max(u.air_rayleigh.w, 1.0), h_m = u.air_mie.y;
+  float dt = (t1 - t0) / float(kAirSteps);
+  vec3 tau = vec3(0.0), light = vec3(0.0);
+  float z_prev = length(t0 * v - centre) - radius;
+  for (int i = 0; i < kAirSteps; ++i) {
+    vec3 p = (t0 + (float(i) + 0.5) * dt) * v - centre;
+    float r = length(p);
+    float z_end = length((t0 + float(i + 1) * dt) * v - centre) - radius;
+    float rho_r = log_mean(exp(-z_prev / h_r), exp(-z_end / h_r));
+    float rho_m = log_mean(exp(-z_prev / h_m), exp(-z_end / h_m));
+    z_prev = z_end;
+    vec3 step_tau = (u.air_rayleigh.rgb * rho_r + u.air_mie.x * rho_m) * dt;
+    vec3 seen = exp(-(tau + 0.5 * step_tau));
+    float z = r - radius, mu_s = dot(p, u.sun_dir) / r;
+    float bs = dot(p, u.sun_dir), shadow = bs < 0.0 && bs * bs - (r * r - radius * radius) > 0.0
+                                               ? 0.0 : 1.0;
+    vec3 column = u.air_rayleigh.rgb * h_r * exp(-z / h_r) + u.air_mie.x * h_m * exp(-z / h_m);
+    vec3 sun = shadow * exp(-column * air_mass(mu_s));
+    light += seen * sun * (u.air_rayleigh.rgb * rho_r * phase_r + u.air_mie.x * rho_m * phase_m) * dt;
+    tau += step_tau;
+  }
+  return mat2x3(exp(-tau), u.air_mie.w * u.sphere.sun_top * light);
+}
+
+// How much of the planet's air (R.8c) replaces the sea-level sky table and the horizon fog: none
+// up to 2 km, all from 20 km (the table is the sky seen from sea level).
+float planet_air_weight() {
+  return u.sphere.enabled > 0.5 && u.air_rayleigh.w > 0.0
+             ? smoothstep(2e3, 2e4, u.sphere.camera_altitude_m)
+             : 0.0;
+}
+
 // The colour distant water and the sky fade to: the sky just above the horizon, this azimuth.
 vec3 fog_colour(vec3 view_dir) {
   vec2 h = view_dir.xz;

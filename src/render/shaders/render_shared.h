@@ -151,7 +151,11 @@ struct SphereUniforms {
   vec4 local_from_planet[3];  // rows: east, up, north in planet axes (w unused)
   float radius_m;             // R
   float enabled;              // 1: sphere mode
-  float sphere_pad0, sphere_pad1;
+  // The sun's irradiance above the air (ShadingParams::sun_irradiance) and the camera's height
+  // above the sphere, m (R.8c); the planet's centre relative to the camera, in the view's local
+  // axes, is the w of local_from_planet's rows.
+  float sun_top;
+  float camera_altitude_m;
 };
 
 // One eye of a stereo frame drawn in one pass (docs/rendering.md R.25): what the mono fields

@@ -28,6 +28,19 @@ void main() {
     return;
   }
   vec3 c = sky_radiance(v);
+  // From altitude on a sphere the air is marched instead (R.8c): black space above a thin limb.
+  float air_weight = planet_air_weight();
+  vec3 sun_seen = u.sun_ground;
+  bool sun_above = v.y > 0.0;
+  if (air_weight > 0.0) {
+    mat2x3 air = planet_air(v, 1e12);
+    c = mix(c, air[1], air_weight);
+    sun_seen = mix(sun_seen, u.sphere.sun_top * air[0], air_weight);
+    vec3 centre = vec3(u.sphere.local_from_planet[0].w, u.sphere.local_from_planet[1].w,
+                       u.sphere.local_from_planet[2].w);
+    float b = dot(centre, v), q = dot(centre, centre) - u.sphere.radius_m * u.sphere.radius_m;
+    sun_above = air_weight > 0.5 ? !(b > 0.0 && b * b - q > 0.0) : sun_above;
+  }
   // Sun disc, angular radius 0.27°, limb-darkened edge over a pixel or so.
   float cos_sun = dot(v, u.sun_dir);
   float radius = radians(0.27);
@@ -36,7 +49,7 @@ void main() {
   // The disc's true radiance (E/Ω) would saturate any exposure; 2 % of it keeps a visible
   // limb in the EXR output.
   // An environment map carries its own sun (R.17).
-  if (v.y > 0.0 && u.environment.scale == 0.0) c += edge * u.sun_ground / solid_angle * 0.02;
+  if (sun_above && u.environment.scale == 0.0) c += edge * sun_seen / solid_angle * 0.02;
   // No fog on the sky itself: at the horizon it already is the fog's colour (R.8).
   colour = vec4(c, 1.0);
 }

@@ -50,7 +50,9 @@ void main() {
     n_dot_v = 1e-3;
   }
   vec3 R = reflect(-V, N);
-  vec3 env = sky_radiance(R);
+  // The sky table is the day sky of the view's point; where the sun has set under the local
+  // horizon the sky fades as Sky::radiance's twilight does (R.4).
+  vec3 env = sky_radiance(R) * clamp(1.0 + 10.0 * dot(L, up), 0.0, 1.0);
   float fresnel = fresnel_schlick(n_dot_v);
   // GGX with height-correlated Smith masking (R.7), as ocean.frag.
   vec3 H = normalize(V + L);
@@ -72,7 +74,13 @@ void main() {
   vec3 foam_colour = 0.85 * u.foam_brightness *
                      (u.sun_ground * max(dot(N, L), 0.0) + u.sky_ambient * sun_up) / PI;
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
-  c = mix(c, fog_colour(-V), horizon_fog(distance_m, dot(V, up)));  // R.8 about the local up
+  vec3 fogged = mix(c, fog_colour(-V), horizon_fog(distance_m, dot(V, up)));  // R.8, local up
+  float air_weight = planet_air_weight();  // from altitude, the planet's air instead (R.8c)
+  if (air_weight > 0.0) {
+    mat2x3 air = planet_air(-V, distance_m);
+    fogged = mix(fogged, c * air[0] + air[1], air_weight);
+  }
+  c = fogged;
   if (u.debug_view == OCEAN_RENDER_DEBUG_LOD_COLOURS) {
     const vec3 kLevels[4] = vec3[](vec3(0.9, 0.1, 0.1), vec3(0.9, 0.9, 0.1), vec3(0.1, 0.8, 0.8),
                                    vec3(0.55, 0.25, 0.9));
