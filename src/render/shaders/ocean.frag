@@ -1,15 +1,15 @@
 #version 450
 // Water shading (docs/rendering.md R.5–R.8, R.11): per-pixel normals, foam and roughness from the
 // cascades' mipped maps, sky reflection with Schlick's Fresnel (F0 = 0.02, Paleologue 2024), the
-// sun's specular from a GGX microfacet lobe whose roughness the mips encode (Aebi, VR Ocean,
+// sun's specular from a Beckmann facet lobe whose roughness the mips encode (Aebi, VR Ocean,
 // eqs. 49, 53), light scattered out of the water body and through thin crests, foam, and
 // Mitchell's (2005, §4, eq. 5) composition fog(s·(1 − r) + r·(env + sun)) with Paleologue's
 // (2024) horizon fog. Beyond the far field's D_min (VR-GIS FFT+Perlin, eq. 6), cascade 0's
 // slopes blend into the far field's noise and the cascades are read through hex tiles (R.13,
 // R.14).
 //
-// Sources: Walter et al. (2007) "Microfacet models for refraction through rough surfaces" (GGX
-// distribution and Smith masking, R.7); Toksvig (2005) (normal length as slope variance); Olano
+// Sources: Walter et al. (2007) "Microfacet models for refraction through rough surfaces"
+// (Beckmann distribution and Smith masking, R.7); Cox & Munk (1954) (Gaussian facet slopes); Toksvig (2005) (normal length as slope variance); Olano
 // & Baker (2010) "LEAN mapping" (slope variance adds across layers and filtering, R.5).
 #include "far_field.glsl"
 #include "planet.glsl"
@@ -41,13 +41,6 @@ const vec3 kLevelColours[9] = vec3[](vec3(0.9, 0.1, 0.1), vec3(0.95, 0.55, 0.1),
     vec3(0.9, 0.9, 0.1), vec3(0.3, 0.85, 0.2), vec3(0.1, 0.8, 0.8), vec3(0.2, 0.4, 0.95),
     vec3(0.55, 0.25, 0.9), vec3(0.9, 0.3, 0.75), vec3(0.95, 0.95, 0.95));
 
-// Roughness α² of a stored smoothness: r = (1 − smoothness)² (inverse of eq. 53's last step).
-float alpha_squared(float smoothness) {
-  float r = (1.0 - smoothness);
-  r *= r;
-  return r * r;
-}
-
 // One cascade's contribution to a pixel: surface gradient, foam, and the slope variance its mip
 // stores above a level-0 texel's: what the filtering averaged away (R.5).
 struct Shade {
@@ -58,7 +51,7 @@ struct Shade {
 Shade shade_of(vec4 t) {
   vec2 n = t.xy * 2.0 - 1.0;
   float ny = sqrt(max(1.0 - dot(n, n), 0.05));
-  return Shade(n / ny, t.z, max(alpha_squared(t.w) - u.map_base_alpha_sq, 0.0));
+  return Shade(n / ny, t.z, removed_slope_variance(t.w));
 }
 
 void main() {
@@ -182,18 +175,14 @@ void main() {
   env = mirrored.rgb + (1.0 - mirrored.a) * env;
   float fresnel = fresnel_schlick(n_dot_v);
 
-  // Sun specular: GGX with height-correlated Smith masking (R.7), radiance reflected = BRDF·E·cos.
+  // Sun specular: Beckmann facets with Cox & Munk's slopes (R.7), radiance reflected = BRDF·E·cos.
   vec3 sun_e = u.sun_ground;
   vec3 H = normalize(V + L);
   float n_dot_l = max(dot(N, L), 0.0);
   float n_dot_h = max(dot(N, H), 0.0);
-  float dd = n_dot_h * n_dot_h * (alpha_sq - 1.0) + 1.0;
-  float D = alpha_sq / (PI * dd * dd);
-  float lambda_v = sqrt(alpha_sq + (1.0 - alpha_sq) * n_dot_v * n_dot_v) * n_dot_l;
-  float lambda_l = sqrt(alpha_sq + (1.0 - alpha_sq) * n_dot_l * n_dot_l) * n_dot_v;
-  float G_over = 0.5 / max(lambda_v + lambda_l, 1e-6);  // G/(4·NdotL·NdotV)
+  float G_over = glitter_lobe(n_dot_h, n_dot_v, n_dot_l, alpha_sq);  // D·G/(4·NdotL·NdotV)
   float fresnel_h = fresnel_schlick(max(dot(V, H), 0.0));
-  vec3 sun = sun_e * (D * G_over * fresnel_h * n_dot_l) / max(fresnel, 1e-4);
+  vec3 sun = sun_e * (G_over * fresnel_h * n_dot_l) / max(fresnel, 1e-4);
 
   // Light scattered out of the water body (R.11): the water's albedo lit by the sun through the
   // surface and by the sky, plus forward scattering through crests lit from behind.

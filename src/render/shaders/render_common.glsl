@@ -88,6 +88,45 @@ vec3 aerial_perspective(vec3 c, float point_y, float distance_m, vec3 view_dir) 
   return c * t + u.air_mie.w * u.sun_ground * (1.0 - t) * phase;
 }
 
+// --- the slope variance the maps' mips carry (R.5) ----------------------------------------------
+
+// The length of the averaged normal that a stored smoothness s encodes: Aebi, VR Ocean, eq. 53
+// inverted, (1 − t)(1 + 0.15·t) = (1 − s)², |n| = (t + 2)/3.
+float stored_normal_length(float smoothness) {
+  float r = (1.0 - smoothness) * (1.0 - smoothness);
+  float t = (sqrt(0.7225 + 0.6 * (1.0 - r)) - 0.85) / 0.3;
+  return (clamp(t, 0.0, 1.0) + 2.0) / 3.0;
+}
+
+// The slope variance that averaging removed under a texel of smoothness s: unit normals whose
+// slopes vary by v about their mean average to a vector 1/√(1 + v) long, to first order in v
+// (Toksvig 2005), here over the length a level-0 texel stores (its base roughness, eq. 49):
+// v = (|n|₀/|n|)² − 1.
+float removed_slope_variance(float smoothness) {
+  float base = stored_normal_length(1.0 - sqrt(sqrt(u.map_base_alpha_sq)));
+  float l = stored_normal_length(smoothness);
+  return max(base * base / (l * l) - 1.0, 0.0);
+}
+
+// --- the sun's glitter (R.7) ----------------------------------------------------------------
+
+// Smith's masking of a Beckmann surface, Walter et al. (2007) eq. 27's rational fit, for a
+// direction of cosine c to the normal and mean square slope m2.
+float beckmann_masking(float c, float m2) {
+  float a = c / sqrt(m2 * max(1.0 - c * c, 1e-8));
+  return a >= 1.6 ? 1.0 : (3.535 * a + 2.181 * a * a) / (1.0 + 2.276 * a + 2.577 * a * a);
+}
+
+// D·G/(4·n·l·n·v) of the water's facets: Beckmann's distribution (Walter et al. 2007, eq. 25),
+// whose facet slopes are Gaussian with mean square m2, as Cox & Munk (1954) measured the sea's
+// from its glitter, with Smith's separable masking.
+float glitter_lobe(float n_dot_h, float n_dot_v, float n_dot_l, float m2) {
+  float c2 = max(n_dot_h * n_dot_h, 1e-8);
+  float D = exp(-(1.0 - c2) / (c2 * m2)) / (PI * m2 * c2 * c2);
+  float G = beckmann_masking(n_dot_v, m2) * beckmann_masking(n_dot_l, m2);
+  return D * G / max(4.0 * n_dot_v * n_dot_l, 1e-6);
+}
+
 // --- the air of a planet seen from any height (R.8c) ------------------------------------------
 
 // Kasten & Young's (1989) relative air mass for a zenith cosine μ ∈ [0, 1] (R.3).

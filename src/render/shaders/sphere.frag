@@ -28,8 +28,7 @@ void main() {
       vec2 m = t.xy * 2.0 - 1.0;
       vec2 slope = m / sqrt(max(1.0 - dot(m, m), 0.05));
       g += w[a] * (slope.x * kPlaneE1[a] + slope.y * kPlaneE2[a]);
-      float r = (1.0 - t.w) * (1.0 - t.w);
-      variance += w[a] * w[a] * max(r * r - u.map_base_alpha_sq, 0.0);  // as ocean.frag (R.5)
+      variance += w[a] * w[a] * removed_slope_variance(t.w);  // as ocean.frag (R.5)
       foam += linear[a] * t.z;
     }
     if (u.foam_weighted > 0.5)  // as ocean.frag (R.11)
@@ -54,15 +53,11 @@ void main() {
   // horizon the sky fades as Sky::radiance's twilight does (R.4).
   vec3 env = sky_radiance(R) * clamp(1.0 + 10.0 * dot(L, up), 0.0, 1.0);
   float fresnel = fresnel_schlick(n_dot_v);
-  // GGX with height-correlated Smith masking (R.7), as ocean.frag.
+  // Beckmann facets with Smith masking (R.7), as ocean.frag.
   vec3 H = normalize(V + L);
   float n_dot_l = max(dot(N, L), 0.0), n_dot_h = max(dot(N, H), 0.0);
-  float dd = n_dot_h * n_dot_h * (alpha_sq - 1.0) + 1.0;
-  float D = alpha_sq / (PI * dd * dd);
-  float lambda_v = sqrt(alpha_sq + (1.0 - alpha_sq) * n_dot_v * n_dot_v) * n_dot_l;
-  float lambda_l = sqrt(alpha_sq + (1.0 - alpha_sq) * n_dot_l * n_dot_l) * n_dot_v;
-  float G_over = 0.5 / max(lambda_v + lambda_l, 1e-6);
-  vec3 sun = u.sun_ground * (D * G_over * fresnel_schlick(max(dot(V, H), 0.0)) * n_dot_l) /
+  float G_over = glitter_lobe(n_dot_h, n_dot_v, n_dot_l, alpha_sq);
+  vec3 sun = u.sun_ground * (G_over * fresnel_schlick(max(dot(V, H), 0.0)) * n_dot_l) /
              max(fresnel, 1e-4);
   // The water body lit through the surface (R.11); the sun's height is over the local horizon.
   float sun_up = max(dot(L, up), 0.0);
