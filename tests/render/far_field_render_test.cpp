@@ -249,6 +249,19 @@ TEST(FarFieldRender, WhitecapsSurviveBeyondTheNearField) {
   EXPECT_GE(ratio, 0.4);
 }
 
+// A square view straight down from `height_m` under the clear sky.
+View straight_down(double height_m) {
+  View view;
+  view.camera = {.position_m = {0.0, height_m, 0.0},
+                 .target_m = {1.0, 0.0, 0.0},
+                 .fov_y_rad = kStraightDownFovDeg * std::numbers::pi / 180.0,
+                 .aspect = 1.0,
+                 .near_m = 0.2,
+                 .far_m = 2e5};
+  view.shading = ocean::render::sky_preset("clear").value();
+  return view;
+}
+
 // Straight down from `height_m`, the fraction of the picture that the renderer draws as foam:
 // the normals debug view writes each pixel's foam cover (R.11, after the mip filtering, the far
 // field and the distance fades) to the HDR image's alpha.
@@ -259,14 +272,7 @@ double drawn_foam_fraction(double height_m, ocean::FoamSource foam) {
   auto scene = Scene::make({.config = config, .width = kFoamSide, .height = kFoamSide});
   if (!scene.ok()) return -1.0;
   EXPECT_TRUE(scene.value()->warm_up(20.0, 4.0).ok());
-  View view;
-  view.camera = {.position_m = {0.0, height_m, 0.0},
-                 .target_m = {1.0, 0.0, 0.0},
-                 .fov_y_rad = kStraightDownFovDeg * std::numbers::pi / 180.0,
-                 .aspect = 1.0,
-                 .near_m = 0.2,
-                 .far_m = 2e5};
-  view.shading = ocean::render::sky_preset("clear").value();
+  View view = straight_down(height_m);
   view.debug = ocean::render::DebugView::normals;
   EXPECT_TRUE(scene.value()->renderer().draw(view).ok());
   std::vector<float> rgba;
@@ -306,14 +312,7 @@ TEST(FarFieldRender, AerialPerspectiveIsTheSkysAirAlongThePath) {
   ASSERT_TRUE(scene.ok()) << scene.status().message();
   ASSERT_TRUE(scene.value()->warm_up(20.0, 4.0).ok());
   for (const double height_m : {3000.0, 10000.0}) {
-    View view;
-    view.camera = {.position_m = {0.0, height_m, 0.0},
-                   .target_m = {1.0, 0.0, 0.0},
-                   .fov_y_rad = kStraightDownFovDeg * std::numbers::pi / 180.0,
-                   .aspect = 1.0,
-                   .near_m = 0.2,
-                   .far_m = 2e5};
-    view.shading = ocean::render::sky_preset("clear").value();
+    View view = straight_down(height_m);
     std::vector<float> with_air, without;
     ASSERT_TRUE(scene.value()->renderer().draw(view).ok());
     ASSERT_TRUE(scene.value()->renderer().read_hdr(with_air).ok());
