@@ -5,12 +5,15 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include "ocean/backends.hpp"
+#include "ocean/lod.hpp"
 #include "ocean/sim.hpp"
 #include "view/interaction.hpp"
 
@@ -155,3 +158,53 @@ TEST(ViewShallows, LagoonFollowsTheDepthLawAndLilyPadsTheMask) {
 }
 
 }  // namespace
+
+// `ocean view --boat --shallows lagoon` starts framed on its scenes: every point of the disc the
+// scenes occupy (the boat's circle and hull, 90 m; the lagoon's shoal, 100 m) lies inside the
+// picture, and the disc spans at least 80 % of the narrower of its two angles (its centre's
+// chord does), for the view's default 55° at 16:9 and a square 40° picture; with no scene there is
+// nothing to frame.
+TEST(ViewFraming, TheScenesStartInThePicture) {
+  using ocean::cli::view::framing_camera;
+  using ocean::cli::view::scene_radius_m;
+  EXPECT_EQ(scene_radius_m({.on = false}, Shallows::none), 0.0);
+  EXPECT_EQ(scene_radius_m({.on = true}, Shallows::none), 90.0);
+  EXPECT_EQ(scene_radius_m({.on = true}, Shallows::lagoon), 100.0);
+  const std::array<double, 2> centre = {300.0, 60.0};
+  for (const auto& [fov_deg, aspect] : {std::pair{55.0, 16.0 / 9.0}, std::pair{40.0, 1.0}}) {
+    const double radius = scene_radius_m({.on = true}, Shallows::lagoon);
+    const double fov = fov_deg * std::numbers::pi / 180.0;
+    const auto [eye, target] = framing_camera(centre, radius, {300.0, 60.0}, fov, aspect);
+    const ocean::lod::Camera camera{.position_m = {eye[0], eye[1], eye[2]},
+                                    .target_m = {target[0], target[1], target[2]},
+                                    .fov_y_rad = fov,
+                                    .aspect = aspect,
+                                    .near_m = 0.5,
+                                    .far_m = 1e5};
+    ASSERT_TRUE(ocean::lod::validate(camera).ok());
+    const ocean::lod::Mat4 vp = ocean::lod::view_projection(camera);
+    double left = 1.0, right = -1.0;
+    for (int i = 0; i < 64; ++i) {
+      const double a = 2.0 * std::numbers::pi * i / 64.0;
+      const double p[4] = {centre[0] + radius * std::cos(a), 0.0, centre[1] + radius * std::sin(a),
+                           1.0};
+      double clip[4] = {};
+      for (int r = 0; r < 4; ++r)
+        for (int k = 0; k < 4; ++k) clip[r] += vp.m[static_cast<std::size_t>(k * 4 + r)] * p[k];
+      ASSERT_GT(clip[3], 0.0) << "point " << i << " behind the eye";
+      const double x = clip[0] / clip[3], y = clip[1] / clip[3];
+      EXPECT_LE(std::abs(x), 1.0) << "point " << i << ", fov " << fov_deg;
+      EXPECT_LE(std::abs(y), 1.0) << "point " << i << ", fov " << fov_deg;
+      left = std::min(left, x), right = std::max(right, x);
+    }
+    const double half = std::tan(0.5 * fov) * aspect;  // tan of half the horizontal angle
+    const double span = std::atan(right * half) - std::atan(left * half);
+    const double narrower = std::min(fov, 2.0 * std::atan(half));
+    std::printf(
+        "fov %.0f°, aspect %.2f: eye %.0f m up, the disc spans %.0f %% of the narrower "
+        "angle\n",
+        fov_deg, aspect, eye[1], 100.0 * span / narrower);
+    // The chord through the centre spans 80 %; the nearer chords, seen from closer, more.
+    EXPECT_GE(span / narrower, 0.8 - 1e-9) << "fov " << fov_deg;
+  }
+}

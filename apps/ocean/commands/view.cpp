@@ -57,6 +57,7 @@ struct ViewOptions {
   std::string frames = "0", screenshot;
   bool boat = false;
   std::string shallows = "none";
+  bool camera_given = false;  // --camera or --target on the command line
 };
 
 struct ViewInputs {
@@ -188,12 +189,22 @@ int run_view(const ViewOptions& o) {
   if (!imgui_made.ok()) return report(imgui_made.status());
   view::ImGuiLayer& imgui = *imgui_made.value();
 
+  // The boat circles, and the shallows lie, about the point the camera first looks at; with no
+  // --camera or --target the view starts framed on them.
+  const std::array<double, 2> scene_centre{in.view.camera.target_m.x, in.view.camera.target_m.z};
+  const double scene_radius = view::scene_radius_m({.on = o.boat}, in.shallows);
+  if (!o.camera_given && scene_radius > 0.0 && !in.view.sphere.enabled) {
+    const lod::Camera& c = in.view.camera;
+    const auto [eye, target] = view::framing_camera(
+        scene_centre, scene_radius, {c.target_m.x - c.position_m.x, c.target_m.z - c.position_m.z},
+        c.fov_y_rad, c.aspect);
+    in.view.camera.position_m = {eye[0], eye[1], eye[2]};
+    in.view.camera.target_m = {target[0], target[1], target[2]};
+  }
   const view::FreeCamera start(in.view.camera.position_m, in.view.camera.target_m);
   view::FreeCamera camera = start;
   SimulationConfig config = in.scene.config;
   view::PanelState panel{.sea = view::sea_controls(config), .quality = in.quality};
-  // The boat circles, and the shallows lie, about the point the camera first looks at.
-  const std::array<double, 2> scene_centre{in.view.camera.target_m.x, in.view.camera.target_m.z};
   panel.boat.on = o.boat;
   panel.boat.centre_m = scene_centre;
   panel.shallows = static_cast<int>(in.shallows);
@@ -348,8 +359,12 @@ Command add_view_command(CLI::App& app) {
                     "(panel: Boat and shallows)");
   command->add_option("--shallows", o->shallows,
                       "none, lily-pads (a damping mask) or lagoon (a bathymetry), about the "
-                      "--target point; default none");
-  return {command, [o] { return run_view(*o); }};
+                      "--target point; default none. With --boat or --shallows and no --camera "
+                      "or --target the view starts framed on them, looking down 25 degrees");
+  return {command, [o, command] {
+            o->camera_given = command->count("--camera") + command->count("--target") > 0;
+            return run_view(*o);
+          }};
 }
 
 }  // namespace ocean::cli

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <utility>
 
 #include "object_flags.hpp"
@@ -103,6 +104,27 @@ Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
   Result<waves::Damping> made = waves::Damping::make(std::move(params));
   if (!made.ok()) return made.status();
   return std::optional<waves::Damping>(std::move(made).value());
+}
+
+double scene_radius_m(const BoatControls& boat, Shallows shallows) {
+  double r = boat.on ? boat.radius_m + 10.0 : 0.0;
+  if (shallows == Shallows::lily_pads) r = std::max(r, 60.0);
+  if (shallows == Shallows::lagoon) r = std::max(r, 100.0);
+  return r;
+}
+
+std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m,
+                                                    double radius_m, std::array<double, 2> look,
+                                                    double fov_y_rad, double aspect) {
+  const double horizontal_fov = 2.0 * std::atan(std::tan(0.5 * fov_y_rad) * aspect);
+  const double narrower = std::min(fov_y_rad, horizontal_fov);
+  const double distance = radius_m / std::tan(0.4 * narrower);
+  constexpr double kDown = 25.0 * std::numbers::pi / 180.0;
+  const double len = std::hypot(look[0], look[1]);
+  const double lx = look[0] / len, lz = look[1] / len;
+  const double back = distance * std::cos(kDown);
+  return {{{centre_m[0] - back * lx, distance * std::sin(kDown), centre_m[1] - back * lz},
+           {centre_m[0], 0.0, centre_m[1]}}};
 }
 
 Result<std::unique_ptr<InteractionScene>> InteractionScene::make(render::Renderer& renderer,

@@ -60,6 +60,19 @@ Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
                                                        std::array<double, 2> centre_m,
                                                        const SimulationConfig& config);
 
+/// The radius about the scene's centre that shows what the scenes hold, m: the boat's circle and
+/// its hull (radius + 10 m), the lily pads' disc and its edge (60 m), the lagoon's island and its
+/// shoal to 10 m of depth (100 m); the largest of those on, 0 for none.
+double scene_radius_m(const BoatControls& boat, Shallows shallows);
+
+/// A camera that frames the disc of `radius_m` on the sea about `centre_m`, seen along the
+/// horizontal direction `look` (x, z; not both 0): looking down 25° at the centre from the
+/// distance at which the disc spans 80 % of the narrower of the picture's two angles, for a
+/// vertical field of view `fov_y_rad` and width/height `aspect`. {eye, target}, world metres.
+std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m,
+                                                    double radius_m, std::array<double, 2> look,
+                                                    double fov_y_rad, double aspect);
+
 /// The scenes in a running view: the floating boat and its wake, and the shallows' damping,
 /// handed to a renderer.
 class InteractionScene {
