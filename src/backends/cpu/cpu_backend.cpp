@@ -83,6 +83,10 @@ Status CpuBackendImpl::configure(const SimulationPlan& resolved, TaskRunner& run
     state.mip_work.assign(4 * (mip_chain_texels(config.resolution) -
                                mip_offset(config.resolution, state.mip_work_level)),
                           0.0f);
+    if (config.outputs.velocity) {
+      state.velocity_re.assign(2, std::vector<float>(texels));
+      state.velocity_im.assign(2, std::vector<float>(texels));
+    }
   }
   config_ = config;
   runner_ = &runner;
@@ -117,6 +121,7 @@ std::size_t CpuBackendImpl::state_bytes_per_cascade() const {
                       (s.evolution_spectrum.size() + s.evolution_lane0.size()) * sizeof(float);
   for (const auto& v : s.factor) total += bytes(v);
   for (const auto& v : s.plane_re) total += 2 * bytes(v);  // with plane_im
+  for (const auto& v : s.velocity_re) total += 2 * bytes(v);  // with velocity_im
   total += bytes(s.tiles);
   return total;
 }
@@ -214,8 +219,11 @@ void CpuBackendImpl::step(double time_s, Frame& out) {
     times_.far_noise_s = 0.0;
     if (config_.far_noise.resolution > 0) far_noise_task(*runner_, time_s, out);
   }
+  if (config_.outputs.velocity) {
+    for (std::size_t c = 0; c < cascades_.size(); ++c)
+      velocity(cascades_[c], time_s, config_.loop_period_s, plan_, out.cascades[c], *runner_);
+  }
   out.time_s = time_s;
-  ++out.index;
   last_time_s_ = time_s;
   has_stepped_ = true;
 }

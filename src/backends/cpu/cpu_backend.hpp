@@ -50,6 +50,9 @@ struct CascadeState {
   packing::FoamTerms foam_source;        ///< how this cascade's J makes foam (FoamPlan)
   LargeVector<float> mip_work;           ///< float4 (n·len, foam) from mip level mip_work_level on
   int mip_work_level = 0;
+  /// The velocity's two row-major planes, (w, u) and (v, unused) (M.7.11); empty unless
+  /// outputs.velocity.
+  std::vector<std::vector<float>> velocity_re, velocity_im;
 };
 
 /// Plane p of the reference pipeline's row-major planes as a split-complex view.
@@ -82,6 +85,11 @@ void assemble_displacement_reference(const CascadeState& state, const float* dz,
 /// Gradients, normal, Jacobian, foam, base-level packing, from out.displacement (and the
 /// gradient planes in analytic mode).
 void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
+              CascadeFrame& out, TaskRunner& runner);
+/// The velocity of the surface particles at time t (M.7.11): ∂h̃/∂t from the packed spectrum,
+/// its horizontal and vertical spectra in the state's two velocity planes, their inverse FFT and
+/// the float3 (u, w, v) into out.velocity.
+void velocity(CascadeState& state, double time_s, double loop_period_s, const fft::Plan2D& plan,
               CascadeFrame& out, TaskRunner& runner);
 /// Box-filtered mip chain with normal-length smoothness (Aebi, VR Ocean, eqs. 52–55).
 void build_mips(CascadeState& state, CascadeFrame& out, TaskRunner& runner);
