@@ -517,21 +517,6 @@ TEST(Backends, UnavailableBackendsSaySo) {
   EXPECT_TRUE(ocean::make_backend("cpu").ok());
 }
 
-// The velocity is computed on the CPU only: a backend that exists here refuses it at configure,
-// naming it, rather than publishing zeros; one that does not exist says so as always.
-TEST(Backends, VelocityIsRefusedByTheBackendsThatDoNotComputeIt) {
-  for (const char* name : {"vulkan", "cuda"}) {
-    const bool exists = ocean::make_backend(name).ok();
-    const auto sim = ocean::make_simulator(velocity_config(), name);
-    ASSERT_FALSE(sim.ok()) << name;
-    EXPECT_EQ(sim.status().code(), ocean::ErrorCode::unsupported) << name;
-    if (exists) {
-      EXPECT_NE(sim.status().message().find("does not compute the velocity"), std::string::npos)
-          << sim.status().message();
-    }
-  }
-}
-
 TEST(Backends, UnknownBackendIsEchoedOnOneLine) {
   EXPECT_EQ(ocean::make_backend("cpu\n").status().message(),
             "backend = 'cpu\\n' is unknown: must be one of cpu, vulkan, cuda");
