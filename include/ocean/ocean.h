@@ -1,6 +1,7 @@
 /* ocean/ocean.h — the stable C ABI of the ocean library (libocean_c.so): presets, a simulator
- * stepped in time, its fields as pointers with a layout, batched height queries and the
- * one-sided wave spectrum S(ω). Pure C99; callable from C, C#, Rust, Python ctypes, Godot...
+ * stepped in time (on its own threads or an engine's job system), its fields as pointers with a
+ * layout, batched height, normal and particle-velocity queries and the one-sided wave spectrum
+ * S(ω). Pure C99; callable from C, C#, Rust, Python ctypes, Godot...
  * The contract in full, with an example: docs/capi.md.
  *
  * Errors: every function that can fail returns an ocean_status. OCEAN_OK is 0; any other value
@@ -14,7 +15,8 @@
  * next ocean_simulator_step / ocean_simulator_wait / ocean_simulator_destroy on that simulator.
  *
  * Threading: a handle is used by one thread at a time (no internal locking); distinct handles may
- * be used from distinct threads at once. The last error is per thread.
+ * be used from distinct threads at once. The last error is per thread. A simulator runs its
+ * frames on oneTBB's threads, or on the engine's job system (ocean_simulator_options).
  *
  * Versioning: OCEAN_ABI_VERSION is the soname (libocean_c.so.<abi>); it changes only when a
  * function or struct changes incompatibly. Within one ABI version functions and enum values are
@@ -138,6 +140,9 @@ typedef enum ocean_field {
   /** uint8 ×4 per texel, bytes (normal x, normal z, foam or Jacobian, smoothness) in memory
    *  order, one mip level (level 0 is N × N, level l is (N >> l)²). */
   OCEAN_FIELD_PACKED = 5,
+  /** float32 ×3: (u, w, v) = ∂(Dx, h, Dz)/∂t, m/s, the velocity of the surface particle that
+   *  starts at the texel; computed only with OCEAN_OUTPUT_VELOCITY (CPU backend). */
+  OCEAN_FIELD_VELOCITY = 6,
   /** Not a field: makes every int a value of the type (C++ limits an enum's values to the bits
    *  its enumerators need), so that a caller's out-of-range number is an error, not undefined. */
   OCEAN_FIELD_MAX_ENUM = 0x7FFFFFFF
@@ -175,6 +180,93 @@ OCEAN_API ocean_status ocean_simulator_field(const ocean_simulator* simulator, s
  *  values. Thread-safe with other queries and with a kicked frame, not with step or wait. */
 OCEAN_API ocean_status ocean_simulator_heights(const ocean_simulator* simulator, const double* x,
                                                const double* z, size_t count, double* heights);
+
+/** Unit normals (nx[i], ny[i], nz[i]) of the rendered surface above (x[i], z[i]), i < count, for
+ *  the published frame: (−∂η/∂x, 1, −∂η/∂z) normalised, η the height of
+ *  ocean_simulator_heights at the same points. Arguments, checks and threading as
+ *  ocean_simulator_heights; `normals` receives 3·count values. */
+OCEAN_API ocean_status ocean_simulator_normals(const ocean_simulator* simulator, const double* x,
+                                               const double* z, size_t count, double* normals);
+/** Velocities (u[i], w[i], v[i]), m/s (x, y up, z), of the water particles at the surface above
+ *  (x[i], z[i]), i < count, for the published frame (linear wave theory, docs/math.md M.7.11):
+ *  w is the rate of rise of the surface following the particle. Needs the velocity output
+ *  (OCEAN_OUTPUT_VELOCITY in ocean_simulator_options): without it OCEAN_UNSUPPORTED. Arguments,
+ *  checks and threading as ocean_simulator_heights; `velocities` receives 3·count values. */
+OCEAN_API ocean_status ocean_simulator_velocities(const ocean_simulator* simulator, const double* x,
+                                                  const double* z, size_t count,
+                                                  double* velocities);
+
+/* ---- options: outputs and the job system -------------------------------------------------- */
+
+/** The optional per-texel arrays a frame computes (a bit set of ocean_simulator_options::
+ *  outputs). Without OCEAN_OUTPUT_NORMAL, _JACOBIAN, _FOAM the field is OCEAN_UNSUPPORTED; the
+ *  displacement and the packed map are always computed. */
+typedef enum ocean_output_flags {
+  OCEAN_OUTPUT_NORMAL = 1,   /**< OCEAN_FIELD_NORMAL */
+  OCEAN_OUTPUT_JACOBIAN = 2, /**< OCEAN_FIELD_JACOBIAN */
+  OCEAN_OUTPUT_FOAM = 4,     /**< OCEAN_FIELD_FOAM */
+  /** OCEAN_FIELD_VELOCITY and ocean_simulator_velocities: two more inverse FFTs per cascade and
+   *  frame; CPU backend only (another backend is OCEAN_UNSUPPORTED at create). */
+  OCEAN_OUTPUT_VELOCITY = 8,
+  /** What ocean_simulator_create computes: normal, Jacobian and foam. */
+  OCEAN_OUTPUT_DEFAULT = 7,
+  OCEAN_OUTPUT_MAX_ENUM = 0x7FFFFFFF /**< not a flag: keeps the enum 32 bits wide */
+} ocean_output_flags;
+
+/** A body of ocean_job_system::parallel_for: processes indices [begin, end). */
+typedef void (*ocean_job_range_fn)(void* job_data, size_t begin, size_t end);
+/** A background job of ocean_job_system::start_job. */
+typedef void (*ocean_job_fn)(void* job_data);
+
+/** An engine's job system, which the simulator then runs all its work on instead of its own
+ *  threads (oneTBB).
+ *
+ *  parallel_for (required) must call body(job_data, begin, end) over disjoint ranges that cover
+ *  [0, count) exactly once, in chunks of about `grain` indices, on any threads and in any order,
+ *  and return only when every call has returned. A body may itself call parallel_for (the
+ *  simulator nests loops): that must neither deadlock nor wait for the outer loop. Bodies never
+ *  call back into the C API and never fail.
+ *
+ *  start_job and wait_job (optional, both or neither) run the frame of ocean_simulator_kick in
+ *  the background: start_job starts job(job_data) and returns a handle (any value, NULL
+ *  included), wait_job(handle) returns once that job has finished. At most one job per simulator
+ *  is in flight. Without them ocean_simulator_kick computes the frame before it returns.
+ *
+ *  concurrency is the number of threads the loops may run on, 1 to 256: the simulator sizes its
+ *  work by it. The table is copied at create; user_data must stay valid until every simulator
+ *  created with it is destroyed. */
+typedef struct ocean_job_system {
+  size_t struct_size; /**< set by the caller: sizeof(ocean_job_system) */
+  void* user_data;    /**< passed as the first argument of every function below */
+  void (*parallel_for)(void* user_data, size_t count, size_t grain, ocean_job_range_fn body,
+                       void* job_data);
+  void* (*start_job)(void* user_data, ocean_job_fn job, void* job_data);
+  void (*wait_job)(void* user_data, void* handle);
+  int32_t concurrency;
+} ocean_job_system;
+
+/** How ocean_simulator_create_with_options makes a simulator. */
+typedef struct ocean_simulator_options {
+  size_t struct_size;  /**< set by ocean_simulator_options_init: sizeof(ocean_simulator_options) */
+  const char* backend; /**< "cpu" (the default) or "vulkan", as ocean_simulator_create */
+  /** Threads of the library's own scheduler (oneTBB): 0 = every hardware thread, else 1 to 256.
+   *  Must be 0 when job_system is set (the engine's threads are used). */
+  int32_t threads;
+  /** The engine's job system (copied at create), or NULL for the library's scheduler. */
+  const ocean_job_system* job_system;
+  uint32_t outputs; /**< ocean_output_flags; OCEAN_OUTPUT_DEFAULT after init */
+} ocean_simulator_options;
+
+/** Defaults: struct_size set, backend "cpu", threads 0, no job system, OCEAN_OUTPUT_DEFAULT. */
+OCEAN_API void ocean_simulator_options_init(ocean_simulator_options* options);
+/** ocean_simulator_create with options (NULL = the defaults): the outputs replace the
+ *  configuration's, the work runs on `threads` threads or on the job system. An unknown output
+ *  bit, threads out of range, threads with a job system, a job system without parallel_for or
+ *  with only one of start_job and wait_job, concurrency < 1 and a struct_size too small are
+ *  OCEAN_INVALID_ARGUMENT. */
+OCEAN_API ocean_status ocean_simulator_create_with_options(const ocean_config* config,
+                                                           const ocean_simulator_options* options,
+                                                           ocean_simulator** out);
 
 /* ---- sea-state spectra -------------------------------------------------------------------- */
 

@@ -110,7 +110,11 @@ struct FrameOutputs {
   bool normal = true;    ///< CascadeFrame::normal (float3)
   bool jacobian = true;  ///< CascadeFrame::jacobian
   bool foam = true;      ///< CascadeFrame::foam
-  /// Every array (the default).
+  /// CascadeFrame::velocity: the surface particles' velocity by one more set of inverse FFTs per
+  /// frame (M.7.11). Off by default: it costs a frame two more transforms per cascade. The CPU
+  /// backend computes it; the others refuse it at configure (unsupported).
+  bool velocity = false;
+  /// The default arrays (all but the velocity, which costs transforms of its own).
   static constexpr FrameOutputs all() { return {}; }
   /// Only the texture set a renderer needs: the displacement (float3 + half4) and the RGBA8 chain.
   static constexpr FrameOutputs textures() { return {false, false, false}; }
@@ -227,6 +231,9 @@ struct CascadeFrame {
   LargeVector<float> normal;    ///< float3 unit normal of the displaced surface
   LargeVector<float> jacobian;  ///< J of the horizontal map (eq. 48)
   LargeVector<float> foam;      ///< accumulated foam coverage [0, 1]
+  /// float3 ∂(Dx, h, Dz)/∂t per texel, m/s: the velocity of the surface particle that starts at
+  /// the texel (M.7.11); empty unless SimulationConfig::outputs.velocity.
+  LargeVector<float> velocity;
   /// RGBA8 (normal x, normal z, blue channel, smoothness), all mips, packed as eq. 51.
   LargeVector<std::uint32_t> packed_mips;
 };
@@ -286,9 +293,9 @@ struct Frame {
 void allocate_frame(const SimulationConfig& config, Frame& frame);
 
 /// Applies config.band_roles to a frame a backend computed for `config` (docs/math.md M.7.8): a
-/// shade-only cascade's displacement (float3 and half4) becomes 0, a displace-only cascade's
-/// normal becomes (0, 1, 0), its Jacobian 1, its foam 0 and its packed map (every mip) the flat
-/// texel of the configured roughness. What Simulator does to every frame it publishes; the
+/// shade-only cascade's displacement (float3 and half4) and velocity become 0, a displace-only
+/// cascade's normal becomes (0, 1, 0), its Jacobian 1, its foam 0 and its packed map (every mip)
+/// the flat texel of the configured roughness. What Simulator does to every frame it publishes; the
 /// other arrays are left as the backend wrote them. Never allocates; no-op without roles.
 void apply_band_roles(const SimulationConfig& config, Frame& frame);
 
@@ -306,7 +313,7 @@ class Backend {
   /// Sizes the arrays of a frame for the configured simulation.
   virtual void allocate(Frame& frame) const = 0;
   /// Computes the frame at `time_s`, every cascade as BandRole::both (the Simulator applies the
-  /// roles). Foam accumulates over the time since the previous step.
+  /// roles and sets Frame::index). Foam accumulates over the time since the previous step.
   virtual void step(double time_s, Frame& out) = 0;
   /// Moves the far field's noise map (SimulationConfig::far_noise) to a window whose texel (0, 0)
   /// lies at world `origin_m` from the next step() on (the size and resolution stay); the frame's
@@ -321,6 +328,19 @@ struct HeightSample {
   std::array<double, 3> displacement{};  ///< (Dx, h, Dz) at the source point, m
   std::array<double, 2> source_xz{};     ///< undisplaced point that lands on (x, z)
   int iterations = 0;                    ///< inverse iterations used
+};
+
+/// The surface above a world position (x, z): Simulator::surface_at.
+struct SurfaceSample {
+  double height_m = 0.0;  ///< as HeightSample::height_m for the same point (bit-identical)
+  /// Unit normal (nx, ny, nz) of the rendered surface, ny > 0 where the horizontal map does not
+  /// fold: (−∂η/∂x, 1, −∂η/∂z) normalised, η(x, z) the height (M.7.11).
+  std::array<double, 3> normal{0.0, 1.0, 0.0};
+  /// (u, w, v): velocity of the water particle at the surface there, m/s (x, y up, z), the time
+  /// derivative of the displacement of the particle that the horizontal map carries onto (x, z)
+  /// (linear theory, M.7.11). NaN when the published frame carries no velocity
+  /// (SimulationConfig::outputs.velocity off).
+  std::array<double, 3> velocity{0.0, 0.0, 0.0};
 };
 
 class Simulator {
@@ -395,6 +415,15 @@ class Simulator {
   /// returns h(p); D includes the local layer when one is set. Batched: out.size() must equal
   /// xz.size().
   void heights_at(std::span<const std::array<double, 2>> xz, std::span<HeightSample> out) const;
+  /// The surface above world (x, z): the height of heights_at (the same inverse, bit-identical),
+  /// the unit normal from the gradient of the bilinear displacement at the source point, and the
+  /// particle velocity there from the frame's velocity arrays (NaN without them; see
+  /// has_velocity), each cascade weighed by the damping like the displacement; the local layer's
+  /// velocity is the central difference of its displacement over ±1 ms. Batched: out.size()
+  /// must equal xz.size(). Allocates nothing.
+  void surface_at(std::span<const std::array<double, 2>> xz, std::span<SurfaceSample> out) const;
+  /// Whether the published frame carries the velocity (SimulationConfig::outputs.velocity).
+  [[nodiscard]] bool has_velocity() const;
 
  private:
   Simulator() = default;

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "capi_internal.hpp"
+#include "job_system.hpp"
 #include "ocean/backends.hpp"
 
 namespace ocean::capi {
@@ -15,8 +16,12 @@ namespace {
 // texel index of the finest possible patch (0.01 m at N = 2048) stays an exact integer.
 constexpr double kMaxCoordinate_m = 1e9;
 
-// Points queried per call of Simulator::heights_at: the query needs no allocation.
+// Points queried per call of Simulator::heights_at / surface_at: the query needs no allocation.
 constexpr std::size_t kHeightBatch = 256;
+
+// The output bits ocean_simulator_options::outputs may carry.
+constexpr std::uint32_t kOutputBits =
+    OCEAN_OUTPUT_NORMAL | OCEAN_OUTPUT_JACOBIAN | OCEAN_OUTPUT_FOAM | OCEAN_OUTPUT_VELOCITY;
 
 Status require_simulator(const ocean_simulator* s, std::string_view function) {
   return require_not_null(s, function, "simulator");
@@ -69,10 +74,12 @@ Status field_view(const CascadeFrame& c, ocean_field field, int32_t level, ocean
       return describe(c.packed_mips, mip_offset(n, level), n >> level, 4, OCEAN_ELEMENT_UINT8,
                       "packed", v);
     }
+    case OCEAN_FIELD_VELOCITY:
+      return describe(c.velocity, 0, n, 3, OCEAN_ELEMENT_FLOAT32, "velocity", v);
     case OCEAN_FIELD_MAX_ENUM: break;
   }
   return invalid_argument("field = " + std::to_string(static_cast<int>(field)) +
-                          " is out of range: must be 0 to 5 (ocean_field)");
+                          " is out of range: must be 0 to 6 (ocean_field)");
 }
 
 // ocean_simulator_step and _kick: the checks, then `frame` (Simulator::step or kick) at time_s.
@@ -84,6 +91,81 @@ ocean_status start_frame(ocean_simulator* simulator, double time_s, std::string_
     (simulator->simulator.get()->*frame)(time_s);
     return {};
   });
+}
+
+// The checks every point query makes, in the order ocean_simulator_heights makes them: the
+// simulator, then (unless count is 0) the arrays, then every point, before anything is written.
+Status check_points(const ocean_simulator* simulator, std::string_view f, const double* x,
+                    const double* z, std::size_t count, const double* out, std::string_view name) {
+  if (Status s = require_simulator(simulator, f); !s.ok()) return s;
+  if (count == 0) return {};
+  if (Status s = require_not_null(x, f, "x"); !s.ok()) return s;
+  if (Status s = require_not_null(z, f, "z"); !s.ok()) return s;
+  if (Status s = require_not_null(out, f, name); !s.ok()) return s;
+  for (std::size_t i = 0; i < count; ++i) {
+    if (std::abs(x[i]) <= kMaxCoordinate_m && std::abs(z[i]) <= kMaxCoordinate_m) continue;
+    const bool bad_x = !(std::abs(x[i]) <= kMaxCoordinate_m);
+    return require_in_range(indexed(bad_x ? "x" : "z", i), bad_x ? x[i] : z[i], -kMaxCoordinate_m,
+                            kMaxCoordinate_m);
+  }
+  return {};
+}
+
+// Simulator::surface_at over the points in batches on the stack; `write(i, sample)` stores
+// point i's result.
+template <typename Write>
+void surface_batches(const Simulator& simulator, const double* x, const double* z,
+                     std::size_t count, Write&& write) {
+  std::array<std::array<double, 2>, kHeightBatch> xz;
+  std::array<SurfaceSample, kHeightBatch> samples;
+  for (std::size_t start = 0; start < count; start += kHeightBatch) {
+    const std::size_t n = std::min(kHeightBatch, count - start);
+    for (std::size_t i = 0; i < n; ++i) xz[i] = {x[start + i], z[start + i]};
+    simulator.surface_at(std::span(xz.data(), n), std::span(samples.data(), n));
+    for (std::size_t i = 0; i < n; ++i) write(start + i, samples[i]);
+  }
+}
+
+// The configuration and runner of ocean_simulator_create_with_options, checked.
+Status simulator_with_options(const ocean_config& config, const ocean_simulator_options& o,
+                              ocean_simulator*& out) {
+  constexpr std::string_view f = "ocean_simulator_create_with_options";
+  const std::string prefix = std::string(f) + ": options->";
+  if (o.struct_size < sizeof(ocean_simulator_options)) {
+    return invalid_argument(prefix + "struct_size = " + std::to_string(o.struct_size) +
+                            " is too small: set it with ocean_simulator_options_init");
+  }
+  if (o.backend == nullptr) return invalid_argument(prefix + "backend is NULL");
+  if ((o.outputs & ~kOutputBits) != 0) {
+    return invalid_argument(prefix + "outputs = " + std::to_string(o.outputs) +
+                            " has unknown bits: must be a combination of ocean_output_flags (" +
+                            std::to_string(kOutputBits) + " all)");
+  }
+  if (o.threads < 0 || o.threads > kMaxRunnerThreads) {
+    return invalid_argument(prefix + "threads = " + std::to_string(o.threads) +
+                            " is out of range: must be 0 (every hardware thread) to " +
+                            std::to_string(kMaxRunnerThreads));
+  }
+  std::shared_ptr<TaskRunner> runner;
+  if (o.job_system != nullptr) {
+    if (o.threads != 0) {
+      return invalid_argument(prefix + "threads = " + std::to_string(o.threads) +
+                              " with a job system: must be 0 (the job system's threads are used)");
+    }
+    if (Status s = validate_job_system(*o.job_system, f); !s.ok()) return s;
+    runner = make_job_system_runner(*o.job_system);
+  } else {
+    runner = std::shared_ptr<TaskRunner>(make_tbb_runner(o.threads));
+  }
+  SimulationConfig c = config.config;
+  c.outputs = {.normal = (o.outputs & OCEAN_OUTPUT_NORMAL) != 0,
+               .jacobian = (o.outputs & OCEAN_OUTPUT_JACOBIAN) != 0,
+               .foam = (o.outputs & OCEAN_OUTPUT_FOAM) != 0,
+               .velocity = (o.outputs & OCEAN_OUTPUT_VELOCITY) != 0};
+  Result<std::unique_ptr<Simulator>> sim = make_simulator(c, o.backend, std::move(runner));
+  if (!sim.ok()) return sim.status();
+  out = new ocean_simulator{std::move(sim).value()};
+  return {};
 }
 
 }  // namespace
@@ -180,19 +262,10 @@ OCEAN_API ocean_status ocean_simulator_field(const ocean_simulator* simulator, s
 OCEAN_API ocean_status ocean_simulator_heights(const ocean_simulator* simulator, const double* x,
                                                const double* z, size_t count, double* heights) {
   return guarded([&]() -> ocean::Status {
-    constexpr std::string_view f = "ocean_simulator_heights";
-    if (ocean::Status s = require_simulator(simulator, f); !s.ok()) return s;
-    if (count == 0) return {};
-    if (ocean::Status s = require_not_null(x, f, "x"); !s.ok()) return s;
-    if (ocean::Status s = require_not_null(z, f, "z"); !s.ok()) return s;
-    if (ocean::Status s = require_not_null(heights, f, "heights"); !s.ok()) return s;
-    // Every point is checked before any height is written.
-    for (std::size_t i = 0; i < count; ++i) {
-      if (std::abs(x[i]) <= kMaxCoordinate_m && std::abs(z[i]) <= kMaxCoordinate_m) continue;
-      const bool bad_x = !(std::abs(x[i]) <= kMaxCoordinate_m);
-      return ocean::require_in_range(indexed(bad_x ? "x" : "z", i), bad_x ? x[i] : z[i],
-                                     -kMaxCoordinate_m, kMaxCoordinate_m);
-    }
+    if (ocean::Status s =
+            check_points(simulator, "ocean_simulator_heights", x, z, count, heights, "heights");
+        !s.ok() || count == 0)
+      return s;
     std::array<std::array<double, 2>, kHeightBatch> xz;
     std::array<ocean::HeightSample, kHeightBatch> samples;
     for (std::size_t start = 0; start < count; start += kHeightBatch) {
@@ -202,6 +275,69 @@ OCEAN_API ocean_status ocean_simulator_heights(const ocean_simulator* simulator,
       for (std::size_t i = 0; i < n; ++i) heights[start + i] = samples[i].height_m;
     }
     return {};
+  });
+}
+
+OCEAN_API ocean_status ocean_simulator_normals(const ocean_simulator* simulator, const double* x,
+                                               const double* z, size_t count, double* normals) {
+  return guarded([&]() -> ocean::Status {
+    if (ocean::Status s =
+            check_points(simulator, "ocean_simulator_normals", x, z, count, normals, "normals");
+        !s.ok() || count == 0)
+      return s;
+    surface_batches(*simulator->simulator, x, z, count,
+                    [&](std::size_t i, const ocean::SurfaceSample& sample) {
+                      for (std::size_t k = 0; k < 3; ++k) normals[3 * i + k] = sample.normal[k];
+                    });
+    return {};
+  });
+}
+
+OCEAN_API ocean_status ocean_simulator_velocities(const ocean_simulator* simulator, const double* x,
+                                                  const double* z, size_t count,
+                                                  double* velocities) {
+  return guarded([&]() -> ocean::Status {
+    constexpr std::string_view f = "ocean_simulator_velocities";
+    if (ocean::Status s = require_simulator(simulator, f); !s.ok()) return s;
+    if (!simulator->simulator->has_velocity()) {
+      return ocean::unsupported(std::string(f) +
+                                ": the simulator does not compute the velocity: create it with "
+                                "OCEAN_OUTPUT_VELOCITY in ocean_simulator_options::outputs");
+    }
+    if (ocean::Status s = check_points(simulator, f, x, z, count, velocities, "velocities");
+        !s.ok() || count == 0)
+      return s;
+    surface_batches(*simulator->simulator, x, z, count,
+                    [&](std::size_t i, const ocean::SurfaceSample& sample) {
+                      for (std::size_t k = 0; k < 3; ++k)
+                        velocities[3 * i + k] = sample.velocity[k];
+                    });
+    return {};
+  });
+}
+
+OCEAN_API void ocean_simulator_options_init(ocean_simulator_options* options) {
+  if (options == nullptr) return;
+  *options = ocean_simulator_options{};
+  options->struct_size = sizeof(ocean_simulator_options);
+  options->backend = "cpu";
+  options->threads = 0;
+  options->job_system = nullptr;
+  options->outputs = OCEAN_OUTPUT_DEFAULT;
+}
+
+OCEAN_API ocean_status ocean_simulator_create_with_options(const ocean_config* config,
+                                                           const ocean_simulator_options* options,
+                                                           ocean_simulator** out) {
+  return guarded([&]() -> ocean::Status {
+    constexpr std::string_view f = "ocean_simulator_create_with_options";
+    if (ocean::Status s = require_not_null(config, f, "config"); !s.ok()) return s;
+    if (ocean::Status s = require_not_null(out, f, "out"); !s.ok()) return s;
+    ocean_simulator_options defaults;
+    ocean_simulator_options_init(&defaults);
+    // Only the struct_size first: a caller's struct may be shorter than this library's.
+    const ocean_simulator_options* o = options != nullptr ? options : &defaults;
+    return simulator_with_options(*config, *o, *out);
   });
 }
 

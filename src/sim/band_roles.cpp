@@ -13,6 +13,7 @@ namespace {
 void remove_displacement(CascadeFrame& c) {
   std::fill(c.displacement.begin(), c.displacement.end(), 0.0f);
   std::fill(c.displacement_half.begin(), c.displacement_half.end(), std::uint16_t{0});
+  std::fill(c.velocity.begin(), c.velocity.end(), 0.0f);  // the time derivative of 0
 }
 
 // A displace-only band moves the surface but leaves its shading flat: the normal (0, 1, 0) of

@@ -217,6 +217,7 @@ void allocate_frame(const SimulationConfig& config, Frame& frame) {
     optional(f.normal, config.outputs.normal, 3 * texels, 0.0f);
     optional(f.jacobian, config.outputs.jacobian, texels, 1.0f);
     optional(f.foam, config.outputs.foam, texels, 0.0f);
+    optional(f.velocity, config.outputs.velocity, 3 * texels, 0.0f);
     f.packed_mips.assign(mip_chain_texels(config.resolution), 0u);
   }
   const FarNoiseConfig& noise = config.far_noise;

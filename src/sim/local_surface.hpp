@@ -15,6 +15,12 @@ namespace ocean::detail {
 std::array<double, 3> surface_displacement(const Frame& frame, const waves::Damping* damping,
                                            const waves::LocalLayer* layer, double x, double z);
 
+/// ∂(Dx, h, Dz)/∂t of the surface at the undisplaced point (x, z) (M.7.11): the cascades'
+/// velocity arrays as surface_displacement weighs their displacement, plus the layer's (a central
+/// difference in time). NaN when the frame carries no velocity. Never allocates.
+std::array<double, 3> surface_velocity(const Frame& frame, const waves::Damping* damping,
+                                       const waves::LocalLayer* layer, double x, double z);
+
 /// Sizes `local` for the layer's area (allocates) and zeroes it.
 void allocate_local_surface(const waves::LocalArea& area, LocalSurfaceFrame& local);
 

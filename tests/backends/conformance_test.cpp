@@ -451,6 +451,26 @@ TEST(VulkanBenchmark, ReportsEveryStage) {
 // measured between any two pipelines at 64…1024 texels (docs/vulkan.md, "Conformance bounds":
 // 1.3e-6·Hs of height, 2.1e-6 of a normal component, 1.7e-6 of J, 3.8e-6 of foam) fails both
 // kinds of bounds, and so does a packed channel off by 2 LSB; the frame itself passes.
+// The velocity output (M.7.11) is computed on the CPU only: a GPU backend that exists here
+// refuses it at configure, naming it, rather than publishing zeros; one that does not exist says
+// so as always. (Here, not in the simulator tests: making a Vulkan device is this binary's.)
+TEST(VelocityOutput, IsRefusedByTheBackendsThatDoNotComputeIt) {
+  ocean::SimulationConfig config;
+  config.resolution = 32;
+  config.outputs.velocity = true;
+  for (const char* name : {"vulkan", "cuda"}) {
+    const bool exists = ocean::make_backend(name).ok();
+    const auto sim = ocean::make_simulator(config, name);
+    ASSERT_FALSE(sim.ok()) << name;
+    EXPECT_EQ(sim.status().code(), ocean::ErrorCode::unsupported) << name;
+    if (exists) {
+      EXPECT_NE(sim.status().message().find("does not compute the velocity"), std::string::npos)
+          << sim.status().message();
+    }
+  }
+  EXPECT_TRUE(ocean::make_simulator(config, "cpu").ok());
+}
+
 TEST(ConformanceBounds, CatchAnErrorTenTimesTheLargestMeasured) {
   namespace conformance = ocean::conformance;
   const conformance::Case& c = conformance::cases().front();

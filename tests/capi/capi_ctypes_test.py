@@ -1,7 +1,8 @@
 """The C ABI (include/ocean/ocean.h) called from Python through ctypes alone: libocean_c.so is
-loaded by path, its functions declared here from the header, and the heights and spectrum of the
-C++ API's reference scenario (written by capi_reference) reproduced exactly; error paths give a
-status and the one-line message.
+loaded by path, its functions declared here from the header, and the heights, normals,
+velocities (through ocean_simulator_create_with_options) and spectrum of the C++ API's reference
+scenario (written by capi_reference) reproduced exactly; error paths give a status and the
+one-line message.
 
 Standard library only. Usage: python3 capi_ctypes_test.py LIBOCEAN_C REFERENCE.txt
 Exits 0 when every check passes, 1 otherwise."""
@@ -21,6 +22,15 @@ class SpectrumParams(ctypes.Structure):
                 ("gravity_mps2", ctypes.c_double)]
 
 
+class SimulatorOptions(ctypes.Structure):
+    _fields_ = [("struct_size", ctypes.c_size_t), ("backend", ctypes.c_char_p),
+                ("threads", ctypes.c_int32), ("job_system", ctypes.c_void_p),
+                ("outputs", ctypes.c_uint32)]
+
+
+OUTPUT_DEFAULT, OUTPUT_VELOCITY = 7, 8
+
+
 def load(path):
     lib = ctypes.CDLL(path)
     handle = ctypes.c_void_p
@@ -37,6 +47,14 @@ def load(path):
         "ocean_simulator_step": (ctypes.c_int, [handle, ctypes.c_double]),
         "ocean_simulator_heights": (ctypes.c_int, [handle, c_double_p, c_double_p,
                                                    ctypes.c_size_t, c_double_p]),
+        "ocean_simulator_normals": (ctypes.c_int, [handle, c_double_p, c_double_p,
+                                                   ctypes.c_size_t, c_double_p]),
+        "ocean_simulator_velocities": (ctypes.c_int, [handle, c_double_p, c_double_p,
+                                                      ctypes.c_size_t, c_double_p]),
+        "ocean_simulator_options_init": (None, [ctypes.POINTER(SimulatorOptions)]),
+        "ocean_simulator_create_with_options": (ctypes.c_int, [handle,
+                                                               ctypes.POINTER(SimulatorOptions),
+                                                               ctypes.POINTER(handle)]),
         "ocean_spectrum_params_init": (None, [ctypes.POINTER(SpectrumParams)]),
         "ocean_spectrum_evaluate": (ctypes.c_int, [ctypes.POINTER(SpectrumParams), c_double_p,
                                                    ctypes.c_size_t, c_double_p]),
@@ -48,7 +66,7 @@ def load(path):
 
 
 def read_reference(path):
-    ref = {"sets": [], "points": [], "spectrum": []}
+    ref = {"sets": [], "points": [], "spectrum": [], "surface": []}
     with open(path) as f:
         for line in f:
             words = line.split()
@@ -58,6 +76,8 @@ def read_reference(path):
                 ref["sets"].append(words[1])
             elif words[0] == "height":
                 ref["points"].append(tuple(float(w) for w in words[1:4]))
+            elif words[0] == "surface":
+                ref["surface"].append(tuple(float(w) for w in words[1:10]))
             elif words[0] == "spectrum":
                 ref["spectrum"].append((words[1],) + tuple(float(w) for w in words[2:6]))
     return ref
@@ -112,6 +132,37 @@ def main(argv):
     t.ok(lib.ocean_simulator_heights(sim, x, z, n, heights), "heights")
     for i, (px, pz, h) in enumerate(ref["points"]):
         t.check(heights[i] == h, "height at (%r, %r): %r, C++ API %r" % (px, pz, heights[i], h))
+
+    # Normals and velocities: the velocity output on one thread, as the reference's serial runner.
+    options, fast = SimulatorOptions(), ctypes.c_void_p()
+    lib.ocean_simulator_options_init(ctypes.byref(options))
+    t.check(options.struct_size == ctypes.sizeof(SimulatorOptions) and options.backend == b"cpu"
+            and options.outputs == OUTPUT_DEFAULT, "simulator options defaults")
+    options.outputs, options.threads = OUTPUT_DEFAULT | OUTPUT_VELOCITY, 1
+    t.ok(lib.ocean_simulator_create_with_options(config, ctypes.byref(options),
+                                                 ctypes.byref(fast)), "create_with_options")
+    t.ok(lib.ocean_simulator_step(fast, ref["time"]), "step with velocity")
+    m = len(ref["surface"])
+    t.check(m > 0, "the reference has surface samples")
+    sx = doubles([p[0] for p in ref["surface"]])
+    sz = doubles([p[1] for p in ref["surface"]])
+    normals, velocities = (ctypes.c_double * (3 * m))(), (ctypes.c_double * (3 * m))()
+    t.ok(lib.ocean_simulator_normals(fast, sx, sz, m, normals), "normals")
+    t.ok(lib.ocean_simulator_velocities(fast, sx, sz, m, velocities), "velocities")
+    for i, p in enumerate(ref["surface"]):
+        t.check(tuple(normals[3 * i:3 * i + 3]) == p[3:6],
+                "normal at (%r, %r): %r, C++ API %r" % (p[0], p[1], normals[3 * i:3 * i + 3],
+                                                        p[3:6]))
+        t.check(tuple(velocities[3 * i:3 * i + 3]) == p[6:9],
+                "velocity at (%r, %r): %r, C++ API %r" % (p[0], p[1],
+                                                          velocities[3 * i:3 * i + 3], p[6:9]))
+    t.error(lib.ocean_simulator_velocities(sim, sx, sz, m, velocities), UNSUPPORTED,
+            "does not compute the velocity", "velocities without the velocity output")
+    options.struct_size = 4
+    t.error(lib.ocean_simulator_create_with_options(config, ctypes.byref(options),
+                                                    ctypes.byref(ctypes.c_void_p())),
+            INVALID_ARGUMENT, "options->struct_size = 4 is too small", "struct_size too small")
+    lib.ocean_simulator_destroy(fast)
 
     params = SpectrumParams()
     lib.ocean_spectrum_params_init(ctypes.byref(params))

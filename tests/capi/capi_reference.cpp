@@ -6,7 +6,10 @@
 //
 // Usage: capi_reference OUT.txt
 // Lines: "preset <name>", "set <key=value>", "time <t>", "height <x> <z> <h>",
-//        "spectrum <model> <hs_m> <tp_s> <omega> <S>".
+//        "spectrum <model> <hs_m> <tp_s> <omega> <S>",
+//        "surface <x> <z> <h> <nx> <ny> <nz> <u> <w> <v>" (Simulator::surface_at of the same
+//        scenario with the velocity output, on a serial runner: one thread, as the C test's job
+//        system).
 #include <array>
 #include <cstdio>
 #include <memory>
@@ -51,6 +54,14 @@ int main(int argc, char** argv) {
   xz.push_back({0.0, 0.0});
   std::vector<ocean::HeightSample> heights(xz.size());
   sim.value()->heights_at(xz, heights);
+  ocean::SimulationConfig with_velocity = config.value();
+  with_velocity.outputs.velocity = true;
+  ocean::Result<std::unique_ptr<ocean::Simulator>> serial =
+      ocean::make_simulator(with_velocity, "cpu", ocean::make_serial_runner());
+  if (!serial.ok()) return fail(serial.status());
+  serial.value()->step(time_s);
+  std::vector<ocean::SurfaceSample> surface(xz.size());
+  serial.value()->surface_at(xz, surface);
 
   std::FILE* out = std::fopen(argv[1], "w");
   if (out == nullptr) {
@@ -62,6 +73,12 @@ int main(int argc, char** argv) {
   std::fprintf(out, "time %.17g\n", time_s);
   for (std::size_t i = 0; i < xz.size(); ++i) {
     std::fprintf(out, "height %.17g %.17g %.17g\n", xz[i][0], xz[i][1], heights[i].height_m);
+  }
+  for (std::size_t i = 0; i < xz.size(); ++i) {
+    const ocean::SurfaceSample& p = surface[i];
+    std::fprintf(out, "surface %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g\n", xz[i][0],
+                 xz[i][1], p.height_m, p.normal[0], p.normal[1], p.normal[2], p.velocity[0],
+                 p.velocity[1], p.velocity[2]);
   }
   // A JONSWAP sea of Hs = 2.5 m, Tp = 8 s: S(ω) on both sides of the peak and in the tail.
   ocean::FrequencySpectrumParams p;

@@ -1,6 +1,7 @@
-/* The C ABI (include/ocean/ocean.h) used from C99: the heights and spectrum of the C++ API's
- * reference scenario reproduced exactly, exact identities of the field views, the layout of
- * every field, the preset round trip, and every error path (a status and a one-line message).
+/* The C ABI (include/ocean/ocean.h) used from C99: the heights, normals, velocities and spectrum
+ * of the C++ API's reference scenario reproduced exactly (the surface queries on a job system
+ * written here, which must be called), exact identities of the field views, the layout of every
+ * field, the preset round trip, and every error path (a status and a one-line message).
  *
  * Usage: capi_test REFERENCE.txt TMPDIR (REFERENCE.txt from capi_reference). */
 #include <math.h>
@@ -57,6 +58,10 @@ struct reference {
   size_t points;
   double omega[MAX_POINTS], s[MAX_POINTS], hs, tp;
   size_t omegas;
+  /* Simulator::surface_at with the velocity output: height, normal, velocity. */
+  double sx[MAX_POINTS], sz[MAX_POINTS], sh[MAX_POINTS], normal[3 * MAX_POINTS],
+      velocity[3 * MAX_POINTS];
+  size_t surfaces;
 };
 
 static int read_reference(const char* path, struct reference* r) {
@@ -78,10 +83,16 @@ static int read_reference(const char* path, struct reference* r) {
                sscanf(line, "spectrum jonswap %lf %lf %lf %lf", &r->hs, &r->tp,
                       &r->omega[r->omegas], &r->s[r->omegas]) == 4) {
       ++r->omegas;
+    } else if (r->surfaces < MAX_POINTS) {
+      const size_t i = r->surfaces;
+      if (sscanf(line, "surface %lf %lf %lf %lf %lf %lf %lf %lf %lf", &r->sx[i], &r->sz[i],
+                 &r->sh[i], &r->normal[3 * i], &r->normal[3 * i + 1], &r->normal[3 * i + 2],
+                 &r->velocity[3 * i], &r->velocity[3 * i + 1], &r->velocity[3 * i + 2]) == 9)
+        ++r->surfaces;
     }
   }
   fclose(f);
-  return r->points > 0 && r->omegas > 0 && r->preset[0] != '\0';
+  return r->points > 0 && r->omegas > 0 && r->surfaces > 0 && r->preset[0] != '\0';
 }
 
 static ocean_config* reference_config(const struct reference* r) {
@@ -235,6 +246,213 @@ static void test_presets(const char* tmpdir) {
   ocean_config_destroy(b);
 }
 
+/* An engine's job system: runs every loop on the calling thread, chunk by chunk, and the
+ * background job inline; counts what the simulator asks of it. */
+struct counting_jobs {
+  unsigned long loops, ranges, indices, starts, waits;
+  void* last_handle;
+};
+
+static void jobs_parallel_for(void* user_data, size_t count, size_t grain, ocean_job_range_fn body,
+                              void* job_data) {
+  struct counting_jobs* jobs = (struct counting_jobs*)user_data;
+  size_t begin;
+  ++jobs->loops;
+  for (begin = 0; begin < count; begin += grain) {
+    const size_t end = count - begin > grain ? begin + grain : count;
+    ++jobs->ranges;
+    jobs->indices += (unsigned long)(end - begin);
+    body(job_data, begin, end);
+  }
+}
+
+static void* jobs_start(void* user_data, ocean_job_fn job, void* job_data) {
+  struct counting_jobs* jobs = (struct counting_jobs*)user_data;
+  ++jobs->starts;
+  job(job_data);
+  jobs->last_handle = &jobs->starts;
+  return jobs->last_handle;
+}
+
+static void jobs_wait(void* user_data, void* handle) {
+  struct counting_jobs* jobs = (struct counting_jobs*)user_data;
+  ++jobs->waits;
+  CHECK(handle == jobs->last_handle);
+}
+
+static ocean_job_system counting_job_system(struct counting_jobs* jobs) {
+  ocean_job_system system;
+  memset(&system, 0, sizeof system);
+  memset(jobs, 0, sizeof *jobs);
+  system.struct_size = sizeof system;
+  system.user_data = jobs;
+  system.parallel_for = jobs_parallel_for;
+  system.start_job = jobs_start;
+  system.wait_job = jobs_wait;
+  system.concurrency = 1;
+  return system;
+}
+
+/* Options: the outputs, the frame index counted 1, 2, 3, the surface queries of the C++ API
+ * reproduced exactly on the engine's job system, which the simulator must call. */
+static void test_options(const struct reference* r) {
+  ocean_config* config = reference_config(r);
+  ocean_simulator* sim = NULL;
+  ocean_simulator_options options;
+  struct counting_jobs jobs;
+  ocean_job_system system = counting_job_system(&jobs);
+  double heights[MAX_POINTS], normals[3 * MAX_POINTS], velocities[3 * MAX_POINTS];
+  uint64_t index = 0;
+  size_t i;
+  ocean_field_view v;
+  memset(&options, 0x5a, sizeof options);
+  ocean_simulator_options_init(&options);
+  CHECK(options.struct_size == sizeof options && strcmp(options.backend, "cpu") == 0);
+  CHECK(options.threads == 0 && options.job_system == NULL);
+  CHECK(options.outputs == OCEAN_OUTPUT_DEFAULT);
+  options.outputs = OCEAN_OUTPUT_DEFAULT | OCEAN_OUTPUT_VELOCITY;
+  options.job_system = &system;
+  OK(ocean_simulator_create_with_options(config, &options, &sim));
+  CHECK(jobs.loops == 0); /* configuring runs nothing */
+  OK(ocean_simulator_step(sim, r->time_s));
+  CHECK(jobs.loops > 0 && jobs.ranges >= jobs.loops && jobs.indices >= jobs.ranges);
+  OK(ocean_simulator_frame_time(sim, NULL, &index));
+  CHECK(index == 1);
+  OK(ocean_simulator_heights(sim, r->sx, r->sz, r->surfaces, heights));
+  OK(ocean_simulator_normals(sim, r->sx, r->sz, r->surfaces, normals));
+  OK(ocean_simulator_velocities(sim, r->sx, r->sz, r->surfaces, velocities));
+  for (i = 0; i < r->surfaces; ++i) CHECK(heights[i] == r->sh[i]);
+  for (i = 0; i < 3 * r->surfaces; ++i) CHECK(normals[i] == r->normal[i]);
+  for (i = 0; i < 3 * r->surfaces; ++i) CHECK(velocities[i] == r->velocity[i]);
+  {
+    /* The reference is a sea, not zeros: upward normals with some tilt, moving water. */
+    double tilt = 0.0, speed = 0.0;
+    for (i = 0; i < r->surfaces; ++i) {
+      CHECK(r->normal[3 * i + 1] > 0.5);
+      tilt = fmax(tilt, fabs(r->normal[3 * i]) + fabs(r->normal[3 * i + 2]));
+      speed = fmax(speed, fabs(r->velocity[3 * i]) + fabs(r->velocity[3 * i + 1]));
+    }
+    CHECK(tilt > 0.01 && speed > 0.05);
+  }
+  memset(&v, 0, sizeof v);
+  v.struct_size = sizeof v;
+  OK(ocean_simulator_field(sim, 0, OCEAN_FIELD_VELOCITY, 0, &v));
+  CHECK(v.channels == 3 && v.element == OCEAN_ELEMENT_FLOAT32 && v.width == 32);
+  /* Frames are counted 1, 2, 3, stepped or kicked; the kicked one ran through start/wait_job. */
+  OK(ocean_simulator_step(sim, r->time_s + 1.0));
+  OK(ocean_simulator_frame_time(sim, NULL, &index));
+  CHECK(index == 2);
+  OK(ocean_simulator_kick(sim, r->time_s + 2.0));
+  OK(ocean_simulator_wait(sim));
+  OK(ocean_simulator_frame_time(sim, NULL, &index));
+  CHECK(index == 3);
+  CHECK(jobs.starts == 1 && jobs.waits == 1);
+  ocean_simulator_destroy(sim);
+  sim = NULL;
+
+  /* Without a job system: threads 0 (every hardware thread) and 1; NULL options = defaults. */
+  options.job_system = NULL;
+  options.threads = 1;
+  OK(ocean_simulator_create_with_options(config, &options, &sim));
+  OK(ocean_simulator_step(sim, r->time_s));
+  OK(ocean_simulator_velocities(sim, r->sx, r->sz, r->surfaces, velocities));
+  for (i = 0; i < 3 * r->surfaces; ++i) CHECK(velocities[i] == r->velocity[i]);
+  ocean_simulator_destroy(sim);
+  sim = NULL;
+  options.threads = 0;
+  OK(ocean_simulator_create_with_options(config, &options, &sim));
+  ocean_simulator_destroy(sim);
+  sim = NULL;
+  OK(ocean_simulator_create_with_options(config, NULL, &sim));
+  OK(ocean_simulator_step(sim, r->time_s));
+  ERROR(ocean_simulator_velocities(sim, r->sx, r->sz, r->surfaces, velocities), OCEAN_UNSUPPORTED,
+        "ocean_simulator_velocities: the simulator does not compute the velocity");
+  ERROR(ocean_simulator_field(sim, 0, OCEAN_FIELD_VELOCITY, 0, &v), OCEAN_UNSUPPORTED,
+        "velocity field is not computed");
+  OK(ocean_simulator_normals(sim, r->sx, r->sz, r->surfaces, normals));
+  for (i = 0; i < 3 * r->surfaces; ++i) CHECK(normals[i] == r->normal[i]);
+  ocean_simulator_destroy(sim);
+  ocean_config_destroy(config);
+}
+
+static void test_option_errors(void) {
+  ocean_config* config = NULL;
+  ocean_simulator* sim = NULL;
+  ocean_simulator_options options;
+  struct counting_jobs jobs;
+  ocean_job_system system = counting_job_system(&jobs);
+  double x[2] = {1.0, NAN}, z[2] = {0.0, 0.0}, out[6] = {-7.0, -7.0, -7.0, -7.0, -7.0, -7.0};
+  OK(ocean_config_create(&config));
+  OK(ocean_config_set(config, "resolution=16"));
+  ocean_simulator_options_init(&options);
+  options.struct_size = 0;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "options->struct_size = 0 is too small");
+  ocean_simulator_options_init(&options);
+  options.threads = -1;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "options->threads = -1 is out of range: must be 0 (every hardware thread) to 256");
+  options.threads = 2;
+  options.job_system = &system;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "threads = 2 with a job system");
+  options.threads = 0;
+  options.outputs = 16;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "options->outputs = 16 has unknown bits");
+  options.outputs = OCEAN_OUTPUT_DEFAULT;
+  options.backend = NULL;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "options->backend is NULL");
+  options.backend = "cpu";
+  system.struct_size = 8;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "job_system->struct_size = 8 is too small");
+  system.struct_size = sizeof system;
+  system.parallel_for = NULL;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "job_system->parallel_for is NULL");
+  system.parallel_for = jobs_parallel_for;
+  system.wait_job = NULL;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "start_job and wait_job must be given together");
+  system.wait_job = jobs_wait;
+  system.concurrency = 0;
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "job_system->concurrency = 0 is out of range: must be 1 to 256");
+  system.concurrency = 1;
+  ERROR(ocean_simulator_create_with_options(NULL, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "ocean_simulator_create_with_options: config is NULL");
+  ERROR(ocean_simulator_create_with_options(config, &options, NULL), OCEAN_INVALID_ARGUMENT,
+        "out is NULL");
+  options.outputs = OCEAN_OUTPUT_VELOCITY;
+  options.backend = "vulkan"; /* refused at configure, or no Vulkan at all */
+  CHECK(ocean_simulator_create_with_options(config, &options, &sim) == OCEAN_UNSUPPORTED);
+  options.backend = "nope";
+  ERROR(ocean_simulator_create_with_options(config, &options, &sim), OCEAN_INVALID_ARGUMENT,
+        "backend = 'nope' is unknown");
+  CHECK(sim == NULL && jobs.loops == 0);
+  options.backend = "cpu";
+  OK(ocean_simulator_create_with_options(config, &options, &sim));
+  OK(ocean_simulator_step(sim, 1.0));
+  CHECK(jobs.loops > 0);
+  ERROR(ocean_simulator_normals(sim, x, z, 2, out), OCEAN_INVALID_ARGUMENT, "x[1] = nan");
+  ERROR(ocean_simulator_velocities(sim, x, z, 2, out), OCEAN_INVALID_ARGUMENT, "x[1] = nan");
+  x[1] = INFINITY;
+  ERROR(ocean_simulator_velocities(sim, x, z, 2, out), OCEAN_INVALID_ARGUMENT, "x[1] = inf");
+  CHECK(out[0] == -7.0 && out[5] == -7.0); /* nothing written */
+  ERROR(ocean_simulator_normals(sim, x, z, 2, NULL), OCEAN_INVALID_ARGUMENT, "normals is NULL");
+  ERROR(ocean_simulator_velocities(sim, NULL, z, 2, out), OCEAN_INVALID_ARGUMENT, "x is NULL");
+  ERROR(ocean_simulator_velocities(NULL, x, z, 2, out), OCEAN_INVALID_ARGUMENT,
+        "ocean_simulator_velocities: simulator is NULL");
+  ERROR(ocean_simulator_normals(NULL, x, z, 2, out), OCEAN_INVALID_ARGUMENT,
+        "ocean_simulator_normals: simulator is NULL");
+  OK(ocean_simulator_velocities(sim, x, z, 0, NULL)); /* nothing to do */
+  ocean_simulator_options_init(NULL);                 /* ignored */
+  ocean_simulator_destroy(sim);
+  ocean_config_destroy(config);
+}
+
 static void test_errors(const char* tmpdir) {
   ocean_config* config = NULL;
   ocean_simulator* sim = NULL;
@@ -340,6 +558,8 @@ int main(int argc, char** argv) {
   test_fields();
   test_presets(argv[2]);
   test_errors(argv[2]);
+  test_options(&r);
+  test_option_errors();
   if (failures != 0) fprintf(stderr, "capi_test: %d check(s) failed\n", failures);
   return failures == 0 ? 0 : 1;
 }

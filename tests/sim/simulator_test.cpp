@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -270,6 +271,182 @@ TEST(Simulator, DisplacementSamplingWrapsAndInterpolates) {
   EXPECT_NEAR(sim->displacement_at(3.0 + 64.0 * 7, 5.0 - 64.0 * 3)[1], texel(3, 5), 1e-6);
   EXPECT_NEAR(sim->displacement_at(3.5, 5.0)[1], 0.5 * (texel(3, 5) + texel(4, 5)), 1e-6);
   EXPECT_NEAR(sim->displacement_at(63.5, 0.0)[1], 0.5 * (texel(63, 0) + texel(0, 0)), 1e-6);
+}
+
+// ---- surface queries: height, normal and particle velocity (M.7.11) ----
+
+ocean::SimulationConfig velocity_config() {
+  ocean::SimulationConfig c = small_config();
+  c.outputs.velocity = true;
+  return c;
+}
+
+// max over texels and components of |V − (D(t + δ) − D(t − δ))/(2δ)| for every cascade.
+double velocity_vs_difference(ocean::Simulator& sim, double t, double delta, double* largest) {
+  sim.step(t - delta);
+  const ocean::Frame before = sim.detach(sim.frame());
+  sim.step(t + delta);
+  const ocean::Frame after = sim.detach(sim.frame());
+  sim.step(t);
+  double error = 0.0;
+  *largest = 0.0;
+  for (std::size_t c = 0; c < sim.frame().cascades.size(); ++c) {
+    const auto& v = sim.frame().cascades[c].velocity;
+    const auto& d0 = before.cascades[c].displacement;
+    const auto& d1 = after.cascades[c].displacement;
+    EXPECT_EQ(v.size(), d0.size());
+    for (std::size_t i = 0; i < v.size(); ++i) {
+      const double difference = (double(d1[i]) - double(d0[i])) / (2.0 * delta);
+      error = std::max(error, std::abs(double(v[i]) - difference));
+      *largest = std::max(*largest, std::abs(double(v[i])));
+    }
+  }
+  return error;
+}
+
+// The velocity is the time derivative of the displacement. For one wave component a·sin(ωt + φ)
+// the central difference over ±δ is exactly a·ω·cos(ωt + φ)·sin(ωδ)/(ωδ): its error is the
+// velocity times 1 − sinc(ωδ) ≈ (ωδ)²/6, O(δ²). Halving δ must then divide the error by 4 (a wrong
+// sign, factor or phase in V would leave an error that does not shrink); the float rounding of
+// the displacement (~1e-6 m, its error/(2δ) ~ 1e-5 m/s at δ = 0.05 s) stays far below the
+// truncation at these δ, so the ratio is bounded by 0.3 rather than 0.25. At δ = 0.1 s the
+// fastest resolved wave (k = π·64/71 rad/m, ω = √(gk) = 5.3 rad/s) has (ωδ)²/6 = 4.6 % of its
+// own velocity, the energetic ones (ω ≈ 1 rad/s) 0.2 %: the error is below 5 % of the largest
+// velocity.
+TEST(Simulator, VelocityIsTheTimeDerivativeOfTheDisplacement) {
+  auto sim = make(velocity_config());
+  double largest = 0.0, largest_half = 0.0;
+  const double error = velocity_vs_difference(*sim, 7.3, 0.1, &largest);
+  const double error_half = velocity_vs_difference(*sim, 7.3, 0.05, &largest_half);
+  std::printf(
+      "velocity vs central difference: max |V| = %.4g m/s, error %.3g (δ = 0.1 s), "
+      "%.3g (δ = 0.05 s), ratio %.3f\n",
+      largest, error, error_half, error_half / error);
+  ASSERT_GT(largest, 0.1);
+  EXPECT_EQ(largest, largest_half);  // the same frame at t
+  EXPECT_LT(error, 0.05 * largest);
+  EXPECT_LT(error_half, 0.3 * error);
+}
+
+TEST(Simulator, VelocityIsOffByDefaultAndNaNInQueries) {
+  auto sim = make(small_config());
+  sim->step(1.0);
+  EXPECT_TRUE(sim->frame().cascades[0].velocity.empty());
+  EXPECT_FALSE(sim->has_velocity());
+  const std::array<double, 2> p{3.0, 4.0};
+  ocean::SurfaceSample s;
+  sim->surface_at(std::span(&p, 1), std::span(&s, 1));
+  EXPECT_TRUE(std::isnan(s.velocity[0]) && std::isnan(s.velocity[1]) && std::isnan(s.velocity[2]));
+  EXPECT_TRUE(std::isfinite(s.height_m));
+}
+
+std::vector<std::array<double, 2>> surface_points() {
+  std::vector<std::array<double, 2>> xz;
+  for (int i = 0; i < 40; ++i) xz.push_back({-83.1 + 11.7 * i, 41.3 - 7.9 * i});
+  return xz;
+}
+
+// The normal is (−∂η/∂x, 1, −∂η/∂z) normalised, η the height heights_at returns. The reference
+// gradient is a difference of heights_at over ±ε, ε = 1e-3 m. Inside a texel cell η is smooth
+// (the inverse of a bilinear map), curvature κ ≲ slope/cell ≈ 1/1.1 m⁻¹: the central difference
+// errs by ~κ·ε²; a one-sided one (used when ±ε crosses a cell edge, where the slope jumps) by
+// ~κ·ε ≈ 1e-3. The inverse stops within 1e-6 m of the point (M.7.7), a height error of at most
+// slope × 1e-6 m, i.e. ≲ 1e-6/ε = 1e-3 in the gradient. A normal component moves by at most as
+// much as the gradient: 2e-3 bounds the sum.
+TEST(Simulator, SurfaceNormalIsTheHeightGradient) {
+  auto sim = make(velocity_config());
+  sim->step(7.3);
+  const auto xz = surface_points();
+  std::vector<ocean::SurfaceSample> surface(xz.size());
+  std::vector<ocean::HeightSample> heights(xz.size());
+  sim->surface_at(xz, surface);
+  sim->heights_at(xz, heights);
+  constexpr double eps = 1e-3;
+  double worst = 0.0, steepest = 0.0;
+  for (std::size_t q = 0; q < xz.size(); ++q) {
+    EXPECT_EQ(surface[q].height_m, heights[q].height_m) << q;  // bit-identical
+    const auto eta = [&](double dx, double dz) {
+      const std::array<double, 2> p{xz[q][0] + dx, xz[q][1] + dz};
+      ocean::HeightSample h;
+      sim->heights_at(std::span(&p, 1), std::span(&h, 1));
+      return h.height_m;
+    };
+    const double e0 = heights[q].height_m;
+    const double ex[3] = {(eta(eps, 0) - eta(-eps, 0)) / (2 * eps), (eta(eps, 0) - e0) / eps,
+                          (e0 - eta(-eps, 0)) / eps};
+    const double ez[3] = {(eta(0, eps) - eta(0, -eps)) / (2 * eps), (eta(0, eps) - e0) / eps,
+                          (e0 - eta(0, -eps)) / eps};
+    const auto& n = surface[q].normal;
+    EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-12);
+    ASSERT_GT(n[1], 0.0);
+    double best = 1e9;
+    for (double gx : ex) {
+      for (double gz : ez) {
+        const double length = std::sqrt(gx * gx + 1.0 + gz * gz);
+        const double err = std::max({std::abs(n[0] + gx / length), std::abs(n[1] - 1.0 / length),
+                                     std::abs(n[2] + gz / length)});
+        best = std::min(best, err);
+      }
+    }
+    worst = std::max(worst, best);
+    steepest = std::max(steepest, std::hypot(n[0], n[2]));
+  }
+  std::printf("normal vs height gradient: largest error %.3g, steepest sin(tilt) %.3f\n", worst,
+              steepest);
+  EXPECT_GT(steepest, 0.02);  // a sea with slopes, not a flat one
+  EXPECT_LT(worst, 2e-3);
+}
+
+// The kinematic surface condition: the surface moves with its particles, w = ∂η/∂t + u·∂η/∂x +
+// v·∂η/∂z at a fixed (x, z). For the bilinear surface the identity is exact (η(x, t) = h(p, t)
+// with p + D_xz(p, t) = x, and the velocity is ∂D/∂t at the texels, interpolated alike), so the
+// residual is the central difference of η in time, O(δ²) as in
+// VelocityIsTheTimeDerivativeOfTheDisplacement (halving δ divides it by ≈ 4), plus the inverse's
+// tolerance, ≲ slope × 1e-6 m/δ ≈ 1e-5 m/s.
+TEST(Simulator, KinematicSurfaceConditionHolds) {
+  auto sim = make(velocity_config());
+  const auto xz = surface_points();
+  const double t = 7.3;
+  const auto residual = [&](double delta, double* largest_w) {
+    std::vector<ocean::HeightSample> before(xz.size()), after(xz.size());
+    std::vector<ocean::SurfaceSample> now(xz.size());
+    sim->step(t - delta);
+    sim->heights_at(xz, before);
+    sim->step(t + delta);
+    sim->heights_at(xz, after);
+    sim->step(t);
+    sim->surface_at(xz, now);
+    double worst = 0.0;
+    *largest_w = 0.0;
+    for (std::size_t q = 0; q < xz.size(); ++q) {
+      const auto& n = now[q].normal;
+      const auto& v = now[q].velocity;
+      const double deta_dt = (after[q].height_m - before[q].height_m) / (2 * delta);
+      const double w = deta_dt + v[0] * (-n[0] / n[1]) + v[2] * (-n[2] / n[1]);
+      worst = std::max(worst, std::abs(v[1] - w));
+      *largest_w = std::max(*largest_w, std::abs(v[1]));
+    }
+    return worst;
+  };
+  double w1 = 0.0, w2 = 0.0;
+  const double r1 = residual(0.1, &w1);
+  const double r2 = residual(0.05, &w2);
+  std::printf(
+      "kinematic condition: max |w| = %.4g m/s, residual %.3g (δ = 0.1 s), %.3g "
+      "(δ = 0.05 s), ratio %.3f\n",
+      w1, r1, r2, r2 / r1);
+  ASSERT_GT(w1, 0.05);
+  EXPECT_LT(r1, 0.05 * w1);
+  EXPECT_LT(r2, 0.3 * r1 + 2e-5);
+}
+
+TEST(Simulator, ShadeOnlyBandHasNoVelocity) {
+  ocean::SimulationConfig c = velocity_config();
+  c.band_roles = {ocean::BandRole::both, ocean::BandRole::shade};
+  auto sim = make(c);
+  sim->step(2.0);
+  EXPECT_GT(max_abs(sim->frame().cascades[0].velocity), 0.01f);
+  EXPECT_EQ(max_abs(sim->frame().cascades[1].velocity), 0.0f);
 }
 
 TEST(Simulator, ValidatesConfiguration) {

@@ -31,6 +31,12 @@ Status CpuBackendImpl::configure(const SimulationPlan& resolved, TaskRunner& run
   if (!plan.ok()) return plan.status();
   Result<fft::LanePlan2D> simd_plan = fft::LanePlan2D::make(config.resolution);
   if (!simd_plan.ok()) return simd_plan.status();
+  fft::SimdPlan2D velocity_plan;
+  if (config.outputs.velocity) {
+    Result<fft::SimdPlan2D> made = fft::SimdPlan2D::make(config.resolution);
+    if (!made.ok()) return made.status();
+    velocity_plan = std::move(made).value();
+  }
   FarFieldNoise far_noise;
   if (config.far_noise.resolution > 0) far_noise = resolved.far_noise();
   std::vector<CascadeState> cascades(config.cascade_patch_sizes_m.size());
@@ -83,11 +89,17 @@ Status CpuBackendImpl::configure(const SimulationPlan& resolved, TaskRunner& run
     state.mip_work.assign(4 * (mip_chain_texels(config.resolution) -
                                mip_offset(config.resolution, state.mip_work_level)),
                           0.0f);
+    if (config.outputs.velocity) {
+      state.velocity_re.assign(2, std::vector<float>(texels));
+      state.velocity_im.assign(2, std::vector<float>(texels));
+      build_velocity_inputs(state, config.loop_period_s);
+    }
   }
   config_ = config;
   runner_ = &runner;
   plan_ = std::move(plan).value();
   simd_plan_ = std::move(simd_plan).value();
+  velocity_plan_ = std::move(velocity_plan);
   cascades_ = std::move(cascades);
   groups_ = std::move(groups);
   far_noise_ = far_noise;
@@ -117,6 +129,8 @@ std::size_t CpuBackendImpl::state_bytes_per_cascade() const {
                       (s.evolution_spectrum.size() + s.evolution_lane0.size()) * sizeof(float);
   for (const auto& v : s.factor) total += bytes(v);
   for (const auto& v : s.plane_re) total += 2 * bytes(v);  // with plane_im
+  for (const auto& v : s.velocity_re) total += 2 * bytes(v);  // with velocity_im
+  total += bytes(s.velocity_khat) + bytes(s.velocity_harmonic) + bytes(s.velocity_phasor);
   total += bytes(s.tiles);
   return total;
 }
@@ -214,8 +228,12 @@ void CpuBackendImpl::step(double time_s, Frame& out) {
     times_.far_noise_s = 0.0;
     if (config_.far_noise.resolution > 0) far_noise_task(*runner_, time_s, out);
   }
+  if (config_.outputs.velocity) {
+    for (std::size_t c = 0; c < cascades_.size(); ++c)
+      velocity(cascades_[c], time_s, config_.loop_period_s, velocity_plan_, out.cascades[c],
+               *runner_);
+  }
   out.time_s = time_s;
-  ++out.index;
   last_time_s_ = time_s;
   has_stepped_ = true;
 }

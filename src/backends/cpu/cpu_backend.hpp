@@ -2,7 +2,9 @@
 // packing and mips on planar float arrays, parallel over rows through the task runner.
 #pragma once
 
+#include <array>
 #include <complex>
+#include <cstdint>
 #include <memory>
 #include <span>
 #include <vector>
@@ -50,6 +52,12 @@ struct CascadeState {
   packing::FoamTerms foam_source;        ///< how this cascade's J makes foam (FoamPlan)
   LargeVector<float> mip_work;           ///< float4 (n·len, foam) from mip level mip_work_level on
   int mip_work_level = 0;
+  /// The velocity's two row-major planes, (w, u) and (v, unused) (M.7.11); empty unless
+  /// outputs.velocity.
+  std::vector<std::vector<float>> velocity_re, velocity_im;
+  std::vector<float> velocity_khat;                    ///< (k̂x, k̂z) per wave vector
+  std::vector<std::int32_t> velocity_harmonic;         ///< j = ω'/ω0 (looping), −1 off the band
+  std::vector<std::array<double, 2>> velocity_phasor;  ///< (cos, sin) per j; empty: direct
 };
 
 /// Plane p of the reference pipeline's row-major planes as a split-complex view.
@@ -82,6 +90,14 @@ void assemble_displacement_reference(const CascadeState& state, const float* dz,
 /// Gradients, normal, Jacobian, foam, base-level packing, from out.displacement (and the
 /// gradient planes in analytic mode).
 void finalize(CascadeState& state, const SimulationConfig& config, double dt_s, bool reset_foam,
+              CascadeFrame& out, TaskRunner& runner);
+/// The velocity's per-wave-vector inputs and its phasor table (looping cascades whose harmonics
+/// are at most 2^16; the others evaluate each phase): velocity_khat, _harmonic, _phasor.
+void build_velocity_inputs(CascadeState& state, double loop_period_s);
+/// The velocity of the surface particles at time t (M.7.11): ∂h̃/∂t from the packed spectrum,
+/// its horizontal and vertical spectra in the state's two velocity planes, their inverse FFT and
+/// the float3 (u, w, v) into out.velocity.
+void velocity(CascadeState& state, double time_s, double loop_period_s, const fft::SimdPlan2D& plan,
               CascadeFrame& out, TaskRunner& runner);
 /// Box-filtered mip chain with normal-length smoothness (Aebi, VR Ocean, eqs. 52–55).
 void build_mips(CascadeState& state, CascadeFrame& out, TaskRunner& runner);
@@ -140,6 +156,7 @@ class CpuBackendImpl final : public CpuBackend {
   std::unique_ptr<TaskRunner> serial_ = make_serial_runner();  ///< a chain's stages, one thread
   fft::Plan2D plan_;
   fft::LanePlan2D simd_plan_;
+  fft::SimdPlan2D velocity_plan_;  ///< the velocity's transforms (outputs.velocity only)
   std::vector<CascadeState> cascades_;
   /// Cascades transformed together: pairs sharing plane 1 (Dz of the first in its real part,
   /// of the second in its imaginary part: 3 transforms for 2 cascades instead of 4) when the

@@ -71,6 +71,11 @@ CudaBackend::~CudaBackend() {
 
 Status CudaBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner*/) {
   const SimulationConfig& config = plan.config();
+  if (config.outputs.velocity) {
+    return unsupported(
+        "the CUDA backend does not compute the velocity (outputs.velocity): use the "
+        "cpu backend");
+  }
   Result<detail::Layout> layout = detail::make_layout(config);
   if (!layout.ok()) return layout.status();
   const detail::Layout& l = layout.value();
@@ -286,7 +291,6 @@ Status CudaBackend::read(Frame& out) {
   detail::read_noise_map(*gpu_, out);
   if (!out.far_noise.height_slope.empty()) out.far_noise.origin_m = pending_far_origin_m_;
   out.time_s = pending_time_s_;
-  ++out.index;
   return {};
 }
 

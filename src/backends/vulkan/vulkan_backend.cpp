@@ -48,6 +48,11 @@ VulkanBackend::~VulkanBackend() = default;
 
 Status VulkanBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner*/) {
   const SimulationConfig& config = plan.config();
+  if (config.outputs.velocity) {
+    return unsupported(
+        "the Vulkan backend does not compute the velocity (outputs.velocity): use the "
+        "cpu backend");
+  }
   const auto n = static_cast<std::uint32_t>(config.resolution);
   const auto cascades = static_cast<std::uint32_t>(config.cascade_patch_sizes_m.size());
   const std::uint32_t planes = config.normals == NormalMethod::analytic ? 4u : 2u;
@@ -212,7 +217,6 @@ Status VulkanBackend::read(Frame& out) {
                 .total_ms = ms[detail::copied] - ms[detail::start]};
   }
   out.time_s = pending_time_s_;
-  ++out.index;
   return {};
 }
 
