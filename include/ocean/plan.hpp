@@ -63,9 +63,6 @@ struct FoamPlan {
   /// weighs the cascades' foam by (their weighted mean is the coverage); empty for ramp, whose
   /// cascades' foam a renderer unites.
   std::vector<double> weights;
-  /// σ² of each cascade's band in expectation (expected_wave_power; 0 for ramp).
-  std::vector<double> band_slope_variance;
-  double total_slope_variance = 0.0;  ///< Σ of the bands' and the unresolved σ² (0 for ramp)
 };
 
 /// What a renderer needs to know of the surface it draws, and nothing of the configuration:

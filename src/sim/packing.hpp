@@ -76,8 +76,8 @@ struct FoamTerms {
   bool breaking = false;  ///< Φ((threshold − J)·gain); false: clamp((threshold − J)·gain, 0, 1)
 };
 
-/// The kernels' terms of a plan's source (SimulationPlan::foam): ramp terms as float, J_start −
-/// J_full inverted in float as every backend does.
+/// The kernels' terms of a plan's source (SimulationPlan::foam): for the ramp `terms` is not read,
+/// its J_start − J_full inverted in float as every backend does.
 inline FoamTerms foam_terms(const FoamParams& params, const FoamSourceTerms& terms) {
   if (params.source == FoamSource::ramp) {
     return {static_cast<float>(params.jacobian_start),

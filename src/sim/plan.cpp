@@ -72,7 +72,6 @@ FoamPlan resolve_foam(const SimulationPlan& plan) {
                                1.0 / (config.foam.jacobian_start - config.foam.jacobian_full)};
     f.cascades.assign(count, ramp);
     f.local = ramp;
-    f.band_slope_variance.assign(count, 0.0);
     return f;
   }
   const double lambda = config.choppiness, alpha = config.foam.breaking_acceleration;
@@ -90,7 +89,6 @@ FoamPlan resolve_foam(const SimulationPlan& plan) {
     exact += b.exact;
     unseen += b.exact - (b.seen > 0.0 ? b.covariance * b.covariance / b.seen : 0.0);
   }
-  f.total_slope_variance = total;
   const auto terms = [&](double beta, double residual) -> FoamSourceTerms {
     if (!(lambda > 0.0)) return {0.0, 1.0 / kMinSpread};  // J ≡ 1: nothing breaks
     const double s = std::max(lambda * std::sqrt(std::max(residual, 0.0)), kMinSpread);
@@ -100,7 +98,6 @@ FoamPlan resolve_foam(const SimulationPlan& plan) {
     const bool seen = b.seen > 0.0 && b.covariance > 0.0;
     const double beta = seen ? b.covariance / b.seen : 1.0;
     f.cascades.push_back(terms(beta, total - (seen ? b.covariance * b.covariance / b.seen : 0.0)));
-    f.band_slope_variance.push_back(b.exact);
     f.weights.push_back(exact > 0.0 ? b.exact / exact : 1.0 / static_cast<double>(count));
   }
   f.local = terms(1.0, unseen);

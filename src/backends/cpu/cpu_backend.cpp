@@ -79,9 +79,7 @@ Status CpuBackendImpl::configure(const SimulationPlan& resolved, TaskRunner& run
       state.plane_im.assign(planes, std::vector<float>(texels));
     }
     state.foam.assign(texels, 0.0f);
-    state.foam_source = packing::foam_terms(config.foam, config.foam.source == FoamSource::breaking
-                                                             ? resolved.foam().cascades[c]
-                                                             : FoamSourceTerms{});
+    state.foam_source = packing::foam_terms(config.foam, resolved.foam().cascades[c]);
     // The fused central-difference surface pass keeps levels 0 and 1 of the work values on the
     // stack: its chain starts at level 2.
     const bool fused_surface = fused && config.normals == NormalMethod::central_difference;

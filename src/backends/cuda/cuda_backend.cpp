@@ -106,9 +106,7 @@ Status CudaBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner*/
     args.dk = static_cast<float>(2.0 * kPi / size_m);
     args.inv_spacing = static_cast<float>(l.resolution / size_m);
     const packing::FoamTerms foam =
-        packing::foam_terms(config.foam, config.foam.source == FoamSource::breaking
-                                             ? plan.foam().cascades[static_cast<std::size_t>(c)]
-                                             : FoamSourceTerms{});
+        packing::foam_terms(config.foam, plan.foam().cascades[static_cast<std::size_t>(c)]);
     args.foam_threshold = foam.threshold;
     args.foam_gain = foam.gain;
     // Spectra on the host (the CPU reference code) and the phase rate of EvolutionPhase (M.7.3).

@@ -121,9 +121,7 @@ Status VulkanBackend::configure(const SimulationPlan& plan, TaskRunner& /*runner
     const double L = config.cascade_patch_sizes_m[c];
     p.dk[c] = static_cast<float>(2.0 * kPi / L);
     p.inv_spacing[c] = static_cast<float>(n / L);
-    const packing::FoamTerms foam = packing::foam_terms(
-        config.foam,
-        config.foam.source == FoamSource::breaking ? plan.foam().cascades[c] : FoamSourceTerms{});
+    const packing::FoamTerms foam = packing::foam_terms(config.foam, plan.foam().cascades[c]);
     p.foam_threshold[c] = foam.threshold;
     p.foam_gain[c] = foam.gain;
   }
