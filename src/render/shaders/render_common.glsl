@@ -141,6 +141,19 @@ float log_mean(float a, float b) {
   return abs(a - b) <= 1e-4 * max(a, b) ? 0.5 * (a + b) : (a - b) / log(a / b);
 }
 
+// The planet's centre relative to the eye, in the view's local axes (R.8c).
+vec3 planet_centre() {
+  return vec3(u.sphere.local_from_planet[0].w, u.sphere.local_from_planet[1].w,
+              u.sphere.local_from_planet[2].w);
+}
+
+// Whether the ray along the unit `dir` from a point outside a sphere of radius r, whose centre
+// lies at c from the point, meets it.
+bool ray_meets_sphere(vec3 c, float r, vec3 dir) {
+  float b = dot(c, dir);
+  return b > 0.0 && b * b - (dot(c, c) - r * r) > 0.0;
+}
+
 const float kAirTopM = 80e3;  // the air's top over the sphere: e^(−10) of the Rayleigh density
 const int kAirSteps = 32;
 
@@ -152,8 +165,7 @@ const int kAirSteps = 32;
 // in the planet's shadow; R.2's phases and R.4's multiple-scattering share). x: transmittance,
 // y: in-scattered radiance.
 mat2x3 planet_air(vec3 v, float t_end) {
-  vec3 centre = vec3(u.sphere.local_from_planet[0].w, u.sphere.local_from_planet[1].w,
-                     u.sphere.local_from_planet[2].w);
+  vec3 centre = planet_centre();
   float radius = u.sphere.radius_m;
   float b = dot(-centre, v), c_top = dot(centre, centre) - (radius + kAirTopM) * (radius + kAirTopM);
   float disc = b * b - c_top;
@@ -179,8 +191,7 @@ mat2x3 planet_air(vec3 v, float t_end) {
     vec3 step_tau = (u.air_rayleigh.rgb * rho_r + u.air_mie.x * rho_m) * dt;
     vec3 seen = exp(-(tau + 0.5 * step_tau));
     float z = r - radius, mu_s = dot(p, u.sun_dir) / r;
-    float bs = dot(p, u.sun_dir), shadow = bs < 0.0 && bs * bs - (r * r - radius * radius) > 0.0
-                                               ? 0.0 : 1.0;
+    float shadow = ray_meets_sphere(-p, radius, u.sun_dir) ? 0.0 : 1.0;
     vec3 column = u.air_rayleigh.rgb * h_r * exp(-z / h_r) + u.air_mie.x * h_m * exp(-z / h_m);
     vec3 sun = shadow * exp(-column * air_mass(mu_s));
     light += seen * sun * (u.air_rayleigh.rgb * rho_r * phase_r + u.air_mie.x * rho_m * phase_m) * dt;

@@ -36,10 +36,8 @@ void main() {
     mat2x3 air = planet_air(v, 1e12);
     c = mix(c, air[1], air_weight);
     sun_seen = mix(sun_seen, u.sphere.sun_top * air[0], air_weight);
-    vec3 centre = vec3(u.sphere.local_from_planet[0].w, u.sphere.local_from_planet[1].w,
-                       u.sphere.local_from_planet[2].w);
-    float b = dot(centre, v), q = dot(centre, centre) - u.sphere.radius_m * u.sphere.radius_m;
-    sun_above = air_weight > 0.5 ? !(b > 0.0 && b * b - q > 0.0) : sun_above;
+    sun_above =
+        air_weight > 0.5 ? !ray_meets_sphere(planet_centre(), u.sphere.radius_m, v) : sun_above;
   }
   // Sun disc, angular radius 0.27°, limb-darkened edge over a pixel or so.
   float cos_sun = dot(v, u.sun_dir);
