@@ -87,10 +87,10 @@ struct SurfaceDescription {
   /// σu² + σc² of the waves shorter than the finest cascade's grid, the roughness the cascades
   /// leave out (SimulationPlan::unresolved_slope_variance; R.5); empty when no wind is given.
   std::optional<double> unresolved_slope_variance;
-  /// α² a level-0 texel of the packed map stores: SimulationConfig::roughness as Aebi, VR Ocean,
-  /// eqs. 49–53 encode it, quantised to 8 bits. The filtering's slope variance is what a mip
-  /// stores above it (R.5).
-  double map_base_alpha_sq = 0.0;
+  /// The normal length a level-0 texel of the packed map stores: SimulationConfig::roughness as
+  /// Aebi, VR Ocean, eqs. 49–53 encode it, quantised to 8 bits and decoded again. A mip's
+  /// shorter normal carries the slope variance the filtering removed (R.5).
+  double map_base_normal_length = 1.0;
 };
 
 /// The crest bound's factor: the highest crest of a few thousand Rayleigh-distributed waves is

@@ -30,7 +30,7 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   st.foam_ramp = surface.foam_ramp;
   st.foam_weights = surface.foam_weights;
   st.unresolved_slope_variance = surface.unresolved_slope_variance;
-  st.map_base_alpha_sq = surface.map_base_alpha_sq;
+  st.map_base_normal_length = surface.map_base_normal_length;
   pass<FarFieldPass>(st).noise = surface.far_noise;
   st.cascades = static_cast<int>(cascade_count);
   const int n = surface.resolution;

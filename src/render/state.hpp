@@ -86,7 +86,7 @@ struct Renderer::State {
   double horizontal_reach_m = 1.0;  // SurfaceDescription's bound on |(Dx, Dz)|, m
   double choppiness = 1.0;
   std::optional<double> unresolved_slope_variance;  // SurfaceDescription's, from configure()
-  double map_base_alpha_sq = 0.0;                   // SurfaceDescription's, from configure()
+  double map_base_normal_length = 1.0;              // SurfaceDescription's, from configure()
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
   std::vector<double> foam_weights;  // SurfaceDescription's (empty: the cascades' foam united)
   Passes passes;                              // one object per feature (passes.hpp)

@@ -33,7 +33,7 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.roughness = static_cast<float>(st.unresolved_slope_variance
                                        ? std::sqrt(*st.unresolved_slope_variance)
                                        : sh.roughness);
-  u.map_base_alpha_sq = static_cast<float>(st.map_base_alpha_sq);
+  u.map_base_normal_length = static_cast<float>(st.map_base_normal_length);
   u.fog_density_per_m = static_cast<float>(sh.fog_density_per_m);
   const Sky::Air air = Sky(sh).air();
   u.air_rayleigh = {static_cast<float>(air.rayleigh_per_m[0]),

@@ -14,6 +14,12 @@ float smoothness_from_normal_length(float length) {
   return 1.0f - std::sqrt(r);
 }
 
+float normal_length_from_smoothness(float smoothness) {
+  const float r = (1.0f - smoothness) * (1.0f - smoothness);
+  const float t = (std::sqrt(0.7225f + 0.6f * (1.0f - r)) - 0.85f) / 0.3f;
+  return (std::clamp(t, 0.0f, 1.0f) + 2.0f) / 3.0f;
+}
+
 std::uint32_t pack_rgba8(float nx, float nz, float blue, float smoothness) {
   const auto quantise = [](float v) {  // ⌊saturate(v)·255 + 0.5⌋   (eq. 50)
     return static_cast<std::uint32_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f);

@@ -18,6 +18,9 @@ namespace ocean::packing {
 float normal_length_from_roughness(float roughness);
 /// Normal length → smoothness (Aebi, VR Ocean, eq. 53).
 float smoothness_from_normal_length(float length);
+/// Smoothness → normal length: eq. 53 inverted, (1 − t)(1 + 0.15·t) = (1 − s)², |n| = (t + 2)/3
+/// (the shaders' stored_normal_length, R.5).
+float normal_length_from_smoothness(float smoothness);
 /// RGBA8 packing of Aebi, VR Ocean, eqs. 50–51, from a unit normal, blue value and smoothness.
 std::uint32_t pack_rgba8(float nx, float nz, float blue, float smoothness);
 

@@ -180,7 +180,7 @@ SurfaceDescription SimulationPlan::surface() const {
   const float smoothness = packing::smoothness_from_normal_length(
       packing::normal_length_from_roughness(static_cast<float>(config_.roughness)));
   const double stored = std::floor(std::clamp(smoothness, 0.0f, 1.0f) * 255.0 + 0.5) / 255.0;
-  d.map_base_alpha_sq = std::pow(1.0 - stored, 4.0);  // the shaders' alpha_squared (R.5)
+  d.map_base_normal_length = packing::normal_length_from_smoothness(static_cast<float>(stored));
   return d;
 }
 

@@ -91,7 +91,8 @@ vec3 aerial_perspective(vec3 c, float point_y, float distance_m, vec3 view_dir) 
 // --- the slope variance the maps' mips carry (R.5) ----------------------------------------------
 
 // The length of the averaged normal that a stored smoothness s encodes: Aebi, VR Ocean, eq. 53
-// inverted, (1 − t)(1 + 0.15·t) = (1 − s)², |n| = (t + 2)/3.
+// inverted, (1 − t)(1 + 0.15·t) = (1 − s)², |n| = (t + 2)/3 (packing::
+// normal_length_from_smoothness, which gives the level-0 texel's, u.map_base_normal_length).
 float stored_normal_length(float smoothness) {
   float r = (1.0 - smoothness) * (1.0 - smoothness);
   float t = (sqrt(0.7225 + 0.6 * (1.0 - r)) - 0.85) / 0.3;
@@ -103,7 +104,7 @@ float stored_normal_length(float smoothness) {
 // (Toksvig 2005), here over the length a level-0 texel stores (its base roughness, eq. 49):
 // v = (|n|₀/|n|)² − 1.
 float removed_slope_variance(float smoothness) {
-  float base = stored_normal_length(1.0 - sqrt(sqrt(u.map_base_alpha_sq)));
+  float base = u.map_base_normal_length;
   float l = stored_normal_length(smoothness);
   return max(base * base / (l * l) - 1.0, 0.0);
 }

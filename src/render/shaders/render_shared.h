@@ -193,7 +193,7 @@ struct FrameUniforms {
   float foam_brightness;
   float roughness;          // α0: √ of the slope variance of the waves below the finest cascade
   float fog_density_per_m;  // ρ of the horizon fog (R.8)
-  float map_base_alpha_sq;  // α² a level-0 texel of the normal map stores (R.5)
+  float map_base_normal_length;  // |n| a level-0 texel of the normal map stores (R.5)
   vec2 grid_centre_m;   // world x, z of the quadtree's centre
   float ocean_size_m;   // side S of the quadtree square
   float border_fade_m;  // width over which the displacement fades out at the border (R.10)
