@@ -93,22 +93,35 @@ std::unique_ptr<TaskRunner> make_tbb_runner(int max_threads = 0);
 
 struct ReadyRunnerParams {
   int threads = 0;  ///< threads that run loops, the caller's included (0 = all hardware threads)
-  /// How long an idle worker keeps spinning, µs, after its last piece of work or after wake():
-  /// the bound on the CPU time a frame loop's runner burns between frames. [0, 1e6].
+  /// How long an idle worker keeps spinning, µs, after its last piece of work. [0, 1e6].
   double spin_us = 2000.0;
+  /// How long workers spin after wake(), µs, until work arrives: at least the lead with which
+  /// the frame loop calls wake() before its frame (the bench and ocean xr: 3 ms). With spin_us,
+  /// the bound on the CPU time a frame loop's runner burns between frames. [0, 1e6].
+  double wake_spin_us = 4000.0;
+  /// After spinning, an idle worker dozes in timed naps of nap_us µs, (0, 1e6], while its last
+  /// work or wake() is less than park_after_us µs, [0, 1e7], old; then it parks on a condition
+  /// variable until the next loop or wake(). A worker that slept 5 ms at a stretch ran a 90 Hz
+  /// frame's share slowly even when woken 3 ms ahead; one that dozed did not
+  /// (docs/performance.md, paced frames). park_after_us = 0 parks as soon as the spin ends.
+  double nap_us = 1000.0;
+  double park_after_us = 100000.0;
 };
 
 /// A pool of threads-1 workers for frame loops. An idle worker spins (with a pause instruction)
-/// for spin_us before it sleeps, and wake() makes sleeping workers spin again for spin_us, so a
-/// frame that starts within the bound finds every worker running instead of waking them (on a
-/// quiet reference machine a 90 Hz frame on oneTBB took twice its back-to-back time, read as its
-/// sleeping worker missing the frame's start: docs/performance.md, paced frames). A caller that
+/// for spin_us, dozes in naps of nap_us until park_after_us have passed without work or wake(),
+/// then parks; wake() makes workers spin again for wake_spin_us, so a frame that starts within
+/// the bound finds every worker running instead of waking them. Lead and doze both matter: on
+/// the reference virtual machine a worker parked 5 ms and woken 1 ms (or 3 ms) before a 90 Hz
+/// frame still ran at a fraction of its speed (the frame took 2.2× its back-to-back time, as with
+/// oneTBB), one that dozed and was woken 3 ms before at full speed (1.2×; docs/performance.md,
+/// paced frames). A caller that
 /// waits for its loop, or for an async job, runs chunks of open loops meanwhile, so nested loops
 /// neither deadlock nor serialise. Scheduling: chunks of `grain` indices claimed in order from a
 /// shared list of open loops (no stealing deques); fine for a few threads, the loops' owner running
 /// its own chunks first. Its async slot runs the job on a worker (or on the caller's thread in
 /// wait() if none took it). Allocates the threads at creation; parallel_for, kick and wait do not
-/// allocate. Precondition: params.threads in [0, 256], spin_us in [0, 1e6] (asserted).
+/// allocate. Precondition: params.threads in [0, 256] and the times in their ranges (asserted).
 std::unique_ptr<TaskRunner> make_ready_runner(const ReadyRunnerParams& params = {});
 
 }  // namespace ocean

@@ -1,12 +1,19 @@
 // The ready runner: a small thread pool for paced frame loops whose idle workers spin for a
 // bounded time before they sleep, and which a frame loop wakes ahead of a frame (wake()).
 //
-// Why: at 90 Hz a 0.5 ms frame on oneTBB took twice its back-to-back time on a quiet reference
-// machine, read as its worker, asleep since the previous frame, waking too late to take its
-// share, so that the calling thread runs the whole frame alone (docs/performance.md, paced
-// frames; inferred, not traced). Spinning while a
-// frame is due keeps the workers on their cores; the bound keeps an idle application from
-// burning the CPU (on a headset: the battery) between frames.
+// Why: at 90 Hz a 0.5 ms frame on oneTBB took 2.2× its back-to-back time on a quiet reference
+// machine (a virtual machine of 2 vCPUs): its worker, asleep since the previous frame, does not
+// run at full speed until about 2.5 ms after it is woken (measured: woken 1, 1.5, 2, 2.5, 3 ms
+// ahead of the frame, the paced frame took 2.2, 2.2, 1.4, 1.3, 1.3× its back-to-back time; its
+// wake-up itself took 20 µs at the median), so the calling thread ran most of the frame alone
+// (docs/performance.md, paced frames). What costs is the long sleep, not the waking: a worker
+// that dozes between frames in naps of 1 ms is at full speed 3 ms after wake() (paced/back to
+// back 1.2 at 90 and 120 Hz), one that slept 5 ms on a condition variable is not (2.2), one that
+// slept 2.6 ms nearly is (1.3). So an idle worker spins for spin_us after its work, then dozes in
+// naps of nap_us (a timed sleep, a few µs of CPU each) while work or wake() came within
+// park_after_us, and only then parks on the condition variable; wake() makes it spin again for
+// wake_spin_us. A frame loop thus keeps its workers dozing between frames and spinning from 3 ms
+// before each; an idle application parks them after park_after_us.
 //
 // Scheduling: open loops form a list (newest first, so helpers take the innermost nested loop
 // first, as a depth-first work-stealing scheduler would); a thread claims a loop's chunks one
@@ -63,10 +70,15 @@ class ReadyRunner final : public TaskRunner {
       : threads_(params.threads > 0
                      ? params.threads
                      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
-        spin_(std::chrono::duration_cast<Clock::duration>(
-            std::chrono::duration<double, std::micro>(params.spin_us))) {
+        spin_(microseconds(params.spin_us)),
+        wake_spin_(microseconds(params.wake_spin_us)),
+        nap_(microseconds(params.nap_us)),
+        park_after_(microseconds(params.park_after_us)) {
     assert(params.threads >= 0 && params.threads <= kMaxRunnerThreads);
     assert(params.spin_us >= 0.0 && params.spin_us <= 1e6);
+    assert(params.wake_spin_us >= 0.0 && params.wake_spin_us <= 1e6);
+    assert(params.nap_us > 0.0 && params.nap_us <= 1e6);
+    assert(params.park_after_us >= 0.0 && params.park_after_us <= 1e7);
     workers_.reserve(static_cast<std::size_t>(threads_ - 1));
     for (int i = 1; i < threads_; ++i) workers_.emplace_back([this] { work(); });
   }
@@ -97,8 +109,7 @@ class ReadyRunner final : public TaskRunner {
   [[nodiscard]] int concurrency() const override { return threads_; }
 
   void wake() override {
-    const auto until = (Clock::now() + spin_).time_since_epoch().count();
-    wake_until_.store(until, std::memory_order_relaxed);
+    wake_at_.store(Clock::now().time_since_epoch().count(), std::memory_order_relaxed);
     const std::lock_guard<std::mutex> lock(mutex_);
     if (sleepers_ == 0) return;
     ++epoch_;
@@ -177,9 +188,12 @@ class ReadyRunner final : public TaskRunner {
       cpu_pause();
       if (++spins % 64 != 0) continue;
       const Clock::time_point now = Clock::now();
-      if (now - idle_since < spin_ ||
-          now.time_since_epoch().count() < wake_until_.load(std::memory_order_relaxed))
+      const Clock::time_point woken{Clock::duration(wake_at_.load(std::memory_order_relaxed))};
+      if (now - idle_since < spin_ || now - woken < wake_spin_) continue;
+      if (now - std::max(idle_since, woken) < park_after_) {
+        std::this_thread::sleep_for(nap_);  // doze: a timed nap, no notification needed
         continue;
+      }
       std::unique_lock<std::mutex> lock(mutex_);
       if (open_ != nullptr || stop_.load(std::memory_order_relaxed)) continue;
       const std::uint64_t seen = epoch_;
@@ -190,8 +204,13 @@ class ReadyRunner final : public TaskRunner {
     }
   }
 
+  static Clock::duration microseconds(double us) {
+    return std::chrono::duration_cast<Clock::duration>(
+        std::chrono::duration<double, std::micro>(us));
+  }
+
   const int threads_;
-  const Clock::duration spin_;
+  const Clock::duration spin_, wake_spin_, nap_, park_after_;
   std::mutex mutex_;
   std::condition_variable sleep_cv_;
   Loop* open_ = nullptr;            // open loops, newest first (guarded)
@@ -199,7 +218,7 @@ class ReadyRunner final : public TaskRunner {
   int sleepers_ = 0;                // workers waiting on sleep_cv_ (guarded)
   std::atomic<int> open_count_{0};  // loops on the list: a hint read without the mutex
   std::atomic<bool> stop_{false};
-  std::atomic<Clock::rep> wake_until_{0};  // spin at least until then (wake())
+  std::atomic<Clock::rep> wake_at_{0};  // the last wake(): spin until wake_spin_ after it
   std::vector<std::thread> workers_;
 };
 

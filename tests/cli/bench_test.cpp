@@ -77,7 +77,7 @@ TEST(BenchCli, FrameIntervalPacesTheFrames) {
   EXPECT_EQ(rows[1]["runner"], "ready");
   for (const nlohmann::json& row : rows) {
     EXPECT_EQ(row["frame_interval_ms"].get<double>(), 20.0);
-    EXPECT_GE(row["frames"].get<int>(), 5 * 4);  // at least 5 frames in each of the 4 rounds
+    EXPECT_GE(row["frames"].get<int>(), 5 * 6);  // at least 5 frames in each of the 6 rounds
     const double ours = row["ours_ms"].get<double>();
     EXPECT_TRUE(std::isfinite(ours));
     EXPECT_GT(ours, 0.0);
@@ -92,6 +92,48 @@ TEST(BenchCli, FrameIntervalPacesTheFrames) {
   ASSERT_EQ(unpaced.exit_code, 0) << unpaced.err;
   EXPECT_EQ(nlohmann::json::parse(unpaced.out)["rows"][0]["frame_interval_ms"].get<double>(), 0.0);
   EXPECT_FALSE(nlohmann::json::parse(unpaced.out)["rows"][0].contains("back_to_back_ms"));
+}
+
+// --pacing: one row per period, thread count and runner; 90 and 120 Hz unless --frame-interval
+// gives one; the ratio is the medians' and the rounds' spread brackets their median.
+TEST(BenchCli, PacingRowsGiveTheRatioAndItsSpread) {
+  const ocean_test::CliRun r = ocean_test::run_cli(
+      "bench --pacing --json --resolution 16 --cascades 1 --threads 1,2 --min-time 0");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json out = nlohmann::json::parse(r.out);
+  EXPECT_EQ(out["resolution"], 16);
+  EXPECT_EQ(out["cascades"], 1);
+  const int rounds = out["rounds"].get<int>();
+  EXPECT_GE(rounds, 2);
+  const nlohmann::json rows = out["rows"];
+  ASSERT_EQ(rows.size(), 4u);  // 2 periods × 2 thread counts × the ready runner
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const nlohmann::json& row = rows[i];
+    EXPECT_NEAR(row["frame_interval_ms"].get<double>(), i < 2 ? 1000.0 / 90 : 1000.0 / 120, 1e-9);
+    EXPECT_EQ(row["threads"], i % 2 ? 2 : 1);
+    EXPECT_EQ(row["runner"], "ready");
+    const double paced = row["paced_ms"].get<double>(), b2b = row["back_to_back_ms"].get<double>();
+    EXPECT_GT(paced, 0.0);
+    EXPECT_GT(b2b, 0.0);
+    EXPECT_DOUBLE_EQ(row["paced_ratio"].get<double>(), paced / b2b);
+    EXPECT_LE(row["round_ratio_min"].get<double>(), row["round_ratio_median"].get<double>());
+    EXPECT_LE(row["round_ratio_median"].get<double>(), row["round_ratio_max"].get<double>());
+    EXPECT_GE(row["paced_frames"].get<int>(), 5 * rounds);
+    EXPECT_GE(row["back_to_back_frames"].get<int>(), 5 * rounds);
+  }
+  const ocean_test::CliRun one = ocean_test::run_cli(
+      "bench --pacing --resolution 16 --cascades 1 --threads 1 --min-time 0 --frame-interval 4 "
+      "--runner tbb");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_NE(one.out.find("rounds: median [min, max]"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("  250    1    tbb"), std::string::npos) << one.out;
+  for (const char* bad : {"bench --pacing --backend vulkan", "bench --pacing --overlap",
+                          "bench --pacing --frame-interval 0"}) {
+    const ocean_test::CliRun e = ocean_test::run_cli(bad);
+    EXPECT_EQ(e.exit_code, 2) << bad;
+    EXPECT_NE(e.err.find("--pacing"), std::string::npos) << bad << ": " << e.err;
+    EXPECT_EQ(std::count(e.err.begin(), e.err.end(), '\n'), 1) << bad << ": " << e.err;
+  }
 }
 
 TEST(BenchCli, TableForPeople) {

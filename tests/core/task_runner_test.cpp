@@ -107,20 +107,28 @@ TEST(TaskRunner, TbbSlotRunsTheJobConcurrentlyWithTheCaller) {
   expect_job_runs_concurrently(ocean::make_tbb_runner().get());
 }
 
-// The ready runner's threads are its own: two of them work concurrently on any machine.
+// The ready runner's threads are its own: two of them work concurrently on any machine, whether
+// the worker parks, dozes or spins between jobs.
 TEST(TaskRunner, ReadySlotRunsTheJobConcurrentlyWithTheCaller) {
-  auto sleeping = ocean::make_ready_runner({.threads = 2, .spin_us = 0.0});
-  expect_job_runs_concurrently(sleeping.get());
+  auto parking = ocean::make_ready_runner({.threads = 2, .spin_us = 0.0, .park_after_us = 0.0});
+  expect_job_runs_concurrently(parking.get());
+  auto dozing = ocean::make_ready_runner({.threads = 2, .spin_us = 0.0, .nap_us = 200.0});
+  expect_job_runs_concurrently(dozing.get());
   auto spinning = ocean::make_ready_runner({.threads = 2, .spin_us = 1e6});
   expect_job_runs_concurrently(spinning.get());
 }
 
 // Two chunks that each wait for the other to start finish only if two threads run the loop at
-// once: the caller and a worker, whether the worker slept (spin 0), was woken by wake(), or is
-// still spinning.
+// once: the caller and a worker, whether the worker parked (spin 0, park at once), dozed, was
+// woken by wake(), or is still spinning.
 TEST(TaskRunner, ReadyRunnerRunsALoopOnTwoThreads) {
-  for (double spin_us : {0.0, 1e6}) {
-    auto runner = ocean::make_ready_runner({.threads = 2, .spin_us = spin_us});
+  const ocean::ReadyRunnerParams params[] = {
+      {.threads = 2, .spin_us = 0.0, .wake_spin_us = 0.0, .park_after_us = 0.0},
+      {.threads = 2, .spin_us = 0.0, .park_after_us = 0.0},
+      {.threads = 2, .spin_us = 0.0, .wake_spin_us = 0.0, .nap_us = 300.0},
+      {.threads = 2, .spin_us = 1e6}};
+  for (std::size_t i = 0; i < std::size(params); ++i) {
+    auto runner = ocean::make_ready_runner(params[i]);
     for (int round = 0; round < 20; ++round) {
       if (round % 2) runner->wake();
       std::atomic<int> started{0};
@@ -132,7 +140,7 @@ TEST(TaskRunner, ReadyRunnerRunsALoopOnTwoThreads) {
           std::this_thread::yield();
         if (started.load() == 2) met.fetch_add(1);
       });
-      ASSERT_EQ(met.load(), 2) << "spin " << spin_us << " round " << round;
+      ASSERT_EQ(met.load(), 2) << "parameters " << i << " round " << round;
     }
   }
 }

@@ -55,6 +55,14 @@ void time_round(cpu::CpuBackend& backend, Frame& frame, double& t, double min_ti
   append_timed(out.mips, mips);
 }
 
+void append(Samples& to, const Samples& from) {
+  const auto add = [](std::vector<double>& a, const std::vector<double>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+  };
+  add(to.frames, from.frames), add(to.synthesis, from.synthesis);
+  add(to.finalize, from.finalize), add(to.mips, from.mips);
+}
+
 PipelineResult result_of(const Samples& s, const cpu::CpuBackend& backend, const Frame& frame) {
   return {stats_of(s.frames),
           stats_of(s.synthesis),
@@ -103,11 +111,17 @@ Result<PacedResult> run_paced_pipeline(const SimulationConfig& config, cpu::CpuO
   Frame& frame = c.value().frame;
   double t = 0.0;
   Samples paced, back_to_back;
+  std::vector<double> round_ratios;
   for (int round = 0; round < kPacedRounds; ++round) {
-    time_round(backend, frame, t, min_time / kPacedRounds, 0.0, runner, back_to_back);
-    time_round(backend, frame, t, min_time / kPacedRounds, interval, runner, paced);
+    Samples paced_round, back_to_back_round;
+    time_round(backend, frame, t, min_time / kPacedRounds, 0.0, runner, back_to_back_round);
+    time_round(backend, frame, t, min_time / kPacedRounds, interval, runner, paced_round);
+    round_ratios.push_back(stats_of(paced_round.frames).median_ms /
+                           stats_of(back_to_back_round.frames).median_ms);
+    append(paced, paced_round), append(back_to_back, back_to_back_round);
   }
-  return PacedResult{result_of(paced, backend, frame), result_of(back_to_back, backend, frame)};
+  return PacedResult{result_of(paced, backend, frame), result_of(back_to_back, backend, frame),
+                     std::move(round_ratios)};
 }
 
 }  // namespace ocean::cli::bench

@@ -28,8 +28,9 @@ using Clock = std::chrono::steady_clock;
 
 // How long before a paced frame's start the harness calls TaskRunner::wake(), as a frame loop
 // that knows when its next frame starts does (ocean xr: before xrWaitFrame). Within the ready
-// runner's default spin bound (2 ms).
-constexpr double kWakeLead_s = 1e-3;
+// runner's default wake spin (4 ms). A worker woken 1 ms ahead was still slow when the frame
+// began (docs/performance.md, paced frames): 3 ms is the shortest lead measured at full speed.
+constexpr double kWakeLead_s = 3e-3;
 
 // Times body() repeatedly: 2 warm-up runs, then at least 5 runs and about min_time seconds
 // (at most 500 runs). With an interval, the runs start that many seconds apart, as frames of a
@@ -82,12 +83,14 @@ Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOpti
 
 struct PacedResult {
   PipelineResult paced, back_to_back;
+  /// Each round's paced median over its back-to-back median: the ratio's spread.
+  std::vector<double> round_ratios;
 };
 
 /// The same pipeline paced `interval` s apart and back to back, alternated in kPacedRounds
 /// rounds of min_time / kPacedRounds seconds each so that both see the same minutes of a noisy
 /// machine; the medians are over all rounds' frames.
-constexpr int kPacedRounds = 4;
+constexpr int kPacedRounds = 6;
 Result<PacedResult> run_paced_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
                                        TaskRunner& runner, double min_time, double interval);
 

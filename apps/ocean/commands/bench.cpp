@@ -17,6 +17,7 @@
 #include "bench/fftw_engine.hpp"
 #include "bench/harness.hpp"
 #include "bench/overlap.hpp"
+#include "bench/pacing.hpp"
 #include "bench/parse.hpp"
 #include "bench/report.hpp"
 #include "bench/table_one.hpp"
@@ -79,10 +80,14 @@ struct BenchOptions {
   bool json = false;
   bool table_one = false;
   bool overlap = false;
+  bool pacing = false;
   std::string far_noise_resolution = "256";
   bool resolution_given = false;
   bool cascades_given = false;
   bool threads_given = false;
+  bool min_time_given = false;
+  bool frame_interval_given = false;
+  bool runners_given = false;
 };
 
 int run_bench(const BenchOptions& o) {
@@ -112,6 +117,13 @@ int run_bench(const BenchOptions& o) {
   Result<double> interval_ms = parse(kFrameInterval, o.frame_interval);
   if (!interval_ms.ok()) return report(interval_ms.status());
   const double interval = interval_ms.value() * 1e-3;
+  if (o.pacing && (o.backend != "cpu" || o.overlap || o.table_one))
+    return report(invalid_argument(
+        "--pacing times the CPU backend's frames alone: leave out --backend, --overlap and "
+        "--table-one"));
+  if (o.pacing && o.frame_interval_given && !(interval > 0.0))
+    return report(invalid_argument("--frame-interval = " + excerpt(o.frame_interval) +
+                                   ": --pacing needs a period above 0 ms"));
   if (o.overlap && (o.backend != "cpu" || interval > 0.0))
     return report(
         invalid_argument("--overlap times the CPU, Vulkan and CUDA backends: leave out --backend "
@@ -154,6 +166,20 @@ int run_bench(const BenchOptions& o) {
   }
   Result<std::vector<std::string>> runner_names = parse_runners(o.runners);
   if (!runner_names.ok()) return report(runner_names.status());
+  if (o.pacing) {
+    bench::PacingOptions p{
+        .resolution = o.resolution_given ? resolutions.value().front() : 256,
+        .cascades = o.cascades_given ? cascades.value().front() : 4,
+        .threads = {},
+        .runners = o.runners_given ? runner_names.value() : std::vector<std::string>{"ready"},
+        .outputs = outputs,
+        .outputs_name = o.outputs,
+        .min_time = o.min_time_given ? min_time.value() : 2.0,
+        .json = o.json};
+    if (o.frame_interval_given) p.intervals_ms = {interval_ms.value()};
+    for (int t : threads.value()) p.threads.push_back(t == 0 ? hardware : t);
+    return bench::run_pacing(p);
+  }
 
   const std::string target = fft::active_simd_target();
   const double peak = fft::measure_fma_peak_gflops(0.2);
@@ -278,7 +304,7 @@ Command add_bench_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--runner", options->runners,
                   "Comma-separated task runners: tbb (oneTBB), ready (workers spin up to 2 ms "
-                  "and are woken 1 ms before a paced frame)")
+                  "after their work and are woken 3 ms before a paced frame)")
       ->capture_default_str();
   cmd->add_flag("--json", options->json, "Print JSON instead of a table");
   cmd->add_flag("--table-one", options->table_one,
@@ -291,6 +317,13 @@ Command add_bench_command(CLI::App& app) {
       "alone and both in one frame, on the CPU, Vulkan and CUDA backends, and the overlap "
       "(t_cascades + t_noise - t_both) / min(t_cascades, t_noise); the first "
       "--resolution and --cascades default to 256 and 4");
+  cmd->add_flag("--pacing", options->pacing,
+                "the frame budget of a paced frame loop: the CPU pipeline (the first --resolution "
+                "and --cascades, default 256 and 4) at 90 and 120 Hz (or --frame-interval), each "
+                "--threads count and --runner (default ready), paced and back to back in " +
+                    std::to_string(bench::kPacedRounds) +
+                    " alternated rounds (--min-time: seconds per row, default 2): both medians, "
+                    "their ratio and its spread over the rounds");
   add_option(*cmd, kFarNoiseResolution, options->far_noise_resolution,
              "--overlap: texels per side of the noise map (16…4096); the CPU runs on the first "
              "--threads count (default all)")
@@ -300,6 +333,9 @@ Command add_bench_command(CLI::App& app) {
             o.resolution_given = cmd->get_option("--resolution")->count() > 0;
             o.cascades_given = cmd->get_option("--cascades")->count() > 0;
             o.threads_given = cmd->get_option("--threads")->count() > 0;
+            o.min_time_given = cmd->get_option("--min-time")->count() > 0;
+            o.frame_interval_given = cmd->get_option("--frame-interval")->count() > 0;
+            o.runners_given = cmd->get_option("--runner")->count() > 0;
             return run_bench(o);
           }};
 }
