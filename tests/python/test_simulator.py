@@ -152,3 +152,51 @@ def test_surface_statistics_match_the_spectrum():
     s = ocean.surface_stats(p, seeds=4)
     assert s["seeds"] == 4 and s["resolution"] == 64
     assert abs(s["hs_measured_m"] / s["hs_spectrum_m"] - 1) < 4 * s["hs_sampling_rel_std"]
+
+
+def test_series_is_a_wave_gauge_record_of_step_and_heights(small_preset):
+    """series(points, times) steps to each time and queries the points: the same numbers as
+    step(t) and heights(xz) called in turn on a twin simulator, rows by time, columns by point."""
+    points = np.array([[0.0, 0.0], [13.5, -7.25], [120.0, 40.0]])
+    times = np.array([0.0, 0.25, 0.5, 1.75, 3.0])
+    sim = ocean.Simulator(small_preset)
+    record = sim.series(points, times)
+    assert record.shape == (times.size, points.shape[0])
+    assert sim.time == times[-1]
+    twin = ocean.Simulator(small_preset)
+    for i, t in enumerate(times):
+        twin.step(float(t))
+        np.testing.assert_array_equal(record[i], twin.heights(points))
+    # A sea: the record moves, about the mean level (Hs of the moderate sea is metres).
+    assert np.ptp(record) > 0.05
+    assert np.all(np.abs(record) < 10.0)
+
+
+def test_series_as_xarray_carries_times_and_positions(small_preset):
+    import xarray  # Debian's python3-xarray, installed by ./dev
+    points = [[1.0, 2.0], [3.0, 4.0]]
+    times = [0.5, 1.0, 1.5]
+    da = ocean.Simulator(small_preset).series(points, times, as_xarray=True)
+    assert isinstance(da, xarray.DataArray)
+    assert da.dims == ("time", "point")
+    np.testing.assert_array_equal(da["time"].values, times)
+    np.testing.assert_array_equal(da["x"].values, [1.0, 3.0])
+    np.testing.assert_array_equal(da["z"].values, [2.0, 4.0])
+    assert da.attrs["units"] == "m"
+    np.testing.assert_array_equal(da.values, ocean.Simulator(small_preset).series(points, times))
+
+
+@pytest.mark.parametrize("points, times, match", [
+    ([1.0, 2.0], [0.0], "points must be an \\(n, 2\\) array"),
+    ([[1.0, 2.0]], [], "times must be a non-empty 1-D array"),
+    ([[1.0, 2.0]], [[0.0]], "times must be a non-empty 1-D array"),
+    ([[1.0, 2.0]], [float("nan")], "times must be finite and >= 0"),
+    ([[1.0, 2.0]], [-1.0], "times must be finite and >= 0"),
+    ([[float("inf"), 2.0]], [0.0], "points must be finite"),
+])
+def test_series_refuses_bad_input_before_stepping(small_preset, points, times, match):
+    sim = ocean.Simulator(small_preset)
+    sim.step(2.0)
+    with pytest.raises(ValueError, match=match):
+        sim.series(points, times)
+    assert sim.time == 2.0

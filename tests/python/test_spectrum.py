@@ -128,3 +128,21 @@ def test_sea_state_variance_is_the_spectrum_moment():
     kx, kz = np.meshgrid(k, k)
     f = sea.wave_vector_spectrum(kx, kz)
     assert f.sum() * (k[1] - k[0]) ** 2 == pytest.approx(m0, rel=0.02)
+
+
+def test_spectrum_in_hertz_keeps_the_variance_and_peaks_at_one_over_tp():
+    """S(f) = 2π·S(ω = 2πf): the same variance m0 = ∫S(f) df = (Hs/4)² and the peak at 1/Tp."""
+    hs, tp = 3.0, 10.0
+    f = np.linspace(1e-4, 3.0, 300001)
+    s = ocean.spectrum_hz("pierson-moskowitz", f, hs=hs, tp=tp)
+    assert s.shape == f.shape
+    m0 = np.trapz(s, f)
+    assert 4.0 * math.sqrt(m0) == pytest.approx(hs, rel=2e-3)
+    assert f[np.argmax(s)] == pytest.approx(1.0 / tp, abs=2e-5)
+    f0 = np.array([[0.08, 0.1], [0.2, 0.5]])
+    np.testing.assert_allclose(
+        ocean.spectrum_hz("jonswap", f0, hs=hs, tp=tp),
+        2.0 * math.pi * ocean.spectrum("jonswap", omega=2.0 * math.pi * f0, hs=hs, tp=tp),
+        rtol=1e-15)
+    with pytest.raises(ValueError, match="f must be finite and >= 0"):
+        ocean.spectrum_hz("pierson-moskowitz", [-0.1], hs=hs, tp=tp)

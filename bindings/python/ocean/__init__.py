@@ -8,7 +8,10 @@ ValueError (bad input), OSError (files), NotImplementedError (not built in), in 
 """
 import difflib as _difflib
 import functools as _functools
+import math as _math
 import re as _re
+
+import numpy as _np
 
 from ._ocean import __version__  # noqa: F401
 from ._ocean import (  # noqa: F401
@@ -29,7 +32,7 @@ from ._ocean import (  # noqa: F401
 
 __all__ = [
     "Preset", "SeaState", "Simulator", "bake", "depth_factor", "dispersion", "merge", "shard_frames",
-    "spectrum", "spectrum_info", "spreading", "surface_stats",
+    "spectrum", "spectrum_hz", "spectrum_info", "spreading", "surface_stats",
 ]
 
 
@@ -80,3 +83,82 @@ for _cls in (Preset, SeaState, Simulator):
             setattr(_cls, _attr, _short_type_error(_member, f"{_cls.__name__}.{_attr}"
                                                    if _attr != "__init__" else _cls.__name__))
 del _name, _cls, _attr, _member
+
+
+def spectrum_hz(model, f, **parameters):
+    """The frequency spectrum S(f) in m²/Hz at frequencies f in Hz.
+
+    The same spectrum as ``spectrum(model, omega=2*pi*f, ...)``, expressed per hertz:
+    S(f) = 2·π·S(ω) with ω = 2·π·f, so that the integral of S(f) df is the same variance m0.
+
+    Parameters
+    ----------
+    model : str
+        A spectrum model, as for ``spectrum`` (pierson-moskowitz, jonswap, tma, phillips).
+    f : array_like of float
+        Frequencies, Hz, any shape; finite and non-negative.
+    **parameters
+        The keywords of ``spectrum`` (hs=, tp=, wind_speed=, fetch=, gamma=, depth=, ...).
+
+    Returns
+    -------
+    numpy.ndarray
+        S(f), m²/Hz, shaped like ``f``.
+    """
+    f = _np.asarray(f, dtype=float)
+    if not _np.all(_np.isfinite(f)) or _np.any(f < 0):
+        raise ValueError("f must be finite and >= 0 (Hz)")
+    return 2.0 * _math.pi * spectrum(model, omega=2.0 * _math.pi * f, **parameters)
+
+
+def _series(self, points, times, as_xarray=False):
+    """Heights at fixed points over a sequence of times: a wave-gauge record.
+
+    Steps this simulator to each time in turn (``step(t)``) and queries the heights at every
+    point after each step (``heights``, the GIL released); the simulator is left at
+    ``times[-1]``. Cost: one step and one batched query per time.
+
+    Parameters
+    ----------
+    points : array_like of float, shape (P, 2)
+        World positions (x, z), m.
+    times : array_like of float, shape (T,)
+        Simulation times, s, finite and non-negative.
+    as_xarray : bool, optional
+        Return an ``xarray.DataArray`` with dimensions ("time", "point") and coordinates
+        time (s), x and z (m) instead of an array; ImportError where xarray is not installed
+        (Debian: python3-xarray).
+
+    Returns
+    -------
+    numpy.ndarray, shape (T, P)
+        The surface height above the mean level, m, at each time (row) and point (column).
+    """
+    xz = _np.asarray(points, dtype=float)
+    if xz.ndim != 2 or xz.shape[1] != 2:
+        raise ValueError(f"points must be an (n, 2) array of (x, z), not shape {xz.shape}")
+    t = _np.asarray(times, dtype=float)
+    if t.ndim != 1 or t.size == 0:
+        raise ValueError(f"times must be a non-empty 1-D array, not shape {t.shape}")
+    if not _np.all(_np.isfinite(t)) or _np.any(t < 0):
+        raise ValueError("times must be finite and >= 0 (s)")
+    if not _np.all(_np.isfinite(xz)):
+        raise ValueError("points must be finite (m)")
+    if as_xarray:
+        import xarray  # noqa: F401  (fails before any stepping where it is missing)
+    out = _np.empty((t.size, xz.shape[0]))
+    for i, ti in enumerate(t):
+        self.step(float(ti))
+        out[i] = self.heights(xz)
+    if not as_xarray:
+        return out
+    import xarray
+    return xarray.DataArray(
+        out, dims=("time", "point"),
+        coords={"time": ("time", t, {"units": "s"}), "x": ("point", xz[:, 0], {"units": "m"}),
+                "z": ("point", xz[:, 1], {"units": "m"})},
+        name="height", attrs={"units": "m", "long_name": "surface height above the mean level"})
+
+
+Simulator.series = _series
+del _series
