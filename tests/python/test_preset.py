@@ -1,6 +1,7 @@
 """ocean.Preset: built-in presets, files, key=value overrides, JSON and pickling round trips."""
 import json
 import pickle
+import pytest
 
 import ocean
 
@@ -27,3 +28,37 @@ def test_save_load_and_pickle_round_trips(tmp_path):
     q = ocean.Preset("storm").merge(str(path))
     assert json.loads(q.to_json())["choppiness"] == 0.5
     assert json.loads(q.to_json())["sea"] == json.loads(ocean.Preset("storm").to_json())["sea"]
+
+
+def test_presets_compare_by_value():
+    assert ocean.Preset("moderate") == ocean.Preset("moderate")
+    assert ocean.Preset("moderate") != ocean.Preset("storm")
+    assert ocean.Preset("calm") != "calm"
+    with pytest.raises(TypeError):
+        hash(ocean.Preset())  # mutable (set, merge): not hashable
+
+
+def test_values_by_dotted_key():
+    p = ocean.Preset("moderate")
+    assert p.get("sea.wind_sea.wind_speed_mps") == 10.0
+    assert p["resolution"] == json.loads(p.to_json())["resolution"]
+    assert p["sea.swell"] is None
+    with pytest.raises(KeyError, match="did you mean 'sea.wind_sea.wind_speed_mps'"):
+        p.get("sea.wind_sea.wind_speed")
+    with pytest.raises(KeyError, match="no key 'resolution.x'"):
+        p.get("resolution.x")
+
+
+def test_dicts_and_keywords_configure_as_set_does():
+    base = ocean.Preset("moderate")
+    changed = base.updated({"sea.wind_sea.wind_speed_mps": 12.5, "foam": {"source": "ramp"}},
+                           resolution=64, seed=7)
+    expected = ocean.Preset("moderate").set("sea.wind_sea.wind_speed_mps=12.5") \
+        .set("foam.source=ramp").set("resolution=64").set("seed=7")
+    assert changed == expected
+    assert base == ocean.Preset("moderate")  # unchanged
+    assert changed["foam.breaking_acceleration"] == base["foam.breaking_acceleration"]
+    assert ocean.Preset.from_dict(changed.to_dict()) == changed
+    assert ocean.Preset.from_dict({"resolution": 32}) == ocean.Preset().set("resolution=32")
+    with pytest.raises(ValueError, match="resolution"):
+        base.updated(resolution=-3)

@@ -72,6 +72,9 @@ names = ocean.Preset.builtin_names()
 first: str = names[0]
 p = ocean.Preset("calm").set("resolution=32")
 record = sim.series([[0.0, 0.0]], [1.0, 2.0])
+q = p.updated({"foam.source": "ramp"}, seed=3)
+same: bool = q == ocean.Preset.from_dict(q.to_dict())
+speed = q["sea.wind_sea.wind_speed_mps"]
 """
 
 BAD = """

@@ -8,6 +8,7 @@ ValueError (bad input), OSError (files), NotImplementedError (not built in), in 
 """
 import difflib as _difflib
 import functools as _functools
+import json as _json
 import math as _math
 import re as _re
 
@@ -162,3 +163,103 @@ def _series(self, points, times, as_xarray=False):
 
 Simulator.series = _series
 del _series
+
+
+# Presets as Python values: equality, getters by dotted key, dicts and keyword updates. Each
+# builds on the preset document (Preset.to_json / Preset.from_json), so a value means what the
+# same key means in a preset file and is validated by the library the same way.
+def _preset_eq(self, other):
+    if not isinstance(other, Preset):
+        return NotImplemented
+    return self.to_json() == other.to_json()
+
+
+def _preset_to_dict(self):
+    """The preset document as nested dicts (the JSON of ``to_json``)."""
+    return _json.loads(self.to_json())
+
+
+def _preset_from_dict(document):
+    """A preset from a (possibly partial) preset document given as nested dicts, merged over the
+    defaults as ``Preset.from_json`` merges its text; ValueError for an invalid configuration."""
+    return Preset.from_json(_json.dumps(document))
+
+
+def _preset_get(self, key):
+    """The value at a dotted key, e.g. ``p.get("sea.wind_sea.wind_speed_mps")``.
+
+    Parameters
+    ----------
+    key : str
+        Keys of the preset document joined by dots.
+
+    Returns
+    -------
+    The value (a float, int, str, bool, list, dict or None) as the document holds it.
+    """
+    value = self.to_dict()
+    walked = []
+    for part in key.split("."):
+        if not isinstance(value, dict) or part not in value:
+            known = list(value) if isinstance(value, dict) else []
+            close = _difflib.get_close_matches(part, known, n=1)
+            hint = f"; did you mean '{'.'.join(walked + [close[0]])}'?" if close else ""
+            raise KeyError(f"the preset has no key '{key}'{hint}")
+        walked.append(part)
+        value = value[part]
+    return value
+
+
+def _nested(changes):
+    """{"a.b": 1, "c": {"d": 2}} as {"a": {"b": 1}, "c": {"d": 2}}."""
+    out = {}
+    for key, value in changes.items():
+        parts = key.split(".")
+        node = out
+        for part in parts[:-1]:
+            node = node.setdefault(part, {})
+        if isinstance(value, dict) and isinstance(node.get(parts[-1]), dict):
+            _merge_into(node[parts[-1]], _nested(value))
+        else:
+            node[parts[-1]] = _nested(value) if isinstance(value, dict) else value
+    return out
+
+
+def _merge_into(base, changes):
+    for key, value in changes.items():
+        if isinstance(value, dict) and isinstance(base.get(key), dict):
+            _merge_into(base[key], value)
+        else:
+            base[key] = value
+    return base
+
+
+def _preset_updated(self, changes=None, **keywords):
+    """A new preset: this one with some values changed; this one stays as it is.
+
+    Parameters
+    ----------
+    changes : dict, optional
+        Values by dotted key or as nested dicts, e.g. ``{"sea.wind_sea.wind_speed_mps": 12}``
+        or ``{"foam": {"source": "ramp"}}``.
+    **keywords
+        Top-level keys, e.g. ``resolution=128, seed=3``.
+
+    Returns
+    -------
+    Preset
+        The changed preset, validated as a whole (ValueError names the first bad value).
+    """
+    merged = dict(changes or {})
+    merged.update(keywords)
+    return Preset.from_dict(_merge_into(self.to_dict(), _nested(merged)))
+
+
+Preset.__eq__ = _preset_eq
+Preset.__hash__ = None
+Preset.to_dict = _preset_to_dict
+Preset.from_dict = staticmethod(_preset_from_dict)
+Preset.get = _preset_get
+Preset.__getitem__ = _preset_get
+Preset.updated = _preset_updated
+del _preset_eq, _preset_to_dict, _preset_from_dict, _preset_get, _preset_updated

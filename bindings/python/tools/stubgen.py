@@ -106,9 +106,18 @@ def emit_function(lines, obj, name, indent, method):
 def emit_python_method(lines, fn, name, indent):
     """A method the pure-Python package adds: its signature from inspect."""
     sig = inspect.signature(fn)
-    params = []
+    params, starred = [], False
     for p in sig.parameters.values():
-        params.append(p.name + (" = ..." if p.default is not inspect.Parameter.empty else ""))
+        if p.kind == inspect.Parameter.VAR_POSITIONAL:
+            params.append("*" + p.name)
+            starred = True
+        elif p.kind == inspect.Parameter.VAR_KEYWORD:
+            params.append("**" + p.name)
+        else:
+            if p.kind == inspect.Parameter.KEYWORD_ONLY and not starred:
+                params.append("*")
+                starred = True
+            params.append(p.name + (" = ..." if p.default is not inspect.Parameter.empty else ""))
     doc = (fn.__doc__ or "").strip().splitlines()
     lines.append(f"{indent}def {name}({', '.join(params)}) -> Any:")
     if doc:
@@ -138,13 +147,17 @@ def main(parent, out_path):
             lines.append(f"    {obj.__doc__.strip().splitlines()[0]!r}")
         members = 0
         for attr, member in sorted(vars(obj).items()):
-            if attr.startswith("_") and attr not in ("__init__", "__eq__", "__getstate__",
-                                                     "__setstate__"):
+            if attr.startswith("_") and attr not in ("__init__", "__eq__", "__getitem__",
+                                                     "__getstate__", "__setstate__"):
                 continue
             if isinstance(member, staticmethod):
                 fn = member.__func__
                 lines.append("    @staticmethod")
-                emit_function(lines, getattr(fn, "__wrapped__", fn), attr, "    ", False)
+                if type(fn).__name__ == "function" and not hasattr(fn, "__wrapped__"):
+                    emit_python_method(lines, fn, attr, "    ")
+                elif not emit_function(lines, getattr(fn, "__wrapped__", fn), attr, "    ",
+                                       False):
+                    raise SystemExit(f"stubgen: no signature in the docstring of {name}.{attr}")
                 members += 1
             elif isinstance(member, property):
                 ret = "Any"
