@@ -1,6 +1,7 @@
 // The preset format: SimulationConfig ⇄ JSON document (see ocean/preset.hpp).
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -165,8 +166,10 @@ Result<SimulationConfig> from_value(const Json& document) {
   long long resolution = c.resolution, seed = static_cast<long long>(c.seed);
   r.integer("resolution", resolution);
   r.integer("seed", seed);
-  if (resolution < 0 || resolution > 1 << 20) resolution = -1;
-  c.resolution = static_cast<int>(resolution);
+  if (resolution < std::numeric_limits<int>::min() || resolution > std::numeric_limits<int>::max())
+    return invalid_argument("resolution = " + std::to_string(resolution) +
+                            " is out of range: must be a power of two in [16, 2048]");
+  c.resolution = static_cast<int>(resolution);  // validate() checks the range, naming the value
   if (seed < 0)
     return invalid_argument("seed = " + std::to_string(seed) + " is out of range: must be >= 0");
   c.seed = static_cast<std::uint64_t>(seed);
@@ -221,7 +224,10 @@ Result<SimulationConfig> from_value(const Json& document) {
     ObjectReader nr(*noise, "far_noise");
     long long n = c.far_noise.resolution;
     nr.integer("resolution", n);
-    c.far_noise.resolution = n < 0 || n > 1 << 20 ? -1 : static_cast<int>(n);
+    if (n < std::numeric_limits<int>::min() || n > std::numeric_limits<int>::max())
+      return invalid_argument("far_noise.resolution = " + std::to_string(n) +
+                              " is out of range: must be 0 (off) or in [16, 4096]");
+    c.far_noise.resolution = static_cast<int>(n);  // validate() checks the range
     nr.number("size_m", c.far_noise.size_m);
     if (const Json* origin = nr.child("origin_m")) {
       if (!origin->is_array() || origin->size() != 2 || !(*origin)[0].is_number() ||

@@ -62,3 +62,14 @@ def test_dicts_and_keywords_configure_as_set_does():
     assert ocean.Preset.from_dict({"resolution": 32}) == ocean.Preset().set("resolution=32")
     with pytest.raises(ValueError, match="resolution"):
         base.updated(resolution=-3)
+
+
+@pytest.mark.parametrize("assignment, shown", [
+    ("resolution=-3", "resolution = -3 is out of range"),
+    ("resolution=99999999999", "resolution = 99999999999 is out of range"),
+    ("far_noise.resolution=-5", "far_noise.resolution = -5 is out of range"),
+    ("far_noise.resolution=99999999999", "far_noise.resolution = 99999999999 is out of range"),
+])
+def test_a_bad_resolution_is_named_as_given(assignment, shown):
+    with pytest.raises(ValueError, match=shown):
+        ocean.Preset().set(assignment)
