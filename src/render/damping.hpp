@@ -11,6 +11,7 @@
 
 namespace ocean::render {
 
+// render pass 400: DampingPass — the damping of the bands (R.24)
 struct DampingPass : Pass {
   vk::Image image;
   vk::Buffer staging;

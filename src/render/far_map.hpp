@@ -15,6 +15,7 @@
 
 namespace ocean::render {
 
+// render pass 200: FarFieldPass — the far field and its noise map (R.13, R.13b)
 struct FarFieldPass : Pass {
   FarFieldNoise noise;              // fitted to cascade 0 by configure() (R.13)
   vk::Image image;                  // the map and its mips (GENERAL once recorded)

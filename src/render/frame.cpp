@@ -16,7 +16,11 @@ Status check_view(const Renderer::State& st, const View& view) {
   if (Status s = validate_objects(st, view); !s.ok()) return s;
   if (view.debug == DebugView::wireframe && !st.ctx->wireframe)
     return unsupported("wireframe view: the Vulkan device lacks fillModeNonSolid");
-  return {};
+  Status checked;
+  for_each_pass(st, [&](const auto& p) {
+    if (checked.ok()) checked = p.check(st, view);
+  });
+  return checked;
 }
 
 void fill_frame_uniforms(const Renderer::State& st, const View& view, const lod::Mat4& vp,
@@ -205,7 +209,13 @@ Status Renderer::record(VkCommandBuffer cmd, const View& view) {
                {.sky = st.sky, .ocean = view.debug == DebugView::wireframe ? st.wire : st.ocean},
                sky_push, skirt_instance.value(), stats_);
   vkCmdEndRendering(cmd);
-  pass<MotionPass>(st).record(st, cmd, {view, stats_, skirt_instance.value()});
+  const FrameContext frame{view, stats_, skirt_instance.value()};
+  pass<MotionPass>(st).record(st, cmd, frame);
+  Status after;
+  for_each_pass(st, [&](auto& p) {
+    if (after.ok()) after = p.after_scene(st, cmd, frame);
+  });
+  if (!after.ok()) return after;
   finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
                stats_);

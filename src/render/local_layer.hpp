@@ -12,6 +12,7 @@
 
 namespace ocean::render {
 
+// render pass 300: LocalSurfacePass — the local layer (R.19)
 struct LocalSurfacePass : Pass {
   vk::Image image;
   vk::Buffer staging;

@@ -12,6 +12,7 @@
 #include "pipeline_desc.hpp"
 #include "shaders/motion_shared.h"
 #include "spirv.hpp"
+#include "state.hpp"
 
 namespace ocean::render {
 
@@ -124,7 +125,8 @@ Status prepare_motion(Renderer::State& st) {
     vk::destroy_image(*st.ctx, mp.target);
     Result<vk::Image2D> target =
         vk::create_image_2d(*st.ctx, kMotionFormat, st.hdr.width, st.hdr.height,
-                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                VK_IMAGE_USAGE_SAMPLED_BIT);  // read by a later pass
     if (!target.ok()) return target.status();
     mp.target = target.value();
   }

@@ -11,6 +11,7 @@
 
 namespace ocean::render {
 
+// render pass 1100: MotionPass — motion vectors (R.26)
 struct MotionPass : Pass {
   bool enabled = false;
   vk::Image2D target;           // RG16F, NDC motion (now − previous), the renderer's size

@@ -12,6 +12,7 @@
 
 namespace ocean::render {
 
+// render pass 900: ObjectPass — the objects and their reflection (R.20–R.21, R.53)
 struct ObjectPass : Pass {
   struct MeshBuffers {
     vk::Buffer vertices, indices;  // interleaved (position, normal) floats; uint32 indices

@@ -10,6 +10,7 @@
 #include "pipeline_desc.hpp"
 #include "shaders/object_shared.h"
 #include "spirv.hpp"
+#include "state.hpp"
 
 namespace ocean::render {
 

@@ -2,7 +2,9 @@
 // descriptors and resources and is called by the renderer at fixed points of its life and of the
 // recorded frame. Every hook has a do-nothing default; a pass declares only those it needs, and
 // the renderer calls them on the concrete type (no virtual dispatch): passes.hpp lists the passes
-// in frame order, for_each_pass walks that list.
+// in frame order, for_each_pass walks that list. A pass is a header and a source, or one header
+// whose hooks are templates on the state (`template <class State> Status create(State& st)`),
+// instantiated where the renderer calls them, with the state complete (temporal.hpp).
 //
 //   create(st)                  at Renderer::make, after the shared state: pipelines, samplers,
 //                               the 1×1 images that keep the scene set valid
@@ -15,6 +17,11 @@
 //   fill_uniforms(st, view, u)  the pass's part of the frame's FrameUniforms
 //   upload(st, cmd)             before the scene: staged uploads and compute of the frame
 //   record(st, cmd, frame)      its draws, at the pass's point of the frame (frame.cpp)
+//   check(st, view)             before a mono or stereo frame is recorded: the view's fields the
+//                               pass reads, invalid_argument/unsupported naming them
+//   after_scene(st, cmd, frame) after the HDR pass and the motion vectors of a mono frame, before
+//                               the tone map: st.hdr is in COLOR_ATTACHMENT_OPTIMAL with its
+//                               writes done, and is left so (its new writes made available)
 #pragma once
 
 #include <array>
@@ -60,6 +67,8 @@ struct Pass {
   void fill_uniforms(const Renderer::State&, const View&, shader::FrameUniforms&) const {}
   void upload(Renderer::State&, VkCommandBuffer) {}
   void record(Renderer::State&, VkCommandBuffer, const FrameContext&) {}
+  Status check(const Renderer::State&, const View&) const { return {}; }
+  Status after_scene(Renderer::State&, VkCommandBuffer, const FrameContext&) { return {}; }
 };
 
 }  // namespace ocean::render

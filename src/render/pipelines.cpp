@@ -4,6 +4,7 @@
 #include "object_pass.hpp"
 #include "pipeline_desc.hpp"
 #include "spirv.hpp"
+#include "state.hpp"
 
 namespace ocean::render {
 

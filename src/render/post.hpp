@@ -8,6 +8,7 @@
 
 namespace ocean::render {
 
+// render pass 1300: PostPass — the tone map into the sRGB target
 struct PostPass : Pass {
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;

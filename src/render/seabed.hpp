@@ -7,6 +7,7 @@
 
 namespace ocean::render {
 
+// render pass 700: SeabedPass — the seabed's push constants (R.22–R.23)
 struct SeabedPass : Pass {
   // Pushes frame.view.seabed; the ocean pipeline must be bound.
   void record(Renderer::State& st, VkCommandBuffer cmd, const FrameContext& frame);

@@ -13,6 +13,7 @@
 
 namespace ocean::render {
 
+// render pass 100: SkyPass — the sky-view table and the environment map (R.1–R.4, R.17)
 struct SkyPass : Pass {
   vk::Image2D lut;  // the sky-view table (RGBA32F, Sky::kLutWidth × kLutHeight)
   vk::Buffer lut_staging;

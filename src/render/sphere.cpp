@@ -15,6 +15,7 @@
 #include "sphere.hpp"
 #include "sphere_view.hpp"
 #include "spirv.hpp"
+#include "state.hpp"
 
 namespace ocean::render {
 
@@ -140,7 +141,8 @@ Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
   u.sphere.local_from_planet[1].w = static_cast<float>(centre.y);
   u.sphere.local_from_planet[2].w = static_cast<float>(centre.z);
   u.sphere.sun_top = static_cast<float>(view.shading.sun_irradiance);
-  u.sphere.camera_altitude_m = static_cast<float>(std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z) - r);
+  u.sphere.camera_altitude_m =
+      static_cast<float>(std::sqrt(eye.x * eye.x + eye.y * eye.y + eye.z * eye.z) - r);
   // The camera's position over L_c, wrapped to one period in double (R.38).
   const double e[3] = {eye.x, eye.y, eye.z};
   for (int c = 0; c < kMaxCascades; ++c) {

@@ -9,6 +9,7 @@
 
 namespace ocean::render {
 
+// render pass 500: SpherePass — the sea on a sphere (R.30–R.38)
 struct SpherePass : Pass {
   VkPipeline pipeline = VK_NULL_HANDLE;
   vk::Buffer instances;  // host-visible, kMaxSphereInstances

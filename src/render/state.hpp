@@ -20,20 +20,17 @@
 #include <optional>
 #include <vector>
 
+#include "formats.hpp"
 #include "ocean/render.hpp"
 #include "ocean/sphere.hpp"
 #include "passes.hpp"
+#include "pipeline_desc.hpp"
 #include "shaders/render_shared.h"
 #include "shaders/tessellation.h"
 
 namespace ocean::render {
 
-inline constexpr int kMaxCascades = OCEAN_RENDER_MAX_CASCADES;
 inline constexpr auto kSkirtLevel = static_cast<std::uint8_t>(OCEAN_RENDER_SKIRT_LEVEL);
-inline constexpr VkFormat kHdrFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
-inline constexpr VkFormat kSrgbFormat = VK_FORMAT_R8G8B8A8_SRGB;
-inline constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-inline constexpr int kMaxTargetSize = 16384;
 
 struct Renderer::State {
   const vk::Context* ctx = nullptr;
@@ -89,7 +86,7 @@ struct Renderer::State {
   double map_base_normal_length = 1.0;              // SurfaceDescription's, from configure()
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
   std::vector<double> foam_weights;  // SurfaceDescription's (empty: the cascades' foam united)
-  Passes passes;                              // one object per feature (passes.hpp)
+  Passes passes;                     // one object per feature (passes.hpp)
 
   ~State();
   void destroy_targets();
@@ -171,11 +168,6 @@ Status prepare_sphere(Renderer::State& st, const View& view, lod::Mat4& vp,
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd);
 // The same copies from `source`, a buffer in interop::inputs_layout (inputs.cpp).
 void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source);
-
-/// A sampler: linear or nearest, with or without linear mips, repeating or clamped (v clamped
-/// unless repeat_v_too), anisotropic above 1 (descriptors.cpp).
-Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
-                               float anisotropy, bool repeat_v_too = true);
 
 // tessellation.cpp: the tessellated mesh (its pass: tessellation.hpp) and its push range in the
 // scene layout.

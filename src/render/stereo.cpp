@@ -10,6 +10,7 @@
 #include "frame_steps.hpp"
 #include "pipeline_desc.hpp"
 #include "spirv.hpp"
+#include "state.hpp"
 
 namespace ocean::render {
 

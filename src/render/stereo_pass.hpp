@@ -10,6 +10,7 @@
 
 namespace ocean::render {
 
+// render pass 1000: StereoPass — both eyes in one multiview pass (R.25)
 struct StereoPass : Pass {
   vk::Image2D hdr, depth;  // 2 layers each: eye 0 (left), eye 1 (right)
   VkPipeline sky = VK_NULL_HANDLE, ocean = VK_NULL_HANDLE, wire = VK_NULL_HANDLE,

@@ -12,6 +12,7 @@
 
 #include "pipeline_desc.hpp"
 #include "spirv.hpp"
+#include "state.hpp"
 
 namespace ocean::render {
 

@@ -8,6 +8,7 @@
 
 namespace ocean::render {
 
+// render pass 600: TessellationPass — the tessellated mesh (R.40–R.42)
 struct TessellationPass : Pass {
   VkPipeline filled = VK_NULL_HANDLE, lines = VK_NULL_HANDLE;
   vk::Buffer cells;

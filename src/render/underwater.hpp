@@ -9,6 +9,7 @@
 
 namespace ocean::render {
 
+// render pass 800: UnderwaterPass — the view from below the surface (R.50–R.52)
 struct UnderwaterPass : Pass {
   void fill_uniforms(const Renderer::State& st, const View& view, shader::FrameUniforms& u) const;
 };
