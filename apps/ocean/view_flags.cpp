@@ -184,4 +184,16 @@ Status check_mesh_support(const render::View& view, const vk::Context& ctx) {
   return {};
 }
 
+Status check_taa_support(const render::SceneParams& scene, const render::View& view) {
+  const char* why = scene.backend == "vulkan"
+                        ? "--backend vulkan, whose images the renderer samples in place (the "
+                          "motion vectors keep a copy of uploaded frames)"
+                    : view.sphere.enabled ? "--sphere, which draws no motion vectors"
+                    : view.tessellation.mesh == render::MeshMode::tessellation
+                        ? "--mesh tessellation, which draws no motion vectors"
+                        : nullptr;
+  if (why == nullptr) return {};
+  return invalid_argument(std::string("--taa: not with ") + why);
+}
+
 }  // namespace ocean::cli

@@ -50,4 +50,9 @@ Status parse_view_flags(const ViewFlags& flags, const SimulationFlags& sim, int 
 /// tessellation) and the device lacks tessellation shaders; checked before any work is done.
 Status check_mesh_support(const render::View& view, const vk::Context& ctx);
 
+/// invalid_argument naming the flag when temporal anti-aliasing (--taa, R.61) cannot follow the
+/// motion vectors: --backend vulkan (its images are sampled in place, not uploaded), --sphere or
+/// --mesh tessellation (no motion vectors drawn).
+Status check_taa_support(const render::SceneParams& scene, const render::View& view);
+
 }  // namespace ocean::cli

@@ -153,6 +153,21 @@ struct View {
   /// (R.40–R.42), which needs a device with tessellation shaders (`unsupported` from record()
   /// otherwise).
   TessellationParams tessellation;
+  /// Temporal anti-aliasing of record()/draw() (docs/rendering.md R.61): each frame's projection
+  /// moved by a sub-pixel offset of the Halton (2, 3) sequence, and the frame blended into the
+  /// last result, fetched where the motion vectors say each pixel was and clipped to the colours
+  /// of the pixel's neighbourhood; the shading filters over a quarter of the pixel's footprint
+  /// (the 16 jitter positions sample it as a 4 × 4 grid does). Needs
+  /// Renderer::set_motion_vectors(true) and a flat sea of the quadtree (`unsupported` from
+  /// record() with the sphere or the tessellated mesh, which draw no motion vectors); allocates
+  /// two RGBA16F images of the picture's size (8 bytes a pixel each, outside
+  /// kTargetBytesPerPixel) on first use. record_stereo() refuses it (`unsupported`).
+  struct TemporalAntiAliasing {
+    bool enabled = false;
+    /// The new frame's weight in the blend, (0, 1]; the first frames after a start or a resize
+    /// weigh 1/n (their plain mean) until that is smaller.
+    double current_weight = 0.2;
+  } temporal_aa;
 };
 Status validate(const View& view);
 /// invalid_argument naming the field for a latitude outside [−90, 90], a non-finite longitude,

@@ -138,6 +138,8 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
   if (view.sphere.enabled) return unsupported("stereo: not drawn for the sea on a sphere");
   if (view.tessellation.mesh == MeshMode::tessellation)
     return unsupported("stereo: not drawn with the tessellated mesh");
+  if (view.temporal_aa.enabled)
+    return unsupported("stereo: not drawn with temporal anti-aliasing (one view only)");
   if (Status s = create_stereo_pipelines(st); !s.ok()) return s;
   if (Status s = create_stereo_targets(st); !s.ok()) return s;
   if (Status s = prepare(view); !s.ok()) return s;

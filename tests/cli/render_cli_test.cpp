@@ -82,6 +82,34 @@ TEST(RenderCli, SupersampleWritesTheRequestedSize) {
   EXPECT_NEAR(sq / sp, 1.0, 0.02);
 }
 
+// --taa (R.61): a sequence of two frames, the first the mean of 16 jittered draws, each of the
+// requested size, different from the plain picture, of the same mean brightness within 2 %, with
+// the validation layer silent.
+TEST(RenderCli, TaaWritesASequenceOfTheRequestedSize) {
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const fs::path plain = scratch("taa_plain.png"), taa = scratch("taa_%d.png");
+  const ocean_test::CliRun a = ocean_test::run_cli("render --out " + plain.string() + kRenderSmall);
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const ocean_test::CliRun b =
+      ocean_test::run_cli("render --out " + taa.string() + kRenderSmall + " --taa --frames 2");
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  auto p = ocean::io::read_png(plain);
+  ASSERT_TRUE(p.ok());
+  for (const char* name : {"taa_0.png", "taa_1.png"}) {
+    auto q = ocean::io::read_png(scratch(name));
+    ASSERT_TRUE(q.ok()) << name;
+    EXPECT_EQ(q.value().width, 80);
+    EXPECT_EQ(q.value().height, 45);
+    EXPECT_NE(p.value().samples, q.value().samples);
+    double sp = 0.0, sq = 0.0;
+    for (std::size_t i = 0; i < p.value().samples.size(); ++i) {
+      sp += p.value().samples[i];
+      sq += q.value().samples[i];
+    }
+    EXPECT_NEAR(sq / sp, 1.0, 0.02) << name;
+  }
+}
+
 // A preset's far_field_range (docs/rendering.md R.13) is the picture's unless --far-field-range
 // says otherwise: with [0, 1] the whole sea beyond a metre is the far field and the picture
 // changes; the flag with the default range gives back the default picture bit for bit.
@@ -150,6 +178,12 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --supersample 4 --width 8192", "at most 16384 a side");
   ocean_test::expect_usage_error("render --supersample 2 --motion-vectors m.png", "--supersample");
   ocean_test::expect_usage_error("render --supersample 2 --contact-sheet s.png", "--supersample");
+  ocean_test::expect_usage_error("render --taa --supersample 2", "one anti-aliasing");
+  ocean_test::expect_usage_error("render --taa --stereo", "--taa draws one view");
+  ocean_test::expect_usage_error("render --taa --sphere", "--taa: not with --sphere");
+  ocean_test::expect_usage_error("render --taa --mesh tessellation", "--taa: not with --mesh");
+  ocean_test::expect_usage_error("render --taa --backend vulkan", "--taa: not with --backend");
+  ocean_test::expect_usage_error("render --taa --contact-sheet s.png", "no --taa");
   // The far field's range (docs/rendering.md R.13): two finite distances, DMIN below DMAX.
   ocean_test::expect_usage_error("render --far-field-range 2000,1000", "DMIN must be below DMAX");
   ocean_test::expect_usage_error("render --far-field-range 500,500", "DMIN must be below DMAX");

@@ -166,6 +166,25 @@ TEST_F(ViewCli, ScreenshotShowsSkyAboveWater) {
   EXPECT_GT(mean_luma(im, 0, im.height / 5), mean_luma(im, im.height - im.height / 5, im.height));
 }
 
+// --taa (R.61) in the window: the jittered frames blended along the motion vectors, validation
+// on; the screenshot still shows sky above water, of the plain screenshot's mean brightness
+// within 3 %.
+TEST_F(ViewCli, TemporalAntiAliasingRuns) {
+  const std::string flags =
+      "view --frames 4 --width 320 --height 200 --quality low --resolution 64 --validation";
+  const fs::path plain = dir_ / "plain.png", taa = dir_ / "taa.png";
+  const ocean_test::CliRun a = ocean_test::run_cli(flags + " --screenshot " + plain.string());
+  ASSERT_EQ(a.exit_code, 0) << a.err;
+  const ocean_test::CliRun b = ocean_test::run_cli(flags + " --taa --screenshot " + taa.string());
+  ASSERT_EQ(b.exit_code, 0) << b.err;
+  const auto p = ocean::io::read_png(plain), q = ocean::io::read_png(taa);
+  ASSERT_TRUE(p.ok() && q.ok());
+  EXPECT_NE(p.value().samples, q.value().samples);
+  const ocean::io::PngImage& im = q.value();
+  EXPECT_GT(mean_luma(im, 0, im.height / 5), mean_luma(im, im.height - im.height / 5, im.height));
+  EXPECT_NEAR(mean_luma(im, 0, im.height) / mean_luma(p.value(), 0, im.height), 1.0, 0.03);
+}
+
 TEST_F(ViewCli, DebugViewsAndTheVulkanBackendRun) {
   const ocean_test::CliRun r = ocean_test::run_cli(
       "view --frames 2 --width 256 --height 160 --quality low --resolution 64 --cascades 300,70 "
@@ -233,6 +252,8 @@ TEST(ViewCliNoDisplay, BadFlagsAreUsageErrors) {
   ocean_test::expect_usage_error("view --backend opengl", "--backend");
   ocean_test::expect_usage_error("view --camera 0,-2000,0", "--camera");
   ocean_test::expect_usage_error("view --screenshot shot.jpg", "--screenshot");
+  ocean_test::expect_usage_error("view --taa --backend vulkan", "--taa: not with --backend");
+  ocean_test::expect_usage_error("view --taa --sphere", "--taa: not with --sphere");
   ocean_test::expect_usage_error("view --resolution 100", "resolution");
   ocean_test::expect_usage_error("view --shallows reef", "--shallows");
 }

@@ -47,6 +47,7 @@ struct RenderOptions {
   StereoFlags stereo;
   std::string motion_vectors;  // --motion-vectors FILE.png
   std::string supersample = "1";
+  bool taa = false;  // --taa
   bool json = false;
 };
 
@@ -89,7 +90,12 @@ struct Inputs {
   std::vector<ObjectSpec> objects;
   std::optional<double> ipd;  // --stereo: both eyes side by side, this far apart
   int supersample = 1;        // the picture is drawn this many times wider and taller (R.60)
+  bool taa = false;           // temporal anti-aliasing (R.61)
 };
+
+// --taa: the first frame is the mean of this many jittered draws at its time; later frames blend
+// into it with View::TemporalAntiAliasing's default weight.
+constexpr int kTaaStillSamples = 16;
 
 Result<Inputs> parse_inputs(const RenderOptions& o) {
   Inputs in;
@@ -152,6 +158,13 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
                               "factor)");
     in.scene.width = static_cast<int>(drawn_w);
     in.scene.height = static_cast<int>(drawn_h);
+  }
+  in.taa = o.taa;
+  if (in.taa && in.ipd.has_value()) return invalid_argument("--taa draws one view, not --stereo");
+  if (in.taa && in.supersample > 1)
+    return invalid_argument("--taa or --supersample: one anti-aliasing, not both");
+  if (in.taa) {
+    if (Status s = check_taa_support(in.scene, in.view); !s.ok()) return s;
   }
   render::View& v = in.view;
   // The sky: named, or by sea state (a storm is overcast), then the explicit sun flags.
@@ -279,6 +292,7 @@ constexpr const char* kSheetSeas[] = {"calm", "moderate", "storm"};
 int run_contact_sheet(const RenderOptions& o) {
   if (o.supersample != RenderOptions{}.supersample)
     return report(invalid_argument("--contact-sheet draws its tiles once: no --supersample"));
+  if (o.taa) return report(invalid_argument("--contact-sheet draws its tiles once: no --taa"));
   if (Status s = check_output_name("--contact-sheet", o.contact_sheet); !s.ok()) return report(s);
   RenderOptions tile = o;
   if (o.picture.width == ViewFlags{}.width && o.picture.height == ViewFlags{}.height)
@@ -440,6 +454,14 @@ int run_render(const RenderOptions& o) {
     if (new_layer.value()) {
       if (Status s = scene.step(t); !s.ok()) return report(s);
     }
+    if (in.taa && f == 0) {  // the history started from the first frame's jittered draws
+      if (Status s = renderer.set_motion_vectors(true); !s.ok()) return report(s);
+      view.temporal_aa = {.enabled = true, .current_weight = 1.0 / kTaaStillSamples};
+      for (int k = 1; k < kTaaStillSamples; ++k)
+        if (Status s = renderer.draw(view); !s.ok()) return report(s);
+    } else if (in.taa && f == 1) {
+      view.temporal_aa.current_weight = render::View::TemporalAntiAliasing{}.current_weight;
+    }
     const Status drawn =
         in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
     if (!drawn.ok()) return report(drawn);
@@ -557,6 +579,14 @@ Command add_render_command(CLI::App& app) {
   add_option(*command, kSupersample, o->supersample,
              "draw the picture N times wider and taller and average each N x N block in linear "
              "light (anti-aliasing; 1-4, default 1: N² times the drawing work)");
+  command->add_flag("--taa", o->taa,
+                    "temporal anti-aliasing (docs/rendering.md R.61): each frame drawn with a "
+                    "sub-pixel jitter and blended into the last along the motion vectors (weight "
+                    "0.2); the "
+                    "first frame is the mean of " +
+                        std::to_string(kTaaStillSamples) +
+                        " jittered draws at its time (that many times its drawing work). Not "
+                        "with --stereo, --supersample, --sphere or --mesh tessellation");
   command->add_option("--motion-vectors", o->motion_vectors,
                       "also write the last frame's motion vectors (camera and waves, pixels per "
                       "frame) as a PNG: red right, green down, grey still (docs/rendering.md "

@@ -58,6 +58,7 @@ struct ViewOptions {
   bool boat = false;
   std::string shallows = "none";
   bool camera_given = false;  // --camera or --target on the command line
+  bool taa = false;           // --taa
 };
 
 struct ViewInputs {
@@ -66,6 +67,7 @@ struct ViewInputs {
   int quality = 1;
   long long frames = 0;  // 0: until the window closes
   view::Shallows shallows = view::Shallows::none;
+  bool taa_available = false;  // motion vectors can be drawn (uploaded frames, the flat sea)
 };
 
 Result<ViewInputs> parse_inputs(const ViewOptions& o) {
@@ -89,6 +91,9 @@ Result<ViewInputs> parse_inputs(const ViewOptions& o) {
     return invalid_argument("--shallows = '" + excerpt(o.shallows) +
                             "': must be none, lily-pads or lagoon");
   in.shallows = *shallows;
+  const Status taa = check_taa_support(in.scene, in.view);
+  in.taa_available = taa.ok();
+  if (o.taa && !taa.ok()) return taa;
   if (!o.screenshot.empty()) {
     if (Status s = check_output_name("--screenshot", o.screenshot); !s.ok()) return s;
     if (std::filesystem::path(o.screenshot).extension() != ".png")
@@ -208,12 +213,15 @@ int run_view(const ViewOptions& o) {
   panel.boat.on = o.boat;
   panel.boat.centre_m = scene_centre;
   panel.shallows = static_cast<int>(in.shallows);
+  panel.taa = o.taa;
   Result<std::unique_ptr<view::InteractionScene>> interaction_made =
       view::InteractionScene::make(renderer, config);
   if (!interaction_made.ok()) return report(interaction_made.status());
   view::InteractionScene& interaction = *interaction_made.value();
-  view::PanelStats stats{
-      .device = ctx.info.name, .backend = in.scene.backend, .wireframe_available = ctx.wireframe};
+  view::PanelStats stats{.device = ctx.info.name,
+                         .backend = in.scene.backend,
+                         .wireframe_available = ctx.wireframe,
+                         .taa_available = in.taa_available};
   view::FrameTimes times;
   MouseDrag drag;
   KeyEdge f1{GLFW_KEY_F1}, space{GLFW_KEY_SPACE};
@@ -225,6 +233,12 @@ int run_view(const ViewOptions& o) {
   if (Status s = interaction.set_boat(panel.boat, t, scene.simulator()); !s.ok()) return report(s);
   if (Status s = interaction.set_shallows(in.shallows, scene_centre, config, renderer); !s.ok())
     return report(s);
+  // Temporal anti-aliasing (R.61) follows the motion vectors, drawn while it is on.
+  const auto set_taa = [&](bool on) {
+    in.view.temporal_aa.enabled = on;
+    return renderer.set_motion_vectors(on);
+  };
+  if (Status s = set_taa(panel.taa); !s.ok()) return report(s);
   long long frame = 0;
   auto last = std::chrono::steady_clock::now();
 
@@ -280,6 +294,9 @@ int run_view(const ViewOptions& o) {
       }
     }
 
+    if (actions.taa_changed) {
+      if (Status s = set_taa(panel.taa); !s.ok()) return report(s);
+    }
     if (actions.boat_changed) {
       if (Status s = interaction.set_boat(panel.boat, t, scene.simulator()); !s.ok())
         return report(s);
@@ -361,6 +378,10 @@ Command add_view_command(CLI::App& app) {
                       "none, lily-pads (a damping mask) or lagoon (a bathymetry), about the "
                       "--target point; default none. With --boat or --shallows and no --camera "
                       "or --target the view starts framed on them, looking down 25 degrees");
+  command->add_flag("--taa", o->taa,
+                    "start with temporal anti-aliasing (docs/rendering.md R.61; panel: View): "
+                    "each frame jittered and blended into the last along the motion vectors. Not "
+                    "with --backend vulkan, --sphere or --mesh tessellation");
   return {command, [o, command] {
             o->camera_given = command->count("--camera") + command->count("--target") > 0;
             return run_view(*o);

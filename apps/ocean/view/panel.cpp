@@ -149,6 +149,9 @@ void view_section(PanelState& state, render::View& view, const PanelStats& stats
   ImGui::RadioButton("wireframe", &mode, static_cast<int>(render::DebugView::wireframe));
   ImGui::EndDisabled();
   view.debug = static_cast<render::DebugView>(mode);
+  ImGui::BeginDisabled(!stats.taa_available);
+  if (ImGui::Checkbox("temporal anti-aliasing", &state.taa)) actions.taa_changed = true;
+  ImGui::EndDisabled();
   slider("time scale", state.time_scale, 0.0, 10.0, "%.2fx");
   ImGui::Checkbox("paused (Space)", &state.paused);
   ImGui::SameLine();

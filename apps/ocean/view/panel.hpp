@@ -24,6 +24,7 @@ struct PanelState {
   std::string error;  ///< the last failed reconfiguration, shown in the panel
   BoatControls boat;  ///< the circling boat and its wake
   int shallows = 0;   ///< Shallows index
+  bool taa = false;   ///< temporal anti-aliasing (View::temporal_aa)
 };
 
 /// What the panel shows but does not edit.
@@ -36,6 +37,8 @@ struct PanelStats {
   render::RenderStats render;
   lod::Vec3 camera;
   bool wireframe_available = false;  ///< the device has fillModeNonSolid
+  /// Temporal anti-aliasing can be drawn: motion vectors of uploaded frames on the flat sea.
+  bool taa_available = false;
 };
 
 struct PanelActions {
@@ -44,6 +47,7 @@ struct PanelActions {
   bool reset_camera = false;      ///< back to the --camera/--target pose
   bool boat_changed = false;      ///< state.boat was edited: make the wake's layer again
   bool shallows_changed = false;  ///< state.shallows is a new scene
+  bool taa_changed = false;       ///< state.taa was switched
   bool quit = false;
 };
 

@@ -63,7 +63,7 @@ void main() {
   // The mips carry each cascade's mean normal over the pixel and, in the smoothness, the slope
   // variance the averaging removed (Toksvig 2005): every cascade is used at every distance and
   // the filtering alone decides how much of it is detail and how much roughness (R.5).
-  vec2 dx = dFdx(world_xz), dy = dFdy(world_xz);
+  vec2 dx = dFdx(world_xz) * u.footprint_scale, dy = dFdy(world_xz) * u.footprint_scale;
   bool below = seen_from_below(world_pos);  // the camera under this surface (R.50)
   float footprint = max(length(dx), length(dy));
   float ratio = far_ratio_at(world_xz);
@@ -76,7 +76,11 @@ void main() {
     vec2 mixing = preserving_weights(hex);  // (plain, hex-tiled)
     Shade plain = Shade(vec2(0.0), 0.0, 0.0), tiled = Shade(vec2(0.0), 0.0, 0.0);
     // Sampled in uniform control flow (implicit derivatives), used where the ratio is below 1.
-    plain = shade_of(texture(normal_map, vec3(uv, float(c))));
+    // With temporal anti-aliasing the mips of a quarter of the footprint (R.61).
+    if (u.footprint_scale == 1.0)
+      plain = shade_of(texture(normal_map, vec3(uv, float(c))));
+    else
+      plain = shade_of(texture(normal_map, vec3(uv, float(c)), log2(u.footprint_scale)));
     float taps_sum = 0.0;
     if (hex > 0.0) {
       HexTaps taps = hex_taps(uv, c);
@@ -159,7 +163,7 @@ void main() {
   // pixels (fwidth) and within the pixel, from the slope variance the filtering removed (a box
   // of width √12·σ holds the spread σ = sin θ·σ_slope).
   float cos_v = dot(V, N_up);
-  float cos_width = fwidth(cos_v) + 3.46 * sqrt(max(1.0 - cos_v * cos_v, 0.0)) *
+  float cos_width = fwidth(cos_v) * u.footprint_scale + 3.46 * sqrt(max(1.0 - cos_v * cos_v, 0.0)) *
                                         sqrt(max(variance - alpha0_sq, 0.0));
   // Normals that face away from the viewer (grazing views of steep waves) are bent back.
   float n_dot_v = dot(N, V);

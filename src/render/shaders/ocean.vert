@@ -44,7 +44,8 @@ void main() {
 #ifdef OCEAN_MOTION
   // The same surface point (the label xz) a frame ago: its displacement then, the camera then.
   vec3 previous = ocean_displacement_from(previous_map, xz, spacing);
-  clip_now = gl_Position;
+  clip_now = gl_Position;  // without the sub-pixel jitter (R.61): the motion of the surface
+  clip_now.xy -= vec2(u.jitter_ndc_x, u.jitter_ndc_y) * gl_Position.w;
   clip_previous = motion.previous_view_proj *
                   vec4(xz.x + previous.x, previous.y - curvature_drop(xz), xz.y + previous.z, 1.0);
 #endif

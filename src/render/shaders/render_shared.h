@@ -183,7 +183,10 @@ struct FrameUniforms {
   vec3 camera_pos_m;
   float fov_y_rad;  // vertical field of view
   vec3 sun_dir;     // unit vector towards the sun
-  float sun_pad;
+  // The share of the pixel's footprint (its screen derivatives) that the shading filters over:
+  // 1, or 1/4 with temporal anti-aliasing, whose 16 jittered frames sample the pixel as a
+  // 4 × 4 grid does (R.61).
+  float footprint_scale;
   vec3 sun_ground;  // sun irradiance at sea level on a plane facing the sun, RGB
   float sun_ground_pad;
   vec3 sky_ambient;  // sky irradiance on a horizontal plane, RGB
@@ -205,7 +208,9 @@ struct FrameUniforms {
   // 1: the cascades' foam is each the sea's breaking probability (FoamSource::breaking), mixed
   // by foam_weights; 0: each cascade's own ramp, united (R.11).
   float foam_weighted;
-  float hs_pad1, hs_pad2;
+  // The projection's sub-pixel offset this frame, NDC (temporal anti-aliasing, R.61; 0 without):
+  // view_proj holds it, the motion vectors (R.26) leave it out.
+  float jitter_ndc_x, jitter_ndc_y;
   CascadeUniforms cascades[OCEAN_RENDER_MAX_CASCADES];
   FarFieldUniforms far_field;
   PlanetUniforms planet;

@@ -49,7 +49,7 @@ vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N) {
   t = max(P0.y + depth, 0.0) / max(-T.y, 1e-4);
   vec3 P = P0 + t * T;
   // Derivatives in uniform control flow, before any pixel leaves.
-  vec2 footprint = max(abs(dFdx(P.xz)), abs(dFdy(P.xz)));
+  vec2 footprint = max(abs(dFdx(P.xz)), abs(dFdy(P.xz))) * u.footprint_scale;
   if (seabed.absorption_enabled.a < 0.5 || T.y > -1e-4 || depth >= OCEAN_RENDER_DEEP_M)
     return body;
   vec3 a = seabed.absorption_enabled.rgb;

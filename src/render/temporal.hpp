@@ -1,0 +1,294 @@
+// Temporal anti-aliasing (src/render, private; View::temporal_aa; docs/rendering.md R.61), a pass
+// written whole in this header (pass.hpp): its hooks are templates on the renderer's state,
+// instantiated where the renderer calls them.
+//
+// Each mono frame's projection is moved by a sub-pixel offset of the Halton (2, 3) sequence
+// (Halton 1964), so that 16 successive frames sample each pixel at 16 well-spread points. After
+// the HDR pass and the motion vectors (R.26), shaders/temporal.frag blends the frame into the
+// history — the last result, fetched where the pixel's surface point was a frame ago and clipped
+// to the colour box of the frame's 3 × 3 neighbourhood (Salvi 2016, variance clipping) in Karis's
+// (2014) luminance-weighted space — and the result, kept for the next frame, replaces the HDR
+// image before the tone map.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+#include "motion_pass.hpp"
+#include "pass.hpp"
+#include "pipeline_desc.hpp"
+#include "spirv.hpp"
+
+OCEAN_RENDER_SPIRV(temporal_frag)
+
+namespace ocean::render {
+
+// The radical inverse of i in `base` (Halton 1964): 1 → ½, 2 → ¼, 3 → ¾ … in base 2.
+inline double radical_inverse(int i, int base) {
+  double f = 1.0, r = 0.0;
+  for (; i > 0; i /= base) {
+    f /= base;
+    r += f * (i % base);
+  }
+  return r;
+}
+
+// render pass 1200: TemporalPass — temporal anti-aliasing of the HDR image (R.61)
+struct TemporalPass : Pass {
+  static constexpr int kJitterPositions = 16;  // the Halton points before the sequence repeats
+  // The colour box's half-width in standard deviations of the frame's 3 × 3 neighbourhood: one
+  // (Salvi's) clips a still's 16-draw mean to 0.5–0.6 of the plain picture's error, two to 0.3
+  // (tests/render/supersample_render_test.cpp).
+  static constexpr float kClipSigmas = 2.0f;
+  vk::Image2D history[2];  // RGBA16F, the picture's size, written in turn
+  VkImageLayout history_layout[2] = {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_UNDEFINED};
+  int written = 0;       // the history image the last frame wrote
+  int frames = 0;        // frames blended since the history was started (0: none)
+  int jitter_index = 0;  // the next frame's Halton point, 0 … kJitterPositions − 1
+  // The images each set was last written with (set i reads history[1 − i]).
+  VkImageView set_hdr[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+  VkImageView set_motion[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+  VkSampler history_sampler = VK_NULL_HANDLE;  // bilinear, clamped to the edge
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VkDescriptorSet sets[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+
+  // The frame's sub-pixel offset, pixels, in [−½, ½)².
+  std::array<double, 2> jitter_px() const {
+    return {radical_inverse(jitter_index + 1, 2) - 0.5, radical_inverse(jitter_index + 1, 3) - 0.5};
+  }
+
+  template <class State>
+  Status check(const State& st, const View& view) const {
+    const View::TemporalAntiAliasing& t = view.temporal_aa;
+    if (!t.enabled) return {};
+    if (!(t.current_weight > 0.0 && t.current_weight <= 1.0))
+      return invalid_argument("temporal_aa.current_weight: must be in (0, 1]");
+    if (view.sphere.enabled || view.tessellation.mesh == MeshMode::tessellation)
+      return unsupported(std::string("temporal anti-aliasing: not drawn for ") +
+                         (view.sphere.enabled ? "the sea on a sphere" : "the tessellated mesh") +
+                         " (it draws no motion vectors)");
+    if (!std::get<MotionPass>(st.passes).enabled)
+      return invalid_argument(
+          "temporal anti-aliasing: needs motion vectors (Renderer::set_motion_vectors(true))");
+    return {};
+  }
+
+  template <class State>
+  Status create(State& st) {
+    const vk::Context& ctx = *st.ctx;
+    Result<VkSampler> sampler = make_sampler(ctx, true, false, false, 1.0f);
+    if (!sampler.ok()) return sampler.status();
+    history_sampler = sampler.value();
+    std::array<VkDescriptorSetLayoutBinding, 3> bindings{};
+    for (std::uint32_t b = 0; b < bindings.size(); ++b)
+      bindings[b] = {b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
+                     nullptr};
+    const VkDescriptorSetLayoutCreateInfo set_info{
+        .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+        .bindingCount = static_cast<std::uint32_t>(bindings.size()),
+        .pBindings = bindings.data()};
+    if (Status s =
+            vk::check(vkCreateDescriptorSetLayout(ctx.device, &set_info, nullptr, &set_layout),
+                      "vkCreateDescriptorSetLayout");
+        !s.ok())
+      return s;
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6};
+    const VkDescriptorPoolCreateInfo pool_info{
+        .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
+        .maxSets = 2,
+        .poolSizeCount = 1,
+        .pPoolSizes = &size};
+    if (Status s = vk::check(vkCreateDescriptorPool(ctx.device, &pool_info, nullptr, &pool),
+                             "vkCreateDescriptorPool");
+        !s.ok())
+      return s;
+    const VkDescriptorSetLayout layouts[2] = {set_layout, set_layout};
+    const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
+                                            .descriptorPool = pool,
+                                            .descriptorSetCount = 2,
+                                            .pSetLayouts = layouts};
+    if (Status s = vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, sets),
+                             "vkAllocateDescriptorSets");
+        !s.ok())
+      return s;
+    const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, 2 * sizeof(float)};
+    const VkPipelineLayoutCreateInfo layout_info{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+        .setLayoutCount = 1,
+        .pSetLayouts = &set_layout,
+        .pushConstantRangeCount = 1,
+        .pPushConstantRanges = &push};
+    if (Status s = vk::check(vkCreatePipelineLayout(ctx.device, &layout_info, nullptr, &layout),
+                             "vkCreatePipelineLayout");
+        !s.ok())
+      return s;
+    Result<VkShaderModule> vert = shader_module(st, spirv::sky_vert());  // fullscreen triangle
+    if (!vert.ok()) return vert.status();
+    Result<VkShaderModule> frag = shader_module(st, spirv::temporal_frag());
+    if (!frag.ok()) return frag.status();
+    Result<VkPipeline> made = make_pipeline(ctx, {.vert = vert.value(),
+                                                  .frag = frag.value(),
+                                                  .layout = layout,
+                                                  .colour = kHdrFormat,
+                                                  .depth = false,
+                                                  .depth_test = false});
+    if (!made.ok()) return made.status();
+    pipeline = made.value();
+    return {};
+  }
+
+  template <class State>
+  void release_targets(State& st) {
+    for (vk::Image2D& h : history) vk::destroy_image(*st.ctx, h);
+    history_layout[0] = history_layout[1] = VK_IMAGE_LAYOUT_UNDEFINED;
+    set_hdr[0] = set_hdr[1] = set_motion[0] = set_motion[1] = VK_NULL_HANDLE;
+    frames = 0;
+  }
+
+  template <class State>
+  void destroy(State& st) {
+    release_targets(st);
+    const VkDevice d = st.ctx->device;
+    if (pipeline != VK_NULL_HANDLE) vkDestroyPipeline(d, pipeline, nullptr);
+    if (layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(d, layout, nullptr);
+    if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(d, pool, nullptr);
+    if (set_layout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, set_layout, nullptr);
+    if (history_sampler != VK_NULL_HANDLE) vkDestroySampler(d, history_sampler, nullptr);
+  }
+
+  // The jitter: clip x and y move by the offset's NDC share times w, row 3 of the matrix
+  // (column-major) added to rows 0 and 1. The motion vectors subtract it again (ocean.vert), so
+  // that a still camera's are 0 and the history is read at pixel centres, not resampled.
+  template <class State>
+  void fill_uniforms(const State& st, const View& view, shader::FrameUniforms& u) const {
+    u.footprint_scale = 1.0f;
+    if (!view.temporal_aa.enabled) return;
+    const std::array<double, 2> j = jitter_px();
+    const auto dx = static_cast<float>(2.0 * j[0] / st.hdr.width);
+    const auto dy = static_cast<float>(2.0 * j[1] / st.hdr.height);
+    for (int c = 0; c < 4; ++c) {
+      u.view_proj.m[c * 4 + 0] += dx * u.view_proj.m[c * 4 + 3];
+      u.view_proj.m[c * 4 + 1] += dy * u.view_proj.m[c * 4 + 3];
+    }
+    u.jitter_ndc_x = dx;
+    u.jitter_ndc_y = dy;
+    u.footprint_scale = static_cast<float>(1.0 / std::sqrt(double{kJitterPositions}));
+  }
+
+  template <class State>
+  Status after_scene(State& st, VkCommandBuffer cmd, const FrameContext& frame) {
+    if (!frame.view.temporal_aa.enabled) {
+      frames = 0;
+      return {};
+    }
+    const std::uint32_t w = st.hdr.width, h = st.hdr.height;
+    for (vk::Image2D& image : history) {  // made on first use and after a resize
+      if (image.image != VK_NULL_HANDLE && image.width == w && image.height == h) continue;
+      release_targets(st);
+      for (vk::Image2D& made : history) {
+        Result<vk::Image2D> r =
+            vk::create_image_2d(*st.ctx, kHdrFormat, w, h,
+                                VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                    VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+        if (!r.ok()) return r.status();
+        made = r.value();
+      }
+      break;
+    }
+    const MotionPass& motion = std::get<MotionPass>(st.passes);
+    const int now = 1 - written, before = written;
+    if (set_hdr[now] != st.hdr.view || set_motion[now] != motion.target.view) {
+      const VkDescriptorImageInfo images[3] = {
+          {st.hdr_sampler, st.hdr.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+          {history_sampler, history[before].view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL},
+          {st.hdr_sampler, motion.target.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL}};
+      VkWriteDescriptorSet writes[3];
+      for (std::uint32_t b = 0; b < 3; ++b)
+        writes[b] = {.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                     .dstSet = sets[now],
+                     .dstBinding = b,
+                     .descriptorCount = 1,
+                     .descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                     .pImageInfo = &images[b]};
+      vkUpdateDescriptorSets(st.ctx->device, 3, writes, 0, nullptr);
+      set_hdr[now] = st.hdr.view;
+      set_motion[now] = motion.target.view;
+    }
+    // The frame, its motion and the last result become shader inputs; the new result a target.
+    vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                      VK_ACCESS_SHADER_READ_BIT);
+    vk::image_barrier(cmd, motion.target.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    vk::image_barrier(cmd, history[before].image, history_layout[before],
+                      VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                      VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
+    vk::image_barrier(cmd, history[now].image, VK_IMAGE_LAYOUT_UNDEFINED,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    const VkRenderingAttachmentInfo out{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                        .imageView = history[now].view,
+                                        .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                        .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                                        .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+    const VkRenderingInfo resolve{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                  .renderArea = {{0, 0}, {w, h}},
+                                  .layerCount = 1,
+                                  .colorAttachmentCount = 1,
+                                  .pColorAttachments = &out};
+    vkCmdBeginRendering(cmd, &resolve);
+    const VkViewport straight{0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {w, h}};
+    vkCmdSetViewport(cmd, 0, 1, &straight);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &sets[now], 0,
+                            nullptr);
+    // The first frames are their plain mean; then the configured weight.
+    const float push[2] = {static_cast<float>(std::max(frame.view.temporal_aa.current_weight,
+                                                       1.0 / static_cast<double>(frames + 1))),
+                           kClipSigmas};
+    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push), push);
+    vkCmdDraw(cmd, 3, 1, 0, 0);
+    ++frame.stats.draw_calls;
+    vkCmdEndRendering(cmd);
+    // The result into the HDR image, which goes on as the HDR pass left it; the motion back to
+    // where read_motion() copies it from.
+    vk::image_barrier(cmd, history[now].image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                      VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_READ_BIT);
+    vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                      0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    const VkImageCopy region{.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                             .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                             .extent = {w, h, 1}};
+    vkCmdCopyImage(cmd, history[now].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, st.hdr.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    vk::image_barrier(cmd, motion.target.image, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
+                      VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
+                      0, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+    history_layout[now] = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
+    history_layout[before] = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    written = now;
+    ++frames;
+    jitter_index = (jitter_index + 1) % kJitterPositions;
+    return {};
+  }
+};
+
+}  // namespace ocean::render
