@@ -78,6 +78,49 @@ OCEAN_API const char* ocean_last_error(void);
 /** The status's name, e.g. "invalid_argument" (static storage; "unknown" for other values). */
 OCEAN_API const char* ocean_status_name(ocean_status status);
 
+/* ---- hooks: where messages and memory go -------------------------------------------------- */
+
+typedef enum ocean_log_level {
+  OCEAN_LOG_ERROR = 0,                  /**< a call failed: the text of ocean_last_error */
+  OCEAN_LOG_WARNING = 1,                /**< something the caller may want to change */
+  OCEAN_LOG_INFO = 2,                   /**< what a simulator was made with */
+  OCEAN_LOG_LEVEL_MAX_ENUM = 0x7FFFFFFF /**< not a level: keeps the enum 32 bits wide */
+} ocean_log_level;
+
+/** Receives the library's messages: one line, no newline, valid during the call only. Called on
+ *  the thread of the call that has something to say, so it must be thread-safe where the
+ *  library is used from several threads; it must not call back into the library. */
+typedef void (*ocean_log_fn)(void* user_data, ocean_log_level level, const char* message);
+
+/** Sends every message to `log` (NULL: none, the default): each failed call's error (ERROR,
+ *  also in ocean_last_error) and, for each simulator made, its backend, cascades, resolution
+ *  and threads (INFO). Process-wide; may be called at any time, from any thread (a message being
+ *  delivered goes to the callback it started with). */
+OCEAN_API void ocean_set_log_callback(ocean_log_fn log, void* user_data);
+
+/** An engine's allocator for the simulation's large arrays: each cascade's spectrum state, FFT
+ *  planes and frame outputs (ocean/memory.hpp; the memory that grows with resolution and
+ *  cascades). The small bookkeeping stays on the C++ heap.
+ *
+ *  allocate(user_data, size, alignment) returns `size` bytes aligned to `alignment` (a power of
+ *  two: 64, or 2 MiB for arrays of 1 MiB and up, whose size is then a multiple of 2 MiB), or NULL
+ *  when it has none: the call that needed it fails with OCEAN_OUT_OF_MEMORY. deallocate(user_data,
+ *  pointer, size, alignment) takes back a block with the size and alignment it was made with.
+ *  Both may be called on any thread the simulator runs on. */
+typedef struct ocean_allocator {
+  size_t struct_size; /**< set by the caller: sizeof(ocean_allocator) */
+  void* user_data;    /**< passed as the first argument of both functions */
+  void* (*allocate)(void* user_data, size_t size, size_t alignment);
+  void (*deallocate)(void* user_data, void* pointer, size_t size, size_t alignment);
+} ocean_allocator;
+
+/** Makes the large arrays of every simulator created from now on with `allocator` (copied;
+ *  user_data must stay valid while any of them lives), or with the library's own again (NULL).
+ *  Only while no array exists: OCEAN_INVALID_ARGUMENT while any simulator (or anything else
+ *  holding such arrays in the process) lives, since each array goes back to the allocator that
+ *  made it; also for a struct_size too small or a missing function. Process-wide. */
+OCEAN_API ocean_status ocean_set_allocator(const ocean_allocator* allocator);
+
 /* ---- presets: a configuration assembled in layers ----------------------------------------- */
 
 /** A simulation configuration (defaults ← presets ← key=value overrides), always valid. */

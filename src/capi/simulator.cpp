@@ -157,6 +157,7 @@ Status simulator_with_options(const ocean_config& config, const ocean_simulator_
   } else {
     runner = std::shared_ptr<TaskRunner>(make_tbb_runner(o.threads));
   }
+  const int threads = runner->concurrency();
   SimulationConfig c = config.config;
   c.outputs = {.normal = (o.outputs & OCEAN_OUTPUT_NORMAL) != 0,
                .jacobian = (o.outputs & OCEAN_OUTPUT_JACOBIAN) != 0,
@@ -165,6 +166,7 @@ Status simulator_with_options(const ocean_config& config, const ocean_simulator_
   Result<std::unique_ptr<Simulator>> sim = make_simulator(c, o.backend, std::move(runner));
   if (!sim.ok()) return sim.status();
   out = new ocean_simulator{std::move(sim).value()};
+  log_created(*out->simulator, threads);
   return {};
 }
 
@@ -186,6 +188,7 @@ OCEAN_API ocean_status ocean_simulator_create(const ocean_config* config, const 
         ocean::make_simulator(config->config, backend);
     if (!sim.ok()) return sim.status();
     *out = new ocean_simulator{std::move(sim).value()};
+    log_created(*(*out)->simulator, default_threads());
     return {};
   });
 }

@@ -34,6 +34,7 @@ ocean_status fail(ocean_status status, std::string_view message, std::string_vie
   } catch (...) {
     t_fallback = "out of memory";
   }
+  log_message(OCEAN_LOG_ERROR, t_fallback != nullptr ? t_fallback : t_message.c_str());
   return status;
 }
 

@@ -1,7 +1,8 @@
 /* The C ABI (include/ocean/ocean.h) used from C99: the heights, normals, velocities and spectrum
  * of the C++ API's reference scenario reproduced exactly (the surface queries on a job system
  * written here, which must be called), exact identities of the field views, the layout of every
- * field, the preset round trip, and every error path (a status and a one-line message).
+ * field, the preset round trip, every error path (a status and a one-line message), and the
+ * log and allocation hooks (the reference reproduced on the host's memory, every block back).
  *
  * Usage: capi_test REFERENCE.txt TMPDIR (REFERENCE.txt from capi_reference). */
 #include <math.h>
@@ -544,6 +545,104 @@ static void test_errors(const char* tmpdir) {
   ERROR(ocean_spectrum_evaluate(NULL, &omega, 1, &s), OCEAN_INVALID_ARGUMENT, "params is NULL");
 }
 
+/* The log hook's record: the messages of each level, the last one's text. */
+struct log_record {
+  int errors, infos;
+  char last[512];
+};
+static void record_log(void* user_data, ocean_log_level level, const char* message) {
+  struct log_record* r = (struct log_record*)user_data;
+  if (level == OCEAN_LOG_ERROR) ++r->errors;
+  if (level == OCEAN_LOG_INFO) ++r->infos;
+  strncpy(r->last, message, sizeof r->last - 1);
+  r->last[sizeof r->last - 1] = '\0';
+}
+
+/* A host allocator that counts: blocks from malloc, aligned by hand (C99 has no aligned
+ * allocation), the original pointer kept in front of the block. */
+struct counting_allocator {
+  size_t allocations, deallocations, live_bytes, misaligned, wrong_size;
+  int refuse; /* return NULL: out of memory */
+};
+static void* counting_allocate(void* user_data, size_t size, size_t alignment) {
+  struct counting_allocator* c = (struct counting_allocator*)user_data;
+  unsigned char* raw;
+  size_t address;
+  if (c->refuse) return NULL;
+  raw = (unsigned char*)malloc(size + alignment + 2 * sizeof(size_t) + sizeof(void*));
+  if (raw == NULL) return NULL;
+  address = ((size_t)(raw + sizeof(void*) + 2 * sizeof(size_t)) + alignment - 1) & ~(alignment - 1);
+  ((void**)address)[-1] = raw;
+  ((size_t*)((void**)address - 1))[-1] = size;
+  ++c->allocations;
+  c->live_bytes += size;
+  if ((alignment & (alignment - 1)) != 0 || (alignment != 64 && alignment != (2u << 20)))
+    ++c->misaligned;
+  return (void*)address;
+}
+static void counting_deallocate(void* user_data, void* pointer, size_t size, size_t alignment) {
+  struct counting_allocator* c = (struct counting_allocator*)user_data;
+  void** slot = (void**)pointer - 1;
+  if (((size_t*)slot)[-1] != size) ++c->wrong_size;
+  if (((size_t)pointer & (alignment - 1)) != 0) ++c->misaligned;
+  ++c->deallocations;
+  c->live_bytes -= size;
+  free(*slot);
+}
+
+/* The hooks: every failed call's message to the log, a simulator's description on creation; the
+ * reference's heights reproduced exactly on the host's memory, every block given back with its
+ * size; no change of allocator while a simulator lives; a host without memory is
+ * OCEAN_OUT_OF_MEMORY with nothing leaked. */
+static void test_hooks(const struct reference* r) {
+  struct log_record log;
+  struct counting_allocator counts;
+  ocean_allocator allocator;
+  ocean_config* config = reference_config(r);
+  ocean_simulator* sim = NULL;
+  double heights[MAX_POINTS];
+  size_t i;
+  memset(&log, 0, sizeof log);
+  memset(&counts, 0, sizeof counts);
+  ocean_set_log_callback(record_log, &log);
+  ERROR(ocean_config_set(config, "nokey=1"), OCEAN_INVALID_ARGUMENT, "nokey: unknown key");
+  CHECK(log.errors == 1 && strcmp(log.last, ocean_last_error()) == 0);
+
+  allocator.struct_size = sizeof allocator;
+  allocator.user_data = &counts;
+  allocator.allocate = counting_allocate;
+  allocator.deallocate = counting_deallocate;
+  OK(ocean_set_allocator(&allocator));
+  OK(ocean_simulator_create(config, "cpu", &sim));
+  CHECK(log.infos == 1 && strstr(log.last, "simulator: cpu backend, ") != NULL &&
+        strstr(log.last, " thread") != NULL);
+  CHECK(counts.allocations > 0 && counts.live_bytes > 0);
+  ERROR(ocean_set_allocator(NULL), OCEAN_INVALID_ARGUMENT, "large arrays are live");
+  OK(ocean_simulator_step(sim, r->time_s));
+  OK(ocean_simulator_heights(sim, r->x, r->z, r->points, heights));
+  for (i = 0; i < r->points; ++i) CHECK(heights[i] == r->h[i]);
+  ocean_simulator_destroy(sim);
+  CHECK(counts.deallocations == counts.allocations && counts.live_bytes == 0);
+  CHECK(counts.misaligned == 0 && counts.wrong_size == 0);
+
+  counts.refuse = 1;
+  sim = NULL;
+  ERROR(ocean_simulator_create(config, "cpu", &sim), OCEAN_OUT_OF_MEMORY, "out of memory");
+  CHECK(sim == NULL && counts.deallocations == counts.allocations);
+  OK(ocean_set_allocator(NULL));
+
+  allocator.struct_size = 4;
+  ERROR(ocean_set_allocator(&allocator), OCEAN_INVALID_ARGUMENT, "struct_size = 4");
+  allocator.struct_size = sizeof allocator;
+  allocator.deallocate = NULL;
+  ERROR(ocean_set_allocator(&allocator), OCEAN_INVALID_ARGUMENT, "allocator->deallocate is NULL");
+  CHECK(log.errors == 5);
+  ocean_set_log_callback(NULL, NULL);
+  ERROR(ocean_set_allocator(&allocator), OCEAN_INVALID_ARGUMENT, "deallocate is NULL");
+  CHECK(log.errors == 5); /* silent again */
+  ocean_config_destroy(config);
+}
+
 int main(int argc, char** argv) {
   struct reference r;
   if (argc != 3 || !read_reference(argv[1], &r)) {
@@ -560,6 +659,7 @@ int main(int argc, char** argv) {
   test_errors(argv[2]);
   test_options(&r);
   test_option_errors();
+  test_hooks(&r);
   if (failures != 0) fprintf(stderr, "capi_test: %d check(s) failed\n", failures);
   return failures == 0 ? 0 : 1;
 }
