@@ -34,4 +34,40 @@ Result<VkPipeline> make_pipeline(const vk::Context& ctx, const PipelineDesc& d);
 Result<VkSampler> make_sampler(const vk::Context& ctx, bool linear, bool mips, bool repeat,
                                float anisotropy, bool repeat_v_too = true);
 
+// The Vulkan objects of a full-screen pass (pipelines.cpp): a set layout of combined image
+// samplers read by the fragment shader, a pool of its own for the pass's sets, a pipeline layout
+// with fragment push constants, and the pipeline: the sky's full-screen triangle
+// (shaders/sky.vert) and the pass's fragment shader into one colour target, no depth.
+struct FullscreenObjects {
+  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+};
+struct FullscreenDesc {
+  std::span<const std::uint32_t> frag;      // the fragment shader's SPIR-V
+  VkFormat colour = kHdrFormat;             // the target's format
+  std::span<const std::uint32_t> samplers;  // the combined image samplers' binding numbers
+  std::uint32_t push_bytes = 0;             // fragment push constants
+};
+// Makes the objects, and sets.size() sets of the layout into `sets`.
+Status make_fullscreen(Renderer::State& st, const FullscreenDesc& d, FullscreenObjects& out,
+                       std::span<VkDescriptorSet> sets);
+// Destroys what make_fullscreen made (the sets go with the pool); null handles are skipped.
+void destroy_fullscreen(VkDevice device, FullscreenObjects& objects);
+
+// A full-screen pass: `pipeline` (the sky's full-screen triangle, one set, fragment push
+// constants) drawn once into `target`, width × height, COLOR_ATTACHMENT_OPTIMAL, its old contents
+// not kept (pipelines.cpp).
+struct FullscreenDraw {
+  VkImageView target = VK_NULL_HANDLE;
+  std::uint32_t width = 0, height = 0;
+  VkPipeline pipeline = VK_NULL_HANDLE;
+  VkPipelineLayout layout = VK_NULL_HANDLE;
+  VkDescriptorSet set = VK_NULL_HANDLE;
+  const void* push = nullptr;
+  std::uint32_t push_bytes = 0;
+};
+void draw_fullscreen(VkCommandBuffer cmd, const FullscreenDraw& d);
+
 }  // namespace ocean::render

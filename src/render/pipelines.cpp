@@ -1,6 +1,8 @@
 // The renderer's pipelines (dynamic rendering, no render pass objects): the sky and the tone map
 // as fullscreen triangles, the ocean patches and skirt with the patch vertex/instance layout, and
 // the same mesh as lines for the wireframe view. Push-constant layouts: shaders/render_shared.h.
+#include <vector>
+
 #include "object_pass.hpp"
 #include "pipeline_desc.hpp"
 #include "spirv.hpp"
@@ -168,6 +170,100 @@ Status create_pipelines(Renderer::State& st) {
     st.wire = wire.value();
   }
   return {};
+}
+
+Status make_fullscreen(Renderer::State& st, const FullscreenDesc& d, FullscreenObjects& out,
+                       std::span<VkDescriptorSet> sets) {
+  const VkDevice device = st.ctx->device;
+  std::vector<VkDescriptorSetLayoutBinding> bindings;
+  for (const std::uint32_t b : d.samplers)
+    bindings.push_back(
+        {b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT, nullptr});
+  const VkDescriptorSetLayoutCreateInfo set_info{
+      .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+      .bindingCount = static_cast<std::uint32_t>(bindings.size()),
+      .pBindings = bindings.data()};
+  if (Status s = vk::check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &out.set_layout),
+                           "vkCreateDescriptorSetLayout");
+      !s.ok())
+    return s;
+  const auto set_count = static_cast<std::uint32_t>(sets.size());
+  const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                  set_count * static_cast<std::uint32_t>(bindings.size())};
+  const VkDescriptorPoolCreateInfo pool_info{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
+                                             .maxSets = set_count,
+                                             .poolSizeCount = 1,
+                                             .pPoolSizes = &size};
+  if (Status s = vk::check(vkCreateDescriptorPool(device, &pool_info, nullptr, &out.pool),
+                           "vkCreateDescriptorPool");
+      !s.ok())
+    return s;
+  const std::vector<VkDescriptorSetLayout> layouts(sets.size(), out.set_layout);
+  const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
+                                          .descriptorPool = out.pool,
+                                          .descriptorSetCount = set_count,
+                                          .pSetLayouts = layouts.data()};
+  if (Status s = vk::check(vkAllocateDescriptorSets(device, &alloc, sets.data()),
+                           "vkAllocateDescriptorSets");
+      !s.ok())
+    return s;
+  const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, d.push_bytes};
+  const VkPipelineLayoutCreateInfo layout_info{
+      .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+      .setLayoutCount = 1,
+      .pSetLayouts = &out.set_layout,
+      .pushConstantRangeCount = d.push_bytes > 0 ? 1u : 0u,
+      .pPushConstantRanges = &push};
+  if (Status s = vk::check(vkCreatePipelineLayout(device, &layout_info, nullptr, &out.layout),
+                           "vkCreatePipelineLayout");
+      !s.ok())
+    return s;
+  Result<VkShaderModule> vert = shader_module(st, spirv::sky_vert());  // the fullscreen triangle
+  if (!vert.ok()) return vert.status();
+  Result<VkShaderModule> frag = shader_module(st, d.frag);
+  if (!frag.ok()) return frag.status();
+  Result<VkPipeline> made = make_pipeline(*st.ctx, {.vert = vert.value(),
+                                                    .frag = frag.value(),
+                                                    .layout = out.layout,
+                                                    .colour = d.colour,
+                                                    .depth = false,
+                                                    .depth_test = false});
+  if (!made.ok()) return made.status();
+  out.pipeline = made.value();
+  return {};
+}
+
+void destroy_fullscreen(VkDevice device, FullscreenObjects& objects) {
+  if (objects.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(device, objects.pipeline, nullptr);
+  if (objects.layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(device, objects.layout, nullptr);
+  if (objects.pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(device, objects.pool, nullptr);
+  if (objects.set_layout != VK_NULL_HANDLE)
+    vkDestroyDescriptorSetLayout(device, objects.set_layout, nullptr);
+  objects = {};
+}
+
+void draw_fullscreen(VkCommandBuffer cmd, const FullscreenDraw& d) {
+  const VkRenderingAttachmentInfo out{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                      .imageView = d.target,
+                                      .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                      .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
+                                      .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
+  const VkRenderingInfo rendering{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                                  .renderArea = {{0, 0}, {d.width, d.height}},
+                                  .layerCount = 1,
+                                  .colorAttachmentCount = 1,
+                                  .pColorAttachments = &out};
+  vkCmdBeginRendering(cmd, &rendering);
+  const VkViewport straight{0.0f, 0.0f, static_cast<float>(d.width), static_cast<float>(d.height),
+                            0.0f, 1.0f};
+  const VkRect2D scissor{{0, 0}, {d.width, d.height}};
+  vkCmdSetViewport(cmd, 0, 1, &straight);
+  vkCmdSetScissor(cmd, 0, 1, &scissor);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.pipeline);
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, d.layout, 0, 1, &d.set, 0, nullptr);
+  vkCmdPushConstants(cmd, d.layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, d.push_bytes, d.push);
+  vkCmdDraw(cmd, 3, 1, 0, 0);
+  vkCmdEndRendering(cmd);
 }
 
 }  // namespace ocean::render

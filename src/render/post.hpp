@@ -5,16 +5,14 @@
 #pragma once
 
 #include "pass.hpp"
+#include "pipeline_desc.hpp"
 
 namespace ocean::render {
 
 // render pass 1300: PostPass — the tone map into the sRGB target
 struct PostPass : Pass {
-  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
+  FullscreenObjects objects;  // its set layout, pool, pipeline layout and pipeline
   VkDescriptorSet set = VK_NULL_HANDLE;
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
 
   Status create(Renderer::State& st);
   void destroy(Renderer::State& st);

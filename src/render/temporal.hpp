@@ -50,11 +50,8 @@ struct TemporalPass : Pass {
   VkImageView set_hdr[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
   VkImageView set_motion[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
   VkSampler history_sampler = VK_NULL_HANDLE;  // bilinear, clamped to the edge
-  VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
+  FullscreenObjects objects;  // the blend's set layout, pool, pipeline layout and pipeline
   VkDescriptorSet sets[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
-  VkPipelineLayout layout = VK_NULL_HANDLE;
-  VkPipeline pipeline = VK_NULL_HANDLE;
 
   // The frame's sub-pixel offset, pixels, in [−½, ½)².
   std::array<double, 2> jitter_px() const {
@@ -83,62 +80,13 @@ struct TemporalPass : Pass {
     Result<VkSampler> sampler = make_sampler(ctx, true, false, false, 1.0f);
     if (!sampler.ok()) return sampler.status();
     history_sampler = sampler.value();
-    std::array<VkDescriptorSetLayoutBinding, 3> bindings{};
-    for (std::uint32_t b = 0; b < bindings.size(); ++b)
-      bindings[b] = {b, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1, VK_SHADER_STAGE_FRAGMENT_BIT,
-                     nullptr};
-    const VkDescriptorSetLayoutCreateInfo set_info{
-        .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
-        .bindingCount = static_cast<std::uint32_t>(bindings.size()),
-        .pBindings = bindings.data()};
-    if (Status s =
-            vk::check(vkCreateDescriptorSetLayout(ctx.device, &set_info, nullptr, &set_layout),
-                      "vkCreateDescriptorSetLayout");
-        !s.ok())
-      return s;
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 6};
-    const VkDescriptorPoolCreateInfo pool_info{
-        .sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO,
-        .maxSets = 2,
-        .poolSizeCount = 1,
-        .pPoolSizes = &size};
-    if (Status s = vk::check(vkCreateDescriptorPool(ctx.device, &pool_info, nullptr, &pool),
-                             "vkCreateDescriptorPool");
-        !s.ok())
-      return s;
-    const VkDescriptorSetLayout layouts[2] = {set_layout, set_layout};
-    const VkDescriptorSetAllocateInfo alloc{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO,
-                                            .descriptorPool = pool,
-                                            .descriptorSetCount = 2,
-                                            .pSetLayouts = layouts};
-    if (Status s = vk::check(vkAllocateDescriptorSets(ctx.device, &alloc, sets),
-                             "vkAllocateDescriptorSets");
-        !s.ok())
-      return s;
-    const VkPushConstantRange push{VK_SHADER_STAGE_FRAGMENT_BIT, 0, 2 * sizeof(float)};
-    const VkPipelineLayoutCreateInfo layout_info{
-        .sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
-        .setLayoutCount = 1,
-        .pSetLayouts = &set_layout,
-        .pushConstantRangeCount = 1,
-        .pPushConstantRanges = &push};
-    if (Status s = vk::check(vkCreatePipelineLayout(ctx.device, &layout_info, nullptr, &layout),
-                             "vkCreatePipelineLayout");
-        !s.ok())
-      return s;
-    Result<VkShaderModule> vert = shader_module(st, spirv::sky_vert());  // fullscreen triangle
-    if (!vert.ok()) return vert.status();
-    Result<VkShaderModule> frag = shader_module(st, spirv::temporal_frag());
-    if (!frag.ok()) return frag.status();
-    Result<VkPipeline> made = make_pipeline(ctx, {.vert = vert.value(),
-                                                  .frag = frag.value(),
-                                                  .layout = layout,
-                                                  .colour = kHdrFormat,
-                                                  .depth = false,
-                                                  .depth_test = false});
-    if (!made.ok()) return made.status();
-    pipeline = made.value();
-    return {};
+    const std::uint32_t bindings[3] = {0, 1, 2};  // the frame, the history, the motion
+    return make_fullscreen(st,
+                           {.frag = spirv::temporal_frag(),
+                            .colour = kHdrFormat,
+                            .samplers = bindings,
+                            .push_bytes = 2 * sizeof(float)},
+                           objects, sets);
   }
 
   template <class State>
@@ -153,10 +101,7 @@ struct TemporalPass : Pass {
   void destroy(State& st) {
     release_targets(st);
     const VkDevice d = st.ctx->device;
-    if (pipeline != VK_NULL_HANDLE) vkDestroyPipeline(d, pipeline, nullptr);
-    if (layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(d, layout, nullptr);
-    if (pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(d, pool, nullptr);
-    if (set_layout != VK_NULL_HANDLE) vkDestroyDescriptorSetLayout(d, set_layout, nullptr);
+    destroy_fullscreen(d, objects);
     if (history_sampler != VK_NULL_HANDLE) vkDestroySampler(d, history_sampler, nullptr);
   }
 
@@ -234,32 +179,19 @@ struct TemporalPass : Pass {
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    const VkRenderingAttachmentInfo out{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                        .imageView = history[now].view,
-                                        .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                        .loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE,
-                                        .storeOp = VK_ATTACHMENT_STORE_OP_STORE};
-    const VkRenderingInfo resolve{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
-                                  .renderArea = {{0, 0}, {w, h}},
-                                  .layerCount = 1,
-                                  .colorAttachmentCount = 1,
-                                  .pColorAttachments = &out};
-    vkCmdBeginRendering(cmd, &resolve);
-    const VkViewport straight{0.0f, 0.0f, static_cast<float>(w), static_cast<float>(h), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {w, h}};
-    vkCmdSetViewport(cmd, 0, 1, &straight);
-    vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, 0, 1, &sets[now], 0,
-                            nullptr);
     // The first frames are their plain mean; then the configured weight.
     const float push[2] = {static_cast<float>(std::max(frame.view.temporal_aa.current_weight,
                                                        1.0 / static_cast<double>(frames + 1))),
                            kClipSigmas};
-    vkCmdPushConstants(cmd, layout, VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof(push), push);
-    vkCmdDraw(cmd, 3, 1, 0, 0);
+    draw_fullscreen(cmd, {.target = history[now].view,
+                          .width = w,
+                          .height = h,
+                          .pipeline = objects.pipeline,
+                          .layout = objects.layout,
+                          .set = sets[now],
+                          .push = push,
+                          .push_bytes = sizeof(push)});
     ++frame.stats.draw_calls;
-    vkCmdEndRendering(cmd);
     // The result into the HDR image, which goes on as the HDR pass left it; the motion back to
     // where read_motion() copies it from.
     vk::image_barrier(cmd, history[now].image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,

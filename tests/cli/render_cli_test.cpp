@@ -57,6 +57,16 @@ TEST(RenderCli, WritesAPngOfTheRequestedSize) {
   EXPECT_GT(blue(5, 2), blue(5, 43));
 }
 
+// The summed samples of `b` over those of `a`: their brightness ratio.
+double brightness_ratio(const ocean::io::PngImage& a, const ocean::io::PngImage& b) {
+  double sa = 0.0, sb = 0.0;
+  for (std::size_t i = 0; i < a.samples.size(); ++i) {
+    sa += a.samples[i];
+    sb += b.samples[i];
+  }
+  return sb / sa;
+}
+
 // --supersample N draws N times larger and writes the requested size, averaged in linear light
 // (R.60): a different picture from the plain one, of the same mean brightness within 2 %.
 TEST(RenderCli, SupersampleWritesTheRequestedSize) {
@@ -74,12 +84,7 @@ TEST(RenderCli, SupersampleWritesTheRequestedSize) {
   EXPECT_EQ(q.value().width, 80);
   EXPECT_EQ(q.value().height, 45);
   EXPECT_NE(p.value().samples, q.value().samples);
-  double sp = 0.0, sq = 0.0;
-  for (std::size_t i = 0; i < p.value().samples.size(); ++i) {
-    sp += p.value().samples[i];
-    sq += q.value().samples[i];
-  }
-  EXPECT_NEAR(sq / sp, 1.0, 0.02);
+  EXPECT_NEAR(brightness_ratio(p.value(), q.value()), 1.0, 0.02);
 }
 
 // --taa (R.61): a sequence of two frames, the first the mean of 16 jittered draws, each of the
@@ -101,12 +106,7 @@ TEST(RenderCli, TaaWritesASequenceOfTheRequestedSize) {
     EXPECT_EQ(q.value().width, 80);
     EXPECT_EQ(q.value().height, 45);
     EXPECT_NE(p.value().samples, q.value().samples);
-    double sp = 0.0, sq = 0.0;
-    for (std::size_t i = 0; i < p.value().samples.size(); ++i) {
-      sp += p.value().samples[i];
-      sq += q.value().samples[i];
-    }
-    EXPECT_NEAR(sq / sp, 1.0, 0.02) << name;
+    EXPECT_NEAR(brightness_ratio(p.value(), q.value()), 1.0, 0.02) << name;
   }
 }
 

@@ -153,11 +153,6 @@ double row_distance_m(int row) {
   return t > 0.0 ? kEyeHeightM / t : INFINITY;
 }
 
-// The error of the plain picture and of 2 × 2 supersampling against the 16-sample reference,
-// per distance band: 2 × 2 has at most 0.7 of the plain picture's error in each band (averaging
-// four samples against sixteen, independent aliasing would leave √(1/4 − 1/16)/√(1 − 1/16) =
-// 0.45 of it). Printed beside it: how much the rows under the horizon change between two frames
-// 1/30 s apart unlike the reference.
 // Mean |L − L_reference| of `frame` over the rows whose distance lies in band `b`.
 double band_error(const std::vector<double>& frame, const std::vector<double>& ref, const Band& b) {
   double e = 0.0;
@@ -191,6 +186,19 @@ double flicker(const std::vector<std::vector<double>>& frames) {
   return sum / n;
 }
 
+// Per band, the mean |error| against the reference of `plain` and of `better`, printed as
+// "`label`: band ... plain e1, `name` e2 (ratio)"; each e2 must be below `bound`·e1.
+void expect_bands_below(const char* label, const char* name, const std::vector<double>& plain,
+                        const std::vector<double>& better, double bound) {
+  for (const Band& b : kBands) {
+    const double e1 = band_error(plain, reference()[0], b);
+    const double e2 = band_error(better, reference()[0], b);
+    std::printf("%s: %-14s mean |error| against 16 samples: plain %.5f, %s %.5f (%.2f)\n", label,
+                b.name, e1, name, e2, e2 / e1);
+    EXPECT_LT(e2, bound * e1) << label << ", " << b.name;
+  }
+}
+
 // The error of the plain picture and of 2 × 2 supersampling against the 16-sample reference,
 // per distance band: 2 × 2 has at most 0.7 of the plain picture's error in each band (averaging
 // four samples against sixteen, independent aliasing would leave √(1/4 − 1/16)/√(1 − 1/16) =
@@ -204,12 +212,7 @@ TEST(SupersampleRender, TwoByTwoHalvesTheErrorOfEveryDistanceBand) {
   ASSERT_EQ(plain.size(), 2u);
   ASSERT_EQ(two.size(), 2u);
   ASSERT_EQ(ref.size(), 2u);
-  for (const Band& b : kBands) {
-    const double e1 = band_error(plain[0], ref[0], b), e2 = band_error(two[0], ref[0], b);
-    std::printf("supersample: %-14s mean |error| against 16 samples: plain %.5f, 2x2 %.5f (%.2f)\n",
-                b.name, e1, e2, e2 / e1);
-    EXPECT_LT(e2, 0.7 * e1) << b.name;
-  }
+  expect_bands_below("supersample", "2x2", plain[0], two[0], 0.7);
   const double f1 = flicker(plain), f2 = flicker(two);
   std::printf(
       "supersample: horizon rows' flicker against 16 samples: plain %.5f, 2x2 %.5f (%.2f)\n", f1,
@@ -233,14 +236,7 @@ TEST(TemporalRender, SixteenJitteredDrawsOfAStillApproachTheReference) {
   ASSERT_EQ(plain.size(), 1u);
   ASSERT_EQ(taa.size(), 1u);
   ASSERT_EQ(ref.size(), 2u);
-  for (const Band& b : kBands) {
-    const double e1 = band_error(plain[0], ref[0], b), e2 = band_error(taa[0], ref[0], b);
-    std::printf(
-        "taa (still, 16 draws): %-14s mean |error| against 16 samples: plain %.5f, taa "
-        "%.5f (%.2f)\n",
-        b.name, e1, e2, e2 / e1);
-    EXPECT_LT(e2, 0.45 * e1) << b.name;
-  }
+  expect_bands_below("taa (still, 16 draws)", "taa", plain[0], taa[0], 0.45);
 }
 
 // A sequence at 30 frames a second, each frame drawn once and blended into the history (the
@@ -253,18 +249,11 @@ TEST(TemporalRender, ASequenceBlendedAlongTheMotionVectorsIsCloser) {
   for (int k = -20; k <= 1; ++k) times.push_back(kTimes[0] + k / 30.0);
   const auto taa_all = render_luminance({.taa = true, .weight = 0.2}, times);
   const auto plain = render_luminance({}, kTimes);
-  const auto& ref = reference();
+  ASSERT_EQ(reference().size(), 2u);
   ASSERT_EQ(taa_all.size(), times.size());
   ASSERT_EQ(plain.size(), 2u);
   const std::vector<std::vector<double>> taa = {taa_all[times.size() - 2], taa_all.back()};
-  for (const Band& b : kBands) {
-    const double e1 = band_error(plain[0], ref[0], b), e2 = band_error(taa[0], ref[0], b);
-    std::printf(
-        "taa (sequence, weight 0.2): %-14s mean |error| against 16 samples: plain %.5f, "
-        "taa %.5f (%.2f)\n",
-        b.name, e1, e2, e2 / e1);
-    EXPECT_LT(e2, 0.9 * e1) << b.name;
-  }
+  expect_bands_below("taa (sequence, weight 0.2)", "taa", plain[0], taa[0], 0.9);
   const double f1 = flicker(plain), f2 = flicker(taa);
   std::printf(
       "taa (sequence): horizon rows' flicker against 16 samples: plain %.5f, taa %.5f "
