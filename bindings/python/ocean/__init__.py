@@ -175,13 +175,30 @@ def _preset_eq(self, other):
 
 
 def _preset_to_dict(self):
-    """The preset document as nested dicts (the JSON of ``to_json``)."""
+    """The preset document as nested dicts.
+
+    Returns
+    -------
+    dict
+        The JSON of ``to_json``, every key.
+    """
     return _json.loads(self.to_json())
 
 
 def _preset_from_dict(document):
-    """A preset from a (possibly partial) preset document given as nested dicts, merged over the
-    defaults as ``Preset.from_json`` merges its text; ValueError for an invalid configuration."""
+    """A preset from a (possibly partial) preset document given as nested dicts.
+
+    Parameters
+    ----------
+    document : dict
+        Keys of the preset document, merged over the defaults as ``Preset.from_json`` merges its
+        text.
+
+    Returns
+    -------
+    Preset
+        The preset; ValueError for an invalid configuration.
+    """
     return Preset.from_json(_json.dumps(document))
 
 
@@ -195,7 +212,8 @@ def _preset_get(self, key):
 
     Returns
     -------
-    The value (a float, int, str, bool, list, dict or None) as the document holds it.
+    float, int, str, bool, list, dict or None
+        The value as the document holds it.
     """
     value = self.to_dict()
     walked = []

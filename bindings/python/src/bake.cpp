@@ -158,9 +158,28 @@ void bind_bake(py::module_& m) {
         py::arg("frames") = 1, py::arg("fps") = 30.0, py::arg("time") = 0.0,
         py::arg("formats") = std::vector<std::string>{"npy"}, py::arg("backend") = "cpu",
         py::arg("shard") = py::none(),
-        "Bakes frames of the preset's simulation into the folder `out` as `ocean bake` does "
-        "(files and manifest.json: src/bake/README.md). shard='I/N' writes shard I of N only, "
-        "for ocean.merge. The GIL is released while it runs.");
+        R"doc(Bakes frames of the preset's simulation into a folder, as `ocean bake` does.
+
+The GIL is released while it runs; Ctrl-C stops it between files with nothing half-written.
+
+Parameters
+----------
+preset : Preset, str or None
+    An ocean.Preset, a built-in name or a preset file; None: the defaults.
+out : str or os.PathLike
+    The folder: files and manifest.json (src/bake/README.md).
+frames : int, optional
+    Frames to bake, 1 to 1000000.
+fps : float, optional
+    Frames per second.
+time : float, optional
+    Time of the first frame, s.
+formats : list of str, optional
+    Any of 'npy', 'png', 'exr'.
+backend : str, optional
+    'cpu' or 'vulkan'.
+shard : str, optional
+    'I/N': only shard I of N, for ocean.merge.)doc");
   m.def(
       "merge",
       [](const std::vector<std::filesystem::path>& shards, const std::filesystem::path& out) {
@@ -170,8 +189,14 @@ void bind_bake(py::module_& m) {
         });
       },
       py::arg("shards"), py::arg("out"),
-      "Joins the folders of a sharded bake into `out`, byte for byte the one-machine bake; "
-      "ValueError names a missing, repeated or mismatched shard.");
+      R"doc(Joins the folders of a sharded bake, byte for byte the one-machine bake.
+
+Parameters
+----------
+shards : list of str or os.PathLike
+    The shards' folders; ValueError names a missing, repeated or mismatched one.
+out : str or os.PathLike
+    The joined bake's folder.)doc");
   m.def(
       "shard_frames",
       [](const Integer& frame_arg, const Integer& index_arg, const Integer& count_arg) {
@@ -186,8 +211,21 @@ void bind_bake(py::module_& m) {
         return std::pair(r.first, r.end);
       },
       py::arg("frames"), py::arg("index"), py::arg("count"),
-      "The frames [first, end) that shard index of count writes in a bake of `frames` frames: "
-      "frames 1 to 1000000, count 1 to frames, index 0 to count - 1 (ValueError otherwise).");
+      R"doc(The frames a shard writes in a bake.
+
+Parameters
+----------
+frames : int
+    Frames of the whole bake, 1 to 1000000.
+index : int
+    The shard, 0 to count - 1.
+count : int
+    Shards, 1 to frames.
+
+Returns
+-------
+tuple of int
+    (first, end): the shard writes frames first to end - 1.)doc");
   m.def(
       "surface_stats",
       [](const py::object& preset, const Integer& seed_arg, double time_s,
@@ -212,9 +250,24 @@ void bind_bake(py::module_& m) {
       },
       py::arg("preset") = py::none(), py::kw_only(), py::arg("seeds") = 4, py::arg("time") = 0.0,
       py::arg("threads") = 0,
-      "Statistics of the simulated surface over `seeds` realisations, 1 to 100000 (what `ocean "
-      "stats` prints): measured and spectral Hs, height moments, slopes, Jacobian and foam. "
-      "threads: 0 (all) to 256.");
+      R"doc(Statistics of the simulated surface over several realisations (`ocean stats`).
+
+Parameters
+----------
+preset : Preset, str or None, optional
+    An ocean.Preset, a built-in name or a preset file; None: the defaults.
+seeds : int, optional
+    Realisations, 1 to 100000.
+time : float, optional
+    Simulation time, s.
+threads : int, optional
+    0 (every hardware thread) to 256.
+
+Returns
+-------
+dict
+    Measured and spectral Hs, height moments, slopes, Jacobian and foam, as `ocean stats
+    --json` names them.)doc");
 }
 
 }  // namespace ocean::python

@@ -67,10 +67,24 @@ void bind_preset(py::module_& m) {
              return doc;
            }),
            py::arg("name_or_path"),
-           "The defaults with a built-in preset (calm, moderate, storm) or a preset file merged "
-           "over them.")
+           R"doc(The defaults with a built-in preset or a preset file merged over them.
+
+Parameters
+----------
+name_or_path : str
+    calm, moderate, storm, or the path of a preset file (JSON).)doc")
       .def_static("from_json", &from_text, py::arg("text"),
-                  "The preset of a preset document's text (as Preset.to_json writes it).")
+                  R"doc(The preset of a preset document's text (as Preset.to_json writes it).
+
+Parameters
+----------
+text : str
+    A preset document, possibly partial: merged over the defaults.
+
+Returns
+-------
+Preset
+    The preset; ValueError when the text is not a valid document.)doc")
       .def(py::pickle(
           [](const preset::Document& doc) { return preset::to_json(take(doc.config())); },
           [](const std::string& text) { return from_text(text); }))
@@ -81,7 +95,17 @@ void bind_preset(py::module_& m) {
             return doc;
           },
           py::arg("name_or_path"), py::return_value_policy::reference_internal,
-          "Merges a built-in preset or a preset file (RFC 7386 merge patch); returns self.")
+          R"doc(Merges a built-in preset or a preset file over this one (RFC 7386 merge patch).
+
+Parameters
+----------
+name_or_path : str
+    calm, moderate, storm, or the path of a preset file (JSON).
+
+Returns
+-------
+Preset
+    self.)doc")
       .def(
           "set",
           [](preset::Document& doc, const std::string& assignment) -> preset::Document& {
@@ -93,8 +117,17 @@ void bind_preset(py::module_& m) {
             return doc;
           },
           py::arg("assignment"), py::return_value_policy::reference_internal,
-          "Sets one key, 'dotted.key=value' (the value JSON, or a bare word); the result must be "
-          "a valid configuration, else ValueError and the preset unchanged. Returns self.")
+          R"doc(Sets one key; the result must be a valid configuration.
+
+Parameters
+----------
+assignment : str
+    'dotted.key=value', the value JSON or a bare word, e.g. 'sea.wind_sea.wind_speed_mps=12'.
+
+Returns
+-------
+Preset
+    self; on ValueError the preset is unchanged.)doc")
       .def(
           "validate", [](const preset::Document& doc) { take(doc.config()); },
           "Raises ValueError when the layers do not make a valid configuration.")
@@ -105,8 +138,17 @@ void bind_preset(py::module_& m) {
             return preset::to_json(take(doc.config()), spaces);
           },
           py::arg("indent") = 2,
-          "The preset document: every key, in a fixed order; indent spaces a level, 0 to 64 "
-          "(ValueError beyond), a negative indent one line.")
+          R"doc(The preset document: every key, in a fixed order.
+
+Parameters
+----------
+indent : int, optional
+    Spaces a level, 0 to 64 (ValueError beyond); a negative indent writes one line.
+
+Returns
+-------
+str
+    The JSON text.)doc")
       .def(
           "save",
           [](const preset::Document& doc, const std::string& path) {
@@ -114,7 +156,12 @@ void bind_preset(py::module_& m) {
             check(io::write_bytes_atomically(path, {std::as_bytes(std::span(text))}));
           },
           py::arg("path"),
-          "Writes the preset document to a file, atomically (OSError when it cannot).")
+          R"doc(Writes the preset document to a file, atomically.
+
+Parameters
+----------
+path : str or os.PathLike
+    The file; OSError when it cannot be written (nothing half-written is left).)doc")
       .def_static(
           "builtin_names",
           [] {
@@ -122,7 +169,12 @@ void bind_preset(py::module_& m) {
             for (std::string_view n : preset::builtin_names()) names.emplace_back(n);
             return names;
           },
-          "The built-in presets: calm, moderate, storm.")
+          R"doc(The built-in presets.
+
+Returns
+-------
+list of str
+    calm, moderate, storm.)doc")
       .def("__repr__", [](const preset::Document& doc) {
         Result<SimulationConfig> c = doc.config();
         return c.ok() ? "ocean.Preset(" + preset::to_json(c.value()) + ")"

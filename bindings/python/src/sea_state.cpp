@@ -21,7 +21,12 @@ void bind_sea_state(py::module_& m) {
              return SeaState(take(SimulationPlan::make(config_of(preset))).sea());
            }),
            py::arg("preset") = py::none(),
-           "preset: an ocean.Preset, a built-in name or a preset file; None = the defaults.")
+           R"doc(The sea of a preset.
+
+Parameters
+----------
+preset : Preset, str or None, optional
+    An ocean.Preset, a built-in name or a preset file; None: the defaults.)doc")
       .def(
           "wave_vector_spectrum",
           [](const SeaState& s, const DoubleArray& kx, const DoubleArray& kz) {
@@ -40,8 +45,17 @@ void bind_sea_state(py::module_& m) {
             return f;
           },
           py::arg("kx"), py::arg("kz"),
-          "F(kx, kz), m^4: the height variance per unit wave-vector area (rad/m), summed over the "
-          "systems.")
+          R"doc(The wave-vector spectrum F(kx, kz), summed over the wave systems.
+
+Parameters
+----------
+kx, kz : array_like of float
+    Wave-vector components, rad/m, of one shape.
+
+Returns
+-------
+numpy.ndarray
+    F, m^4: the height variance per unit wave-vector area, shaped like kx.)doc")
       .def_property_readonly("variance_m2", &SeaState::variance_m2, "m0 of all systems, m^2.")
       .def_property_readonly(
           "hs_m", [](const SeaState& s) { return 4.0 * std::sqrt(s.variance_m2()); },

@@ -224,7 +224,9 @@ void bind_simulator(py::module_& m) {
                         "The base object of field arrays: keeps the simulator alive, and its "
                         "frame's memory once a step has moved on from it.");
   py::class_<PySimulator>(m, "Simulator",
-                          "A simulation of the preset's sea on a backend ('cpu', 'vulkan').")
+                          "A simulation of the preset's sea on a backend ('cpu', 'vulkan').\n\n"
+                          "Its fields are read-only numpy views that stay valid across steps "
+                          "(docs/python.md, \"Field views and their lifetime\").")
       .def(py::init(
                [](const py::object& preset, const std::string& backend, const Integer& threads) {
                  const auto n = static_cast<int>(in_range(threads, kThreads));
@@ -232,35 +234,85 @@ void bind_simulator(py::module_& m) {
                }),
            py::arg("preset") = py::none(), py::kw_only(), py::arg("backend") = "cpu",
            py::arg("threads") = 0,
-           "preset: an ocean.Preset, a built-in name or a preset file; None = the defaults. "
-           "threads: oneTBB threads, 0 (all) to 256.")
+           R"doc(A simulator of the preset's sea.
+
+Parameters
+----------
+preset : Preset, str or None, optional
+    An ocean.Preset, a built-in name (calm, moderate, storm) or a preset file; None: the
+    defaults.
+backend : str, optional
+    'cpu' (default) or 'vulkan'.
+threads : int, optional
+    oneTBB threads of the CPU backend, 0 (every hardware thread) to 256.)doc")
       .def("step", &PySimulator::step, py::arg("time_s"),
-           "Computes and publishes the frame at time_s (GIL released).")
+           R"doc(Computes and publishes the frame at time_s (the GIL released meanwhile).
+
+Parameters
+----------
+time_s : float
+    Simulation time, s, finite.)doc")
       .def("kick", &PySimulator::kick, py::arg("time_s"),
-           "Starts the frame at time_s in the background; the published frame stays readable.")
+           R"doc(Starts the frame at time_s in the background; the published frame stays readable.
+
+Parameters
+----------
+time_s : float
+    Simulation time, s, finite. ``wait()`` publishes the frame.)doc")
       .def("wait", &PySimulator::wait, "Waits for the kicked frame and publishes it.")
       .def(
           "reconfigure",
           [](PySimulator& s, const py::object& preset) { s.reconfigure(config_of(preset)); },
-          py::arg("preset"), "Regenerates spectra and buffers for a new configuration.")
+          py::arg("preset"), R"doc(Regenerates spectra and buffers for a new configuration.
+
+Parameters
+----------
+preset : Preset, str or None
+    An ocean.Preset, a built-in name or a preset file; None: the defaults.)doc")
       .def("fields", &PySimulator::fields, py::arg("cascade") = 0,
-           "The published frame's arrays of one cascade, read-only numpy views [row][col]: "
-           "displacement (N,N,3) float32 (Dx, h, Dz) m, height (N,N) (a strided view of it), "
-           "displacement_half (N,N,4) float16, normal (N,N,3), jacobian (N,N), foam (N,N) (when "
-           "the configuration's outputs ask for them), packed (N,N,4) uint8 RGBA mip 0.")
+           R"doc(The published frame's arrays of one cascade, read-only numpy views [row][col].
+
+Parameters
+----------
+cascade : int, optional
+    The cascade, 0 (the longest waves) to len(patch_sizes) - 1.
+
+Returns
+-------
+dict of str to numpy.ndarray
+    displacement (N, N, 3) float32 (Dx, h, Dz), m; height (N, N), a strided view of it;
+    displacement_half (N, N, 4) float16; normal (N, N, 3), jacobian (N, N) and foam (N, N)
+    where the configuration's outputs ask for them; packed (N, N, 4) uint8, RGBA mip 0. The
+    views stay valid, and unchanged, after later steps.)doc")
       .def("heights", &PySimulator::heights, py::arg("xz"), py::kw_only(), py::arg("full") = false,
-           "Heights of the surface above world points xz, an (n, 2) array (x, z) in m; the GIL is "
-           "released. full=True returns a dict with displacement (n,3), source_xz (n,2) and "
-           "iterations (n,) too.")
+           R"doc(Heights of the surface above world points (the GIL released meanwhile).
+
+Parameters
+----------
+xz : array_like of float, shape (n, 2)
+    World positions (x, z), m.
+full : bool, optional
+    Also return where each height comes from.
+
+Returns
+-------
+numpy.ndarray of float, shape (n,) or dict
+    The heights above the mean level, m; with full=True a dict of height (n,), displacement
+    (n, 3), source_xz (n, 2) (the undisplaced point that lands at each position) and
+    iterations (n,).)doc")
       .def_property_readonly("time", &PySimulator::time, "Time of the published frame, s.")
-      .def_property_readonly("frame_index", &PySimulator::frame_index)
-      .def_property_readonly("backend", &PySimulator::backend)
-      .def_property_readonly("resolution",
-                             [](const PySimulator& s) { return s.config().resolution; })
-      .def_property_readonly("patch_sizes",
-                             [](const PySimulator& s) { return s.config().cascade_patch_sizes_m; })
-      .def_property_readonly("loop_period_s",
-                             [](const PySimulator& s) { return s.config().loop_period_s; });
+      .def_property_readonly("frame_index", &PySimulator::frame_index,
+                             "Frames computed since the configuration: 1 after the first step.")
+      .def_property_readonly("backend", &PySimulator::backend, "The backend's name, e.g. 'cpu'.")
+      .def_property_readonly(
+          "resolution", [](const PySimulator& s) { return s.config().resolution; },
+          "Texels per side N of every cascade.")
+      .def_property_readonly(
+          "patch_sizes", [](const PySimulator& s) { return s.config().cascade_patch_sizes_m; },
+          "Each cascade's patch side, m, longest first.")
+      .def_property_readonly(
+          "loop_period_s", [](const PySimulator& s) { return s.config().loop_period_s; },
+          "The period after which the sea repeats exactly, s; 0: it never does.");
 }
 
 }  // namespace ocean::python

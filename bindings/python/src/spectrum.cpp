@@ -181,6 +181,34 @@ DoubleArray depth_factor(const DoubleArray& omega, double depth, double gravity,
   return map_values(omega, [&](double w) { return tma_depth_factor(w, depth, gravity, *factor); });
 }
 
+// The numpy-style Parameters entries of the sea-state keywords (spectrum, spectrum_info).
+const std::string kSeaKeywordsDoc = R"doc(model : str, optional
+    pierson-moskowitz, jonswap (default), tma or phillips.
+hs, tp : float, optional
+    Significant wave height Hs, m, and peak period Tp, s, given together.
+wind_speed : float, optional
+    U10, m/s (U19.5 for pierson-moskowitz); with fetch for jonswap and tma.
+fetch : float, optional
+    Fetch F, m.
+gamma : float or 'auto', optional
+    JONSWAP peak enhancement, >= 1; 'auto' or None: from the sea state.
+depth : float, optional
+    Water depth of tma, m; None: deep water.
+gravity : float, optional
+    g, m/s^2; None: 9.81.
+depth_factor : str, optional
+    tma's depth factor: 'exact' or 'thompson-vincent'.
+fetch_law : str, optional
+    How fetch sets the peak: 'hasselmann' (2 pi 3.5 (g/U)(gF/U^2)^-0.33) or 'cube-root'
+    (22 (g^2/(U F))^(1/3)).
+normalization : str, optional
+    JONSWAP's Hs/Tp normalisation: 'dnv' (1 - 0.287 ln gamma) or 'exact'.
+phillips_amplitude : float, optional
+    The Phillips amplitude A, dimensionless; None: Hs of Pierson-Moskowitz.
+cutoff_length : float, optional
+    The Phillips small-wave cutoff length l, m (factor exp(-k^2 l^2)).
+)doc";
+
 // The sea-state keywords, in the order and with the defaults of `ocean spectrum`'s flags.
 template <class F>
 void def_with_sea(py::module_& m, const char* name, F&& f, const char* doc) {
@@ -214,10 +242,21 @@ void bind_spectrum(py::module_& m) {
       py::arg("depth_factor") = "exact", py::arg("fetch_law") = "hasselmann",
       py::arg("normalization") = "dnv", py::arg("phillips_amplitude") = py::none(),
       py::arg("cutoff_length") = py::none(),
-      "One-sided frequency spectrum S(omega), m^2 s/rad, at every omega (rad/s) of an array of "
-      "any shape. Keywords as the flags of `ocean spectrum`; with no sea state given, the "
-      "default wind sea (DEFAULT_WIND_SPEED_MPS over DEFAULT_FETCH_M). gamma is a number >= 1 or "
-      "'auto'.");
+      (std::string(R"doc(One-sided frequency spectrum S(omega) at every omega of an array of any shape.
+
+With no sea state given, the default wind sea (DEFAULT_WIND_SPEED_MPS over DEFAULT_FETCH_M).
+The keywords are the flags of `ocean spectrum`; a bad value raises ValueError naming it.
+
+Parameters
+----------
+omega : array_like of float
+    Angular frequencies, rad/s, finite and >= 0.
+)doc") + kSeaKeywordsDoc + R"doc(
+Returns
+-------
+numpy.ndarray
+    S(omega), m^2 s/rad, shaped like omega.)doc")
+          .c_str());
   def_with_sea(
       m, "spectrum_info",
       [](const std::string& model, OptionalNumber hs, OptionalNumber tp, OptionalNumber wind_speed,
@@ -228,24 +267,86 @@ void bind_spectrum(py::module_& m) {
         return spectrum_info({model, hs, tp, wind_speed, fetch, gamma, depth, gravity, depth_factor,
                               fetch_law, normalization, phillips_amplitude, cutoff_length});
       },
-      "The spectrum's derived constants: model, peak_omega (rad/s), peak_period_s, gamma, alpha, "
-      "hs_m (4 sqrt(m0)) and the moments m0, m1, m2.");
+      (std::string(R"doc(The spectrum's derived constants.
+
+Parameters
+----------
+)doc") + kSeaKeywordsDoc + R"doc(
+Returns
+-------
+dict
+    model, peak_omega (rad/s), peak_period_s, gamma, alpha, hs_m (4 sqrt(m0)) and the moments
+    m0, m1, m2.)doc")
+          .c_str());
   m.def("dispersion", &dispersion, py::kw_only(), py::arg("k") = py::none(),
         py::arg("omega") = py::none(), py::arg("depth") = py::none(),
         py::arg("gravity") = py::none(), py::arg("capillary") = false,
-        "Finite-depth dispersion omega^2 = (g k + T k^3) tanh(k h): give exactly one of k (rad/m) "
-        "or omega (rad/s). Returns a dict of arrays: k, omega, group_velocity, phase_velocity, "
-        "wavelength_m. depth None is deep water; capillary adds sea-water surface tension.");
+        R"doc(Finite-depth dispersion omega^2 = (g k + T k^3) tanh(k h), solved either way.
+
+Parameters
+----------
+k : array_like of float, optional
+    Wavenumbers, rad/m (exactly one of k and omega).
+omega : array_like of float, optional
+    Angular frequencies, rad/s.
+depth : float, optional
+    Water depth h, m; None: deep water.
+gravity : float, optional
+    g, m/s^2; None: 9.81.
+capillary : bool, optional
+    Add sea water's surface tension T.
+
+Returns
+-------
+dict of str to numpy.ndarray
+    k, omega, group_velocity, phase_velocity (m/s) and wavelength_m, shaped like the input.)doc");
   m.def("spreading", &spreading, py::arg("theta"), py::kw_only(),
         py::arg("model") = "donelan-banner", py::arg("s") = py::none(),
         py::arg("alpha") = py::none(), py::arg("symmetric") = false, py::arg("omega_ratio") = 1.0,
         py::arg("wind_speed") = py::none(), py::arg("fetch") = py::none(),
-        "Directional spreading D(theta), 1/rad, normalised over (-pi, pi], at angles theta (rad) "
-        "from the mean direction, at omega = omega_ratio * omega_p. Keywords as the flags of "
-        "`ocean spreading`.");
+        R"doc(Directional spreading D(theta), normalised over (-pi, pi].
+
+Parameters
+----------
+theta : array_like of float
+    Angles from the mean direction, rad.
+model : str, optional
+    power-cosine, cos2s, mitsuyasu, hasselmann or donelan-banner (default).
+s : float, optional
+    The exponent: power-cosine |cos|^s, cos2s cos^2s(theta/2).
+alpha : float, optional
+    power-cosine's wind alignment in [0, 1]: s = 1 + 5 alpha^2, counter-wave energy
+    0.01 + 0.49 (1 - alpha)^2.
+symmetric : bool, optional
+    power-cosine without counter-wave suppression (Tessendorf's |k.w|^s).
+omega_ratio : float, optional
+    omega / omega_p.
+wind_speed, fetch : float, optional
+    U10, m/s, and fetch, m, of mitsuyasu and hasselmann.
+
+Returns
+-------
+numpy.ndarray
+    D(theta), 1/rad, shaped like theta.)doc");
   m.def("depth_factor", &depth_factor, py::arg("omega"), py::kw_only(), py::arg("depth"),
         py::arg("gravity") = kDefaultGravity, py::arg("method") = "exact",
-        "Kitaigorodskii's depth factor Phi(omega, h) of TMA: 'exact' or 'thompson-vincent'.");
+        R"doc(Kitaigorodskii's depth factor Phi(omega, h) of the TMA spectrum.
+
+Parameters
+----------
+omega : array_like of float
+    Angular frequencies, rad/s, finite and >= 0.
+depth : float
+    Water depth h, m.
+gravity : float, optional
+    g, m/s^2.
+method : str, optional
+    'exact' or 'thompson-vincent' (the approximation).
+
+Returns
+-------
+numpy.ndarray
+    Phi, between 0 and 1, shaped like omega.)doc");
 }
 
 }  // namespace ocean::python
