@@ -55,9 +55,10 @@ export function invert(m) {
   return out;
 }
 
-// camera: { heightM, yawRad, pitchRad, fovYRad }; returns { eye, viewProj, invViewProj }.
+// camera: { xM, zM, heightM, yawRad, pitchRad, fovYRad } (x, z 0 when absent); returns
+// { eye, viewProj, invViewProj }.
 export function cameraMatrices(camera, aspect) {
-  const eye = [0, camera.heightM, 0];
+  const eye = [camera.xM ?? 0, camera.heightM, camera.zM ?? 0];
   const dir = [Math.cos(camera.pitchRad) * Math.cos(camera.yawRad), Math.sin(camera.pitchRad),
                Math.cos(camera.pitchRad) * Math.sin(camera.yawRad)];
   const view = lookAt(eye, [eye[0] + dir[0], eye[1] + dir[1], eye[2] + dir[2]], [0, 1, 0]);

@@ -59,6 +59,30 @@ export class Renderer {
         minFilter: 'linear', mipmapFilter: 'linear', maxAnisotropy: 4 }) },
     ] });
     this.depth = null;
+    // The render pass's GPU time, where the device has timestamp queries (gpuMs; null before the
+    // first reading or without them).
+    this.gpuMs = null;
+    this.timer = device.features.has('timestamp-query') ? {
+      querySet: device.createQuerySet({ type: 'timestamp', count: 2 }),
+      resolve: device.createBuffer({
+        size: 16, usage: GPUBufferUsage.QUERY_RESOLVE | GPUBufferUsage.COPY_SRC }),
+      read: device.createBuffer({ size: 16, usage: GPUBufferUsage.MAP_READ | GPUBufferUsage.COPY_DST }),
+      recorded: false, reading: false,
+    } : null;
+  }
+
+  // After the frame's submit: reads the render pass's timestamps back (asynchronously) into gpuMs.
+  collectGpuTime() {
+    const t = this.timer;
+    if (!t || !t.recorded || t.reading) return;
+    t.recorded = false;
+    t.reading = true;
+    t.read.mapAsync(GPUMapMode.READ).then(() => {
+      const [begin, end] = new BigUint64Array(t.read.getMappedRange());
+      if (end > begin) this.gpuMs = Number(end - begin) / 1e6;
+      t.read.unmap();
+      t.reading = false;
+    }, () => { t.reading = false; });
   }
 
   // Records the cascades' step at time t and the drawing of camera's view; returns the canvas
@@ -85,11 +109,15 @@ export class Renderer {
     data.set(this.ocean.geometryWavelengthsM, 48);
     this.device.queue.writeBuffer(this.view, 0, data);
     const texture = this.context.getCurrentTexture();
+    const timed = this.timer && !this.timer.reading && !this.timer.recorded;
     const pass = encoder.beginRenderPass({
       colorAttachments: [{ view: texture.createView(), loadOp: 'clear', storeOp: 'store',
                            clearValue: { r: 0, g: 0, b: 0, a: 1 } }],
       depthStencilAttachment: { view: this.depth.createView(), depthLoadOp: 'clear',
                                 depthClearValue: 1, depthStoreOp: 'store' },
+      ...(timed ? { timestampWrites: { querySet: this.timer.querySet,
+                                       beginningOfPassWriteIndex: 0, endOfPassWriteIndex: 1 } }
+                : {}),
     });
     pass.setBindGroup(0, this.bindGroup);
     pass.setPipeline(this.skyPipeline);
@@ -97,6 +125,11 @@ export class Renderer {
     pass.setPipeline(this.waterPipeline);
     pass.draw(kRings * kSegments * 6);
     pass.end();
+    if (timed) {
+      encoder.resolveQuerySet(this.timer.querySet, 0, 2, this.timer.resolve, 0);
+      encoder.copyBufferToBuffer(this.timer.resolve, 0, this.timer.read, 0, 16);
+      this.timer.recorded = true;
+    }
     return texture;
   }
 
@@ -110,6 +143,7 @@ export class Renderer {
     const texture = this.frame(encoder, timeS, camera);
     encoder.copyTextureToBuffer({ texture }, { buffer: staging, bytesPerRow }, [width, height]);
     this.device.queue.submit([encoder.finish()]);
+    this.collectGpuTime();
     await staging.mapAsync(GPUMapMode.READ);
     const padded = new Uint8Array(staging.getMappedRange());
     const rgba = new Uint8Array(width * height * 4);
