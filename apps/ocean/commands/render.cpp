@@ -579,14 +579,14 @@ Command add_render_command(CLI::App& app) {
   add_option(*command, kSupersample, o->supersample,
              "draw the picture N times wider and taller and average each N x N block in linear "
              "light (anti-aliasing; 1-4, default 1: N² times the drawing work)");
-  command->add_flag("--taa", o->taa,
-                    "temporal anti-aliasing (docs/rendering.md R.61): each frame drawn with a "
-                    "sub-pixel jitter and blended into the last along the motion vectors (weight "
-                    "0.2); the "
-                    "first frame is the mean of " +
-                        std::to_string(kTaaStillSamples) +
-                        " jittered draws at its time (that many times its drawing work). Not "
-                        "with --stereo, --supersample, --sphere or --mesh tessellation");
+  command->add_flag(
+      "--taa", o->taa,
+      "temporal anti-aliasing (docs/rendering.md R.61): each frame drawn with a sub-pixel "
+      "jitter and blended into the last along the motion vectors (weight 0.2); the first frame "
+      "is the mean of " +
+          std::to_string(kTaaStillSamples) +
+          " jittered draws at its time (that many times its drawing work). Not with --stereo, "
+          "--supersample, --sphere, --mesh tessellation or --backend vulkan");
   command->add_option("--motion-vectors", o->motion_vectors,
                       "also write the last frame's motion vectors (camera and waves, pixels per "
                       "frame) as a PNG: red right, green down, grey still (docs/rendering.md "
