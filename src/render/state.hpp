@@ -27,6 +27,7 @@
 #include "pipeline_desc.hpp"
 #include "shaders/render_shared.h"
 #include "shaders/tessellation.h"
+#include "tessellation_push.hpp"
 
 namespace ocean::render {
 
@@ -174,9 +175,6 @@ void record_uploads(Renderer::State& st, VkCommandBuffer cmd, VkBuffer source);
 // `unsupported` when the parameters ask for the tessellated mesh on a device without tessellation
 // shaders or with a maxTessellationGenerationLevel below N; nothing for the quadtree.
 Status check_tessellation(const vk::Context& ctx, const TessellationParams& params);
-// tessellation_levels.cpp: the push constants of a grid (what tessellation_levels evaluates).
-shader::TessellationPush tessellation_push(const TessellationParams& params,
-                                           const TessellationGrid& grid);
 VkPushConstantRange tessellation_push_range();
 
 // uniforms.cpp: the frame's uniforms every pass shares.

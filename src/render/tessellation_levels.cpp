@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "ocean/tessellation.hpp"
-#include "state.hpp"
+#include "tessellation_push.hpp"
 
 namespace ocean::render {
 
