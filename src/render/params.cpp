@@ -70,6 +70,9 @@ Status validate(const View& view) {
     if (Status s = validate_sphere(view); !s.ok()) return s;
   if (Status s = validate(view.underwater); !s.ok()) return s;
   if (Status s = validate(view.tessellation); !s.ok()) return s;
+  if (view.temporal_aa.enabled &&
+      !(view.temporal_aa.current_weight > 0.0 && view.temporal_aa.current_weight <= 1.0))
+    return invalid_argument("temporal_aa.current_weight: must be in (0, 1]");
   return validate(view.shading);
 }
 

@@ -58,12 +58,11 @@ struct TemporalPass : Pass {
     return {radical_inverse(jitter_index + 1, 2) - 0.5, radical_inverse(jitter_index + 1, 3) - 0.5};
   }
 
+  // What it cannot draw (the weight's range is validate(View)'s, with the view's other values).
   template <class State>
   Status check(const State& st, const View& view) const {
     const View::TemporalAntiAliasing& t = view.temporal_aa;
     if (!t.enabled) return {};
-    if (!(t.current_weight > 0.0 && t.current_weight <= 1.0))
-      return invalid_argument("temporal_aa.current_weight: must be in (0, 1]");
     if (view.sphere.enabled || view.tessellation.mesh == MeshMode::tessellation)
       return unsupported(std::string("temporal anti-aliasing: not drawn for ") +
                          (view.sphere.enabled ? "the sea on a sphere" : "the tessellated mesh") +
@@ -110,7 +109,6 @@ struct TemporalPass : Pass {
   // that a still camera's are 0 and the history is read at pixel centres, not resampled.
   template <class State>
   void fill_uniforms(const State& st, const View& view, shader::FrameUniforms& u) const {
-    u.footprint_scale = 1.0f;
     if (!view.temporal_aa.enabled) return;
     const std::array<double, 2> j = jitter_px();
     const auto dx = static_cast<float>(2.0 * j[0] / st.hdr.width);

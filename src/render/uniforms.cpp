@@ -25,6 +25,7 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
   u.fov_y_rad = static_cast<float>(lod::vertical_fov_rad(view.camera));
   const ShadingParams& sh = view.shading;
   u.sun_dir = to_vec3(sun_direction(sh.sun_azimuth_deg, sh.sun_elevation_deg));
+  u.footprint_scale = 1.0f;  // the whole pixel; temporal anti-aliasing narrows it (R.61)
   u.water_colour = to_vec3(sh.water_colour);
   u.crest_scatter = static_cast<float>(sh.crest_scatter);
   u.foam_brightness = static_cast<float>(sh.foam_brightness);

@@ -184,6 +184,7 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --taa --mesh tessellation", "--taa: not with --mesh");
   ocean_test::expect_usage_error("render --taa --backend vulkan", "--taa: not with --backend");
   ocean_test::expect_usage_error("render --taa --contact-sheet s.png", "no --taa");
+  ocean_test::expect_usage_error("render --taa --motion-vectors m.png", "give --frames 2 or more");
   // The far field's range (docs/rendering.md R.13): two finite distances, DMIN below DMAX.
   ocean_test::expect_usage_error("render --far-field-range 2000,1000", "DMIN must be below DMAX");
   ocean_test::expect_usage_error("render --far-field-range 500,500", "DMIN must be below DMAX");

@@ -279,6 +279,7 @@ TEST(TemporalRender, RefusesAWeightOutsideTheUnitIntervalAndMissingMotionVectors
     const ocean::Status s = scene.value()->renderer().draw(view);
     EXPECT_EQ(s.code(), ocean::ErrorCode::invalid_argument) << bad;
     EXPECT_NE(s.message().find("temporal_aa.current_weight"), std::string::npos) << s.message();
+    EXPECT_EQ(ocean::render::validate(view).code(), ocean::ErrorCode::invalid_argument) << bad;
   }
   view.temporal_aa.current_weight = 1.0;
   EXPECT_TRUE(scene.value()->renderer().draw(view).ok());

@@ -209,6 +209,11 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
     if (!depth.ok()) return depth.status();
     v.seabed = {.enabled = true, .depth_m = depth.value()};
   }
+  // The first frame's 16 draws share one time: the motion after them is none.
+  if (in.taa && in.frames == 1 && !o.motion_vectors.empty())
+    return invalid_argument(
+        "--motion-vectors with --taa: the first frame's jittered draws share one time, so its "
+        "motion is none; give --frames 2 or more");
   if (o.floating && o.objects.empty())
     return invalid_argument("--float needs at least one --object");
   if (o.floating) {  // the bodies are integrated from t = 0 to the last frame (kMaxFloatTime_s)

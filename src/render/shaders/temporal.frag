@@ -51,5 +51,7 @@ void main() {
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) w = 1.0;  // off screen
   vec3 last = clip_to_box(compress(max(texture(history, uv).rgb, vec3(0.0))),
                           m1 - clip_sigmas * sigma, m1 + clip_sigmas * sigma);
-  colour = vec4(expand(mix(last, now, w)), here.a);
+  // w = 1 (a new history, or off screen) takes the frame alone: the history may be memory never
+  // written, and a NaN in it would survive mix's zero weight.
+  colour = vec4(expand(w >= 1.0 ? now : mix(last, now, w)), here.a);
 }
