@@ -34,8 +34,6 @@ ocean_status fail(ocean_status status, std::string_view message,
 void log_message(ocean_log_level level, const char* message) noexcept;
 /// INFO: what `simulator` was made with, on `threads` threads.
 void log_created(const Simulator& simulator, int threads) noexcept;
-/// The threads of the library's own scheduler with threads = 0: every hardware thread.
-int default_threads() noexcept;
 
 /// Clears this thread's last error and returns OCEAN_OK. Never throws.
 ocean_status succeed() noexcept;

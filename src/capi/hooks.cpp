@@ -1,10 +1,7 @@
 // src/capi/hooks.cpp — where the C ABI's messages and the simulation's large arrays go
 // (ocean_set_log_callback, ocean_set_allocator).
-#include <locale>
 #include <mutex>
-#include <sstream>
 #include <string>
-#include <thread>
 
 #include "capi_internal.hpp"
 #include "ocean/memory.hpp"
@@ -38,21 +35,12 @@ void log_created(const Simulator& simulator, int threads) noexcept {
                        (c.cascade_patch_sizes_m.size() == 1 ? "" : "s") + " of " +
                        std::to_string(c.resolution) + " x " + std::to_string(c.resolution) +
                        " (patches";
-    for (std::size_t i = 0; i < c.cascade_patch_sizes_m.size(); ++i) {
-      std::ostringstream size;  // as few digits as say it, up to 6: 1000, 233, 13.5
-      size.imbue(std::locale::classic());
-      size << c.cascade_patch_sizes_m[i];
-      text += (i == 0 ? " " : ", ") + size.str();
-    }
+    for (std::size_t i = 0; i < c.cascade_patch_sizes_m.size(); ++i)
+      text += (i == 0 ? " " : ", ") + format_number(c.cascade_patch_sizes_m[i]);
     text += " m), on " + std::to_string(threads) + " thread" + (threads == 1 ? "" : "s");
     log_message(OCEAN_LOG_INFO, text.c_str());
   } catch (...) {  // no memory for the message: nothing to say
   }
-}
-
-int default_threads() noexcept {
-  const unsigned n = std::thread::hardware_concurrency();
-  return n == 0 ? 1 : static_cast<int>(n);
 }
 
 }  // namespace ocean::capi

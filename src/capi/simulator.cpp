@@ -184,11 +184,14 @@ OCEAN_API ocean_status ocean_simulator_create(const ocean_config* config, const 
     if (ocean::Status s = require_not_null(config, f, "config"); !s.ok()) return s;
     if (ocean::Status s = require_not_null(backend, f, "backend"); !s.ok()) return s;
     if (ocean::Status s = require_not_null(out, f, "out"); !s.ok()) return s;
+    // The library's own scheduler on every hardware thread, as make_simulator would make it.
+    std::shared_ptr<ocean::TaskRunner> runner(ocean::make_tbb_runner());
+    const int threads = runner->concurrency();
     ocean::Result<std::unique_ptr<ocean::Simulator>> sim =
-        ocean::make_simulator(config->config, backend);
+        ocean::make_simulator(config->config, backend, std::move(runner));
     if (!sim.ok()) return sim.status();
     *out = new ocean_simulator{std::move(sim).value()};
-    log_created(*(*out)->simulator, default_threads());
+    log_created(*(*out)->simulator, threads);
     return {};
   });
 }

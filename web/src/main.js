@@ -70,11 +70,7 @@ async function start() {
   };
   const controls = attachControls(canvas, camera, showCamera);
   // The canvas follows the window's size (the renderer remakes its depth target to match).
-  const fit = () => {
-    canvas.width = Math.max(1, Math.round(canvas.clientWidth * devicePixelRatio));
-    canvas.height = Math.max(1, Math.round(canvas.clientHeight * devicePixelRatio));
-  };
-  window.addEventListener('resize', fit);
+  window.addEventListener('resize', () => fitCanvas(canvas));
 
   // Re-reads the panel; a new wind or fetch rebuilds the spectrum in the core and on the GPU.
   async function applyPanel() {
@@ -148,9 +144,14 @@ function setUp() {
   }
   quality.value = String(sea.resolution);
   const canvas = document.getElementById('view');
+  fitCanvas(canvas);
+  return { form, value, sea, canvas };
+}
+
+// The canvas's pixels: its size on the page at the device's pixel ratio.
+function fitCanvas(canvas) {
   canvas.width = Math.max(1, Math.round(canvas.clientWidth * devicePixelRatio));
   canvas.height = Math.max(1, Math.round(canvas.clientHeight * devicePixelRatio));
-  return { form, value, sea, canvas };
 }
 
 // Without WebGPU: the CPU backend in WebAssembly, drawn from above in a 2D canvas (fallback.js).
