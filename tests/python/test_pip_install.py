@@ -18,7 +18,10 @@ BUILD = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(ocean.__
 
 
 def clean_env(**extra):
-    env = {k: v for k, v in os.environ.items() if k not in ("PYTHONPATH", "PIP_INDEX_URL")}
+    """The environment without the build tree's package on the path and without the machine's pip
+    configuration or cache: the same install on every machine, nothing written to the home."""
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONPATH" and not k.startswith("PIP_")}
+    env.update(PIP_CONFIG_FILE=os.devnull, PIP_NO_CACHE_DIR="1")
     env.update(extra)
     return env
 

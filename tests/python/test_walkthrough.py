@@ -24,10 +24,15 @@ def walkthrough_cells():
     return [ast.get_source_segment(code, node) for node in ast.parse(code).body]
 
 
-def test_the_walkthrough_runs_in_ipython_with_its_output_history():
+def test_the_walkthrough_runs_in_ipython_with_its_output_history(tmp_path, monkeypatch):
     from IPython.core.interactiveshell import InteractiveShell
+    from traitlets.config import Config
 
-    shell = InteractiveShell.instance()
+    # IPython's profile and history in the test's own folder, not the user's home.
+    monkeypatch.setenv("IPYTHONDIR", str(tmp_path))
+    config = Config()
+    config.HistoryManager.hist_file = str(tmp_path / "history.sqlite")
+    shell = InteractiveShell.instance(config=config)
     try:
         seen = {}  # id → (the array in Out, a copy taken when it was shown)
         cells = walkthrough_cells()
