@@ -26,6 +26,7 @@
 #include "errors.hpp"
 #include "integers.hpp"
 #include "ocean/backends.hpp"
+#include "ocean/plan.hpp"
 #include "ocean/task_runner.hpp"
 
 namespace py = pybind11;
@@ -151,20 +152,8 @@ class PySimulator {
 
   // Heights of the rendered surface above world (x, z) points, (n, 2) in, GIL released.
   py::object heights(const DoubleArray& xz, bool full) const {
-    if (xz.ndim() != 2 || xz.shape(1) != 2) {
-      std::string shape;
-      for (py::ssize_t i = 0; i < xz.ndim(); ++i)
-        shape += (i ? ", " : "") + std::to_string(xz.shape(i));
-      raise(invalid_argument("xz must be an (n, 2) array of world (x, z) points, m; got shape (" +
-                             shape + ")"));
-    }
-    const auto n = static_cast<std::size_t>(xz.shape(0));
-    std::vector<std::array<double, 2>> points(n);
-    for (std::size_t i = 0; i < n; ++i) points[i] = {xz.data()[2 * i], xz.data()[2 * i + 1]};
-    for (const auto& p : points) {
-      check(require_finite("x", p[0]));
-      check(require_finite("z", p[1]));
-    }
+    const std::vector<std::array<double, 2>> points = points_of(xz);
+    const std::size_t n = points.size();
     std::vector<HeightSample> samples(n);
     {
       const py::gil_scoped_release release;
@@ -191,6 +180,56 @@ class PySimulator {
     return out;
   }
 
+  // Displacement (Dx, h, Dz) at undisplaced (x, z) points: Simulator::displacement_at, batched.
+  py::array_t<double> displacements(const DoubleArray& xz) const {
+    const std::vector<std::array<double, 2>> points = points_of(xz);
+    const auto count = static_cast<py::ssize_t>(points.size());
+    py::array_t<double> d({count, py::ssize_t{3}});
+    double* out = d.mutable_data();
+    {
+      const py::gil_scoped_release release;
+      const std::shared_lock lock(state_->mutex);
+      for (std::size_t i = 0; i < points.size(); ++i) {
+        const std::array<double, 3> v = state_->sim->displacement_at(points[i][0], points[i][1]);
+        for (std::size_t j = 0; j < 3; ++j) out[3 * i + j] = v[j];
+      }
+    }
+    return d;
+  }
+
+  // Height, normal and particle velocity above world (x, z) points: Simulator::surface_at.
+  py::dict surface(const DoubleArray& xz) const {
+    const std::vector<std::array<double, 2>> points = points_of(xz);
+    const std::size_t n = points.size();
+    std::vector<SurfaceSample> samples(n);
+    {
+      const py::gil_scoped_release release;
+      const std::shared_lock lock(state_->mutex);
+      state_->sim->surface_at(points, samples);
+    }
+    const auto count = static_cast<py::ssize_t>(n);
+    py::array_t<double> h(count);
+    py::array_t<double> normal({count, py::ssize_t{3}});
+    py::array_t<double> velocity({count, py::ssize_t{3}});
+    for (std::size_t i = 0; i < n; ++i) {
+      h.mutable_data()[i] = samples[i].height_m;
+      for (std::size_t j = 0; j < 3; ++j) {
+        normal.mutable_data()[3 * i + j] = samples[i].normal[j];
+        velocity.mutable_data()[3 * i + j] = samples[i].velocity[j];
+      }
+    }
+    py::dict out;
+    out["height"] = h;
+    out["normal"] = normal;
+    out["velocity"] = velocity;
+    return out;
+  }
+
+  [[nodiscard]] std::vector<double> foam_weights() const {
+    const std::shared_lock lock(state_->mutex);
+    return state_->sim->plan().foam().weights;
+  }
+
   [[nodiscard]] double time() const {
     const std::shared_lock lock(state_->mutex);
     return state_->sim->frame().time_s;
@@ -203,6 +242,25 @@ class PySimulator {
   [[nodiscard]] std::string backend() const { return std::string(state_->sim->backend().name()); }
 
  private:
+  // An (n, 2) array of finite world (x, z) points as the library's point list.
+  static std::vector<std::array<double, 2>> points_of(const DoubleArray& xz) {
+    if (xz.ndim() != 2 || xz.shape(1) != 2) {
+      std::string shape;
+      for (py::ssize_t i = 0; i < xz.ndim(); ++i)
+        shape += (i ? ", " : "") + std::to_string(xz.shape(i));
+      raise(invalid_argument("xz must be an (n, 2) array of world (x, z) points, m; got shape (" +
+                             shape + ")"));
+    }
+    const auto n = static_cast<std::size_t>(xz.shape(0));
+    std::vector<std::array<double, 2>> points(n);
+    for (std::size_t i = 0; i < n; ++i) points[i] = {xz.data()[2 * i], xz.data()[2 * i + 1]};
+    for (const auto& p : points) {
+      check(require_finite("x", p[0]));
+      check(require_finite("z", p[1]));
+    }
+    return points;
+  }
+
   // Steps (kick = in the background) after publishing any kicked frame; a back buffer that is
   // still viewed goes to its views first.
   void advance(double time_s, bool kick) {
@@ -300,6 +358,39 @@ numpy.ndarray of float, shape (n,) or dict
     The heights above the mean level, m; with full=True a dict of height (n,), displacement
     (n, 3), source_xz (n, 2) (the undisplaced point that lands at each position) and
     iterations (n,).)doc")
+      .def("displacements", &PySimulator::displacements, py::arg("xz"),
+           R"doc(Displacements of undisplaced points (the GIL released meanwhile).
+
+The point that starts at (x, z) is drawn at (x + Dx, h, z + Dz): each cascade's maps sampled
+bilinearly with wrap addressing, as a GPU samples them, and summed (docs/math.md M.7.6).
+
+Parameters
+----------
+xz : array_like of float, shape (n, 2)
+    Undisplaced world positions (x, z), m.
+
+Returns
+-------
+numpy.ndarray of float, shape (n, 3)
+    (Dx, h, Dz) at each point, m.)doc")
+      .def("surface", &PySimulator::surface, py::arg("xz"),
+           R"doc(The surface above world points: height, normal and particle velocity.
+
+Parameters
+----------
+xz : array_like of float, shape (n, 2)
+    World positions (x, z), m.
+
+Returns
+-------
+dict of str to numpy.ndarray
+    height (n,), m, as ``heights`` returns it; normal (n, 3), the unit normal (nx, ny, nz)
+    of the displaced surface, y up (docs/math.md M.7.11); velocity (n, 3), m/s, of the water
+    particle at the surface (u, w, v), NaN unless the preset's outputs ask for velocity.)doc")
+      .def_property_readonly("foam_weights", &PySimulator::foam_weights,
+                             "Each cascade's weight in the foam coverage sum_c w_c*foam_c of the "
+                             "breaking foam source (docs/rendering.md R.11); empty for the ramp "
+                             "source, whose cascades' foam is united.")
       .def_property_readonly("time", &PySimulator::time, "Time of the published frame, s.")
       .def_property_readonly("frame_index", &PySimulator::frame_index,
                              "Frames computed since the configuration: 1 after the first step.")
