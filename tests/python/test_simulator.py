@@ -123,6 +123,75 @@ def test_heights_at_displaced_texels_are_their_heights(small_preset):
     assert r["displacement"].shape == (len(xz), 3) and r["iterations"].min() >= 1
 
 
+def test_displacements_at_texels_are_the_cascades_summed(small_preset):
+    # M.7.6: texel (col, row) of cascade c starts at (col, row)·L_c/N and bilinear sampling at a
+    # texel is the texel's own value, so where texel (0, 0) of both patches (200 m and 47 m)
+    # starts, at the origin and at multiples of 9400 m = 200·47 m, D is the plain sum of the two
+    # texels; between texels it is the bilinear blend, at a cell's centre the mean of its corners.
+    sim = ocean.Simulator(small_preset)
+    sim.step(2.0)
+    maps = [np.array(sim.fields(c)["displacement"], dtype=np.float64) for c in range(2)]
+    corners = np.array([[0.0, 0.0], [9400.0, -18800.0]])
+    np.testing.assert_allclose(sim.displacements(corners),
+                               np.tile(maps[0][0, 0] + maps[1][0, 0], (2, 1)), rtol=0, atol=1e-9)
+    one = ocean.Simulator(ocean.Preset("moderate").updated(resolution=32, cascades_m=[100.0]))
+    one.step(2.0)
+    d = np.array(one.fields(0)["displacement"], dtype=np.float64)
+    cell = 100.0 / 32
+    centre = np.array([[(5 + 0.5) * cell, (7 + 0.5) * cell]])  # between cols 5-6, rows 7-8
+    mean = (d[7, 5] + d[7, 6] + d[8, 5] + d[8, 6]) / 4
+    np.testing.assert_allclose(one.displacements(centre)[0], mean, rtol=0, atol=1e-12)
+
+
+def test_displaced_points_have_their_heights_and_surface(small_preset):
+    # A point starting at p lands at p + D_xz(p) with height h(p) (M.7.7); surface() returns the
+    # same height as heights() and the normal normalize(−∂η/∂x, 1, −∂η/∂z) (M.7.11), checked by
+    # central differences of heights() over ±1 mm. The field is bilinear in each cell, so its
+    # slope jumps at cell edges: points whose source lies within 5 mm of an edge of either
+    # cascade (where the differences straddle two cells) are left out, about 2 % of them.
+    # Elsewhere the differences err by the third derivative times δ²/6 and by the inverse's stop
+    # (1e-6 m) over 2δ, below 1e-4 (3.6e-5 seen).
+    sim = ocean.Simulator(small_preset)
+    sim.step(4.0)
+    start = np.random.default_rng(3).uniform(-300, 300, size=(200, 2))
+    d = sim.displacements(start)
+    landed = start + d[:, [0, 2]]
+    np.testing.assert_allclose(sim.heights(landed), d[:, 1], rtol=0, atol=1e-6)
+    s = sim.surface(landed)
+    np.testing.assert_array_equal(s["height"], sim.heights(landed))
+    np.testing.assert_allclose(np.linalg.norm(s["normal"], axis=1), 1.0, atol=1e-12)
+    delta = 1e-3
+    margin = [np.abs((start / cell + 0.5) % 1 - 0.5) * cell
+              for cell in np.array(sim.patch_sizes) / sim.resolution]
+    inside = np.all(np.min(margin, axis=0) > 5 * delta, axis=1)
+    assert inside.sum() > 150
+    start, landed, s = start[inside], landed[inside], {k: v[inside] for k, v in s.items()}
+    dx = (sim.heights(landed + [delta, 0]) - sim.heights(landed - [delta, 0])) / (2 * delta)
+    dz = (sim.heights(landed + [0, delta]) - sim.heights(landed - [0, delta])) / (2 * delta)
+    expected = np.column_stack([-dx, np.ones(len(dx)), -dz])
+    expected /= np.linalg.norm(expected, axis=1)[:, None]
+    np.testing.assert_allclose(s["normal"], expected, rtol=0, atol=1e-4)
+    assert np.isnan(s["velocity"]).all()  # the preset's outputs carry no velocity
+
+
+def test_foam_weights_are_shares_of_the_slope_variance(small_preset):
+    # The breaking source weighs each cascade by its share of the bands' slope variance
+    # (docs/rendering.md R.11): positive shares summing to one. The ramp source unites instead.
+    w = ocean.Simulator(small_preset).foam_weights
+    assert len(w) == 2 and min(w) > 0 and sum(w) == pytest.approx(1.0, abs=1e-12)
+    ramp = small_preset.updated({"foam.source": "ramp"})
+    assert ocean.Simulator(ramp).foam_weights == []
+
+
+@pytest.mark.parametrize("method", ["displacements", "surface"])
+def test_point_queries_refuse_bad_points(small_preset, method):
+    sim = ocean.Simulator(small_preset)
+    with pytest.raises(ValueError, match=r"xz must be an \(n, 2\) array .* got shape \(3\)"):
+        getattr(sim, method)(np.zeros(3))
+    with pytest.raises(ValueError, match="x"):
+        getattr(sim, method)(np.array([[np.nan, 0.0]]))
+
+
 def test_heights_from_threads_agree(small_preset):
     # The GIL is released during a query: several threads query at once and get the same values.
     sim = ocean.Simulator(small_preset)
