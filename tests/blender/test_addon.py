@@ -62,7 +62,8 @@ check(bpy.ops.mesh.spectral_ocean_add(preset="moderate", size=SIZE, grid=args.gr
 obj = bpy.context.object
 obj.ocean_sim.resolution = "128"
 scene.frame_set(FRAME)
-check(obj.ocean_sim.status == "", f"the frame change updates the ocean (status '{obj.ocean_sim.status}')")
+check(obj.ocean_sim.status == "",
+      f"the frame change updates the ocean (status '{obj.ocean_sim.status}')")
 
 mesh = obj.data
 n = len(mesh.vertices)
@@ -122,7 +123,8 @@ mesh.calc_normals_split()
 vertex_normal = np.empty(3 * n, dtype=np.float32)
 mesh.vertices.foreach_get("normal", vertex_normal)
 dots = np.sum(normal * vertex_normal.reshape(n, 3), axis=1)
-check(np.median(dots) > 0.99, f"ocean_normal · the mesh's vertex normal: median {np.median(dots):.4f}, "
+check(np.median(dots) > 0.99,
+      f"ocean_normal · the mesh's vertex normal: median {np.median(dots):.4f}, "
       f"minimum {dots.min():.3f}")
 foam = np.empty(n, dtype=np.float32)
 mesh.attributes["ocean_foam"].data.foreach_get("value", foam)

@@ -149,8 +149,9 @@ def test_displaced_points_have_their_heights_and_surface(small_preset):
     # central differences of heights() over ±1 mm. The field is bilinear in each cell, so its
     # slope jumps at cell edges: points whose source lies within 5 mm of an edge of either
     # cascade (where the differences straddle two cells) are left out, about 2 % of them.
-    # Elsewhere the differences err by the third derivative times δ²/6 and by the inverse's stop
-    # (1e-6 m) over 2δ, below 1e-4 (3.6e-5 seen).
+    # Elsewhere the differences err by the third derivative times δ²/6 and by the inverse's
+    # residual over 2δ: heights() meets h(p) to 1.5e-7 m on these points (Newton ends well inside
+    # its 1e-6 m stop), 7.5e-5 over 2 mm; 2e-4 bounds both (3.6e-5 seen).
     sim = ocean.Simulator(small_preset)
     sim.step(4.0)
     start = np.random.default_rng(3).uniform(-300, 300, size=(200, 2))
@@ -170,7 +171,7 @@ def test_displaced_points_have_their_heights_and_surface(small_preset):
     dz = (sim.heights(landed + [0, delta]) - sim.heights(landed - [0, delta])) / (2 * delta)
     expected = np.column_stack([-dx, np.ones(len(dx)), -dz])
     expected /= np.linalg.norm(expected, axis=1)[:, None]
-    np.testing.assert_allclose(s["normal"], expected, rtol=0, atol=1e-4)
+    np.testing.assert_allclose(s["normal"], expected, rtol=0, atol=2e-4)
     assert np.isnan(s["velocity"]).all()  # the preset's outputs carry no velocity
 
 

@@ -13,7 +13,6 @@ Axes: the library is Y-up with the sea in the (x, z) plane; Blender is Z-up. A l
 wind directions are kept; the glTF convention).
 """
 
-import math
 import sys
 
 import bpy
