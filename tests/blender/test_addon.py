@@ -131,6 +131,39 @@ mesh.attributes["ocean_foam"].data.foreach_get("value", foam)
 check(foam.min() >= 0.0 and foam.max() <= 1.0,
       f"ocean_foam in [0, 1]: [{foam.min():.3g}, {foam.max():.3g}], mean {foam.mean():.4f}")
 
+# Foam on a grid whose vertices are texels of both cascades: the storm on 32 texels of 64 m and
+# 16 m (2 m and 0.5 m apart) under a 64 m grid of 33² vertices 2 m apart. Bilinear sampling at a
+# texel is the texel's value (M.7.6), so each vertex's foam is R.11's Σ_c w_c·foam_c of the
+# texels the vertex starts at: (col, row) = (x, z)/(L_c/N) mod N with z = −Y. The preset is made
+# anew by the change (a new simulator stepped once, as the one here), so the foam of both has
+# the same history. The check fails on a swapped row and column or a flipped axis.
+storm = os.path.join(args.out, "storm_64m.json")
+aligned = ocean.Preset("storm").updated(resolution=32, cascades_m=[64.0, 16.0])
+aligned.save(storm)
+saved = (obj.ocean_sim.size, obj.ocean_sim.grid, obj.ocean_sim.resolution)
+obj.ocean_sim.preset, obj.ocean_sim.preset_file = "FILE", storm
+obj.ocean_sim.size, obj.ocean_sim.grid, obj.ocean_sim.resolution = 64.0, 33, "PRESET"
+check(bpy.ops.object.spectral_ocean_update() == {"FINISHED"}, "the storm from a preset file")
+foam = np.empty(33 * 33, dtype=np.float32)
+mesh.attributes["ocean_foam"].data.foreach_get("value", foam)
+storm_sim = ocean.Simulator(aligned)
+storm_sim.step(t)
+s = np.linspace(-32.0, 32.0, 33)
+bx, by = np.meshgrid(s, s)
+x, z = bx.ravel(), -by.ravel()
+expected = np.zeros(33 * 33)
+for c, (w, patch) in enumerate(zip(storm_sim.foam_weights, storm_sim.patch_sizes)):
+    texel = patch / 32
+    col = np.round(x / texel).astype(int) % 32
+    row = np.round(z / texel).astype(int) % 32
+    expected += w * storm_sim.fields(c)["foam"][row, col]
+# float32 storage of values below 1: half an ulp, 6e-8; the weights' sum rounds the same way.
+check(np.abs(foam - expected).max() < 2e-7 and expected.max() > 0.05,
+      f"ocean_foam at texel vertices vs Σ w_c·foam_c: max |Δ| {np.abs(foam - expected).max():.2e}"
+      f" (foam up to {expected.max():.3f}, mean {expected.mean():.4f})")
+obj.ocean_sim.preset = "moderate"
+obj.ocean_sim.size, obj.ocean_sim.grid, obj.ocean_sim.resolution = saved
+
 # Bad values reach the user as the library's one-line message, reported by the operator.
 obj.ocean_sim.override_sea = True
 obj.ocean_sim.wind_speed = 500.0
@@ -154,8 +187,16 @@ obj.ocean_sim.preset = "moderate"
 check(bpy.ops.object.spectral_ocean_update() == {"FINISHED"} and obj.ocean_sim.status == "",
       "the update succeeds again once the values are fixed")
 
-# The bake: two frames from frame 30 through ocean.bake, EXR.
+# The bake: two frames from frame 30 through ocean.bake, EXR; first a folder relative to the
+# .blend file, which is not saved here.
 scene.frame_start, scene.frame_end = FRAME, FRAME + 1
+try:
+    bpy.ops.object.spectral_ocean_bake()
+    message = ""
+except RuntimeError as e:
+    message = str(e)
+check("relative to the .blend file" in message, f"a relative bake folder reported: "
+      f"'{message.strip()}'")
 obj.ocean_sim.bake_path = os.path.join(args.out, "bake")
 check(bpy.ops.object.spectral_ocean_bake() == {"FINISHED"}, "object.spectral_ocean_bake")
 with open(os.path.join(args.out, "bake", "manifest.json")) as f:

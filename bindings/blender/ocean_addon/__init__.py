@@ -366,10 +366,14 @@ class OCEAN_OT_bake(_OnOcean, bpy.types.Operator):
 
     def execute(self, context):
         settings, scene = context.object.ocean_sim, context.scene
-        folder = bpy.path.abspath(settings.bake_path)
         if not settings.bake_path:
             self.report({"ERROR"}, "bake folder: none given")
             return {"CANCELLED"}
+        if settings.bake_path.startswith("//") and not bpy.data.filepath:
+            self.report({"ERROR"}, f"bake folder '{settings.bake_path}' is relative to the "
+                        ".blend file, which is not saved: save it or give an absolute folder")
+            return {"CANCELLED"}
+        folder = bpy.path.abspath(settings.bake_path)
         frames = scene.frame_end - scene.frame_start + 1
         try:
             ocean = _package()
