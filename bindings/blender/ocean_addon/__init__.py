@@ -13,6 +13,8 @@ Axes: the library is Y-up with the sea in the (x, z) plane; Blender is Z-up. A l
 wind directions are kept; the glTF convention).
 """
 
+import concurrent.futures
+import os
 import sys
 
 import bpy
@@ -172,6 +174,21 @@ def sample_wrapped(field, patch_m, xz):
             fv * ((1 - fu) * f[r1, c0] + fu * f[r1, c1]))
 
 
+_WORKERS = os.cpu_count() or 1
+_pool = []  # the thread pool, made on first use and shut down by unregister()
+
+
+def in_parallel(query, xz):
+    """query(xz) split over the cores: the package releases the GIL while it queries, and
+    queries of one simulator run at once (docs/python.md, "Height queries and threads")."""
+    if not _pool:
+        _pool.append(concurrent.futures.ThreadPoolExecutor(max_workers=_WORKERS))
+    parts = list(_pool[0].map(query, np.array_split(xz, max(1, min(len(xz), _WORKERS)))))
+    if isinstance(parts[0], dict):
+        return {k: np.concatenate([p[k] for p in parts]) for k in parts[0]}
+    return np.concatenate(parts)
+
+
 def foam_at(sim, xz):
     """Foam coverage at undisplaced points as the renderer draws it (docs/rendering.md R.11):
     Σ_c w_c·foam_c with the breaking source's weights, else 1 − Π_c(1 − foam_c/(1 + 0.6c)).
@@ -250,11 +267,11 @@ def update_object(obj, scene):
         build_grid(mesh, settings)
     xz = rest_points(settings)
     sim.step(scene_time(scene, settings))
-    d = sim.displacements(xz)  # (Dx, h, Dz) of each rest point, m
+    d = in_parallel(sim.displacements, xz)  # (Dx, h, Dz) of each rest point, m
     moved = xz + d[:, [0, 2]]  # where the library draws it
     co = np.column_stack([moved[:, 0], -moved[:, 1], d[:, 1]])
     mesh.vertices.foreach_set("co", co.astype(np.float32).ravel())
-    normal = sim.surface(moved)["normal"]  # (nx, ny, nz), y up
+    normal = in_parallel(sim.surface, moved)["normal"]  # (nx, ny, nz), y up
     _attribute(mesh, "ocean_normal", "FLOAT_VECTOR").data.foreach_set(
         "vector", np.column_stack([normal[:, 0], -normal[:, 2], normal[:, 1]])
         .astype(np.float32).ravel())
@@ -452,3 +469,5 @@ def unregister():
     for cls in reversed(_classes):
         bpy.utils.unregister_class(cls)
     _Cache.clear()
+    while _pool:
+        _pool.pop().shutdown()
