@@ -223,6 +223,12 @@ class _Cache:
         return held[1]
 
     @classmethod
+    def prune(cls):
+        """Drops the simulators of objects that are gone (deleted or renamed)."""
+        for key in [k for k in cls.sims if k not in bpy.data.objects]:
+            del cls.sims[key]
+
+    @classmethod
     def clear(cls):
         cls.sims.clear()
 
@@ -290,6 +296,7 @@ def _errors():
 
 @persistent
 def on_frame_change(scene, depsgraph=None):
+    _Cache.prune()
     for obj in scene.objects:
         if obj.type == "MESH" and obj.ocean_sim.enabled:
             try:
@@ -297,6 +304,12 @@ def on_frame_change(scene, depsgraph=None):
             except _errors() as e:
                 obj.ocean_sim.status = str(e)
                 print(f"Spectral Ocean: {obj.name}: {e}", file=sys.stderr)
+
+
+@persistent
+def on_load(filename, *rest):
+    """A file opened: its oceans start simulators of their own."""
+    _Cache.clear()
 
 
 def water_material():
@@ -460,9 +473,11 @@ def register():
     bpy.types.Object.ocean_sim = PointerProperty(type=OceanSettings)
     bpy.types.VIEW3D_MT_mesh_add.append(_menu)
     bpy.app.handlers.frame_change_post.append(on_frame_change)
+    bpy.app.handlers.load_post.append(on_load)
 
 
 def unregister():
+    bpy.app.handlers.load_post.remove(on_load)
     bpy.app.handlers.frame_change_post.remove(on_frame_change)
     bpy.types.VIEW3D_MT_mesh_add.remove(_menu)
     del bpy.types.Object.ocean_sim
