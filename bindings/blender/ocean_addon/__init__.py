@@ -285,6 +285,8 @@ def update_object(obj, scene):
     if foam is not None:
         _attribute(mesh, "ocean_foam", "FLOAT").data.foreach_set(
             "value", foam.astype(np.float32))
+    elif mesh.attributes.get("ocean_foam") is not None:  # a preset without foam: none is shown
+        mesh.attributes.remove(mesh.attributes["ocean_foam"])
     mesh.update()
     settings.status = ""
 
