@@ -10,6 +10,7 @@ to DIR/render.png, checking the picture has sea and sky in it. Exit status 0 whe
 holds; each check prints its figure.
 """
 import argparse
+import importlib.util
 import json
 import os
 import sys
@@ -42,17 +43,32 @@ def check(ok, what):
 
 
 os.makedirs(args.out, exist_ok=True)
-sys.path.insert(0, os.path.abspath(args.package))
 sys.path.insert(0, os.path.abspath(args.addons))
 module = addon_utils.enable("ocean_addon", default_set=True)
 check(module is not None and "ocean_addon" in bpy.context.preferences.addons,
       "the add-on is enabled")
-import ocean  # noqa: E402  (importable once the package folder is on sys.path)
 
 scene = bpy.context.scene
 scene.render.fps, scene.render.fps_base = 24, 1.0
 for obj in list(scene.objects):
     bpy.data.objects.remove(obj)
+
+# Without the package on the path, the add-on says where to point it; then its preference does.
+# (Where the package is installed on Blender's own path, e.g. /usr/lib/python3/dist-packages,
+# there is no such case to check.)
+if importlib.util.find_spec("ocean") is None:
+    try:
+        bpy.ops.mesh.spectral_ocean_add(grid=4)
+        message = ""
+    except RuntimeError as e:
+        message = str(e)
+    check("cannot import the Python package 'ocean'" in message and "package folder" in message,
+          f"no package: '{message.strip()}'")
+    for obj in list(scene.objects):
+        bpy.data.objects.remove(obj)
+else:
+    print("(the package is importable before the add-on's preference is set: no such check)")
+bpy.context.preferences.addons["ocean_addon"].preferences.package_path = args.package
 
 # The ocean: the moderate preset at 128 texels on a grid (80 m by default); frame 30 is
 # t = 30/24 s.
@@ -60,6 +76,8 @@ SIZE, FRAME = args.size, 30
 check(bpy.ops.mesh.spectral_ocean_add(preset="moderate", size=SIZE, grid=args.grid)
       == {"FINISHED"}, "mesh.spectral_ocean_add")
 obj = bpy.context.object
+import ocean  # noqa: E402  (the add-on put the package folder on sys.path)
+
 obj.ocean_sim.resolution = "128"
 scene.frame_set(FRAME)
 check(obj.ocean_sim.status == "",
