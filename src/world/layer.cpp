@@ -56,18 +56,31 @@ Status World::update_layer() {
   } else if (params_.wake_area) {
     p.area = *params_.wake_area;
   } else {
-    if (!driven_area_) {  // round the first driven object: its centre a third of a side behind
-      const Object& first = *std::find_if(objects_.begin(), objects_.end(),
-                                          [](const Object& o) { return o.propulsion.has_value(); });
-      const auto& x = first.body->state().position_m;
-      const double back = kDrivenArea_m / 3.0;
-      const double heading = bodies::heading_deg(first.body->state()) * std::numbers::pi / 180.0;
-      driven_area_ = {.origin_m = {x[0] - back * std::cos(heading) - 0.5 * kDrivenArea_m,
-                                   x[2] - back * std::sin(heading) - 0.5 * kDrivenArea_m},
+    // Round the first driven object: its centre a sixth of a side behind it, so the wake trails
+    // into it and the object stays clear of the soft edge; laid again, whole cells over, once the
+    // object has gone a sixteenth of a side from where that puts it, so the area moves with it
+    // (docs/waves.md W.22).
+    const Object& first = *std::find_if(objects_.begin(), objects_.end(),
+                                        [](const Object& o) { return o.propulsion.has_value(); });
+    const auto& x = first.body->state().position_m;
+    const double back = kDrivenArea_m / 6.0, half = 0.5 * kDrivenArea_m;
+    const double heading = bodies::heading_deg(first.body->state()) * std::numbers::pi / 180.0;
+    const std::array<double, 2> want{x[0] - back * std::cos(heading) - half,
+                                     x[2] - back * std::sin(heading) - half};
+    if (!driven_area_ || std::hypot(want[0] - driven_area_->origin_m[0],
+                                    want[1] - driven_area_->origin_m[1]) > kDrivenArea_m / 16.0) {
+      const double cell = kDrivenArea_m / kDrivenAreaResolution;
+      driven_area_ = {.origin_m = {cell * std::round(want[0] / cell),
+                                   cell * std::round(want[1] / cell)},
                       .size_m = kDrivenArea_m,
-                      .resolution = kDrivenAreaResolution};
+                      .resolution = kDrivenAreaResolution,
+                      .edge_fraction = kDrivenAreaEdgeFraction};
     }
     p.area = *driven_area_;
+    // The waves fade behind the object before the area's border (W.22): e^{−s/(side/4)}, 4 % of
+    // their height at the back edge, two thirds of a side behind.
+    for (waves::KelvinWake& w : wakes_)
+      if (w.fade_length_m == 0.0) w.fade_length_m = 0.25 * kDrivenArea_m;
   }
   for (waves::KelvinWake& w : wakes_) p.wakes.push_back(std::move(w));
   if (driven_layer_ != nullptr && same_wakes(driven_layer_->params().wakes, p.wakes)) return {};

@@ -70,7 +70,7 @@ Status make_body(World::Object& o, const ObjectDesc& desc, const std::string& na
         bodies::Propulsion::make(propulsion_for(params.value(), gravity_mps2));
     if (!propulsion.ok()) return propulsion.status();
     o.propulsion = propulsion.value();
-    Result<waves::WakeTrack> track = waves::WakeTrack::make(wake_track_for(params.value().hull));
+    Result<waves::WakeTrack> track = waves::WakeTrack::make(wake_track_for(params.value()));
     if (!track.ok()) return track.status();
     o.track = std::move(track).value();
   }
