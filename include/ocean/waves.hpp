@@ -347,11 +347,23 @@ class Damping {
   DampingParams params_;
 };
 
+/// A floating object's waterline foam without a wake (W.20): the rim of its footprint, an
+/// ellipse of length_m along its heading and foam.beam_m across it, centred at (x, z).
+struct Footprint {
+  double x_m = 0.0, z_m = 0.0;  ///< centre, finite
+  double heading_deg = 0.0;     ///< finite
+  double length_m = 1.0;        ///< (0, 1000]
+  HullFoam foam;                ///< its beam, coverage and rim width (no trail: it is at rest)
+};
+/// invalid_argument naming the field.
+Status validate(const Footprint& footprint);
+
 /// Everything composited into a layer.
 struct LayerParams {
   LocalArea area;
   std::vector<KelvinWake> wakes;
   std::vector<Waveform> waveforms;
+  std::vector<Footprint> footprints;  ///< waterline foam of objects at rest (W.20)
   double choppiness = 1.0;     ///< λ ≥ 0 for the wakes' horizontal displacement (finite)
   double gravity_mps2 = 9.81;  ///< g > 0
 };
@@ -391,7 +403,8 @@ class LocalLayer {
   /// times the soft-edge weight. Never allocates.
   [[nodiscard]] std::array<double, 3> displacement_at(double x, double z, double time_s) const;
   /// The hulls' foam coverage in [0, 1] at world (x, z) at time t (W.20–W.21): the largest of the
-  /// wakes' HullFoam at their poses, times the soft-edge weight. Never allocates.
+  /// wakes' HullFoam at their poses and of the footprints', times the soft-edge weight. Never
+  /// allocates.
   [[nodiscard]] double foam_at(double x, double z, double time_s) const;
   /// Evaluates every cell at time t (displacement_at at the cell centres), sizing `out`.
   void evaluate(double time_s, LocalFrame& out) const;

@@ -141,6 +141,9 @@ struct WorldParams {
   double choppiness = 1.0;  ///< λ of the driven wakes' horizontal displacement without a `layer`
   double start_time_s = 0.0;  ///< the time the objects are at their start
 };
+/// The waterline foam's coverage round a floating object at rest (docs/waves.md W.20): half of
+/// a driven hull's, the foam of waves breaking against it now and then.
+inline constexpr double kRestFoamCoverage = 0.5;
 /// The side and grid of the square laid round a driven object (WorldParams::wake_area unset):
 /// 0.3 m cells, 12 transverse wavelengths of a boat at 5 m/s behind it.
 inline constexpr double kDrivenArea_m = 320.0;
@@ -212,6 +215,9 @@ class World {
   [[nodiscard]] const bodies::Propulsion* propulsion(std::size_t index) const;
   /// Appends the Kelvin wake of every driven object whose track is fast and long enough (W.17).
   void driven_wakes(std::vector<waves::KelvinWake>& out) const;
+  /// Appends the waterline foam (docs/waves.md W.20) of every floating object that is not
+  /// driven, at its present position and heading: its hull's length along x and breadth across z.
+  void rest_footprints(std::vector<waves::Footprint>& out) const;
   /// The layer the sea is handed: the caller's with the driven wakes, or the caller's, or null.
   [[nodiscard]] const std::shared_ptr<const waves::LocalLayer>& local_layer() const;
   /// How many wake tables the driven layers made so far computed (the rest were shared).
@@ -222,7 +228,7 @@ class World {
  private:
   World() = default;
   Status step_bodies(double time_s, Simulator& sea, const AdvanceHooks& hooks);
-  Status update_layer();
+  Status update_layer(const Simulator& sea);
   WorldParams params_;
   double gravity_mps2_ = 9.81;
   std::vector<Object> objects_;
@@ -232,6 +238,7 @@ class World {
   std::shared_ptr<const waves::LocalLayer> driven_layer_;  // given_layer_ + the driven wakes
   std::optional<waves::LocalArea> driven_area_;            // laid round the first driven object
   std::vector<waves::KelvinWake> wakes_;                   // scratch
+  std::vector<waves::Footprint> footprints_;               // scratch
   std::size_t tables_computed_ = 0;
 };
 

@@ -27,6 +27,15 @@ Status validate(const HullFoam& f) {
   return require_in_range("foam.spread_exponent", f.spread_exponent, 0.0, 1.0);
 }
 
+Status validate(const Footprint& f) {
+  if (Status s = require_finite("x_m", f.x_m); !s.ok()) return s;
+  if (Status s = require_finite("z_m", f.z_m); !s.ok()) return s;
+  if (Status s = require_finite("heading_deg", f.heading_deg); !s.ok()) return s;
+  if (Status s = require_positive("length_m", f.length_m); !s.ok()) return s;
+  if (Status s = require_in_range("length_m", f.length_m, 0.0, 1000.0); !s.ok()) return s;
+  return validate(f.foam);
+}
+
 double trail_half_width_m(const HullFoam& f, double hull_length_m, double s_m) {
   return 0.5 * f.beam_m * std::pow(1.0 + std::max(s_m, 0.0) / hull_length_m, f.spread_exponent);
 }

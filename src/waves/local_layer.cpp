@@ -160,6 +160,10 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
     if (Status s = validate(params.waveforms[i]); !s.ok())
       return named("waveforms[" + std::to_string(i) + "].", s);
   }
+  for (std::size_t i = 0; i < params.footprints.size(); ++i) {
+    if (Status s = validate(params.footprints[i]); !s.ok())
+      return named("footprints[" + std::to_string(i) + "].", s);
+  }
   std::unique_ptr<LocalLayer> layer(new LocalLayer());
   layer->impl_ = std::make_unique<Impl>();
   Impl& impl = *layer->impl_;
@@ -280,12 +284,25 @@ double hull_foam(const KelvinWake& w, const Placed& p, double x, double z) {
                             -dx * p.sin_h + dz * p.cos_h);
 }
 
+// The footprints' waterline foam at world (x, z) (W.20).
+double footprint_foam(const std::vector<Footprint>& footprints, double x, double z) {
+  double c = 0.0;
+  for (const Footprint& f : footprints) {
+    const double h = f.heading_deg * std::numbers::pi / 180.0;
+    const double dx = x - f.x_m, dz = z - f.z_m;
+    const double cos_h = std::cos(h), sin_h = std::sin(h);
+    c = std::max(c, hull_foam_coverage(f.foam, f.length_m, 0.0, -(dx * cos_h + dz * sin_h),
+                                       -dx * sin_h + dz * cos_h));
+  }
+  return c;
+}
+
 }  // namespace
 
 double LocalLayer::foam_at(double x, double z, double time_s) const {
   const double weight = edge_weight(params_.area, x, z);
   if (weight == 0.0) return 0.0;
-  double c = 0.0;
+  double c = footprint_foam(params_.footprints, x, z);
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     const KelvinWake& w = params_.wakes[i];
     if (w.foam.beam_m > 0.0)
@@ -327,7 +344,7 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
       for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z, time_s);
       float* cell = out.displacement.data() + 3 * (row * n + col);
       for (std::size_t k = 0; k < 3; ++k) cell[k] = static_cast<float>(weight * d[k]);
-      double foam = 0.0;
+      double foam = footprint_foam(params_.footprints, x, z);
       for (std::size_t i = 0; i < placed.size(); ++i) {
         if (params_.wakes[i].foam.beam_m > 0.0)
           foam = std::max(foam, hull_foam(params_.wakes[i], placed[i], x, z));

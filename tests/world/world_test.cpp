@@ -85,9 +85,17 @@ TEST(World, AFloatingBoxAtRestOnACalmSeaStaysAtArchimedesDraught) {
   EXPECT_NEAR(pose.position_m[2], -2.0, 1e-6);
   const auto level = ocean::bodies::orientation_from_heading(30.0);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(pose.orientation[i], level[i], 1e-6) << i;
-  // Nothing is driven: no wake, and no layer handed to the sea.
-  EXPECT_EQ(world.value()->local_layer(), nullptr);
-  EXPECT_EQ(sea->local_layer(), nullptr);
+  // Nothing is driven: no wake; the layer handed to the sea holds the box's waterline foam
+  // (W.20) round it, on its rim and nowhere else.
+  const auto& layer = world.value()->local_layer();
+  ASSERT_NE(layer, nullptr);
+  EXPECT_EQ(sea->local_layer(), layer.get());
+  EXPECT_TRUE(layer->params().wakes.empty());
+  ASSERT_EQ(layer->params().footprints.size(), 1u);
+  const double t = world.value()->time_s();
+  EXPECT_NEAR(layer->foam_at(3.0, -2.0, t), ocean::world::kRestFoamCoverage, 1e-9);  // inside
+  EXPECT_LT(layer->foam_at(3.0 + 6.0, -2.0, t), 1e-9);                             // 6 m off
+  EXPECT_EQ(layer->displacement_at(3.0, -2.0, t)[1], 0.0);                         // no waves
 }
 
 TEST(World, ObjectsThatDoNotFloatStayWherePlaced) {
@@ -187,7 +195,9 @@ TEST(World, WithoutASquareTheWakeIsLaidRoundTheFirstDrivenObject) {
   World& world = *made.value();
   // Frame by frame until the first wake: the square is laid then, round the boat as it is.
   double t = 0.0;
-  while (world.local_layer() == nullptr && t < 10.0) {
+  // (The buoy's waterline foam makes a layer of its own from the start.)
+  while ((world.local_layer() == nullptr || world.local_layer()->params().wakes.empty()) &&
+         t < 10.0) {
     t += 1.0 / 30;
     ASSERT_TRUE(world.advance_to(t, *sea).ok());
   }
