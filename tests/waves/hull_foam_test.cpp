@@ -162,6 +162,25 @@ TEST(HullFoam, WaterlineFoamOnTheFootprintsRim) {
   EXPECT_GT(f.at(col, row_side), 0.9);
 }
 
+TEST(HullFoam, FootprintsFoamTheirRimAtRestAndAreValidated) {
+  // A footprint (an object at rest) foams as a hull of no speed: its rim, no trail (W.20).
+  LayerParams p;
+  p.area = {.origin_m = {-16.0, -16.0}, .size_m = 32.0, .resolution = 128};
+  p.footprints.push_back({.x_m = 2.0, .z_m = 1.0, .heading_deg = 90.0, .length_m = 4.0,
+                          .foam = {.beam_m = 2.0, .coverage = 0.5}});
+  auto layer = LocalLayer::make(p);
+  ASSERT_TRUE(layer.ok()) << layer.status().message();
+  // Heading +z: 2 m along z to the ends, 1 m along x to the sides.
+  EXPECT_DOUBLE_EQ(layer.value()->foam_at(2.0, 1.0, 0.0), 0.5);
+  EXPECT_NEAR(layer.value()->foam_at(2.0 + 1.0 + 0.5, 1.0, 0.0), 0.5 * std::exp(-1.0), 1e-12);
+  EXPECT_NEAR(layer.value()->foam_at(2.0, 1.0 - 2.0 - 1.0, 0.0),
+              0.5 * std::exp(-(0.5 * 0.5) / (0.5 * 0.5)), 1e-12);  // r = 1.5 behind: d = 0.5
+  p.footprints[0].length_m = 0.0;
+  auto bad = LocalLayer::make(p);
+  ASSERT_FALSE(bad.ok());
+  EXPECT_NE(bad.status().message().find("footprints[0].length_m"), std::string::npos);
+}
+
 TEST(HullFoam, BadParametersAreRefusedByName) {
   KelvinWake w;
   w.foam.beam_m = -1.0;
