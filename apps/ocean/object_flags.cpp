@@ -74,11 +74,28 @@ Result<ObjectSpec> parse_object_spec(const std::string& text) {
   return spec;
 }
 
-Result<render::Mesh> built_in_mesh(const std::string& kind) {
+Result<std::vector<render::Mesh>> built_in_meshes(const std::string& kind) {
   const BuiltIn b = built_in(kind);
   Result<bodies::Hull> hull = world::shape_hull(b.shape);
   if (!hull.ok()) return hull.status();
-  return render::flat_mesh(hull.value().vertices, hull.value().triangles, b.material);
+  std::vector<render::Mesh> out;
+  if (b.shape != world::Shape::boat) {
+    out.push_back(render::flat_mesh(hull.value().vertices, hull.value().triangles, b.material));
+    return out;
+  }
+  // The boat: a dark blue hull (the foam along its waterline shows against it), teak deck, white
+  // bulwark and cabin, dark glass (bodies::boat_topside, of the world's boat's size).
+  Result<bodies::BoatTopside> top = world::boat_topside();
+  if (!top.ok()) return top.status();
+  const auto add = [&](const bodies::Hull& h, const render::Material& m) {
+    out.push_back(render::flat_mesh(h.vertices, h.triangles, m));
+  };
+  add(hull.value(), {.base_colour = {0.05, 0.09, 0.2}, .roughness = 0.3});
+  add(top.value().deck, {.base_colour = {0.45, 0.3, 0.16}, .roughness = 0.6});
+  add(top.value().bulwark, b.material);
+  add(top.value().cabin, b.material);
+  add(top.value().windows, {.base_colour = {0.02, 0.03, 0.04}, .roughness = 0.08});
+  return out;
 }
 
 Result<RenderObjects> load_objects(const std::vector<ObjectSpec>& specs, bool floating) {
@@ -103,8 +120,9 @@ Result<RenderObjects> load_objects(const std::vector<ObjectSpec>& specs, bool fl
       const BuiltIn b = built_in(spec.kind);
       Result<bodies::Hull> hull = world::shape_hull(b.shape);
       if (!hull.ok()) return hull.status();
-      out.meshes.push_back(
-          render::flat_mesh(hull.value().vertices, hull.value().triangles, b.material));
+      Result<std::vector<render::Mesh>> meshes = built_in_meshes(spec.kind);
+      if (!meshes.ok()) return meshes.status();
+      for (render::Mesh& m : meshes.value()) out.meshes.push_back(std::move(m));
       desc.hull = std::move(hull).value();
       desc.density_kgpm3 = world::shape_density_kgpm3(b.shape);
     }

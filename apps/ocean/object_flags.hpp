@@ -50,8 +50,9 @@ struct RenderObjects {
 /// Builds the meshes (loading glTF files) and, with `floating`, each object's hull (a glTF
 /// file's meshes welded). Errors: the file's (load_gltf).
 Result<RenderObjects> load_objects(const std::vector<ObjectSpec>& specs, bool floating);
-/// The mesh of a built-in object ("box", "buoy" or "boat").
-Result<render::Mesh> built_in_mesh(const std::string& kind);
+/// The meshes of a built-in object ("box", "buoy" or "boat": its hull, then for the boat its
+/// deck, bulwark, cabin and windows), in the hull's frame.
+Result<std::vector<render::Mesh>> built_in_meshes(const std::string& kind);
 
 /// Advances the world to time_s (World::advance_to, handing `sea` its layer); a span of
 /// kFloatProgressSpan_s or more of floating bodies shows a progress bar on stderr ("floating

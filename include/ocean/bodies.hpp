@@ -60,6 +60,18 @@ Result<Hull> buoy_hull(double radius_m, double height_m, int segments = 24);
 /// A procedural boat: length L along +x (bow at +x), beam B, depth D; a wall-sided hull whose
 /// half-breadth is B/2·(1 − |2x/L|^p) at the deck, narrowing towards the keel (B.6).
 Result<Hull> boat_hull(double length_m, double beam_m, double depth_m);
+/// What stands on that boat's deck, in the frame boat_hull returns (centred on the hull's centre
+/// of volume): deck planking, a bulwark along the sheer and across the transom, a cabin amidships
+/// with a raked windscreen, and its windows — closed meshes to draw with the hull. They stay
+/// above the water as the boat floats, so the buoyancy and its mass (the hull's alone) do not
+/// see them. invalid_argument as boat_hull.
+struct BoatTopside {
+  Hull deck;
+  Hull bulwark;
+  Hull cabin;
+  Hull windows;
+};
+Result<BoatTopside> boat_topside(double length_m, double beam_m, double depth_m);
 
 /// The water the bodies float in.
 struct Water {

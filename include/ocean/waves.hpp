@@ -66,6 +66,53 @@ struct Waypoint {
   double z_m = 0.0;
 };
 
+/// The foam a hull makes (docs/waves.md W.20–W.21): along its waterline, the rim of its footprint
+/// (an ellipse of the wake's length L and of width beam_m, centred on the object and along its
+/// heading), and a trail behind it whose half width grows as b(s) = B/2·(1 + s/L)^n (a turbulent
+/// wake's spreading, Tennekes & Lumley 1972, §4.2), whose foam is spread over that width and ages
+/// as e^{−τ/T} with its age τ = s/U. The simulator carries it on with the sea's own foam
+/// accumulation and decay (M.7.4, M.7.9).
+struct HullFoam {
+  /// B, the footprint's width at the waterline, m, finite, in [0, 1000]; 0: no foam.
+  double beam_m = 0.0;
+  /// C₀, the foam's coverage on the waterline and at the trail's start, in [0, 1].
+  double coverage = 1.0;
+  /// The waterline foam's e-folding width outside the footprint, m, in [0, 100]; 0: B/4.
+  double rim_width_m = 0.0;
+  /// T, the trail's foam lifetime, s, in (0, 3600]: the bubbles a hull and its propeller mix in
+  /// last minutes, far longer than a whitecap's foam (W.21).
+  double lifetime_s = 40.0;
+  /// n, the trail's spreading exponent, in [0, 1]: ½ a plane wake, ⅓ an axisymmetric one
+  /// (Tennekes & Lumley 1972, §4.2).
+  double spread_exponent = 1.0 / 3.0;
+};
+/// invalid_argument naming the field.
+Status validate(const HullFoam& foam);
+/// The half width b(s) of the trail s metres behind the object (W.21), m.
+double trail_half_width_m(const HullFoam& foam, double hull_length_m, double s_m);
+/// The foam coverage in [0, 1] of a hull of length L at speed U (m/s), at s metres behind its
+/// centre and ζ to its left (W.20–W.21): the larger of the waterline's and the trail's.
+double hull_foam_coverage(const HullFoam& foam, double hull_length_m, double speed_mps, double s_m,
+                          double zeta_m);
+
+/// A thin ship's hull for Michell's integral (W.23): its half-breadth f ≥ 0 below the
+/// waterline, constant on each cell of a grid over x in [−L/2, L/2] (bow at +x) and depth in
+/// [0, T], 0 beyond the ends (a transom is a step).
+struct ThinHull {
+  double length_m = 0.0;  ///< L, [0.01, 1000]
+  double draft_m = 0.0;   ///< T, [1e-4, 1000]
+  int columns = 0;        ///< cells along x, [2, 4096]
+  int rows = 0;           ///< cells in depth, [1, 4096]
+  /// f per cell, m, index row·columns + column; row 0 at the waterline, column 0 at the stern.
+  std::vector<double> half_breadth_m;
+};
+/// invalid_argument naming the field.
+Status validate(const ThinHull& hull);
+/// Michell's wave resistance of the hull at speed U over the density of the water, R/ρ in m⁴/s²
+/// (W.23). The hull is validated by the caller.
+double michell_resistance_per_density(const ThinHull& hull, double speed_mps,
+                                      double gravity_mps2 = 9.81);
+
 /// The steady ship-wave pattern of an object moving over deep, calm water (W.1–W.7): the linear
 /// wake of a pressure disturbance of length hull_length_m (a slender cone-tipped pressure
 /// p ∝ e^{−ρ/a}, ρ² = s² + (ζ/β)², β = kWakePressureAspect, W.4), centred on the object's
@@ -78,8 +125,11 @@ struct KelvinWake {
   double heading_deg = 0.0;     ///< direction of travel, finite (no path)
   double speed_mps = 5.0;       ///< U, finite, in (0, 100] (no path)
   double hull_length_m = 10.0;  ///< L, finite, in [0.01, 1000]
-  /// The largest |height| of the steady pattern, m (≥ 0, finite); unset: 0.02·L.
+  /// The largest |height| of the steady pattern, m (≥ 0, finite); unset: the height whose
+  /// pattern carries Michell's wave resistance of `thin_hull` (W.24), or without one 0.02·L.
   std::optional<double> peak_height_m;
+  /// The hull that makes the wake (W.23–W.24); its length should be hull_length_m. Null: none.
+  std::shared_ptr<const ThinHull> thin_hull;
   /// Optional fade of the amplitude behind the object, e^{−s/fade_length_m}, m; 0 = none (the
   /// pattern then decays only as the linear solution does, W.8).
   double fade_length_m = 0.0;
@@ -90,6 +140,8 @@ struct KelvinWake {
   /// on a turn). One waypoint: the object stays there, with heading_deg and speed_mps (a moored
   /// object in a current).
   std::vector<Waypoint> path;
+  /// The foam along the hull's waterline and in its trail (W.20–W.21); beam_m = 0: none.
+  HullFoam foam;
 };
 /// invalid_argument for NaN, negative or out-of-range values, naming the field.
 Status validate(const KelvinWake& wake);
@@ -105,9 +157,11 @@ WakePose pose_at(const KelvinWake& wake, double time_s);
 /// What a WakeTrack records and the wake it makes (W.17).
 struct WakeTrackParams {
   double hull_length_m = 10.0;  ///< L of the wake, [0.01, 1000]
-  /// The wake's largest |height|, m (≥ 0); unset: 0.02·L (as KelvinWake).
+  /// The wake's largest |height|, m (≥ 0); unset: as KelvinWake (from thin_hull, or 0.02·L).
   std::optional<double> peak_height_m;
+  std::shared_ptr<const ThinHull> thin_hull;  ///< as KelvinWake
   double fade_length_m = 0.0;  ///< as KelvinWake, m ≥ 0
+  HullFoam foam;               ///< as KelvinWake
   double interval_s = 0.5;     ///< time between recorded waypoints, (0, 60]
   int waypoints = 8;           ///< how many of the newest are kept, [2, 4096]
   /// Below this speed over the kept track (m/s, [0, 100)) the object makes no wake.
@@ -293,11 +347,23 @@ class Damping {
   DampingParams params_;
 };
 
+/// A floating object's waterline foam without a wake (W.20): the rim of its footprint, an
+/// ellipse of length_m along its heading and foam.beam_m across it, centred at (x, z).
+struct Footprint {
+  double x_m = 0.0, z_m = 0.0;  ///< centre, finite
+  double heading_deg = 0.0;     ///< finite
+  double length_m = 1.0;        ///< (0, 1000]
+  HullFoam foam;                ///< its beam, coverage and rim width (no trail: it is at rest)
+};
+/// invalid_argument naming the field.
+Status validate(const Footprint& footprint);
+
 /// Everything composited into a layer.
 struct LayerParams {
   LocalArea area;
   std::vector<KelvinWake> wakes;
   std::vector<Waveform> waveforms;
+  std::vector<Footprint> footprints;  ///< waterline foam of objects at rest (W.20)
   double choppiness = 1.0;     ///< λ ≥ 0 for the wakes' horizontal displacement (finite)
   double gravity_mps2 = 9.81;  ///< g > 0
 };
@@ -307,6 +373,7 @@ struct LocalFrame {
   double time_s = 0.0;
   LocalArea area;
   std::vector<float> displacement;  ///< float3 (Dx, h, Dz) per cell, index row·N + col, m
+  std::vector<float> foam;  ///< the hulls' foam coverage in [0, 1] per cell (W.20–W.21)
 };
 
 class LocalLayer {
@@ -335,6 +402,10 @@ class LocalLayer {
   /// wakes (their tables moved and turned to each object's pose, bilinear) and the waveforms,
   /// times the soft-edge weight. Never allocates.
   [[nodiscard]] std::array<double, 3> displacement_at(double x, double z, double time_s) const;
+  /// The hulls' foam coverage in [0, 1] at world (x, z) at time t (W.20–W.21): the largest of the
+  /// wakes' HullFoam at their poses and of the footprints', times the soft-edge weight. Never
+  /// allocates.
+  [[nodiscard]] double foam_at(double x, double z, double time_s) const;
   /// Evaluates every cell at time t (displacement_at at the cell centres), sizing `out`.
   void evaluate(double time_s, LocalFrame& out) const;
   /// Warnings, one line each, for what will not show at time t: an object outside the area, a

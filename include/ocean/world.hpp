@@ -40,6 +40,8 @@ enum class Shape : std::uint8_t {
 };
 /// The shape's hull, centred on its centre of volume.
 Result<bodies::Hull> shape_hull(Shape shape);
+/// The deck, bulwark, cabin and windows of Shape::boat, in its hull's frame (bodies::boat_topside).
+Result<bodies::BoatTopside> boat_topside();
 /// Densities of the built-in objects and of other hulls (a glTF mesh) when they float, kg/m³.
 inline constexpr double kBoxDensity_kgpm3 = 500.0, kBuoyDensity_kgpm3 = 400.0,
                         kBoatDensity_kgpm3 = 350.0, kMeshDensity_kgpm3 = 500.0;
@@ -55,18 +57,26 @@ struct MeshView {
 /// that is not closed.
 bodies::Hull welded_hull(std::span<const MeshView> meshes);
 
-/// The wake's peak height per hull length of a driven object: a fast motor boat's 0.05·L (above
-/// the library's 0.02·L for displacement hulls), so the wake shows in a moderate sea.
-inline constexpr double kWakePeakPerLength = 0.05;
+/// The wake's peak height per hull length of a driven object whose hull has no thin-ship
+/// description (thin_hull_of finds no draught): a fast motor boat's 0.05·L.
+inline constexpr double kDefaultWakePeakPerLength = 0.05;
 /// The propulsion of a driven object (B.8–B.10), sized from its body: a thrust of up to half its
 /// weight (a fast motor boat's: 200 kW at 7 m/s for the built-in boat) acting at 0.9 of the
 /// hull's aft extent, at the height of the centre of mass (the drag alone trims it), the speed
 /// loop's τ_u = 2.5 s (98 % of a new speed in 6τ_u = 15 s), a steering moment of up to I_ψ·0.5
 /// rad/s² with τ_ψ = 2 s.
 bodies::PropulsionParams propulsion_for(const bodies::BodyParams& body, double gravity_mps2 = 9.81);
-/// The track of a driven object (W.17): its hull's length along x as L, a peak of
-/// kWakePeakPerLength·L, a waypoint every 0.5 s, 8 kept.
-waves::WakeTrackParams wake_track_for(const bodies::Hull& hull);
+/// The hull as a thin ship (docs/waves.md W.23): its half-breadth (half its width across z) on a
+/// 64 × 16 grid from stern to bow and from the still-water line down to the keel, the line where
+/// the water displaced by the level hull weighs mass_kg. nullopt for a hull with no length or
+/// that would not float.
+std::optional<waves::ThinHull> thin_hull_of(const bodies::Hull& hull, double mass_kg,
+                                            double water_density_kgpm3 = 1025.0);
+/// The track of a driven object (W.17): its hull's length along x as L, its widest breadth as
+/// the foam's beam (W.20–W.21), its thin hull (thin_hull_of) for the wake's height (W.24; without
+/// one kDefaultWakePeakPerLength·L), a waypoint every 0.5 s, 8 kept.
+waves::WakeTrackParams wake_track_for(const bodies::BodyParams& body,
+                                      double water_density_kgpm3 = 1025.0);
 
 /// A circle a driven object is steered round, from +x towards +z (B.11).
 struct Circle {
@@ -123,16 +133,24 @@ struct WorldParams {
   /// built by make() (LocalLayer::make); the driven objects' wakes are added to it. Unset: none.
   std::optional<waves::LayerParams> layer;
   /// The square the driven wakes are drawn in without a `layer`; unset: a kDrivenArea_m square
-  /// laid round the first driven object when its first wake appears (its centre a third of the
-  /// side behind it, so the wake trails into it), kept after.
+  /// laid round the first driven object when its first wake appears (its centre a sixth of the
+  /// side behind it, so the wake trails into it), laid again whenever the object has gone a
+  /// sixteenth of its side from there, its soft edge kDrivenAreaEdgeFraction and the driven wakes
+  /// faded over a quarter side behind their objects (docs/waves.md W.22).
   std::optional<waves::LocalArea> wake_area;
   double choppiness = 1.0;  ///< λ of the driven wakes' horizontal displacement without a `layer`
   double start_time_s = 0.0;  ///< the time the objects are at their start
 };
+/// The waterline foam's coverage round a floating object at rest (docs/waves.md W.20): half of
+/// a driven hull's, the foam of waves breaking against it now and then.
+inline constexpr double kRestFoamCoverage = 0.5;
 /// The side and grid of the square laid round a driven object (WorldParams::wake_area unset):
 /// 0.3 m cells, 12 transverse wavelengths of a boat at 5 m/s behind it.
 inline constexpr double kDrivenArea_m = 320.0;
 inline constexpr int kDrivenAreaResolution = 1024;
+/// The soft edge of that square (waves::LocalArea::edge_fraction): a quarter of its side, so the
+/// layer fades into the sea over 80 m and no border shows (docs/waves.md W.22).
+inline constexpr double kDrivenAreaEdgeFraction = 0.25;
 /// The bodies' fixed step, s; the own sea is simulated every second step.
 inline constexpr double kBodyStep_s = 1.0 / 60;
 /// Calm-water settling of a circling object before it starts, s.
@@ -197,6 +215,9 @@ class World {
   [[nodiscard]] const bodies::Propulsion* propulsion(std::size_t index) const;
   /// Appends the Kelvin wake of every driven object whose track is fast and long enough (W.17).
   void driven_wakes(std::vector<waves::KelvinWake>& out) const;
+  /// Appends the waterline foam (docs/waves.md W.20) of every floating object that is not
+  /// driven, at its present position and heading: its hull's length along x and breadth across z.
+  void rest_footprints(std::vector<waves::Footprint>& out) const;
   /// The layer the sea is handed: the caller's with the driven wakes, or the caller's, or null.
   [[nodiscard]] const std::shared_ptr<const waves::LocalLayer>& local_layer() const;
   /// How many wake tables the driven layers made so far computed (the rest were shared).
@@ -207,7 +228,7 @@ class World {
  private:
   World() = default;
   Status step_bodies(double time_s, Simulator& sea, const AdvanceHooks& hooks);
-  Status update_layer();
+  Status update_layer(const Simulator& sea);
   WorldParams params_;
   double gravity_mps2_ = 9.81;
   std::vector<Object> objects_;
@@ -217,6 +238,7 @@ class World {
   std::shared_ptr<const waves::LocalLayer> driven_layer_;  // given_layer_ + the driven wakes
   std::optional<waves::LocalArea> driven_area_;            // laid round the first driven object
   std::vector<waves::KelvinWake> wakes_;                   // scratch
+  std::vector<waves::Footprint> footprints_;               // scratch
   std::size_t tables_computed_ = 0;
 };
 

@@ -94,8 +94,13 @@ void composite_local_surface(const SimulationPlan& plan, const waves::Damping* d
         const packing::SurfacePoint s = packing::surface_point(sum);
         local.jacobian[i] = s.jacobian;
         for (std::size_t k = 0; k < 3; ++k) local.normal[3 * i + k] = s.normal[k];
-        local.foam[i] = packing::accumulate_foam(packing::foam_source(s.jacobian, source),
-                                                 reset ? 0.0f : previous.foam[i], reset, decay);
+        // The hulls' waterline and trail foam (W.20–W.21) join this frame's source, so the
+        // foam they leave ages with the sea's own decay once they have moved on.
+        const std::array<double, 2> p = waves::cell_centre(area, col, row);
+        const float now = std::max(packing::foam_source(s.jacobian, source),
+                                   static_cast<float>(layer.foam_at(p[0], p[1], frame.time_s)));
+        local.foam[i] =
+            packing::accumulate_foam(now, reset ? 0.0f : previous.foam[i], reset, decay);
         // The sea alone (M.7.10): the sum's gradients less the layer's, exactly the sum's where
         // the layer's differences are 0.
         const packing::Gradients own =

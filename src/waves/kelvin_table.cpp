@@ -247,11 +247,31 @@ KelvinTable KelvinTable::make(const KelvinTableSpec& spec) {
     }
     first = end;
   }
+  t.raw_peak_ = peak;
   if (peak > 0.0) {
     const auto scale = static_cast<float>(1.0 / peak);
     for (float& v : t.values_) v *= scale;
   }
   return t;
+}
+
+double KelvinTable::pattern_energy(const KelvinTableSpec& spec) {
+  // (W.24) A(θ) of W.4 with k = k0·sec²θ; A² cos³θ falls as cos⁷θ towards θ = ±π/2. Midpoints
+  // over [0, π/2), doubled (A is even in θ).
+  const double k0 = spec.gravity_mps2 / (spec.speed_mps * spec.speed_mps);
+  const double a = std::numbers::sqrt2 * spec.hull_length_m / (2.0 * kPi);
+  const double b2 = kWakePressureAspect * kWakePressureAspect;
+  constexpr int kSteps = 20000;
+  const double dtheta = 0.5 * kPi / kSteps;
+  double sum = 0.0;
+  for (int i = 0; i < kSteps; ++i) {
+    const double theta = (i + 0.5) * dtheta;
+    const double c = std::cos(theta), sn = std::sin(theta);
+    const double ka = k0 * a / (c * c);
+    const double amplitude = ka * ka / std::pow(1.0 + ka * ka * (c * c + b2 * sn * sn), 1.5);
+    sum += amplitude * amplitude * c * c * c * dtheta;
+  }
+  return 2.0 * sum;
 }
 
 std::array<double, 3> KelvinTable::sample(double s, double zeta) const {

@@ -46,12 +46,19 @@ class KelvinTable {
   [[nodiscard]] double transverse_wavelength_m() const;
   /// True when the transverse waves are shorter than the table resolves (the table is then 0).
   [[nodiscard]] bool unresolved() const { return unresolved_; }
+  /// The pattern's largest |height| before it was normalised, for the amplitude function
+  /// A(θ) = (k·a)²·p̂(k)/p̂(0) of W.4 (η = −∫A·sin ψ dθ, W.3): the peak of a pattern whose
+  /// amplitude function is c·A is c·raw_peak() (W.24).
+  [[nodiscard]] double raw_peak() const { return raw_peak_; }
+  /// ∫_{−π/2}^{π/2} A(θ)²·cos³θ dθ of that A (W.24).
+  [[nodiscard]] static double pattern_energy(const KelvinTableSpec& spec);
 
  private:
   KelvinTableSpec spec_;
   double spacing_m_ = 1.0;
   int rows_ = 0;  ///< s = row·spacing, row ∈ [0, rows)
   bool unresolved_ = false;
+  double raw_peak_ = 0.0;
   /// Row r holds ζ = col·spacing for col ∈ [0, row_start_[r + 1] − row_start_[r]) (the pattern
   /// is mirror-symmetric): the wedge and its Airy tail, 0.45·s + 2·2πU²/g + L, widening with s.
   std::vector<std::size_t> row_start_;

@@ -21,6 +21,14 @@ struct LocalLayer::Impl {
   std::size_t computed = 0;  ///< how many of them make() computed
   /// Per wake: the tables of its speeds (one, or one per path segment speed).
   std::vector<std::vector<std::size_t>> wake_tables;
+  /// Per wake and each of its tables: the pattern's peak height, m (peak_height_m, W.24, 0.02·L).
+  std::vector<std::vector<double>> wake_amplitudes;
+  /// Michell's scale c of W.24 per (hull, U, L, g), kept for layers remade from this one.
+  struct Scale {
+    std::shared_ptr<const ThinHull> hull;
+    double speed_mps, hull_length_m, gravity_mps2, c;
+  };
+  std::vector<Scale> scales;
 };
 
 namespace {
@@ -42,6 +50,7 @@ std::vector<double> speeds_of(const KelvinWake& w) {
 struct Placed {
   const detail::KelvinTable* table = nullptr;
   double x = 0.0, z = 0.0, cos_h = 1.0, sin_h = 0.0, amplitude_m = 0.0, fade_m = 0.0;
+  double speed_mps = 0.0;
 };
 
 }  // namespace
@@ -117,6 +126,24 @@ std::array<double, 2> table_length(const KelvinWake& w, const LocalArea& area, d
   return {length, std::min(0.1 * length, step)};
 }
 
+// (W.24) The factor c that makes the table's amplitude function c·A(θ) carry Michell's wave
+// resistance of the wake's hull at the table's speed: (π/2)·ρ·U²·c²·∫A²cos³θ dθ = R.
+double michell_scale(LocalLayer::Impl& impl, const KelvinWake& w, const detail::KelvinTable& t) {
+  for (const LocalLayer::Impl::Scale& s : impl.scales) {
+    if (s.hull == w.thin_hull && s.speed_mps == t.speed_mps() &&
+        s.hull_length_m == t.hull_length_m() && s.gravity_mps2 == t.gravity_mps2())
+      return s.c;
+  }
+  const double u = t.speed_mps();
+  const double r = michell_resistance_per_density(*w.thin_hull, u, t.gravity_mps2());
+  const double e = detail::KelvinTable::pattern_energy({.speed_mps = u,
+                                                        .hull_length_m = t.hull_length_m(),
+                                                        .gravity_mps2 = t.gravity_mps2()});
+  const double c = e > 0.0 ? std::sqrt(r / (0.5 * std::numbers::pi * u * u * e)) : 0.0;
+  impl.scales.push_back({w.thin_hull, u, t.hull_length_m(), t.gravity_mps2(), c});
+  return c;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
@@ -132,6 +159,10 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
   for (std::size_t i = 0; i < params.waveforms.size(); ++i) {
     if (Status s = validate(params.waveforms[i]); !s.ok())
       return named("waveforms[" + std::to_string(i) + "].", s);
+  }
+  for (std::size_t i = 0; i < params.footprints.size(); ++i) {
+    if (Status s = validate(params.footprints[i]); !s.ok())
+      return named("footprints[" + std::to_string(i) + "].", s);
   }
   std::unique_ptr<LocalLayer> layer(new LocalLayer());
   layer->impl_ = std::make_unique<Impl>();
@@ -163,7 +194,9 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
       }
     }
   }
-  for (const auto& specs : wanted) {
+  if (tables_from != nullptr) impl.scales = tables_from->impl_->scales;
+  for (std::size_t w = 0; w < wanted.size(); ++w) {
+    const auto& specs = wanted[w];
     std::vector<std::size_t> mine;
     for (const detail::KelvinTableSpec& spec : specs) {
       std::size_t found = impl.tables.size();
@@ -184,7 +217,21 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
       }
       mine.push_back(found);
     }
+    // (W.24) Each table's peak height for this wake.
+    const KelvinWake& wake = params.wakes[w];
+    std::vector<double> amplitudes;
+    for (std::size_t t : mine) {
+      const detail::KelvinTable& table = *impl.tables[t];
+      if (wake.peak_height_m) {
+        amplitudes.push_back(*wake.peak_height_m);
+      } else if (wake.thin_hull != nullptr) {
+        amplitudes.push_back(michell_scale(impl, wake, table) * table.raw_peak());
+      } else {
+        amplitudes.push_back(kDefaultPeakHeightPerLength * wake.hull_length_m);
+      }
+    }
     impl.wake_tables.push_back(std::move(mine));
+    impl.wake_amplitudes.push_back(std::move(amplitudes));
   }
   layer->params_ = std::move(params);
   return layer;
@@ -193,19 +240,24 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
 namespace {
 
 Placed place(const KelvinWake& w, const std::vector<std::size_t>& tables,
+             const std::vector<double>& amplitudes,
              const std::vector<std::shared_ptr<const detail::KelvinTable>>& all, double t) {
   const WakePose pose = pose_at(w, t);
   Placed p{.x = pose.x_m,
            .z = pose.z_m,
            .cos_h = std::cos(pose.heading_rad),
            .sin_h = std::sin(pose.heading_rad),
-           .amplitude_m = w.peak_height_m.value_or(kDefaultPeakHeightPerLength * w.hull_length_m),
-           .fade_m = w.fade_length_m};
+           .amplitude_m = amplitudes.front(),
+           .fade_m = w.fade_length_m,
+           .speed_mps = pose.speed_mps};
   p.table = all[tables.front()].get();
-  for (std::size_t i : tables) {
-    if (std::abs(all[i]->speed_mps() - pose.speed_mps) <
-        std::abs(p.table->speed_mps() - pose.speed_mps))
-      p.table = all[i].get();
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const detail::KelvinTable* table = all[tables[i]].get();
+    if (std::abs(table->speed_mps() - pose.speed_mps) <
+        std::abs(p.table->speed_mps() - pose.speed_mps)) {
+      p.table = table;
+      p.amplitude_m = amplitudes[i];
+    }
   }
   return p;
 }
@@ -225,14 +277,46 @@ void add_wake(const Placed& p, double choppiness, double x, double z, std::array
   d[2] += c * (-v[1] * p.sin_h + v[2] * p.cos_h);
 }
 
+// One hull's foam at world (x, z) (W.20–W.21), in its frame at its placed pose.
+double hull_foam(const KelvinWake& w, const Placed& p, double x, double z) {
+  const double dx = x - p.x, dz = z - p.z;
+  return hull_foam_coverage(w.foam, w.hull_length_m, p.speed_mps, -(dx * p.cos_h + dz * p.sin_h),
+                            -dx * p.sin_h + dz * p.cos_h);
+}
+
+// The footprints' waterline foam at world (x, z) (W.20).
+double footprint_foam(const std::vector<Footprint>& footprints, double x, double z) {
+  double c = 0.0;
+  for (const Footprint& f : footprints) {
+    const double h = f.heading_deg * std::numbers::pi / 180.0;
+    const double dx = x - f.x_m, dz = z - f.z_m;
+    const double cos_h = std::cos(h), sin_h = std::sin(h);
+    c = std::max(c, hull_foam_coverage(f.foam, f.length_m, 0.0, -(dx * cos_h + dz * sin_h),
+                                       -dx * sin_h + dz * cos_h));
+  }
+  return c;
+}
+
 }  // namespace
+
+double LocalLayer::foam_at(double x, double z, double time_s) const {
+  const double weight = edge_weight(params_.area, x, z);
+  if (weight == 0.0) return 0.0;
+  double c = footprint_foam(params_.footprints, x, z);
+  for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
+    const KelvinWake& w = params_.wakes[i];
+    if (w.foam.beam_m > 0.0)
+      c = std::max(c, hull_foam(w, place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s), x, z));
+  }
+  return weight * c;
+}
 
 std::array<double, 3> LocalLayer::displacement_at(double x, double z, double time_s) const {
   std::array<double, 3> d{0.0, 0.0, 0.0};
   const double weight = edge_weight(params_.area, x, z);
   if (weight == 0.0) return d;
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
-    add_wake(place(params_.wakes[i], impl_->wake_tables[i], impl_->tables, time_s),
+    add_wake(place(params_.wakes[i], impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s),
              params_.choppiness, x, z, d);
   }
   for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z, time_s);
@@ -246,9 +330,10 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
   out.time_s = time_s;
   out.area = area;
   out.displacement.assign(3 * n * n, 0.0f);
+  out.foam.assign(n * n, 0.0f);
   std::vector<Placed> placed;
   for (std::size_t i = 0; i < params_.wakes.size(); ++i)
-    placed.push_back(place(params_.wakes[i], impl_->wake_tables[i], impl_->tables, time_s));
+    placed.push_back(place(params_.wakes[i], impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s));
   for (std::size_t row = 0; row < n; ++row) {
     for (std::size_t col = 0; col < n; ++col) {
       const auto [x, z] = cell_centre(area, static_cast<int>(col), static_cast<int>(row));
@@ -259,6 +344,12 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
       for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z, time_s);
       float* cell = out.displacement.data() + 3 * (row * n + col);
       for (std::size_t k = 0; k < 3; ++k) cell[k] = static_cast<float>(weight * d[k]);
+      double foam = footprint_foam(params_.footprints, x, z);
+      for (std::size_t i = 0; i < placed.size(); ++i) {
+        if (params_.wakes[i].foam.beam_m > 0.0)
+          foam = std::max(foam, hull_foam(params_.wakes[i], placed[i], x, z));
+      }
+      out.foam[row * n + col] = static_cast<float>(weight * foam);
     }
   }
 }

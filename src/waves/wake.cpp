@@ -49,6 +49,10 @@ Status validate(const KelvinWake& w) {
     if (Status s = require_non_negative("peak_height_m", *w.peak_height_m); !s.ok()) return s;
   }
   if (Status s = require_non_negative("fade_length_m", w.fade_length_m); !s.ok()) return s;
+  if (Status s = validate(w.foam); !s.ok()) return s;
+  if (w.thin_hull != nullptr) {
+    if (Status s = validate(*w.thin_hull); !s.ok()) return s;
+  }
   if (Status s = check_path(w.path); !s.ok()) return s;
   // Every segment's speed becomes a table of its own: the same limits apply.
   for (std::size_t i = 1; i < w.path.size(); ++i) {

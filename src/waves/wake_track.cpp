@@ -23,6 +23,10 @@ Status validate(const WakeTrackParams& p) {
     if (Status s = require_non_negative("peak_height_m", *p.peak_height_m); !s.ok()) return s;
   }
   if (Status s = require_non_negative("fade_length_m", p.fade_length_m); !s.ok()) return s;
+  if (Status s = validate(p.foam); !s.ok()) return s;
+  if (p.thin_hull != nullptr) {
+    if (Status s = validate(*p.thin_hull); !s.ok()) return s;
+  }
   if (Status s = require_positive("interval_s", p.interval_s); !s.ok()) return s;
   if (Status s = require_in_range("interval_s", p.interval_s, 0.0, 60.0); !s.ok()) return s;
   if (p.waypoints < 2 || p.waypoints > 4096)
@@ -100,6 +104,8 @@ bool WakeTrack::wake(KelvinWake& out) const {
   out.hull_length_m = params_.hull_length_m;
   out.peak_height_m = params_.peak_height_m;
   out.fade_length_m = params_.fade_length_m;
+  out.foam = params_.foam;
+  out.thin_hull = params_.thin_hull;
   out.speed_mps = wake_speed_mps_;
   // Newest first, timed back along the track at the wake's speed; a point closer than a
   // millimetre to the one after it is skipped (the times must increase); then oldest first.

@@ -1,6 +1,7 @@
 // src/world/world.cpp — the World: its objects' bodies stepped at a fixed step against the sea,
 // driven ones by their helm (B.8–B.11), their tracks recorded (W.17); poses for the renderer.
 // The local layer the tracks' wakes make is in layer.cpp.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -55,6 +56,15 @@ Status make_body(World::Object& o, const ObjectDesc& desc, const std::string& na
   if (!params.ok())
     return invalid_argument(name + " cannot float: " + params.status().message());
   o.centre_m = bodies::mass_properties(desc.hull).centroid_m;
+  if (!desc.hull.vertices.empty()) {
+    std::array<double, 4> box{desc.hull.vertices[0][0], desc.hull.vertices[0][0],
+                              desc.hull.vertices[0][2], desc.hull.vertices[0][2]};
+    for (const auto& v : desc.hull.vertices)
+      box = {std::min(box[0], v[0]), std::max(box[1], v[0]), std::min(box[2], v[2]),
+             std::max(box[3], v[2])};
+    o.size_m = {box[1] - box[0], box[3] - box[2]};
+    o.box_centre_m = {0.5 * (box[0] + box[1]), 0.0, 0.5 * (box[2] + box[3])};
+  }
   bodies::BodyState start;
   if (!o.circle) {
     const std::array<double, 3> c = bodies::rotate(o.start.orientation, o.centre_m);
@@ -70,7 +80,7 @@ Status make_body(World::Object& o, const ObjectDesc& desc, const std::string& na
         bodies::Propulsion::make(propulsion_for(params.value(), gravity_mps2));
     if (!propulsion.ok()) return propulsion.status();
     o.propulsion = propulsion.value();
-    Result<waves::WakeTrack> track = waves::WakeTrack::make(wake_track_for(params.value().hull));
+    Result<waves::WakeTrack> track = waves::WakeTrack::make(wake_track_for(params.value()));
     if (!track.ok()) return track.status();
     o.track = std::move(track).value();
   }
@@ -187,7 +197,7 @@ Status World::step_bodies(double time_s, Simulator& sea, const AdvanceHooks& hoo
 
 Result<bool> World::advance_to(double time_s, Simulator& sea, const AdvanceHooks& hooks) {
   if (Status s = step_bodies(time_s, sea, hooks); !s.ok()) return s;
-  if (Status s = update_layer(); !s.ok()) return s;
+  if (Status s = update_layer(sea); !s.ok()) return s;
   const std::shared_ptr<const waves::LocalLayer>& layer = local_layer();
   if (layer.get() == sea.local_layer()) return false;
   sea.set_local_layer(layer);

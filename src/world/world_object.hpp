@@ -15,6 +15,8 @@ struct World::Object {
   double speed_mps = 0.0;            // commanded; > 0: driven
   std::optional<Circle> circle;      // driven round it instead
   std::array<double, 3> centre_m{};  // the object frame's point that is the body's centre
+  std::array<double, 2> size_m{};    // the hull's length along x and breadth across z
+  std::array<double, 3> box_centre_m{};  // the centre of the hull's x–z extent, object frame
   std::unique_ptr<bodies::FloatingBody> body;    // floating
   std::optional<bodies::Propulsion> propulsion;  // driven
   std::optional<waves::WakeTrack> track;         // driven

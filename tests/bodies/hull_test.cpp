@@ -3,6 +3,7 @@
 // ½·n·r²·sin(2π/n)·h), and bad meshes, sizes and densities are refused with invalid_argument.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -49,6 +50,38 @@ TEST(Hull, BoatIsClosedAndCentred) {
   EXPECT_GT(m.volume_m3, 0.25 * 8.0 * 3.0 * 1.2);
   for (double c : m.centroid_m) EXPECT_NEAR(c, 0.0, 1e-9);
   EXPECT_GT(m.inertia[8], m.inertia[0]);  // long: pitch/yaw inertia exceeds roll inertia
+}
+
+TEST(Hull, BoatTopsideStandsOnTheDeckInsideTheSheer) {
+  // The deck, bulwark, cabin and windows are drawn with the hull in its frame and left out of the
+  // buoyancy: each part lies on or above the deck (the hull's highest level), within the hull's
+  // length and beam, and the cabin's blocks are closed and wound outwards.
+  const Hull hull = boat_hull(8.0, 3.0, 1.2).value();
+  double deck = -1e9, x_lo = 1e9, x_hi = -1e9, z_hi = 0.0;
+  for (const auto& v : hull.vertices) {
+    deck = std::max(deck, v[1]);
+    x_lo = std::min(x_lo, v[0]);
+    x_hi = std::max(x_hi, v[0]);
+    z_hi = std::max(z_hi, std::abs(v[2]));
+  }
+  const auto top = boat_topside(8.0, 3.0, 1.2);
+  ASSERT_TRUE(top.ok()) << top.status().message();
+  for (const Hull* part : {&top.value().deck, &top.value().bulwark, &top.value().cabin,
+                           &top.value().windows}) {
+    ASSERT_FALSE(part->triangles.empty());
+    for (const auto& v : part->vertices) {
+      EXPECT_GE(v[1], deck - 1e-9);
+      EXPECT_GE(v[0], x_lo - 1e-9);
+      EXPECT_LE(v[0], x_hi + 1e-9);
+      EXPECT_LE(std::abs(v[2]), z_hi + 1e-9);
+    }
+  }
+  EXPECT_TRUE(validate(top.value().cabin).ok()) << validate(top.value().cabin).message();
+  // The cabin's roof: 0.9·D above the planking, which is 0.03·D thick.
+  double roof = -1e9;
+  for (const auto& v : top.value().cabin.vertices) roof = std::max(roof, v[1]);
+  EXPECT_NEAR(roof - deck, 0.03 * 1.2 + 0.9 * 1.2, 1e-9);
+  EXPECT_FALSE(boat_topside(8.0, -1.0, 1.2).ok());
 }
 
 TEST(Hull, RefusesOpenInsideOutAndNonFiniteMeshes) {

@@ -36,8 +36,9 @@ TEST(DrivenObjects, EachObjectIsAWorldObjectWithItsMeshes) {
   ASSERT_TRUE(objects.ok()) << objects.status().message();
   const ocean::cli::RenderObjects& o = objects.value();
   ASSERT_EQ(o.objects.size(), 2u);
-  ASSERT_EQ(o.meshes.size(), 2u);
-  EXPECT_EQ(o.mesh_indices, (std::vector<std::vector<std::uint32_t>>{{0}, {1}}));
+  // The boat: its hull, deck, bulwark, cabin and windows (bodies::boat_topside); the buoy: one.
+  ASSERT_EQ(o.meshes.size(), 6u);
+  EXPECT_EQ(o.mesh_indices, (std::vector<std::vector<std::uint32_t>>{{0, 1, 2, 3, 4}, {5}}));
   EXPECT_EQ(o.objects[0].name, "--object boat");
   EXPECT_EQ(o.objects[0].speed_mps, 5.0);
   EXPECT_EQ(o.objects[0].heading_deg, 90.0);

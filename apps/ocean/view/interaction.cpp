@@ -129,11 +129,13 @@ std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre
 
 Result<std::unique_ptr<InteractionScene>> InteractionScene::make(render::Renderer& renderer,
                                                                  const SimulationConfig& config) {
-  Result<render::Mesh> boat = built_in_mesh("boat");
+  Result<std::vector<render::Mesh>> boat = built_in_meshes("boat");
   if (!boat.ok()) return boat.status();
-  if (Status s = renderer.set_meshes(std::span(&boat.value(), 1)); !s.ok()) return s;
+  if (Status s = renderer.set_meshes(boat.value()); !s.ok()) return s;
+  const auto parts = static_cast<std::uint32_t>(boat.value().size());
   std::unique_ptr<InteractionScene> scene(new InteractionScene);
   scene->config_ = config;
+  scene->boat_meshes_ = parts;
   return scene;
 }
 
@@ -172,8 +174,8 @@ Status InteractionScene::update(double time_s, Simulator& simulator, render::Vie
   if (Result<bool> advanced = boat_->advance_to(time_s, simulator); !advanced.ok())
     return advanced.status();
   const world::Pose pose = boat_->pose(0);
-  view.objects.push_back(
-      {.mesh = 0, .model = render::model_matrix(pose.position_m, pose.orientation)});
+  const std::array<double, 16> model = render::model_matrix(pose.position_m, pose.orientation);
+  for (std::uint32_t m = 0; m < boat_meshes_; ++m) view.objects.push_back({.mesh = m, .model = model});
   return Status{};
 }
 

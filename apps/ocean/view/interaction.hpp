@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string_view>
@@ -96,6 +97,7 @@ class InteractionScene {
  private:
   InteractionScene() = default;
   SimulationConfig config_;
+  std::uint32_t boat_meshes_ = 1;  ///< the boat's meshes, 0 … boat_meshes_ − 1 (built_in_meshes)
   std::unique_ptr<world::World> boat_;
 };
 
