@@ -23,6 +23,8 @@ struct WaveFlags {
   std::string local_resolution = "512";
   std::string damping_mask;  ///< FILE,X0,Z0,SIZE_M
   std::string bathymetry;    ///< FILE,X0,Z0,SIZE_M
+  /// γ of depth-induced breaking over the bathymetry (W.20), H_max = γ·d; "0" turns it off.
+  std::string breaking_index = "0.78";
 };
 void add_wave_flags(CLI::App& command, WaveFlags& flags);
 
@@ -36,8 +38,9 @@ Result<std::optional<waves::LayerParams>> layer_params(const WaveFlags& flags, d
 
 /// The damping of the sea's bands the flags describe (--damping-mask, --bathymetry), for the
 /// cascades of `config`, or null when neither is given. An unreadable file, a bad placement, a
-/// mask value outside [0, 1], a negative or NaN depth, a PNG bathymetry or either flag with
-/// --calm is an error naming the flag.
+/// mask value outside [0, 1], a negative or NaN depth, a PNG bathymetry, a breaking index outside
+/// [0.3, 1.5] (other than 0, no breaking) or either flag with --calm is an error naming the flag.
+/// The bands break over the bathymetry by W.20–W.22 with the sea's band variances.
 Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& flags,
                                                            const SimulationConfig& config);
 
@@ -50,6 +53,7 @@ struct DampingSamples {
   int resolution = 0;
   std::vector<float> band_weights;  ///< bands per cell, row-major, rows along +z
   std::vector<float> depth_m;
+  std::vector<float> breaking_fraction;  ///< Q_b per cell (Damping::surf, W.21)
 };
 DampingSamples sample_damping(const waves::Damping& damping, int resolution, std::size_t bands);
 

@@ -233,6 +233,9 @@ struct DampingGrid {
   int resolution = 0;                   ///< N cells per side
   std::span<const float> band_weights;  ///< kDampingBands·N² values, or empty for none
   std::span<const float> depth_m;       ///< N² values
+  /// N² fractions of breaking waves Q_b in [0, 1] (waves::Damping::surf, W.21), drawn as the
+  /// surf's foam coverage (R.62); empty: none.
+  std::span<const float> breaking_fraction;
 };
 
 class Renderer {

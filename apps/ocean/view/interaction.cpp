@@ -100,6 +100,9 @@ Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
   } else {
     params.bathymetry = radial_map(
         centre_m, 400.0, 256, [](double r) { return std::clamp((r - 50.0) / 5.0, 0.0, 40.0); });
+    Result<std::vector<double>> m0 = band_variances(config);  // its surf (W.20–W.22)
+    if (!m0.ok()) return m0.status();
+    params.band_variances_m2 = std::move(m0).value();
   }
   Result<waves::Damping> made = waves::Damping::make(std::move(params));
   if (!made.ok()) return made.status();
@@ -113,9 +116,9 @@ double scene_radius_m(const BoatControls& boat, Shallows shallows) {
   return r;
 }
 
-std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m,
-                                                    double radius_m, std::array<double, 2> look,
-                                                    double fov_y_rad, double aspect) {
+std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m, double radius_m,
+                                                    std::array<double, 2> look, double fov_y_rad,
+                                                    double aspect) {
   const double horizontal_fov = 2.0 * std::atan(std::tan(0.5 * fov_y_rad) * aspect);
   const double narrower = std::min(fov_y_rad, horizontal_fov);
   const double distance = radius_m / std::tan(0.4 * narrower);
@@ -162,7 +165,8 @@ Status InteractionScene::set_shallows(Shallows scene, std::array<double, 2> cent
                                .size_m = d.size_m,
                                .resolution = d.resolution,
                                .band_weights = d.band_weights,
-                               .depth_m = d.depth_m});
+                               .depth_m = d.depth_m,
+                               .breaking_fraction = d.breaking_fraction});
 }
 
 Status InteractionScene::update(double time_s, Simulator& simulator, render::View& view) {

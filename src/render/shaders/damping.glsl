@@ -14,16 +14,19 @@ struct DampingSample {
   vec4 low;   // weights of cascades 0–3
   vec4 high;  // weights of cascades 4–7
   float depth_m;
+  float breaking;  // Q_b, the fraction of breaking waves (W.21): the surf's foam coverage (R.62)
 };
 
 DampingSample damping_at(vec2 xz) {
-  DampingSample d = DampingSample(vec4(1.0), vec4(1.0), OCEAN_RENDER_DEEP_M);
+  DampingSample d = DampingSample(vec4(1.0), vec4(1.0), OCEAN_RENDER_DEEP_M, 0.0);
   if (u.damping.resolution <= 0.0) return d;
   vec2 uv = (xz - u.damping.origin_m) / u.damping.size_m;
   if (any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0)))) return d;
   d.low = textureLod(damping_map, vec3(uv, 0.0), 0.0);
   d.high = textureLod(damping_map, vec3(uv, 1.0), 0.0);
-  d.depth_m = textureLod(damping_map, vec3(uv, 2.0), 0.0).x;
+  vec2 depth_breaking = textureLod(damping_map, vec3(uv, 2.0), 0.0).xy;
+  d.depth_m = depth_breaking.x;
+  d.breaking = depth_breaking.y;
   return d;
 }
 

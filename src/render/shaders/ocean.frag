@@ -150,6 +150,7 @@ void main() {
   local_shade(world_xz, local_slope, local_foam);
   slope += local_slope;
   no_foam *= 1.0 - local_foam;
+  no_foam *= 1.0 - damping.breaking;  // the surf: the fraction of breaking waves (R.62)
   vec3 N = normalize(vec3(slope.x, 0.0, slope.y) + curved_up(world_xz));  // R.15
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);
   float foam = 1.0 - no_foam;
