@@ -16,7 +16,7 @@
 #include "render/render_helpers.hpp"
 #include "support/require_devices.hpp"
 
-namespace {
+namespace surf_render_test {
 
 using ocean::render::Scene;
 using ocean::render::View;
@@ -127,7 +127,7 @@ TEST(SurfRender, TheFoamBandIsTheFractionOfBreakingWavesAndSaturatesAtTheBreakin
                  .near_m = 0.5,
                  .far_m = 1e4};
   view.shading = ocean::render::sky_preset("clear").value();
-  view.debug_view = ocean::render::DebugView::normals;  // foam coverage in alpha
+  view.debug = ocean::render::DebugView::normals;  // foam coverage in alpha
   ASSERT_TRUE(r.draw(view).ok());
   std::vector<float> hdr;
   ASSERT_TRUE(r.read_hdr(hdr).ok());
@@ -139,7 +139,7 @@ TEST(SurfRender, TheFoamBandIsTheFractionOfBreakingWavesAndSaturatesAtTheBreakin
     alpha[col] /= kH / 2;
   }
   // Which way x runs across the picture: the shallow (saturated) side.
-  const double sign = alpha.front() > alpha.back() ? -1.0 : 1.0;
+  const double sign = alpha.front() > alpha.back() ? 1.0 : -1.0;
   const auto x_of = [&](int col) {
     return x_break + sign * (2.0 * (col + 0.5) / kW - 1.0) * half_width;
   };
@@ -165,4 +165,4 @@ TEST(SurfRender, TheFoamBandIsTheFractionOfBreakingWavesAndSaturatesAtTheBreakin
   EXPECT_NEAR(onset, x_break, cell + 2.0 * half_width / kW);
 }
 
-}  // namespace
+}  // namespace surf_render_test
