@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "options.hpp"
+#include "shallows.hpp"
 
 namespace ocean::cli {
 namespace {
@@ -228,6 +229,10 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
   command.add_option("--bathymetry", f.bathymetry,
                      "FILE,X0,Z0,SIZE_M: .npy water depth, m, from corner (X0, Z0); damps each "
                      "band where the water is shallow against its wavelength");
+  command.add_option("--shallows", f.shallows,
+                     "none, lily-pads (a damping mask) or lagoon (an island 4 m high in a 400 m "
+                     "bathymetry), centred on the origin; instead of --damping-mask and "
+                     "--bathymetry");
   command.add_option("--breaking-index", f.breaking_index,
                      "GAMMA: waves over --bathymetry break where their rms height exceeds GAMMA "
                      "times the depth (default 0.78, McCowan's solitary wave; 0: no breaking)");
@@ -235,11 +240,28 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
 
 Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
                                                            const SimulationConfig& config) {
-  if (f.damping_mask.empty() && f.bathymetry.empty())
+  const std::optional<Shallows> shallows = parse_shallows(f.shallows);
+  if (!shallows)
+    return invalid_argument("--shallows = '" + excerpt(f.shallows) +
+                            "': must be none, lily-pads or lagoon");
+  if (f.damping_mask.empty() && f.bathymetry.empty() && *shallows == Shallows::none)
     return std::shared_ptr<const waves::Damping>();
   if (f.calm)
     return invalid_argument(
-        "--damping-mask and --bathymetry damp the sea's bands: not with --calm");
+        "--damping-mask, --bathymetry and --shallows damp the sea's bands: not with --calm");
+  Result<std::vector<double>> gamma =
+      numbers("--breaking-index", f.breaking_index, 1, 1, "one number (0: no breaking)");
+  if (!gamma.ok()) return gamma.status();
+  if (*shallows != Shallows::none) {
+    if (!f.damping_mask.empty() || !f.bathymetry.empty())
+      return invalid_argument(
+          "--shallows is a scene of its own: not with --damping-mask or "
+          "--bathymetry");
+    Result<std::optional<waves::Damping>> scene =
+        shallows_damping(*shallows, {0.0, 0.0}, config, gamma.value()[0]);
+    if (!scene.ok()) return flagged("--breaking-index", f.breaking_index, scene.status());
+    return std::make_shared<const waves::Damping>(std::move(*scene.value()));
+  }
   waves::DampingParams p{.band_wavenumbers_radpm = band_wavenumbers(config),
                          .gravity_mps2 = config.sea.dispersion.gravity_mps2};
   if (!f.damping_mask.empty()) {
@@ -252,9 +274,6 @@ Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
     if (!m.ok()) return m.status();
     p.bathymetry = std::move(m).value();
   }
-  Result<std::vector<double>> gamma =
-      numbers("--breaking-index", f.breaking_index, 1, 1, "one number (0: no breaking)");
-  if (!gamma.ok()) return gamma.status();
   if (gamma.value()[0] != 0.0 && p.bathymetry.has_value()) {  // (W.20–W.22)
     Result<std::vector<double>> m0 = band_variances(config);
     if (!m0.ok()) return m0.status();

@@ -255,6 +255,8 @@ double sample(const PlacedMap& placed, double x, double z, double outside);
 
 /// Most cascades (bands) a Damping weighs.
 inline constexpr std::size_t kMaxBands = 16;
+/// The highest land a bathymetry may hold (as a depth of −10 km), m.
+inline constexpr double kMaxLandHeight_m = 1e4;
 /// The breaking index of a solitary wave, H/d (McCowan 1894, "On the highest wave of permanent
 /// type"): the default γ of depth-induced breaking (W.20).
 inline constexpr double kMcCowanBreakingIndex = 0.78;
@@ -263,7 +265,8 @@ inline constexpr double kMcCowanBreakingIndex = 0.78;
 struct DampingParams {
   /// Values in [0, 1]: 0 = the low band (cascade 0) only, 1 = every band; 1 outside the map.
   std::optional<PlacedMap> mask;
-  /// Water depth, m, finite and ≥ 0; deep water (no attenuation) outside the map.
+  /// Water depth, m, finite and ≥ −kMaxLandHeight_m; deep water (no attenuation) outside the map.
+  /// A negative depth is land, −d its height above the mean sea level (W.23): no waves there.
   std::optional<PlacedMap> bathymetry;
   /// Representative wavenumber of each band, rad/m, lowest band first (sim.hpp's
   /// band_wavenumbers); 1 to kMaxBands values, finite and > 0.
@@ -279,7 +282,7 @@ struct DampingParams {
   double breaking_index = kMcCowanBreakingIndex;
 };
 /// invalid_argument naming the field and value: a bad placement, a mask value outside [0, 1], a
-/// negative or non-finite depth ("bathymetry value 12 = -3 ..."), bad wavenumbers, band variances
+/// non-finite depth or land higher than kMaxLandHeight_m ("bathymetry value 12 = nan ..."), bad wavenumbers, band variances
 /// of another count than the wavenumbers or negative, a breaking index outside [0.3, 1.5].
 Status validate(const DampingParams& params);
 

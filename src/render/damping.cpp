@@ -119,7 +119,10 @@ Status Renderer::set_damping(const DampingGrid& grid) {
           float_to_half(clamped(grid.band_weights[kDampingBands * i + b], 1.0f));
     }
     std::uint16_t* depth = &out[(2 * cells + i) * 4];
-    depth[0] = float_to_half(clamped(grid.depth_m[i], static_cast<float>(OCEAN_RENDER_DEEP_M)));
+    // Negative: land, its height above the sea level (R.63); ±inf and NaN: deep water.
+    const float d = grid.depth_m[i];
+    const auto deep = static_cast<float>(OCEAN_RENDER_DEEP_M);
+    depth[0] = float_to_half(std::isfinite(d) ? std::clamp(d, -deep, deep) : deep);
     depth[1] = grid.breaking_fraction.empty()
                    ? 0
                    : float_to_half(clamped(grid.breaking_fraction[i], 1.0f));

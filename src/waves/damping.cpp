@@ -100,8 +100,10 @@ Status validate(const DampingParams& p) {
   if (Status s = require_in_range("breaking_index", p.breaking_index, 0.3, 1.5); !s.ok()) return s;
   if (p.bathymetry) {
     if (Status s = validate_placement("bathymetry", *p.bathymetry); !s.ok()) return s;
-    if (Status s = validate_values("bathymetry", *p.bathymetry->map, 0.0,
-                                   std::numeric_limits<double>::max(), "a depth (finite, >= 0 m)");
+    // Negative: land, its height above the mean sea level (W.23).
+    if (Status s = validate_values("bathymetry", *p.bathymetry->map, -kMaxLandHeight_m,
+                                   std::numeric_limits<double>::max(),
+                                   "a depth (finite, m; land down to -1e4)");
         !s.ok())
       return s;
   }
@@ -144,7 +146,8 @@ double Damping::depth_weights(double x, double z, std::span<double> out) const {
   const double depth = params_.bathymetry ? sample(*params_.bathymetry, x, z, inf) : inf;
   for (std::size_t c = 0; c < band_count(); ++c) {
     const double k = params_.band_wavenumbers_radpm[c];
-    out[c] = depth_band_weight(k, depth, params_.gravity_mps2) * (c == 0 ? 1.0 : mask);  // (W.13)
+    const double water = std::max(depth, 0.0);  // land (depth < 0) carries no waves (W.23)
+    out[c] = depth_band_weight(k, water, params_.gravity_mps2) * (c == 0 ? 1.0 : mask);  // (W.13)
   }
   return depth;
 }
