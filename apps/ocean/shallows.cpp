@@ -55,7 +55,9 @@ Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
         radial_map(centre_m, 200.0, 256, [](double r) { return smoothstep(40.0, 60.0, r); });
   } else {
     params.bathymetry = radial_map(centre_m, 400.0, 256, [](double r) {
-      return std::clamp((r - kLagoonShore_m) / 5.0, -kLagoonIslandHeight_m, 40.0);
+      if (r > kLagoonReef_m)  // the reef wall, down to optically deep water by the map's edge
+        return std::min(20.0 + (kLagoonDeep_m - 20.0) * (r - kLagoonReef_m) / 50.0, kLagoonDeep_m);
+      return std::max((r - kLagoonShore_m) / 5.0, -kLagoonIslandHeight_m);
     });
     if (breaking_index != 0.0) {  // the surf (W.20–W.22)
       Result<std::vector<double>> m0 = band_variances(config);

@@ -2,7 +2,9 @@
 // planar beach built here, on a calm sea (no cascades: the foam is the surf's alone), the foam
 // coverage the shading draws (the normals view's alpha) is Battjes & Janssen's fraction of
 // breaking waves computed here from the closed forms, and full foam begins where H_rms = γ·d.
-// Skips where no Vulkan device exists (fails with OCEAN_REQUIRE_DEVICES=1).
+// Land (R.63): a plateau 8 m high seen from 2 m up stands above the horizon, its top edge at the
+// elevation its height and distance give, and is sand-coloured. Skips where no Vulkan device
+// exists (fails with OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -163,6 +165,70 @@ TEST(SurfRender, TheFoamBandIsTheFractionOfBreakingWavesAndSaturatesAtTheBreakin
       alpha[std::size_t(std::clamp((sign * 5.0 / half_width + 1.0) * kW / 2.0, 0.0, kW - 1.0))],
       battjes_janssen(b_at(x_break + 5.0)));
   EXPECT_NEAR(onset, x_break, cell + 2.0 * half_width / kW);
+}
+
+TEST(SurfRender, LandStandsAtItsHeight) {
+  if (ocean::render::testing::graphics_context() == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  // A grid of 0.5 m cells over x in [0, 128] m: water 20 m deep, then from x = 60 m land 8 m
+  // high (depth −8). Bilinear between the cell centres at 59.75 and 60.25 m, the shoreline lies
+  // at 60.11 m and the plateau is at full height from 60.25 m.
+  constexpr int kCells = 256;
+  const double size = 128.0, cell = size / kCells, plateau = 8.0;
+  std::vector<float> weights(ocean::render::kDampingBands * kCells * kCells, 1.0f);
+  std::vector<float> depth(kCells * kCells);
+  for (int r = 0; r < kCells; ++r)
+    for (int c = 0; c < kCells; ++c)
+      depth[std::size_t(r) * kCells + c] = (c + 0.5) * cell >= 60.0 ? float(-plateau) : 20.0f;
+  constexpr int kW = 64, kH = 96;
+  auto scene =
+      Scene::make({.config = ocean::render::testing::small_config(), .width = kW, .height = kH});
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  ASSERT_TRUE(scene.value()->warm_up(2.0, 1.0).ok());
+  ocean::render::Renderer& r = scene.value()->renderer();
+  r.set_calm(true);
+  ASSERT_TRUE(r.set_damping({.origin_m = {0.0, -64.0},
+                             .size_m = size,
+                             .resolution = kCells,
+                             .band_weights = weights,
+                             .depth_m = depth})
+                  .ok());
+  // From 2 m up, looking level along +x: the horizon on the middle row.
+  const double eye = 2.0, fov_y = 16.0 * std::numbers::pi / 180.0;
+  View view;
+  view.camera = {.position_m = {0.0, eye, 0.0},
+                 .target_m = {100.0, eye, 0.0},
+                 .fov_y_rad = fov_y,
+                 .aspect = double(kW) / kH,
+                 .near_m = 0.5,
+                 .far_m = 1e4};
+  view.shading = ocean::render::sky_preset("clear").value();
+  ASSERT_TRUE(r.draw(view).ok());
+  std::vector<float> hdr;
+  ASSERT_TRUE(r.read_hdr(hdr).ok());
+  // In each of the middle columns the topmost sand pixel (red over blue above 1.2: sand of
+  // albedo 0.45/0.30 under a bluish sky light; sky and water are bluer), as tan of its elevation
+  // at its top edge.
+  const double tan_half = std::tan(0.5 * fov_y), px = 2.0 * tan_half / kH;
+  const double top_near = (plateau - eye) / 60.25;  // the plateau's first point at full height
+  for (int col = kW / 4; col < 3 * kW / 4; ++col) {
+    int top = -1;
+    for (int row = 0; row < kH && top < 0; ++row) {
+      const float* p = &hdr[(std::size_t(row) * kW + col) * 4];
+      if (p[0] > 1.2f * p[2]) top = row;
+    }
+    ASSERT_GE(top, 0) << "no sand in column " << col;
+    const double tan_top = tan_half - top * px;  // the row's upper edge
+    // The top edge lies where the mesh's first vertex at full height is: at 60.25 m, or a vertex
+    // spacing (under 3 m at 60 m) beyond; a pixel either side for the rasterisation.
+    EXPECT_LE(tan_top, top_near + px) << "column " << col;
+    EXPECT_GE(tan_top, (plateau - eye) / 63.25 - px) << "column " << col;
+    if (col == kW / 2)
+      std::printf(
+          "plateau's top edge: tan %.4f drawn, %.4f at 60.25 m (%.4f at 63.25 m); pixel %.4f\n",
+          tan_top, top_near, (plateau - eye) / 63.25, px);
+    // Drawn at the sea level, the land would not rise above the horizon.
+    EXPECT_GT(tan_top, 0.5 * top_near);
+  }
 }
 
 }  // namespace surf_render_test
