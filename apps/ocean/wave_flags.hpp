@@ -23,7 +23,8 @@ struct WaveFlags {
   std::string local_resolution = "512";
   std::string damping_mask;  ///< FILE,X0,Z0,SIZE_M
   std::string bathymetry;    ///< FILE,X0,Z0,SIZE_M
-  std::string shallows = "none";  ///< a scene of shallows.hpp about the origin, instead of both
+  /// A scene of shallows.hpp about the origin, instead of both maps.
+  std::string shallows = "none";
   /// γ of depth-induced breaking over the bathymetry (W.20), H_max = γ·d; "0" turns it off.
   std::string breaking_index = "0.78";
 };
@@ -39,10 +40,11 @@ Result<std::optional<waves::LayerParams>> layer_params(const WaveFlags& flags, d
 
 /// The damping of the sea's bands the flags describe (--damping-mask, --bathymetry, or
 /// --shallows: a scene of shallows.hpp centred on the origin), for the cascades of `config`, or
-/// null when none is given. --shallows with either map, or an unknown scene, is an error. An unreadable file, a bad placement, a
-/// mask value outside [0, 1], a NaN depth or land above 10 km, a PNG bathymetry, a breaking index outside
-/// [0.3, 1.5] (other than 0, no breaking) or either flag with --calm is an error naming the flag.
-/// The bands break over the bathymetry by W.20–W.22 with the sea's band variances.
+/// null when none is given. --shallows with either map, or an unknown scene, is an error. An
+/// unreadable file, a bad placement, a mask value outside [0, 1], a NaN depth or land above 10 km,
+/// a PNG bathymetry, a breaking index outside [0.3, 1.5] (other than 0, no breaking) or either flag
+/// with --calm is an error naming the flag. The bands break over the bathymetry by W.20–W.22 with
+/// the sea's band variances.
 Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& flags,
                                                            const SimulationConfig& config);
 

@@ -282,8 +282,9 @@ struct DampingParams {
   double breaking_index = kMcCowanBreakingIndex;
 };
 /// invalid_argument naming the field and value: a bad placement, a mask value outside [0, 1], a
-/// non-finite depth or land higher than kMaxLandHeight_m ("bathymetry value 12 = nan ..."), bad wavenumbers, band variances
-/// of another count than the wavenumbers or negative, a breaking index outside [0.3, 1.5].
+/// non-finite depth or land higher than kMaxLandHeight_m ("bathymetry value 12 = nan ..."), bad
+/// wavenumbers, band variances of another count than the wavenumbers or negative, a breaking index
+/// outside [0.3, 1.5].
 Status validate(const DampingParams& params);
 
 /// The fraction of breaking waves Q_b of Battjes & Janssen (1978) (W.21): the waves' heights

@@ -121,9 +121,10 @@ TEST(Surf, PlanarBeachBreaksWhereTheRmsHeightReachesGammaTimesDepth) {
       break;
     }
   }
-  std::printf("onset of breaking on a 1:20 beach: analytic x = %.3f m (d = %.4f m), found %.3f m "
-              "(cell %.2f m)\n",
-              x_break, x_break * slope, onset, cell);
+  std::printf(
+      "onset of breaking on a 1:20 beach: analytic x = %.3f m (d = %.4f m), found %.3f m "
+      "(cell %.2f m)\n",
+      x_break, x_break * slope, onset, cell);
   EXPECT_NEAR(onset, x_break, cell) << "analytic d_b = " << x_break * slope << " m";
 
   std::vector<double> w(k.size());
