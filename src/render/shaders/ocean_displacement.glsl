@@ -3,9 +3,8 @@
 // OCEAN_MOTION the previous frame's, R.26) and ocean.tese (the tessellated grid, R.40–R.42): the
 // cascades of displacement.glsl (R.9, R.13, R.14, R.24) faded at the border of the ocean square
 // (R.10), plus the local layer (R.19); land, where the bathymetry rises above the sea, at its
-// height (R.63). A function of the world position, the camera and the mesh
-// spacing there alone, so vertices that two patches share get the same displacement and a closed
-// mesh stays closed.
+// height (R.63). A function of the world position, the camera and the mesh spacing there alone,
+// so vertices that two patches share get the same displacement and a closed mesh stays closed.
 #ifndef OCEAN_DISPLACEMENT_GLSL
 #define OCEAN_DISPLACEMENT_GLSL
 
