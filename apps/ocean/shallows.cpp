@@ -59,7 +59,7 @@ Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
         return std::min(20.0 + (kLagoonDeep_m - 20.0) * (r - kLagoonReef_m) / 50.0, kLagoonDeep_m);
       return std::max((r - kLagoonShore_m) / 5.0, -kLagoonIslandHeight_m);
     });
-    if (breaking_index != 0.0) {  // the surf (W.20–W.22)
+    if (breaking_index != 0.0) {  // the surf (W.25–W.27)
       Result<std::vector<double>> m0 = band_variances(config);
       if (!m0.ok()) return m0.status();
       params.band_variances_m2 = std::move(m0).value();

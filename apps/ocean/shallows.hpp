@@ -1,7 +1,7 @@
 // shallows.hpp — the shallows scenes of `ocean view --shallows` and `ocean render --shallows`:
 // lily pads (a damping mask that calms the sea's short bands, docs/waves.md W.13) and a lagoon (a
-// bathymetry that shoals to an island rising above the sea, W.12, with its surf, W.20–W.22, and
-// its beach drawn as land, docs/rendering.md R.62–R.63).
+// bathymetry that shoals to an island rising above the sea, W.12, with its surf, W.25–W.27, and
+// its beach drawn as land, docs/rendering.md R.63–R.64).
 #pragma once
 
 #include <array>
@@ -37,7 +37,7 @@ inline constexpr double kLagoonDeep_m = 300.0;
 /// - lagoon: a 400 m depth map, d = (r − 50)/5 m at a distance r from the centre, from an island
 ///   4 m high (d = −4 inside r = 30 m, the shore at r = 50 m) to 20 m of depth at r = 150 m,
 ///   then a reef wall falling linearly to 300 m at r = 200 m and 300 m beyond; its waves break
-///   by W.20–W.22 with `breaking_index` (0: no breaking) over the bands' variances of `config`.
+///   by W.25–W.27 with `breaking_index` (0: no breaking) over the bands' variances of `config`.
 /// Errors: band_variances(config)'s, and Damping::make's (a breaking index outside [0.3, 1.5]).
 Result<std::optional<waves::Damping>> shallows_damping(
     Shallows scene, std::array<double, 2> centre_m, const SimulationConfig& config,

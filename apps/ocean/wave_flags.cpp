@@ -274,7 +274,7 @@ Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
     if (!m.ok()) return m.status();
     p.bathymetry = std::move(m).value();
   }
-  if (gamma.value()[0] != 0.0 && p.bathymetry.has_value()) {  // (W.20–W.22)
+  if (gamma.value()[0] != 0.0 && p.bathymetry.has_value()) {  // (W.25–W.27)
     Result<std::vector<double>> m0 = band_variances(config);
     if (!m0.ok()) return m0.status();
     p.band_variances_m2 = std::move(m0).value();

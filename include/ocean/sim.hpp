@@ -212,7 +212,7 @@ std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& config)
 std::vector<double> band_wavenumbers(const SimulationConfig& config);
 /// The expected height variance of each cascade's band, m², lowest first: Σ expected_wave_power
 /// over the cascade's grid (what a realisation's texels hold on average), for depth-induced
-/// breaking (ocean/waves.hpp DampingParams::band_variances_m2, W.20). Errors are those of
+/// breaking (ocean/waves.hpp DampingParams::band_variances_m2, W.25). Errors are those of
 /// SeaState::make and make_initial_spectrum.
 Result<std::vector<double>> band_variances(const SimulationConfig& config);
 

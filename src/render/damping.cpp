@@ -119,7 +119,7 @@ Status Renderer::set_damping(const DampingGrid& grid) {
           float_to_half(clamped(grid.band_weights[kDampingBands * i + b], 1.0f));
     }
     std::uint16_t* depth = &out[(2 * cells + i) * 4];
-    // Negative: land, its height above the sea level (R.63); ±inf and NaN: deep water.
+    // Negative: land, its height above the sea level (R.64); ±inf and NaN: deep water.
     const float d = grid.depth_m[i];
     const auto deep = static_cast<float>(OCEAN_RENDER_DEEP_M);
     depth[0] = float_to_half(std::isfinite(d) ? std::clamp(d, -deep, deep) : deep);

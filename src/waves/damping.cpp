@@ -1,5 +1,5 @@
 // src/waves/damping.cpp — the damping of the sea's bands by a world-space mask and a bathymetry
-// (W.12–W.13) and their breaking where the water is too shallow to carry them (W.20–W.22):
+// (W.12–W.13) and their breaking where the water is too shallow to carry them (W.25–W.27):
 // placement and sampling of the maps, validation, and the per-band weights that the height
 // queries (and, per pixel, a renderer) multiply each cascade by.
 //
@@ -100,7 +100,7 @@ Status validate(const DampingParams& p) {
   if (Status s = require_in_range("breaking_index", p.breaking_index, 0.3, 1.5); !s.ok()) return s;
   if (p.bathymetry) {
     if (Status s = validate_placement("bathymetry", *p.bathymetry); !s.ok()) return s;
-    // Negative: land, its height above the mean sea level (W.23).
+    // Negative: land, its height above the mean sea level (W.28).
     if (Status s = validate_values("bathymetry", *p.bathymetry->map, -kMaxLandHeight_m,
                                    std::numeric_limits<double>::max(),
                                    "a depth (finite, m; land down to -1e4)");
@@ -125,7 +125,7 @@ Result<Damping> Damping::make(DampingParams params) {
 double breaking_fraction(double b) {
   if (!(b > 0.0)) return 0.0;
   if (b >= 1.0) return 1.0;
-  // (W.21) in y = ln Q_b: f(y) = e^y − 1 − b²·y = 0. f is convex, positive at y = −1/b² and
+  // (W.26) in y = ln Q_b: f(y) = e^y − 1 − b²·y = 0. f is convex, positive at y = −1/b² and
   // negative just below its trivial root y = 0, so Newton's steps from −1/b² rise monotonically
   // to the root between without overshooting it (and without e^y underflowing to a wrong root
   // where Q_b ≈ e^{−1/b²} is below the smallest double).
@@ -146,7 +146,7 @@ double Damping::depth_weights(double x, double z, std::span<double> out) const {
   const double depth = params_.bathymetry ? sample(*params_.bathymetry, x, z, inf) : inf;
   for (std::size_t c = 0; c < band_count(); ++c) {
     const double k = params_.band_wavenumbers_radpm[c];
-    const double water = std::max(depth, 0.0);  // land (depth < 0) carries no waves (W.23)
+    const double water = std::max(depth, 0.0);  // land (depth < 0) carries no waves (W.28)
     out[c] = depth_band_weight(k, water, params_.gravity_mps2) * (c == 0 ? 1.0 : mask);  // (W.13)
   }
   return depth;
@@ -154,7 +154,7 @@ double Damping::depth_weights(double x, double z, std::span<double> out) const {
 
 namespace {
 
-// H_rms, H_max and Q_b from the depth and the bands' weights before breaking (W.20–W.22).
+// H_rms, H_max and Q_b from the depth and the bands' weights before breaking (W.25–W.27).
 Surf surf_of(const DampingParams& p, double depth_m, std::span<const double> w) {
   Surf s;
   s.depth_m = depth_m;
@@ -162,10 +162,10 @@ Surf surf_of(const DampingParams& p, double depth_m, std::span<const double> w) 
   for (std::size_t c = 0; c < p.band_variances_m2.size(); ++c)
     m0 += w[c] * w[c] * p.band_variances_m2[c];
   s.rms_height_m = std::sqrt(8.0 * m0);
-  s.max_height_m = p.breaking_index * std::max(depth_m, 0.0);         // (W.20)
-  s.limited_rms_height_m = std::min(s.rms_height_m, s.max_height_m);  // (W.22)
+  s.max_height_m = p.breaking_index * std::max(depth_m, 0.0);         // (W.25)
+  s.limited_rms_height_m = std::min(s.rms_height_m, s.max_height_m);  // (W.27)
   if (s.rms_height_m > 0.0)
-    s.breaking_fraction = breaking_fraction(s.rms_height_m / s.max_height_m);  // (W.21)
+    s.breaking_fraction = breaking_fraction(s.rms_height_m / s.max_height_m);  // (W.26)
   return s;
 }
 
@@ -183,7 +183,7 @@ void Damping::band_weights(double x, double z, std::span<double> out) const {
   double limit = 1.0;
   if (!params_.band_variances_m2.empty()) {
     const Surf s = surf_of(params_, depth, w);
-    if (s.rms_height_m > s.max_height_m) limit = s.max_height_m / s.rms_height_m;  // (W.22)
+    if (s.rms_height_m > s.max_height_m) limit = s.max_height_m / s.rms_height_m;  // (W.27)
   }
   const std::size_t n = std::min(out.size(), band_count());
   for (std::size_t c = 0; c < n; ++c) out[c] = w[c] * limit;

@@ -55,7 +55,7 @@ TEST(DampingCli, BreakingHoldsTheHeightsOverShallowWaterAndTheLagoonHasAnIsland)
   const std::string shallow =
       " --bathymetry " + constant_npy(dir.path, "shallow.npy", 0.1f).string() + ",-50,-50,100";
   // Over 0.1 m of water the damped sea's H_rms exceeds γ·d: breaking scales every band by the one
-  // factor γ·d/H_rms (W.22), so without choppiness (a query then reads the point itself) each
+  // factor γ·d/H_rms (W.27), so without choppiness (a query then reads the point itself) each
   // height is the unbroken one times that factor, below 1.
   const std::string flat = " --choppiness 0" + shallow;
   const std::vector<double> unbroken = damped_heights(flat + " --breaking-index 0");

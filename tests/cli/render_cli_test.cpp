@@ -58,7 +58,7 @@ TEST(RenderCli, WritesAPngOfTheRequestedSize) {
   EXPECT_GT(blue(5, 2), blue(5, 43));
 }
 
-// The lagoon of `--shallows lagoon` straight down from 700 m (docs/rendering.md R.24, R.63): its
+// The lagoon of `--shallows lagoon` straight down from 700 m (docs/rendering.md R.24, R.64): its
 // 400 m map ends in 300 m of water, so its deep water looks as the open sea does there. The same
 // sea is drawn with and without the lagoon; the mean colour of four patches inside the map's
 // corners (180 m from both axes) and of four across the middle of its sides (the map's edge at

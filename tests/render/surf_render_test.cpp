@@ -1,8 +1,8 @@
-// The surf in the picture (docs/rendering.md R.62, docs/waves.md W.20–W.22): straight down over a
+// The surf in the picture (docs/rendering.md R.63, docs/waves.md W.25–W.27): straight down over a
 // planar beach built here, on a calm sea (no cascades: the foam is the surf's alone), the foam
 // coverage the shading draws (the normals view's alpha) is Battjes & Janssen's fraction of
 // breaking waves computed here from the closed forms, and full foam begins where H_rms = γ·d.
-// Land (R.63): a plateau 8 m high seen from 2 m up stands above the horizon, its top edge at the
+// Land (R.64): a plateau 8 m high seen from 2 m up stands above the horizon, its top edge at the
 // elevation its height and distance give, and is sand-coloured. Skips where no Vulkan device
 // exists (fails with OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>

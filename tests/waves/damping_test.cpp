@@ -213,7 +213,7 @@ TEST(Damping, MapsArePlacedByTheirCornerAndNeutralOutside) {
 }
 
 TEST(Damping, LandCarriesNoWavesAndNothingBreaksOnIt) {
-  // A negative depth is land, 3 m above the sea (W.23): every band's weight is 0 there, as on
+  // A negative depth is land, 3 m above the sea (W.28): every band's weight is 0 there, as on
   // the shoreline (d = 0), and no wave breaks.
   const auto made = Damping::make({.bathymetry = constant_map(-3.0, {0.0, 0.0}, 10.0),
                                    .band_wavenumbers_radpm = {0.05, 2.0},

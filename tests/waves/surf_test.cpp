@@ -1,4 +1,4 @@
-// Depth-induced breaking (ocean/waves.hpp, docs/waves.md W.20–W.22): the fraction of breaking
+// Depth-induced breaking (ocean/waves.hpp, docs/waves.md W.25–W.27): the fraction of breaking
 // waves solves Battjes & Janssen's (1978) relation; on a planar beach built here the surf begins
 // where the rms height of the damped bands, computed here from the Kitaigorodskii factor's closed
 // form, reaches γ·d, within the map's cell; shoreward of it the bands' weights hold H_rms at γ·d,
@@ -93,7 +93,7 @@ TEST(Surf, PlanarBeachBreaksWhereTheRmsHeightReachesGammaTimesDepth) {
   ASSERT_TRUE(made.ok()) << made.status().message();
   const Damping& damping = made.value();
 
-  // The analytic onset: H_rms(d)² = 8·Σ Φ(√(g·k_c), d)·m0_c (W.12, W.20), H_rms(d) = γ·d,
+  // The analytic onset: H_rms(d)² = 8·Σ Φ(√(g·k_c), d)·m0_c (W.12, W.25), H_rms(d) = γ·d,
   // bisected on d (H_rms > γ·d in the shallows, where H_rms ∝ √d).
   const auto rms = [&](double d) {
     double s = 0.0;
@@ -135,7 +135,7 @@ TEST(Surf, PlanarBeachBreaksWhereTheRmsHeightReachesGammaTimesDepth) {
     EXPECT_NEAR(s.rms_height_m, rms(d), 1e-4 * rms(d)) << "x = " << x;
     EXPECT_NEAR(s.max_height_m, kGamma * d, 1e-5 * d);
     // The bands' weights: H_rms of the weighted variances, √(8 Σ w_c² m0_c), is the unbroken
-    // sea's seaward of the onset and γ·d shoreward (W.22).
+    // sea's seaward of the onset and γ·d shoreward (W.27).
     damping.band_weights(x, 1.0, w);
     double v = 0.0;
     for (std::size_t b = 0; b < k.size(); ++b) v += w[b] * w[b] * m0[b];

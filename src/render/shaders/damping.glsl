@@ -14,7 +14,7 @@ struct DampingSample {
   vec4 low;   // weights of cascades 0–3
   vec4 high;  // weights of cascades 4–7
   float depth_m;
-  float breaking;  // Q_b, the fraction of breaking waves (W.21): the surf's foam coverage (R.62)
+  float breaking;  // Q_b, the fraction of breaking waves (W.26): the surf's foam coverage (R.63)
 };
 
 DampingSample damping_at(vec2 xz) {
@@ -31,7 +31,7 @@ DampingSample damping_at(vec2 xz) {
 }
 
 // The grid's depth at xz, m, without the weights: OCEAN_RENDER_DEEP_M off the grid; negative on
-// land, its height above the mean sea level (R.63).
+// land, its height above the mean sea level (R.64).
 float grid_depth_at(vec2 xz) {
   if (u.damping.resolution <= 0.0) return OCEAN_RENDER_DEEP_M;
   vec2 uv = (xz - u.damping.origin_m) / u.damping.size_m;

@@ -154,7 +154,7 @@ void main() {
   local_shade(world_xz, local_slope, local_foam);
   slope += local_slope;
   no_foam *= 1.0 - local_foam;
-  no_foam *= 1.0 - damping.breaking;  // the surf: the fraction of breaking waves (R.62)
+  no_foam *= 1.0 - damping.breaking;  // the surf: the fraction of breaking waves (R.63)
   vec3 N = normalize(vec3(slope.x, 0.0, slope.y) + curved_up(world_xz));  // R.15
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);
   float foam = 1.0 - no_foam;
@@ -218,7 +218,7 @@ void main() {
   vec3 foam_colour = 0.85 * u.foam_brightness * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
 
-  if (damping.depth_m < 0.0 && !below) {  // land (R.63): sand under the same sun and sky
+  if (damping.depth_m < 0.0 && !below) {  // land (R.64): sand under the same sun and sky
     N_up = land_normal(world_xz);
     foam = 0.0;
     // Wet sand, darker, up to half the significant height above the mean level.
