@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "options.hpp"
+#include "shallows.hpp"
 
 namespace ocean::cli {
 namespace {
@@ -228,15 +229,39 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
   command.add_option("--bathymetry", f.bathymetry,
                      "FILE,X0,Z0,SIZE_M: .npy water depth, m, from corner (X0, Z0); damps each "
                      "band where the water is shallow against its wavelength");
+  command.add_option("--shallows", f.shallows,
+                     "none, lily-pads (a damping mask) or lagoon (an island 4 m high in a 400 m "
+                     "bathymetry), centred on the origin; instead of --damping-mask and "
+                     "--bathymetry");
+  command.add_option("--breaking-index", f.breaking_index,
+                     "GAMMA: waves over --bathymetry break where their rms height exceeds GAMMA "
+                     "times the depth (default 0.78, McCowan's solitary wave; 0: no breaking)");
 }
 
 Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
                                                            const SimulationConfig& config) {
-  if (f.damping_mask.empty() && f.bathymetry.empty())
+  const std::optional<Shallows> shallows = parse_shallows(f.shallows);
+  if (!shallows)
+    return invalid_argument("--shallows = '" + excerpt(f.shallows) +
+                            "': must be none, lily-pads or lagoon");
+  if (f.damping_mask.empty() && f.bathymetry.empty() && *shallows == Shallows::none)
     return std::shared_ptr<const waves::Damping>();
   if (f.calm)
     return invalid_argument(
-        "--damping-mask and --bathymetry damp the sea's bands: not with --calm");
+        "--damping-mask, --bathymetry and --shallows damp the sea's bands: not with --calm");
+  Result<std::vector<double>> gamma =
+      numbers("--breaking-index", f.breaking_index, 1, 1, "one number (0: no breaking)");
+  if (!gamma.ok()) return gamma.status();
+  if (*shallows != Shallows::none) {
+    if (!f.damping_mask.empty() || !f.bathymetry.empty())
+      return invalid_argument(
+          "--shallows is a scene of its own: not with --damping-mask or "
+          "--bathymetry");
+    Result<std::optional<waves::Damping>> scene =
+        shallows_damping(*shallows, {0.0, 0.0}, config, gamma.value()[0]);
+    if (!scene.ok()) return flagged("--breaking-index", f.breaking_index, scene.status());
+    return std::make_shared<const waves::Damping>(std::move(*scene.value()));
+  }
   waves::DampingParams p{.band_wavenumbers_radpm = band_wavenumbers(config),
                          .gravity_mps2 = config.sea.dispersion.gravity_mps2};
   if (!f.damping_mask.empty()) {
@@ -249,8 +274,16 @@ Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
     if (!m.ok()) return m.status();
     p.bathymetry = std::move(m).value();
   }
+  if (gamma.value()[0] != 0.0 && p.bathymetry.has_value()) {  // (W.25–W.27)
+    Result<std::vector<double>> m0 = band_variances(config);
+    if (!m0.ok()) return m0.status();
+    p.band_variances_m2 = std::move(m0).value();
+    p.breaking_index = gamma.value()[0];
+  }
   Result<waves::Damping> d = waves::Damping::make(std::move(p));
   if (!d.ok()) {
+    if (d.status().message().starts_with("breaking_index"))
+      return flagged("--breaking-index", f.breaking_index, d.status());
     const bool mask = d.status().message().starts_with("damping mask");
     return flagged(mask ? "--damping-mask" : "--bathymetry", mask ? f.damping_mask : f.bathymetry,
                    d.status());
@@ -275,6 +308,7 @@ DampingSamples sample_damping(const waves::Damping& damping, int resolution, std
   const auto n = static_cast<std::size_t>(resolution);
   out.band_weights.assign(n * n * bands, 1.0f);
   out.depth_m.assign(n * n, std::numeric_limits<float>::infinity());
+  out.breaking_fraction.assign(n * n, 0.0f);
   std::vector<double> w(std::max(bands, damping.band_count()), 1.0);
   for (std::size_t row = 0; row < n; ++row) {
     for (std::size_t col = 0; col < n; ++col) {
@@ -285,9 +319,9 @@ DampingSamples sample_damping(const waves::Damping& damping, int resolution, std
       const std::size_t cell = row * n + col;
       for (std::size_t b = 0; b < bands; ++b)
         out.band_weights[cell * bands + b] = static_cast<float>(w[b]);
-      if (damping.params().bathymetry.has_value())
-        out.depth_m[cell] = static_cast<float>(waves::sample(
-            *damping.params().bathymetry, x, z, std::numeric_limits<double>::infinity()));
+      const waves::Surf surf = damping.surf(x, z);
+      out.depth_m[cell] = static_cast<float>(surf.depth_m);
+      out.breaking_fraction[cell] = static_cast<float>(surf.breaking_fraction);
     }
   }
   return out;

@@ -23,6 +23,10 @@ struct WaveFlags {
   std::string local_resolution = "512";
   std::string damping_mask;  ///< FILE,X0,Z0,SIZE_M
   std::string bathymetry;    ///< FILE,X0,Z0,SIZE_M
+  /// A scene of shallows.hpp about the origin, instead of both maps.
+  std::string shallows = "none";
+  /// γ of depth-induced breaking over the bathymetry (W.25), H_max = γ·d; "0" turns it off.
+  std::string breaking_index = "0.78";
 };
 void add_wave_flags(CLI::App& command, WaveFlags& flags);
 
@@ -34,10 +38,13 @@ void add_wave_flags(CLI::App& command, WaveFlags& flags);
 Result<std::optional<waves::LayerParams>> layer_params(const WaveFlags& flags, double choppiness,
                                                        double time_s = 0.0);
 
-/// The damping of the sea's bands the flags describe (--damping-mask, --bathymetry), for the
-/// cascades of `config`, or null when neither is given. An unreadable file, a bad placement, a
-/// mask value outside [0, 1], a negative or NaN depth, a PNG bathymetry or either flag with
-/// --calm is an error naming the flag.
+/// The damping of the sea's bands the flags describe (--damping-mask, --bathymetry, or
+/// --shallows: a scene of shallows.hpp centred on the origin), for the cascades of `config`, or
+/// null when none is given. --shallows with either map, or an unknown scene, is an error. An
+/// unreadable file, a bad placement, a mask value outside [0, 1], a NaN depth or land above 10 km,
+/// a PNG bathymetry, a breaking index outside [0.3, 1.5] (other than 0, no breaking) or either flag
+/// with --calm is an error naming the flag. The bands break over the bathymetry by W.25–W.27 with
+/// the sea's band variances.
 Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& flags,
                                                            const SimulationConfig& config);
 
@@ -50,6 +57,7 @@ struct DampingSamples {
   int resolution = 0;
   std::vector<float> band_weights;  ///< bands per cell, row-major, rows along +z
   std::vector<float> depth_m;
+  std::vector<float> breaking_fraction;  ///< Q_b per cell (Damping::surf, W.26)
 };
 DampingSamples sample_damping(const waves::Damping& damping, int resolution, std::size_t bands);
 

@@ -232,7 +232,10 @@ struct DampingGrid {
   double size_m = 0.0;
   int resolution = 0;                   ///< N cells per side
   std::span<const float> band_weights;  ///< kDampingBands·N² values, or empty for none
-  std::span<const float> depth_m;       ///< N² values
+  std::span<const float> depth_m;       ///< N² values; negative: land, −d its height (R.64)
+  /// N² fractions of breaking waves Q_b in [0, 1] (waves::Damping::surf, W.26), drawn as the
+  /// surf's foam coverage (R.63); empty: none.
+  std::span<const float> breaking_fraction;
 };
 
 class Renderer {

@@ -210,6 +210,11 @@ std::vector<std::array<double, 2>> cascade_bands(const SimulationConfig& config)
 /// (ocean/waves.hpp, W.14): the geometric mean of the band's finite edges, cascade 0's lower edge
 /// taken at its fundamental 2π/L₀ and the last cascade's upper edge at its Nyquist π·N/L.
 std::vector<double> band_wavenumbers(const SimulationConfig& config);
+/// The expected height variance of each cascade's band, m², lowest first: Σ expected_wave_power
+/// over the cascade's grid (what a realisation's texels hold on average), for depth-induced
+/// breaking (ocean/waves.hpp DampingParams::band_variances_m2, W.25). Errors are those of
+/// SeaState::make and make_initial_spectrum.
+Result<std::vector<double>> band_variances(const SimulationConfig& config);
 
 /// How cascade `index` generates its spectrum: its grid, its band, and its own seed
 /// (seed + 0x9e3779b9·index, so cascades are independent realisations).

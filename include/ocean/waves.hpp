@@ -309,21 +309,55 @@ double sample(const PlacedMap& placed, double x, double z, double outside);
 
 /// Most cascades (bands) a Damping weighs.
 inline constexpr std::size_t kMaxBands = 16;
+/// The highest land a bathymetry may hold (as a depth of −10 km), m.
+inline constexpr double kMaxLandHeight_m = 1e4;
+/// The breaking index of a solitary wave, H/d (McCowan 1894, "On the highest wave of permanent
+/// type"): the default γ of depth-induced breaking (W.25).
+inline constexpr double kMcCowanBreakingIndex = 0.78;
 
 /// Where the sea's high-frequency bands are damped: a mask and a bathymetry, both optional.
 struct DampingParams {
   /// Values in [0, 1]: 0 = the low band (cascade 0) only, 1 = every band; 1 outside the map.
   std::optional<PlacedMap> mask;
-  /// Water depth, m, finite and ≥ 0; deep water (no attenuation) outside the map.
+  /// Water depth, m, finite and ≥ −kMaxLandHeight_m; deep water (no attenuation) outside the map.
+  /// A negative depth is land, −d its height above the mean sea level (W.28): no waves there.
   std::optional<PlacedMap> bathymetry;
   /// Representative wavenumber of each band, rad/m, lowest band first (sim.hpp's
   /// band_wavenumbers); 1 to kMaxBands values, finite and > 0.
   std::vector<double> band_wavenumbers_radpm;
   double gravity_mps2 = 9.81;  ///< g > 0
+  /// The deep-water height variance of each band, m², lowest band first (sim.hpp's
+  /// band_variances): what depth-induced breaking weighs the local sea by (W.25). Empty: no
+  /// breaking (the bands are damped by W.12–W.13 alone); else one value per band, finite, ≥ 0.
+  std::vector<double> band_variances_m2;
+  /// γ of W.25: the highest wave over water of depth d is γ·d. McCowan's (1894) solitary wave,
+  /// 0.78, by default; Battjes & Janssen (1978) fitted 0.8 for random waves on a beach. Finite,
+  /// in [0.3, 1.5] (Thornton & Guza 1983's rms index 0.42 lies within it, applied to H_rms).
+  double breaking_index = kMcCowanBreakingIndex;
 };
 /// invalid_argument naming the field and value: a bad placement, a mask value outside [0, 1], a
-/// negative or non-finite depth ("bathymetry value 12 = -3 ..."), bad wavenumbers.
+/// non-finite depth or land higher than kMaxLandHeight_m ("bathymetry value 12 = nan ..."), bad
+/// wavenumbers, band variances of another count than the wavenumbers or negative, a breaking index
+/// outside [0.3, 1.5].
 Status validate(const DampingParams& params);
+
+/// The fraction of breaking waves Q_b of Battjes & Janssen (1978) (W.26): the waves' heights
+/// taken as Rayleigh-distributed with rms b·H_max, truncated at H_max, Q_b is the root in (0, 1)
+/// of (1 − Q_b)/ln Q_b = −b². 0 for b ≤ 0, 1 for b ≥ 1 (the saturated surf zone); increasing
+/// between, ≈ e^{−1/b²} for small b. b = H_rms/H_max; NaN gives 0.
+double breaking_fraction(double rms_over_max);
+
+/// The sea's height statistics at a point of a bathymetry with depth-induced breaking (W.25–W.27).
+struct Surf {
+  double depth_m = 0.0;  ///< d (+inf off the bathymetry or without one)
+  /// H_rms = √(8·Σ w_c²·m0_c) of the bands as the depth law and the mask damp them (W.12–W.13),
+  /// before breaking limits it, m (Longuet-Higgins 1952: √8 σ for Rayleigh heights).
+  double rms_height_m = 0.0;
+  double max_height_m = 0.0;  ///< H_max = γ·d (W.25), m; +inf in deep water
+  /// What W.27 leaves of H_rms: min(H_rms, H_max), m.
+  double limited_rms_height_m = 0.0;
+  double breaking_fraction = 0.0;  ///< Q_b(H_rms/H_max) (W.26): the foam coverage of the surf
+};
 
 /// The amplitude weight of a band of (deep-water) wavenumber k over water of depth d (W.12):
 /// √Φ(ω, d), ω = √(g·k), Φ the Kitaigorodskii depth factor of TMA (Bouws et al. 1985) relative
@@ -340,10 +374,17 @@ class Damping {
   [[nodiscard]] std::size_t band_count() const { return params_.band_wavenumbers_radpm.size(); }
   /// Weight of each band at world (x, z), out[c] for cascade c (out.size() ≥ band_count(); the
   /// rest is left alone): depth_band_weight(k_c, depth(x, z)) times, for every band but the low
-  /// one, the mask value m(x, z) (W.13). Never allocates.
+  /// one, the mask value m(x, z) (W.13); with band variances, every band then times
+  /// H_max/H_rms where the local H_rms exceeds H_max = γ·d (W.27). Never allocates.
   void band_weights(double x, double z, std::span<double> out) const;
+  /// The local wave heights and the fraction of breaking waves at world (x, z) (W.25–W.27). No
+  /// band variances: H_rms 0, nothing breaks. Never allocates.
+  [[nodiscard]] Surf surf(double x, double z) const;
 
  private:
+  // W.12–W.13's weights of every band into out[0, band_count()); returns the depth (+inf off
+  // the bathymetry).
+  double depth_weights(double x, double z, std::span<double> out) const;
   DampingParams params_;
 };
 

@@ -95,6 +95,10 @@ Status Renderer::set_damping(const DampingGrid& grid) {
                             " weights and " + std::to_string(grid.depth_m.size()) + " depths for " +
                             std::to_string(side) + "² cells (" + std::to_string(kDampingBands) +
                             " and 1 each expected)");
+  if (!grid.breaking_fraction.empty() && grid.breaking_fraction.size() != cells)
+    return invalid_argument("damping: " + std::to_string(grid.breaking_fraction.size()) +
+                            " breaking fractions for " + std::to_string(side) +
+                            "² cells (1 each or none expected)");
   if (side != damping.side) {
     if (Status s = allocate_damping(st, side); !s.ok()) {
       damping.uniforms.resolution = 0.0f;
@@ -115,8 +119,14 @@ Status Renderer::set_damping(const DampingGrid& grid) {
           float_to_half(clamped(grid.band_weights[kDampingBands * i + b], 1.0f));
     }
     std::uint16_t* depth = &out[(2 * cells + i) * 4];
-    depth[0] = float_to_half(clamped(grid.depth_m[i], static_cast<float>(OCEAN_RENDER_DEEP_M)));
-    depth[1] = depth[2] = depth[3] = 0;
+    // Negative: land, its height above the sea level (R.64); ±inf and NaN: deep water.
+    const float d = grid.depth_m[i];
+    const auto deep = static_cast<float>(OCEAN_RENDER_DEEP_M);
+    depth[0] = float_to_half(std::isfinite(d) ? std::clamp(d, -deep, deep) : deep);
+    depth[1] = grid.breaking_fraction.empty()
+                   ? 0
+                   : float_to_half(clamped(grid.breaking_fraction[i], 1.0f));
+    depth[2] = depth[3] = 0;
   }
   damping.origin_m = grid.origin_m;
   damping.uniforms.size_m = static_cast<float>(grid.size_m);

@@ -1,7 +1,8 @@
-// The damping of the bands (src/render, private; docs/rendering.md R.24): an RGBA16F 2-D array of
-// three layers (the weights of cascades 0–3 and 4–7, the depth), filled from a DampingGrid through
-// a staging buffer by Renderer::set_damping; 1×1 until then, so the scene set's binding is always
-// valid. The shaders read it in shaders/damping.glsl.
+// The damping of the bands (src/render, private; docs/rendering.md R.24, R.63): an RGBA16F 2-D
+// array of three layers (the weights of cascades 0–3 and 4–7; the depth and the fraction of
+// breaking waves), filled from a DampingGrid through a staging buffer by Renderer::set_damping;
+// 1×1 until then, so the scene set's binding is always valid. The shaders read it in
+// shaders/damping.glsl.
 #pragma once
 
 #include <array>

@@ -187,6 +187,21 @@ std::vector<double> band_wavenumbers(const SimulationConfig& c) {
   return k;
 }
 
+Result<std::vector<double>> band_variances(const SimulationConfig& c) {
+  Result<SeaState> sea = SeaState::make(c.sea);
+  if (!sea.ok()) return sea.status();
+  std::vector<double> m0;
+  for (std::size_t i = 0; i < c.cascade_patch_sizes_m.size(); ++i) {
+    Result<std::vector<double>> power =
+        expected_wave_power(sea.value(), cascade_spectrum_params(c, i));
+    if (!power.ok()) return power.status();
+    double sum = 0.0;
+    for (double p : power.value()) sum += p;
+    m0.push_back(sum);
+  }
+  return m0;
+}
+
 InitialSpectrumParams cascade_spectrum_params(const SimulationConfig& c, std::size_t index) {
   const std::array<double, 2> band = cascade_bands(c)[index];
   return {.grid = {.resolution = c.resolution, .patch_size_m = c.cascade_patch_sizes_m[index]},

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
@@ -55,6 +56,57 @@ TEST(RenderCli, WritesAPngOfTheRequestedSize) {
     return px[static_cast<std::size_t>((y * 80 + x) * 3 + 2)];
   };
   EXPECT_GT(blue(5, 2), blue(5, 43));
+}
+
+// The lagoon of `--shallows lagoon` straight down from 700 m (docs/rendering.md R.24, R.64): its
+// 400 m map ends in 300 m of water, so its deep water looks as the open sea does there. The same
+// sea is drawn with and without the lagoon; the mean colour of four patches inside the map's
+// corners (180 m from both axes) and of four across the middle of its sides (the map's edge at
+// 200 m through their middle) is each channel within 3 % of the open sea's at the same pixels.
+// The patches lie symmetrically about the nadir, so the picture's orientation does not matter.
+TEST(RenderCli, TheLagoonsDeepWaterHasTheOpenSeasColour) {
+  if (!have_vulkan()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const auto shoot = [](const std::string& name, const std::string& flags) {
+    const fs::path out = scratch(name);
+    const ocean_test::CliRun r = ocean_test::run_cli(
+        "render --out " + out.string() +
+        " --width 160 --height 160 --quality low --resolution 64 --warmup 0 --preset moderate "
+        "--camera 0,700,1 --target 0,0,0 --fov 60" +
+        flags);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    auto png = ocean::io::read_png(out);
+    EXPECT_TRUE(png.ok()) << png.status().message();
+    return png.ok() ? std::move(png).value().samples : std::vector<std::uint16_t>{};
+  };
+  const std::vector<std::uint16_t> lagoon = shoot("lagoon_colour.png", " --shallows lagoon");
+  const std::vector<std::uint16_t> sea = shoot("sea_colour.png", "");
+  ASSERT_EQ(lagoon.size(), 160u * 160u * 3u);
+  ASSERT_EQ(sea.size(), lagoon.size());
+  const double per_m = 80.0 / (700.0 * std::tan(30.0 * 3.14159265358979 / 180.0));  // px per m
+  // Mean of channel ch over four 7×7 patches centred on the world offsets (±x, ±z).
+  const auto patches = [&](const std::vector<std::uint16_t>& px, double x, double z, int ch) {
+    double sum = 0.0;
+    for (const auto& [ox, oz] : {std::pair{x, z}, {-x, z}, {x, -z}, {-x, -z}}) {
+      const int cx = static_cast<int>(std::lround(80.0 + ox * per_m - 0.5));
+      const int cy = static_cast<int>(std::lround(80.0 + oz * per_m - 0.5));
+      for (int y = cy - 3; y <= cy + 3; ++y)
+        for (int x0 = cx - 3; x0 <= cx + 3; ++x0)
+          sum += px[static_cast<std::size_t>((y * 160 + x0) * 3 + ch)];
+    }
+    return sum / 196.0;
+  };
+  for (int ch = 0; ch < 3; ++ch) {
+    const double corners = patches(lagoon, 180.0, 180.0, ch);
+    const double corners_sea = patches(sea, 180.0, 180.0, ch);
+    const double edges = (patches(lagoon, 200.0, 0.0, ch) + patches(lagoon, 0.0, 200.0, ch)) / 2;
+    const double edges_sea = (patches(sea, 200.0, 0.0, ch) + patches(sea, 0.0, 200.0, ch)) / 2;
+    std::printf(
+        "channel %d: lagoon's deep corners %.2f, open sea %.2f; across the map's edge "
+        "%.2f, open sea %.2f (sRGB levels)\n",
+        ch, corners, corners_sea, edges, edges_sea);
+    EXPECT_NEAR(corners, corners_sea, 0.03 * corners_sea) << "channel " << ch;
+    EXPECT_NEAR(edges, edges_sea, 0.03 * edges_sea) << "channel " << ch;
+  }
 }
 
 // The summed samples of `b` over those of `a`: their brightness ratio.

@@ -135,13 +135,13 @@ TEST(ViewShallows, LagoonFollowsTheDepthLawAndLilyPadsTheMask) {
   ASSERT_TRUE(lagoon.ok()) << lagoon.status().message();
   ASSERT_TRUE(lagoon.value().has_value());
   std::vector<double> w(k.size());
-  // On the island (depth 0) every band is gone; at r = 150 m the depth is (150 − 50)/5 = 20 m,
-  // and each band's weight is the depth law's at 20 m.
+  // On the island (land 4 m high) every band is gone; at r = 140 m (inside the reef at 150 m)
+  // the depth is (140 − 50)/5 = 18 m, and each band's weight is the depth law's at 18 m.
   lagoon.value()->band_weights(centre[0], centre[1], w);
   for (double v : w) EXPECT_NEAR(v, 0.0, 1e-12);
-  lagoon.value()->band_weights(centre[0] + 150.0, centre[1], w);
+  lagoon.value()->band_weights(centre[0] + 140.0, centre[1], w);
   for (std::size_t c = 0; c < k.size(); ++c)
-    EXPECT_NEAR(w[c], ocean::waves::depth_band_weight(k[c], 20.0, 9.81), 1e-3) << c;
+    EXPECT_NEAR(w[c], ocean::waves::depth_band_weight(k[c], 18.0, 9.81), 1e-3) << c;
   EXPECT_LT(w[0], w.back());  // the longest band feels the bottom most
 
   auto pads = shallows_damping(Shallows::lily_pads, centre, config);

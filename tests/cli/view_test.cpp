@@ -194,8 +194,8 @@ TEST_F(ViewCli, DebugViewsAndTheVulkanBackendRun) {
 }
 
 // The lagoon seen from above with the boat circling it (validation on): the island in the
-// middle of the picture is drawn as its sandy bottom under still water, brighter than the deep
-// water at the corners; without --shallows the middle is water like the corners.
+// middle of the picture is drawn as sand (land, R.64), brighter than the deep water at the
+// corners; without --shallows the middle is water like the corners.
 TEST_F(ViewCli, LagoonAndBoatDrawFromAbove) {
   const auto shoot = [&](const std::string& flags) {
     const fs::path png = dir_ / "lagoon.png";

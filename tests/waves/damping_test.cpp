@@ -212,6 +212,23 @@ TEST(Damping, MapsArePlacedByTheirCornerAndNeutralOutside) {
   EXPECT_EQ(w[1], 0.0);
 }
 
+TEST(Damping, LandCarriesNoWavesAndNothingBreaksOnIt) {
+  // A negative depth is land, 3 m above the sea (W.28): every band's weight is 0 there, as on
+  // the shoreline (d = 0), and no wave breaks.
+  const auto made = Damping::make({.bathymetry = constant_map(-3.0, {0.0, 0.0}, 10.0),
+                                   .band_wavenumbers_radpm = {0.05, 2.0},
+                                   .band_variances_m2 = {1.0, 0.1}});
+  ASSERT_TRUE(made.ok()) << made.status().message();
+  std::array<double, 2> w{1.0, 1.0};
+  made.value().band_weights(5.0, 5.0, w);
+  EXPECT_EQ(w, (std::array<double, 2>{0.0, 0.0}));
+  const ocean::waves::Surf s = made.value().surf(5.0, 5.0);
+  EXPECT_EQ(s.depth_m, -3.0);
+  EXPECT_EQ(s.rms_height_m, 0.0);
+  EXPECT_EQ(s.max_height_m, 0.0);
+  EXPECT_EQ(s.breaking_fraction, 0.0);
+}
+
 TEST(Damping, BadMapsAreRefusedNamingTheValue) {
   const auto fails = [](DampingParams p, const std::string& expected) {
     p.band_wavenumbers_radpm = {0.1, 1.0};
@@ -220,7 +237,7 @@ TEST(Damping, BadMapsAreRefusedNamingTheValue) {
     EXPECT_EQ(made.status().code(), ocean::ErrorCode::invalid_argument);
     EXPECT_NE(made.status().message().find(expected), std::string::npos) << made.status().message();
   };
-  fails({.bathymetry = constant_map(-3.0, {0, 0}, 10.0)}, "bathymetry value 0 = -3");
+  fails({.bathymetry = constant_map(-2e4, {0, 0}, 10.0)}, "bathymetry value 0 = -20000");
   fails({.bathymetry = constant_map(std::nan(""), {0, 0}, 10.0)}, "bathymetry value 0");
   fails({.mask = constant_map(1.5, {0, 0}, 10.0)}, "damping mask value 0 = 1.5");
   fails({.mask = constant_map(1.0, {0, 0}, 0.0)}, "size_m");

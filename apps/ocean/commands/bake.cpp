@@ -118,9 +118,10 @@ int run_bake(const BakeOptions& o) {
   params.frame_count = frames;
   params.fps = fps.value();
   params.start_time_s = start.value();
-  if (!o.waves.damping_mask.empty() || !o.waves.bathymetry.empty()) {
+  if (!o.waves.damping_mask.empty() || !o.waves.bathymetry.empty() || o.waves.shallows != "none") {
     return report(invalid_argument(
-        "--damping-mask and --bathymetry are not applied by bake: its tiles are periodic and a "
+        "--damping-mask, --bathymetry and --shallows are not applied by bake: its tiles are "
+        "periodic and a "
         "world-space map has no place on them (ocean query applies them)"));
   }
   Result<std::optional<waves::LayerParams>> layer =

@@ -424,7 +424,8 @@ int run_render(const RenderOptions& o) {
                                              .size_m = d.size_m,
                                              .resolution = d.resolution,
                                              .band_weights = d.band_weights,
-                                             .depth_m = d.depth_m});
+                                             .depth_m = d.depth_m,
+                                             .breaking_fraction = d.breaking_fraction});
     if (!set.ok()) return report(set);
   }
   // The layer composited with the sea by the simulator; each step hands the frame's local

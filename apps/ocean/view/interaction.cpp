@@ -12,31 +12,6 @@
 namespace ocean::cli::view {
 namespace {
 
-// A square map of side `size` and `n` samples per side, centred on `centre`, whose value is
-// f(distance from the centre).
-template <typename F>
-waves::PlacedMap radial_map(std::array<double, 2> centre, double size, int n, F f) {
-  auto map = std::make_shared<waves::HeightMap>();
-  map->rows = n, map->cols = n;
-  map->values.resize(static_cast<std::size_t>(n) * static_cast<std::size_t>(n));
-  const double cell = size / n;
-  for (int r = 0; r < n; ++r) {
-    for (int c = 0; c < n; ++c) {
-      const double dx = (c + 0.5) * cell - 0.5 * size, dz = (r + 0.5) * cell - 0.5 * size;
-      map->values[static_cast<std::size_t>(r) * static_cast<std::size_t>(n) +
-                  static_cast<std::size_t>(c)] = static_cast<float>(f(std::hypot(dx, dz)));
-    }
-  }
-  return {.map = std::move(map),
-          .origin_m = {centre[0] - 0.5 * size, centre[1] - 0.5 * size},
-          .size_m = size};
-}
-
-double smoothstep(double e0, double e1, double x) {
-  const double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 // The square the boat's wake is drawn in: centred on the circle, kBoatWakeMargin_m beyond it.
 waves::LocalArea wake_area(const BoatControls& boat) {
   const double side = 2.0 * (boat.radius_m + kBoatWakeMargin_m);
@@ -81,31 +56,6 @@ Result<std::unique_ptr<world::World>> make_boat_world(const BoatControls& boat, 
                             config);
 }
 
-std::optional<Shallows> parse_shallows(std::string_view name) {
-  if (name == "none") return Shallows::none;
-  if (name == "lily-pads") return Shallows::lily_pads;
-  if (name == "lagoon") return Shallows::lagoon;
-  return std::nullopt;
-}
-
-Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
-                                                       std::array<double, 2> centre_m,
-                                                       const SimulationConfig& config) {
-  if (scene == Shallows::none) return std::optional<waves::Damping>{};
-  waves::DampingParams params{.band_wavenumbers_radpm = band_wavenumbers(config),
-                              .gravity_mps2 = config.sea.dispersion.gravity_mps2};
-  if (scene == Shallows::lily_pads) {
-    params.mask =
-        radial_map(centre_m, 200.0, 256, [](double r) { return smoothstep(40.0, 60.0, r); });
-  } else {
-    params.bathymetry = radial_map(
-        centre_m, 400.0, 256, [](double r) { return std::clamp((r - 50.0) / 5.0, 0.0, 40.0); });
-  }
-  Result<waves::Damping> made = waves::Damping::make(std::move(params));
-  if (!made.ok()) return made.status();
-  return std::optional<waves::Damping>(std::move(made).value());
-}
-
 double scene_radius_m(const BoatControls& boat, Shallows shallows) {
   double r = boat.on ? boat.radius_m + 10.0 : 0.0;
   if (shallows == Shallows::lily_pads) r = std::max(r, 60.0);
@@ -113,9 +63,9 @@ double scene_radius_m(const BoatControls& boat, Shallows shallows) {
   return r;
 }
 
-std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m,
-                                                    double radius_m, std::array<double, 2> look,
-                                                    double fov_y_rad, double aspect) {
+std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m, double radius_m,
+                                                    std::array<double, 2> look, double fov_y_rad,
+                                                    double aspect) {
   const double horizontal_fov = 2.0 * std::atan(std::tan(0.5 * fov_y_rad) * aspect);
   const double narrower = std::min(fov_y_rad, horizontal_fov);
   const double distance = radius_m / std::tan(0.4 * narrower);
@@ -164,7 +114,8 @@ Status InteractionScene::set_shallows(Shallows scene, std::array<double, 2> cent
                                .size_m = d.size_m,
                                .resolution = d.resolution,
                                .band_weights = d.band_weights,
-                               .depth_m = d.depth_m});
+                               .depth_m = d.depth_m,
+                               .breaking_fraction = d.breaking_fraction});
 }
 
 Status InteractionScene::update(double time_s, Simulator& simulator, render::View& view) {

@@ -2,8 +2,9 @@
 // driven round a circle by its propulsion and steering (docs/bodies.md B.8–B.11), leaving a
 // Kelvin wake from its track in the local layer (docs/waves.md W.1–W.9, W.17, docs/rendering.md
 // R.19) — a world of ocean/world.hpp made from the panel's controls — and shallows that damp
-// the sea's short bands (W.12–W.14, R.24): lily pads (a damping mask) and a lagoon (a bathymetry
-// that shoals to an island). Plain data and the library's types; no window, no ImGui.
+// the sea's short bands (W.12–W.14, R.24; shallows.hpp): lily pads (a damping mask) and a lagoon
+// (a bathymetry that shoals to an island, with its surf and beach). Plain data and the library's
+// types; no window, no ImGui.
 #pragma once
 
 #include <array>
@@ -18,6 +19,7 @@
 #include "ocean/sim.hpp"
 #include "ocean/waves.hpp"
 #include "ocean/world.hpp"
+#include "shallows.hpp"
 
 namespace ocean::cli::view {
 
@@ -45,21 +47,10 @@ Status validate(const BoatControls& boat);
 Result<std::unique_ptr<world::World>> make_boat_world(const BoatControls& boat, double time_s,
                                                       const SimulationConfig& config);
 
-/// The shallows scenes.
-enum class Shallows : int { none = 0, lily_pads = 1, lagoon = 2 };
-inline constexpr std::array<const char*, 3> kShallowsLabels = {"none", "lily pads", "lagoon"};
-/// "none", "lily-pads" or "lagoon"; nullopt otherwise.
-std::optional<Shallows> parse_shallows(std::string_view name);
-
-/// The damping of a scene centred at `centre` for the cascades of `config`, or nullopt for
-/// Shallows::none:
-/// - lily pads: a 200 m mask, 0 (the low band only) inside a disc of radius 40 m, 1 beyond 60 m,
-///   smoothstep between;
-/// - lagoon: a 400 m depth map, 0 m (an island) inside a radius of 50 m, deepening 1 m per 5 m
-///   to 40 m (the scene of docs/images/lagoon_render.png).
-Result<std::optional<waves::Damping>> shallows_damping(Shallows scene,
-                                                       std::array<double, 2> centre_m,
-                                                       const SimulationConfig& config);
+using cli::kShallowsLabels;
+using cli::parse_shallows;
+using cli::Shallows;
+using cli::shallows_damping;
 
 /// The radius about the scene's centre that shows what the scenes hold, m: the boat's circle and
 /// its hull (radius + 10 m), the lily pads' disc and its edge (60 m), the lagoon's island and its
@@ -70,9 +61,9 @@ double scene_radius_m(const BoatControls& boat, Shallows shallows);
 /// horizontal direction `look` (x, z; not both 0): looking down 25° at the centre from the
 /// distance at which the disc spans 80 % of the narrower of the picture's two angles, for a
 /// vertical field of view `fov_y_rad` and width/height `aspect`. {eye, target}, world metres.
-std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m,
-                                                    double radius_m, std::array<double, 2> look,
-                                                    double fov_y_rad, double aspect);
+std::array<std::array<double, 3>, 2> framing_camera(std::array<double, 2> centre_m, double radius_m,
+                                                    std::array<double, 2> look, double fov_y_rad,
+                                                    double aspect);
 
 /// The scenes in a running view: the floating boat and its wake, and the shallows' damping,
 /// handed to a renderer.

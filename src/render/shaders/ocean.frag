@@ -37,6 +37,10 @@ layout(location = 1) in vec3 world_pos;
 layout(location = 2) flat in uint level;
 layout(location = 0) out vec4 colour;
 
+// Wet sand's albedo over dry sand's: light trapped by total internal reflection in the water
+// film (Twomey, Bohren & Mergenthaler 1986); a chosen value.
+const float kWetSandDarkening = 0.6;
+
 const vec3 kLevelColours[9] = vec3[](vec3(0.9, 0.1, 0.1), vec3(0.95, 0.55, 0.1),
     vec3(0.9, 0.9, 0.1), vec3(0.3, 0.85, 0.2), vec3(0.1, 0.8, 0.8), vec3(0.2, 0.4, 0.95),
     vec3(0.55, 0.25, 0.9), vec3(0.9, 0.3, 0.75), vec3(0.95, 0.95, 0.95));
@@ -150,6 +154,7 @@ void main() {
   local_shade(world_xz, local_slope, local_foam);
   slope += local_slope;
   no_foam *= 1.0 - local_foam;
+  no_foam *= 1.0 - damping.breaking;  // the surf: the fraction of breaking waves (R.63)
   vec3 N = normalize(vec3(slope.x, 0.0, slope.y) + curved_up(world_xz));  // R.15
   float alpha_sq = clamp(variance, 2.5e-4, 1.0);
   float foam = 1.0 - no_foam;
@@ -212,6 +217,15 @@ void main() {
   // Foam: a bright diffuse layer over the water (R.11).
   vec3 foam_colour = 0.85 * u.foam_brightness * (sun_e * max(dot(N, L), 0.0) + sky_e) / PI;
   c = mix(c, foam_colour, clamp(foam, 0.0, 1.0));
+
+  if (damping.depth_m < 0.0 && !below) {  // land (R.64): sand under the same sun and sky
+    N_up = land_normal(world_xz);
+    foam = 0.0;
+    // Wet sand, darker, up to half the significant height above the mean level.
+    float wet = 1.0 - smoothstep(0.0, max(0.5 * u.hs_m, 0.05), -damping.depth_m);
+    vec3 albedo = u.damping.bottom_albedo * mix(1.0, kWetSandDarkening, wet);
+    c = albedo * (sun_e * max(dot(N_up, L), 0.0) + sky_e * 0.5 * (1.0 + N_up.y)) / PI;
+  }
 
   if (below) {  // the underside, through the water between it and the camera (R.50, R.51)
     c = water_fog(underside_radiance(world_pos, N_up, V, cos_width, foam), distance_m, V);

@@ -120,7 +120,7 @@ float bed_depth_at(vec2 xz, float flat_depth_m) {
   if (u.damping.resolution > 0.0) {
     vec2 uv = (xz - u.damping.origin_m) / u.damping.size_m;
     if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThanEqual(uv, vec2(1.0))))
-      return textureLod(damping_map, vec3(uv, 2.0), 0.0).x;
+      return max(textureLod(damping_map, vec3(uv, 2.0), 0.0).x, 0.0);  // land: the bed at once
   }
   return flat_depth_m;
 }
