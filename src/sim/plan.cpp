@@ -154,7 +154,22 @@ Result<SimulationPlan> SimulationPlan::make(const SimulationConfig& config) {
            .k_min_radpm = k_min,
            .k_max_radpm = kShortWaveDetailMaxRadpm,
            .seed = config.seed});
-      if (waves.ok()) plan.short_waves_ = std::move(waves).value();
+      if (waves.ok()) {
+        // On the lattice 2π/L₀ of the coarsest cascade (a shift below 2π/L₀, 10⁻⁴ of the
+        // shortest k here): the ripples repeat with the sea's longest period, so that every
+        // view the cascades repeat in (R.16) draws them alike too.
+        const double lattice = 2.0 * std::numbers::pi / config.cascade_patch_sizes_m.front();
+        for (ShortWaveComponent& w : waves.value()) {
+          const double k = std::hypot(w.kx_radpm, w.kz_radpm);
+          w.kx_radpm = lattice * std::round(w.kx_radpm / lattice);
+          w.kz_radpm = lattice * std::round(w.kz_radpm / lattice);
+          w.amplitude_m *= k / std::hypot(w.kx_radpm, w.kz_radpm);  // a·k kept
+          w.omega_radps = std::hypot(w.kx_radpm, w.kz_radpm) *
+                          capillary_gravity_phase_speed(std::hypot(w.kx_radpm, w.kz_radpm),
+                                                        wind.gravity_mps2);
+        }
+        plan.short_waves_ = std::move(waves).value();
+      }
     }
   }
   plan.far_noise_ = std::make_shared<FarNoiseFit>();

@@ -14,7 +14,7 @@
 // w²·(a·k)²/2 of its slope variance leaves the roughness. The phases are the CPU's at the camera
 // (R.16), so k·(x − x_eye) stays small where any wave is drawn.
 void ripples_at(vec2 xz, vec2 dx, vec2 dy, inout vec2 slope, inout float variance) {
-  int n = int(u.ripples.count);
+  int n = u.local.calm > 0.5 ? 0 : int(u.ripples.count);  // calm: the layer alone
   if (n == 0) return;
   // A lower bound of Δθ/|k| over every direction: max(|k̂·dx|, |k̂·dy|) ≥ |dx × dy|/(2·max(|dx|, |dy|)).
   // The waves come by increasing k, so once the bound passes π none further is drawn.
