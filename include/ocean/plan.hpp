@@ -65,6 +65,10 @@ struct FoamPlan {
   std::vector<double> weights;
 };
 
+/// The shortest wave SimulationPlan::short_waves holds, rad/m (λ ≈ 2 mm): beyond it Elfouhaily et
+/// al.'s capillary range carries under 10⁻⁵ of the slope variance.
+inline constexpr double kShortWaveDetailMaxRadpm = 3000.0;
+
 /// What a renderer needs to know of the surface it draws, and nothing of the configuration:
 /// heights that bound the waves, each cascade's patch and the scale its tiling is hidden at, the
 /// foam ramp and the far field's noise.
@@ -87,6 +91,10 @@ struct SurfaceDescription {
   /// σu² + σc² of the waves shorter than the finest cascade's grid, the roughness the cascades
   /// leave out (SimulationPlan::unresolved_slope_variance; R.5); empty when no wind is given.
   std::optional<double> unresolved_slope_variance;
+  /// SimulationPlan::short_waves: the waves beyond the finest cascade's grid as a sum of sines, which a
+  /// renderer draws as detail normals where the pixels resolve them and otherwise leaves in the
+  /// roughness (R.62); empty when no wind is given.
+  std::vector<ShortWaveComponent> short_waves;
   /// The normal length a level-0 texel of the packed map stores: SimulationConfig::roughness as
   /// Aebi, VR Ocean, eqs. 49–53 encode it, quantised to 8 bits and decoded again. A mip's
   /// shorter normal carries the slope variance the filtering removed (R.5).
@@ -121,6 +129,11 @@ class SimulationPlan {
   [[nodiscard]] const std::optional<SlopeVariance>& unresolved_slope_variance() const {
     return unresolved_slope_variance_;
   }
+  /// The unresolved waves from √2·π·N/L of the finest cascade (every direction outside its
+  /// grid's square) to kShortWaveDetailMaxRadpm, as short_wave_components (16 bins of 3 waves,
+  /// the configuration's seed; M.9.4): part of unresolved_slope_variance, drawn where a
+  /// renderer's pixels resolve them (docs/rendering.md R.62). Empty when that is.
+  [[nodiscard]] const std::vector<ShortWaveComponent>& short_waves() const { return short_waves_; }
   /// The foam sources (FoamPlan), computed on first use: for FoamSource::breaking it visits every
   /// wave vector of every cascade once (milliseconds at N = 256).
   [[nodiscard]] const FoamPlan& foam() const;
@@ -138,6 +151,7 @@ class SimulationPlan {
   double hs_m_ = 0.0;
   double peak_wavelength_m_ = 1e9;
   std::optional<SlopeVariance> unresolved_slope_variance_;
+  std::vector<ShortWaveComponent> short_waves_;
   std::shared_ptr<FarNoiseFit> far_noise_;
   std::shared_ptr<FoamFit> foam_;
 };

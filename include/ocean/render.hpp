@@ -59,6 +59,10 @@ struct ShadingParams {
   /// (R.1–R.4) along the segment, so the sea seen from altitude lies under the air it is seen
   /// through.
   bool aerial_perspective = true;
+  /// The waves shorter than the finest cascade (SurfaceDescription::short_waves) drawn as detail
+  /// normals where the pixels resolve them, their slope variance taken out of the roughness there
+  /// (R.62): ripples on the nearest water. Off: all of it stays roughness.
+  bool ripples = true;
 };
 /// invalid_argument naming the field for non-finite values or values outside the ranges above.
 Status validate(const ShadingParams& params);

@@ -412,6 +412,8 @@ class SeaState {
 /// Depends only on its arguments, never on call order or thread: identical across runs and
 /// thread counts, and across machines whose C library computes log/sin/cos identically.
 std::array<double, 2> gaussian_pair(std::uint64_t seed, std::uint64_t index);
+/// A uniform variate in [0, 1) for (seed, index), from the same counter-based hash: 53 bits.
+double uniform_draw(std::uint64_t seed, std::uint64_t index);
 
 /// The square N×N grid of wave vectors of a periodic patch: k(m,n) = 2π/L·(m − N/2, n − N/2)
 /// (Aebi, VR Ocean, eq. 2), index i = n·N + m (m along x, n along z).
@@ -522,5 +524,39 @@ struct CurvatureSample {
   double spreading = 0.0;  ///< Δ(k) in [0, 1]: the up/crosswind contrast of cos 2φ
 };
 CurvatureSample elfouhaily_curvature(double k_radpm, const ShortWaveParams& params);
+
+/// Phase speed of gravity–capillary waves in deep water, m/s: c = √(g/k·(1 + (k/k_m)²)),
+/// k_m = 370 rad/m (Elfouhaily et al. 1997, eq. 4); the frequency is ω = k·c.
+double capillary_gravity_phase_speed(double k_radpm, double gravity_mps2 = kDefaultGravity);
+
+/// One wave of a sum of sines that stands in for a band of the short waves (docs/math.md M.9.4):
+/// η = amplitude·cos(k·x − ω·t + phase).
+struct ShortWaveComponent {
+  double kx_radpm = 0.0, kz_radpm = 0.0;  ///< wave vector, rad/m
+  double amplitude_m = 0.0;
+  double omega_radps = 0.0;  ///< ω = k·c(k), gravity–capillary (eq. 4)
+  double phase_rad = 0.0;    ///< at x = 0, t = 0
+  /// Its mean-square slope (a·k)²/2: the share of the band's slope variance it carries.
+  [[nodiscard]] double slope_variance() const;
+};
+
+/// What the components are drawn from: the band [k_min, k_max] of Elfouhaily et al.'s spectrum
+/// (eqs. 30, 49, 57) for `waves`, split into `bins` equal steps of ln k with `per_bin` waves each.
+struct ShortWaveComponentParams {
+  ShortWaveParams waves;
+  double k_min_radpm = 100.0;   ///< > 0
+  double k_max_radpm = 3000.0;  ///< > k_min, ≤ 2·10⁴
+  int bins = 16;                ///< [1, 64]
+  int per_bin = 3;              ///< [1, 16]
+  std::uint64_t seed = 1;
+};
+
+/// A band of the short waves as bins·per_bin sines (M.9.4), ordered by increasing k. Each ln-k bin
+/// carries the band's slope variance over the bin, ∫B(k) d ln k (Simpson), shared equally by its
+/// waves; a wave's k is drawn uniformly in ln k within its bin, its direction at the quantiles
+/// (j + u)/per_bin (one u per bin) of the spreading Φ = (1 + Δ(k)·cos 2φ)/π over the half circle
+/// φ ∈ [−π/2, π/2) about the wind (eq. 49; the waves run downwind), its phase uniform.
+/// Deterministic in the seed. Errors: invalid_argument naming the field.
+Result<std::vector<ShortWaveComponent>> short_wave_components(const ShortWaveComponentParams& p);
 
 }  // namespace ocean

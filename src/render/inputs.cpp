@@ -32,6 +32,7 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   st.unresolved_slope_variance = surface.unresolved_slope_variance;
   st.map_base_normal_length = surface.map_base_normal_length;
   pass<FarFieldPass>(st).noise = surface.far_noise;
+  pass<RipplePass>(st).waves = surface.short_waves;
   st.cascades = static_cast<int>(cascade_count);
   const int n = surface.resolution;
   for (int c = 0; c < st.cascades; ++c) {

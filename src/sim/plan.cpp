@@ -145,6 +145,32 @@ Result<SimulationPlan> SimulationPlan::make(const SimulationConfig& config) {
          .wind_direction_rad = config.sea.wind_sea.direction_rad,
          .gravity_mps2 = wind.gravity_mps2});
     if (tail.ok()) plan.unresolved_slope_variance_ = tail.value();
+    const double k_min = std::sqrt(2.0) * std::numbers::pi * n / config.cascade_patch_sizes_m[finest];
+    if (tail.ok() && k_min < kShortWaveDetailMaxRadpm) {
+      Result<std::vector<ShortWaveComponent>> waves = short_wave_components(
+          {.waves = {.wind_speed_mps = u10,
+                     .wind_direction_rad = config.sea.wind_sea.direction_rad,
+                     .gravity_mps2 = wind.gravity_mps2},
+           .k_min_radpm = k_min,
+           .k_max_radpm = kShortWaveDetailMaxRadpm,
+           .seed = config.seed});
+      if (waves.ok()) {
+        // On the lattice 2π/L₀ of the coarsest cascade (a shift below 2π/L₀, 10⁻⁴ of the
+        // shortest k here): the ripples repeat with the sea's longest period, so that every
+        // view the cascades repeat in (R.16) draws them alike too.
+        const double lattice = 2.0 * std::numbers::pi / config.cascade_patch_sizes_m.front();
+        for (ShortWaveComponent& w : waves.value()) {
+          const double k = std::hypot(w.kx_radpm, w.kz_radpm);
+          w.kx_radpm = lattice * std::round(w.kx_radpm / lattice);
+          w.kz_radpm = lattice * std::round(w.kz_radpm / lattice);
+          w.amplitude_m *= k / std::hypot(w.kx_radpm, w.kz_radpm);  // a·k kept
+          w.omega_radps = std::hypot(w.kx_radpm, w.kz_radpm) *
+                          capillary_gravity_phase_speed(std::hypot(w.kx_radpm, w.kz_radpm),
+                                                        wind.gravity_mps2);
+        }
+        plan.short_waves_ = std::move(waves).value();
+      }
+    }
   }
   plan.far_noise_ = std::make_shared<FarNoiseFit>();
   plan.foam_ = std::make_shared<FoamFit>();
@@ -177,6 +203,7 @@ SurfaceDescription SimulationPlan::surface() const {
   }
   d.far_noise = far_noise();
   if (unresolved_slope_variance_) d.unresolved_slope_variance = unresolved_slope_variance_->total();
+  d.short_waves = short_waves_;
   const float smoothness = packing::smoothness_from_normal_length(
       packing::normal_length_from_roughness(static_cast<float>(config_.roughness)));
   const double stored = std::floor(std::clamp(smoothness, 0.0f, 1.0f) * 255.0 + 0.5) / 255.0;

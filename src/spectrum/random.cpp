@@ -23,8 +23,15 @@ std::uint64_t hash(std::uint64_t seed, std::uint64_t counter) {
 }
 }  // namespace
 
+namespace {
+constexpr double kTwoPow53 = 9007199254740992.0;
+}  // namespace
+
+double uniform_draw(std::uint64_t seed, std::uint64_t index) {
+  return static_cast<double>(hash(seed, index) >> 11) / kTwoPow53;
+}
+
 std::array<double, 2> gaussian_pair(std::uint64_t seed, std::uint64_t index) {
-  constexpr double kTwoPow53 = 9007199254740992.0;
   // u1 ∈ (0, 1] so that log(u1) is finite; u2 ∈ [0, 1).
   const double u1 = static_cast<double>((hash(seed, 2 * index) >> 11) + 1) / kTwoPow53;
   const double u2 = static_cast<double>(hash(seed, 2 * index + 1) >> 11) / kTwoPow53;

@@ -3,6 +3,8 @@
 // 15781–15796 (docs/math.md §9). Equation numbers are the paper's.
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "ocean/spectrum.hpp"
 
@@ -13,18 +15,38 @@ namespace {
 constexpr double kCapillaryWavenumber = 370.0;  // k_m, rad/m: the gravity–capillary minimum
 constexpr double kCapillaryPhaseSpeed = 0.23;   // c_m, m/s
 
-// Phase speed of gravity–capillary waves in deep water, c = √(g/k·(1 + (k/k_m)²)) (eq. 4).
-double phase_speed(double k, double g) {
-  const double r = k / kCapillaryWavenumber;
-  return std::sqrt(g / k * (1.0 + r * r));
-}
+double phase_speed(double k, double g) { return capillary_gravity_phase_speed(k, g); }
 
 // Friction velocity u* = √C_D·U10 with Wu's drag coefficient C_D = (0.8 + 0.065·U10)·10⁻³ (Wu
 // 1982, "Wind-stress coefficients over sea surface from breeze to hurricane", J. Geophys. Res.
 // 87(C12), eq. 5).
 double friction_velocity(double u10) { return std::sqrt((0.8 + 0.065 * u10) * 1e-3) * u10; }
 
+// The quantile q ∈ [0, 1) of the spreading over the half circle, φ ∈ [−π/2, π/2): the root of
+// F(φ) = (φ + π/2)/π + Δ·sin 2φ/(2π) = q. F is increasing (F' = (1 + Δ·cos 2φ)/π > 0 for Δ < 1):
+// bisection to double precision.
+double spreading_quantile(double q, double delta) {
+  double lo = -0.5 * kPi, hi = 0.5 * kPi;
+  for (int i = 0; i < 60; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    const double f = (mid + 0.5 * kPi) / kPi + delta * std::sin(2.0 * mid) / (2.0 * kPi);
+    (f < q ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
 }  // namespace
+
+// Phase speed of gravity–capillary waves in deep water, c = √(g/k·(1 + (k/k_m)²)) (eq. 4).
+double capillary_gravity_phase_speed(double k, double g) {
+  const double r = k / kCapillaryWavenumber;
+  return std::sqrt(g / k * (1.0 + r * r));
+}
+
+double ShortWaveComponent::slope_variance() const {
+  const double ak = amplitude_m * std::hypot(kx_radpm, kz_radpm);
+  return 0.5 * ak * ak;
+}
 
 CurvatureSample elfouhaily_curvature(double k, const ShortWaveParams& p) {
   const double g = p.gravity_mps2;
@@ -99,6 +121,57 @@ Result<SlopeVariance> short_wave_slope_variance(const ShortWaveParams& p) {
   }
   out.upwind *= h / 3.0;
   out.crosswind *= h / 3.0;
+  return out;
+}
+
+Result<std::vector<ShortWaveComponent>> short_wave_components(const ShortWaveComponentParams& p) {
+  const ShortWaveParams& w = p.waves;
+  if (Status s = require_in_range("wind_speed_mps", w.wind_speed_mps, 0.5, 60.0); !s.ok()) return s;
+  if (Status s = require_finite("wind_direction_rad", w.wind_direction_rad); !s.ok()) return s;
+  if (Status s = require_in_range("inverse_wave_age", w.inverse_wave_age, 0.84, 5.0); !s.ok())
+    return s;
+  if (Status s = require_positive("gravity_mps2", w.gravity_mps2); !s.ok()) return s;
+  if (Status s = require_in_range("k_min_radpm", p.k_min_radpm, 1e-3, 2e4); !s.ok()) return s;
+  if (Status s = require_in_range("k_max_radpm", p.k_max_radpm, 1e-3, 2e4); !s.ok()) return s;
+  if (!(p.k_max_radpm > p.k_min_radpm))
+    return invalid_argument("k_max_radpm = " + format_number(p.k_max_radpm) +
+                            " must exceed k_min_radpm = " + format_number(p.k_min_radpm));
+  if (p.bins < 1 || p.bins > 64)
+    return invalid_argument("bins = " + std::to_string(p.bins) + " is outside [1, 64]");
+  if (p.per_bin < 1 || p.per_bin > 16)
+    return invalid_argument("per_bin = " + std::to_string(p.per_bin) + " is outside [1, 16]");
+
+  const double step = std::log(p.k_max_radpm / p.k_min_radpm) / p.bins;
+  constexpr int kSubSteps = 32;  // Simpson over each bin's ln k, even
+  std::vector<ShortWaveComponent> out;
+  out.reserve(static_cast<std::size_t>(p.bins * p.per_bin));
+  std::uint64_t draw = 0;
+  for (int b = 0; b < p.bins; ++b) {
+    const double ln_lo = std::log(p.k_min_radpm) + b * step;
+    double variance = 0.0;  // ∫ B(k) d ln k over the bin: every direction's slopes
+    for (int i = 0; i <= kSubSteps; ++i) {
+      const double k = std::exp(ln_lo + step * i / kSubSteps);
+      const double simpson = (i == 0 || i == kSubSteps) ? 1.0 : (i % 2 == 1 ? 4.0 : 2.0);
+      variance += simpson * elfouhaily_curvature(k, w).curvature;
+    }
+    variance *= step / kSubSteps / 3.0;
+    const double slope_amplitude = std::sqrt(2.0 * variance / p.per_bin);  // a·k of each wave
+    const double offset = uniform_draw(p.seed, draw++);
+    for (int j = 0; j < p.per_bin; ++j) {
+      const double k = std::exp(ln_lo + step * uniform_draw(p.seed, draw++));
+      const double phi = spreading_quantile((j + offset) / p.per_bin,
+                                            elfouhaily_curvature(k, w).spreading);
+      const double heading = w.wind_direction_rad + phi;
+      out.push_back({.kx_radpm = k * std::cos(heading),
+                     .kz_radpm = k * std::sin(heading),
+                     .amplitude_m = slope_amplitude / k,
+                     .omega_radps = k * capillary_gravity_phase_speed(k, w.gravity_mps2),
+                     .phase_rad = 2.0 * kPi * uniform_draw(p.seed, draw++)});
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const ShortWaveComponent& a, const ShortWaveComponent& b) {
+    return std::hypot(a.kx_radpm, a.kz_radpm) < std::hypot(b.kx_radpm, b.kz_radpm);
+  });
   return out;
 }
 

@@ -311,6 +311,90 @@ TEST(FarFieldRender, DrawnWhitecapCoverFollowsMonahansLaw) {
   EXPECT_LT(ramp[0], law / 10.0);
 }
 
+// The horizon seen from altitude (R.8, R.15): between the horizontal and the dipped horizon, √(2h/R)
+// below it, the sky pass shows the sky's horizon, and the sea just below takes the same colour, so
+// the picture runs on without a step. Looking 3.125° down, away from the sun, from 400 m, 3 km and
+// 10 km under the clear and the overcast sky (the storm's), 160 × 90 HDR pixels of 0.125° each,
+// the mean luminance of the rows from 4 above the horizontal to 12 below the dipped horizon
+// changes between two rows by no more than three times the larger change on either side plus
+// 0.2 % (a step stands out of its neighbours; a gradient does not), and the band between the
+// horizontal and the dipped horizon is not one colour (R.8d).
+TEST(FarFieldRender, TheHorizonHasNoStepFromAltitude) {
+  REQUIRE_DEVICE();
+  constexpr int kW = 160, kH = 90;
+  constexpr double kFovDeg = 11.25;  // 0.125° a row
+  constexpr double kPitchDeg = 3.125, kRad = std::numbers::pi / 180.0;
+  const double kRun = std::hypot(100000.0, 30000.0);
+  // The row (from the top) where a direction `elevation_deg` above the horizontal projects.
+  const auto row_of = [&](double elevation_deg) {
+    return 0.5 * kH * (1.0 - std::tan((elevation_deg + kPitchDeg) * kRad) /
+                                 std::tan(0.5 * kFovDeg * kRad));
+  };
+  auto scene = Scene::make({.config = moderate(), .width = kW, .height = kH});
+  ASSERT_TRUE(scene.ok()) << scene.status().message();
+  ASSERT_TRUE(scene.value()->warm_up(20.0, 4.0).ok());
+  for (const char* sky : {"clear", "overcast"}) {
+    for (const double h : {400.0, 3000.0, 10000.0}) {
+      View view;
+      view.camera = {.position_m = {0.0, h, 0.0},
+                     // 3.125° down, azimuth 197°: the sun behind
+                     .target_m = {-100000.0, h - kRun * std::tan(kPitchDeg * kRad), -30000.0},
+                     .fov_y_rad = kFovDeg * std::numbers::pi / 180.0,
+                     .aspect = static_cast<double>(kW) / kH,
+                     .near_m = 0.2,
+                     .far_m = 2e5};
+      view.shading = ocean::render::sky_preset(sky).value();
+      ASSERT_TRUE(scene.value()->renderer().draw(view).ok());
+      std::vector<float> hdr;
+      ASSERT_TRUE(scene.value()->renderer().read_hdr(hdr).ok());
+      ASSERT_EQ(hdr.size(), 4u * kW * kH);
+      std::vector<double> row_y(kH, 0.0);
+      for (int r = 0; r < kH; ++r)
+        for (int c = 0; c < kW; ++c) {
+          const std::size_t i = (static_cast<std::size_t>(r) * kW + c) * 4;
+          row_y[static_cast<std::size_t>(r)] +=
+              (0.2126 * hdr[i] + 0.7152 * hdr[i + 1] + 0.0722 * hdr[i + 2]) / kW;
+        }
+      const int horizontal = static_cast<int>(std::floor(row_of(0.0)));
+      const double dip_deg = std::sqrt(2.0 * h / view.planet_radius_m) / kRad;
+      const int dipped = static_cast<int>(std::ceil(row_of(-dip_deg)));
+      ASSERT_GE(horizontal - 16, 0);
+      ASSERT_LT(dipped + 24, kH);
+      // Relative change from row r to r + 1.
+      const auto step = [&](int r) {
+        const double a = row_y[static_cast<std::size_t>(r)];
+        return std::abs(row_y[static_cast<std::size_t>(r + 1)] - a) / std::max(a, 1e-6);
+      };
+      // A step is a change between two rows well beyond the changes on either side of it.
+      double worst = 0.0;  // the largest step over its neighbours' largest, less the allowance
+      for (int r = horizontal - 4; r <= dipped + 12; ++r)
+        worst = std::max(worst, step(r) - 3.0 * std::max(step(r - 1), step(r + 1)));
+      // The band between the horizontal and the dipped horizon is not one colour: its rows span
+      // more than 0.2 % of its mean, and no 4 rows in a row hold one value (within 0.02 %).
+      double lo = 1e30, hi = 0.0, mean = 0.0;
+      int flat_run = 0, longest_flat = 0;
+      for (int r = horizontal + 1; r < dipped; ++r) {
+        const double y = row_y[static_cast<std::size_t>(r)];
+        lo = std::min(lo, y), hi = std::max(hi, y), mean += y / (dipped - horizontal - 1);
+        flat_run = step(r) < 2e-4 ? flat_run + 1 : 0;
+        longest_flat = std::max(longest_flat, flat_run);
+      }
+      std::printf("%-8s from %5.0f m: band of %d rows spans %.2f %% of its mean, longest flat run %d "
+                  "rows; largest step beyond 3x its neighbours' %.4f\n",
+                  sky, h, dipped - horizontal - 1, 100.0 * (hi - lo) / mean, longest_flat, worst);
+      EXPECT_LE(worst, 0.002) << sky << " from " << h << " m";
+      if (dipped - horizontal - 1 >= 4) {
+        EXPECT_GT((hi - lo) / mean, 0.002) << sky << " from " << h << " m";
+        EXPECT_LT(longest_flat, 3) << sky << " from " << h << " m";
+      }
+      if (worst > 0.002)
+        for (int r = horizontal - 6; r < dipped + 14; ++r)
+          std::printf("  row %d%s: %.5f\n", r, r == horizontal ? " (horizontal)" : r == dipped ? " (dipped)" : "",
+                      row_y[static_cast<std::size_t>(r)]);
+    }
+  }
+}
+
 // Aerial perspective (R.8b) in the picture against the CPU's Sky::aerial_perspective: straight
 // down from 3 km and 10 km, the centre pixels drawn with the air are those drawn without it times
 // the path's transmittance plus its in-scattered light (HDR, half floats: 1 %).

@@ -41,7 +41,7 @@ struct BareRig {
     sim->step(t);
     if (gpu != nullptr) {
       ASSERT_TRUE(gpu->status().ok()) << gpu->status().message();
-      renderer->use_simulation_images(gpu->images());
+      ASSERT_TRUE(renderer->use_simulation_images(gpu->images(), sim->frame()).ok());
     } else {
       ASSERT_TRUE(renderer->upload(sim->frame()).ok());
     }

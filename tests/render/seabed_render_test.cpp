@@ -48,6 +48,7 @@ View straight_down(double depth_m, double period_m) {
   // which the four squares around the centre average out exactly.
   v.shading.sun_elevation_deg = 45.0;
   v.shading.sun_azimuth_deg = 0.0;
+  v.shading.ripples = false;  // the refraction of a plane: no capillary ripples (R.62) on it
   v.seabed = {.enabled = true,
               .depth_m = depth_m,
               .albedo = {0.6, 0.6, 0.6},

@@ -70,7 +70,7 @@ void main() {
       c = water_fog(c, distance_m, V);
     else
       c = mix(aerial_perspective(c, world_pos.y, distance_m, -V), fog_colour(-V),
-              horizon_fog(distance_m, V.y));
+              horizon_fog_seen(distance_m, world_pos.y, V));
   }
   colour = vec4(c, 1.0);
 }

@@ -17,6 +17,7 @@
 #include "damping.glsl"
 #include "seabed.glsl"
 #include "underwater.glsl"
+#include "ripples.glsl"
 
 // The objects mirrored in the sea level (R.53): colour, coverage in alpha.
 layout(set = 0, binding = OCEAN_RENDER_BINDING_REFLECTION) uniform sampler2D reflection_map;
@@ -149,6 +150,7 @@ void main() {
     else
       no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
   }
+  ripples_at(world_xz, dx, dy, slope, variance);  // the short waves the pixel resolves (R.62)
   vec2 local_slope;  // wakes and waveforms (R.19): what they change in slope and foam adds
   float local_foam;
   local_shade(world_xz, local_slope, local_foam);
@@ -231,7 +233,7 @@ void main() {
     c = water_fog(underside_radiance(world_pos, N_up, V, cos_width, foam), distance_m, V);
   } else {  // the air between (R.8b), then the horizon fog (Paleologue 2024, R.8)
     c = aerial_perspective(c, height, distance_m, -V);
-    c = mix(c, fog_colour(-V), horizon_fog(distance_m, V.y));
+    c = mix(c, fog_colour(-V), horizon_fog_seen(distance_m, height, V));
   }
 
   if (u.debug_view == OCEAN_RENDER_DEBUG_NORMALS) {  // the shading normal and foam, unfogged

@@ -56,7 +56,8 @@ float fresnel_schlick(float cos_theta) {  // R.6
   return 0.02 + 0.98 * m2 * m2 * m;
 }
 
-// Horizon-weighted fog of Paleologue (2024), read as (1 − exp(−(dρ)²))·(1 − |v_y|)⁴ (R.8).
+// Horizon-weighted fog of Paleologue (2024), read as (1 − exp(−(dρ)²))·(1 − |v_y|)⁴ (R.8), v_y
+// measured from the horizon's direction (horizon_fog_seen).
 float horizon_fog(float distance_m, float view_y) {
   float d = distance_m * u.fog_density_per_m;
   float w = 1.0 - abs(view_y);
@@ -213,8 +214,43 @@ float planet_air_weight() {
 vec3 fog_colour(vec3 view_dir) {
   vec2 h = view_dir.xz;
   float len = length(h);
-  vec3 dir = len > 1e-5 ? vec3(h.x / len, 0.02, h.y / len) : vec3(1.0, 0.02, 0.0);
-  return sky_radiance(normalize(dir));
+  return sky_radiance(len > 1e-5 ? vec3(h.x / len, 0.0, h.y / len) : vec3(1.0, 0.0, 0.0));
+}
+
+// The sine of the horizon's dip below the horizontal for the eye at its height above the mean sea
+// level on the curved world of R.15: the line of sight tangent to y = −d²/(2R) at d = √(2Rh) falls
+// by √(2h/R). 0 on a flat world or under the sea.
+float horizon_dip_sin() {
+  return sqrt(max(4.0 * eye_position().y * u.planet.inv_two_radius_per_m, 0.0));
+}
+
+// The direction whose sky (R.1–R.4, a table for an eye at the sea) the eye at its height sees along
+// v (R.8d): elevations e lifted to e' = (e + δ)/(1 + δ/(π/2)), δ the horizon's dip, so that the
+// sky's horizon — its longest path through the air — lies on the dipped horizon, where the
+// line of sight grazes the sea, and the rays between the horizontal and it show the sky's
+// gradient run on instead of one colour; the zenith stays. v itself on a flat world.
+vec3 sky_direction_seen(vec3 v) {
+  float s = horizon_dip_sin();
+  if (s <= 0.0) return v;
+  float dip = asin(min(s, 1.0));
+  float e = asin(clamp(v.y, -1.0, 1.0));
+  float lifted = max((e + dip) / (1.0 + dip / (0.5 * PI)), 0.0);
+  float len = length(v.xz);
+  vec2 across = len > 1e-6 ? v.xz / len : vec2(1.0, 0.0);
+  return vec3(across.x * cos(lifted), sin(lifted), across.y * cos(lifted));
+}
+
+// The horizon fog (R.8) of a point at height point_y seen distance_m away along −V: the fog's
+// distance counted in the haze's air, d·ρ̄ with ρ̄ the mean of e^(−y/H_M) along the path (R.8b's
+// mean density, the haze's scale height; heights below the mean sea level taken as 0), so the
+// fog of a path near the sea is R.8's and one seen from altitude thins with the air it crosses;
+// the view's elevation from the horizon's direction, so that the sea's fog is whole exactly at
+// the dipped horizon, where the sky pass shows the same colour (fog_colour).
+float horizon_fog_seen(float distance_m, float point_y, vec3 V) {
+  float eye_y = max(eye_position().y, 0.0), y = max(point_y, 0.0);
+  float density = u.air_mie.y > 0.0 ? mean_air_density(min(eye_y, y), max(eye_y, y), u.air_mie.y)
+                                    : 1.0;
+  return horizon_fog(distance_m * density, V.y - horizon_dip_sin());
 }
 
 #endif

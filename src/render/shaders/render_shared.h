@@ -29,6 +29,8 @@ struct mat4 {
 
 // Limits. OCEAN_RENDER_MAX_CASCADES mirrors validate(SimulationConfig).
 #define OCEAN_RENDER_MAX_CASCADES 8
+// The most short waves drawn as detail normals (R.62): SimulationPlan::short_waves' 16 × 3.
+#define OCEAN_RENDER_MAX_RIPPLES 48
 // PatchInstance::level of the horizon skirt's single instance (patches use 0 … lod::kMaxLevels).
 #define OCEAN_RENDER_SKIRT_LEVEL 255u
 // Triangles of the hex-tiled cascade lookups per cascade period (R.14): a point and the point
@@ -177,6 +179,14 @@ struct UnderwaterUniforms {
   vec4 bed_albedo_depth;  // the seabed's albedo (rgb) and flat depth, m (a)
 };
 
+// The waves shorter than the finest cascade drawn near the eye (R.62; SurfaceDescription::
+// short_waves): per wave (k_x, k_z, a·k, phase at the frame's origin and time), by increasing k.
+struct RippleUniforms {
+  vec4 waves[OCEAN_RENDER_MAX_RIPPLES];
+  float count;  // waves in use; 0: none drawn
+  float ripple_pad0, ripple_pad1, ripple_pad2;
+};
+
 // Everything per frame, one uniform buffer (std140).
 struct FrameUniforms {
   mat4 view_proj;  // lod::view_projection of the camera, column-major
@@ -229,6 +239,7 @@ struct FrameUniforms {
   // height (y), Henyey–Greenstein g (z) and the sky's brightness (w).
   vec4 air_rayleigh;
   vec4 air_mie;
+  RippleUniforms ripples;  // the short waves near the eye (R.62)
 };
 
 // Push constants of the sky pass (std430).
@@ -275,7 +286,10 @@ static_assert(sizeof(FarMapUniforms) == 48);
 static_assert(offsetof(FrameUniforms, far_map) == 832 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, foam_weights) == 880 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, air_rayleigh) == 880 + 36 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(sizeof(FrameUniforms) == 912 + 36 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, ripples) == 912 + 36 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(sizeof(RippleUniforms) == 16 * OCEAN_RENDER_MAX_RIPPLES + 16);
+static_assert(sizeof(FrameUniforms) ==
+              928 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif

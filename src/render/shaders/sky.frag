@@ -27,7 +27,7 @@ void main() {
     colour = vec4(seen_under_water(eye_position(), v), 1.0);
     return;
   }
-  vec3 c = sky_radiance(v);
+  vec3 c = sky_radiance(sky_direction_seen(v));  // from the eye's height (R.8d)
   // From altitude on a sphere the air is marched instead (R.8c): black space above a thin limb.
   float air_weight = planet_air_weight();
   vec3 sun_seen = u.sun_ground;
