@@ -253,8 +253,11 @@ await run('shading', async (check) => {
         255 * srgb(aces(x * exposure)))));
     }
   }
-  console.log(`     (other encodings would miss them by up to ${linearGap.toFixed(0)}/255 (none) ` +
-              `and ${gammaGap.toFixed(1)}/255 (γ 2.2))`);
+  // (A γ 2.2 curve in place of the sRGB one moves these bright pixels by about the bound only:
+  // this check tells the tone map apart from none, not the two encodings; the water's darker
+  // pixels, compared with the native picture below, do.)
+  console.log(`     (with no tone map they would miss by up to ${linearGap.toFixed(0)}/255; a γ 2.2 ` +
+              `curve instead of sRGB by ${gammaGap.toFixed(1)}/255)`);
 
   // 3. The sun's disc: the pixel at the sun is white (its radiance, 2 % of E/Ω, saturates any
   // exposure), the sky 1° from it is R.4's.
