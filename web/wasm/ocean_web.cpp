@@ -44,7 +44,7 @@ struct WebSea {
   // weight (FoamPlan::weights, R.11) and the short waves' slope variance (R.5).
   double foam_threshold_1 = 0.0, foam_gain_1 = 0.0, foam_weight = 1.0;
   double unresolved_slope_variance = 0.0;
-  float foam_terms[3] = {};            // threshold, gain, weight at the last λ asked for
+  float foam_terms[3] = {};  // threshold, gain, weight at the last λ asked for
   std::string error;
 };
 
@@ -246,8 +246,7 @@ EMSCRIPTEN_KEEPALIVE const float* ocean_web_foam() { return sea().frame.foam.dat
 /// with the sun at azimuth_deg, elevation_deg: fills the sky-view table (Sky::kLutWidth ×
 /// kLutHeight RGBA floats, Sky::fill_lut) and returns it; ocean_web_light() then holds the rest.
 EMSCRIPTEN_KEEPALIVE const float* ocean_web_sky(double azimuth_deg, double elevation_deg) {
-  static std::vector<float> lut(4 * ocean::render::Sky::kLutWidth *
-                                ocean::render::Sky::kLutHeight);
+  static std::vector<float> lut(4 * ocean::render::Sky::kLutWidth * ocean::render::Sky::kLutHeight);
   ocean::render::ShadingParams p;
   p.sun_azimuth_deg = azimuth_deg;
   p.sun_elevation_deg = elevation_deg;
@@ -260,12 +259,30 @@ EMSCRIPTEN_KEEPALIVE const float* ocean_web_sky(double azimuth_deg, double eleva
   // horizontal plane (R.4), 9–11 Rayleigh β per m, 12 H_R, 13 haze β·aerosol, 14 H_M, 15 g,
   // 16 sky brightness, 17 exposure, 18–20 water albedo, 21 crest scatter, 22 foam brightness,
   // 23 fog density per m (ShadingParams' defaults).
-  std::array<double, 24> light = {
-      sky.sun[0], sky.sun[1], sky.sun[2], ground[0], ground[1], ground[2],
-      ambient[0], ambient[1], ambient[2], air.rayleigh_per_m[0], air.rayleigh_per_m[1],
-      air.rayleigh_per_m[2], air.rayleigh_height_m, air.mie_per_m, air.mie_height_m,
-      p.aerosol_g, p.sky_brightness, p.exposure, p.water_colour[0], p.water_colour[1],
-      p.water_colour[2], p.crest_scatter, p.foam_brightness, p.fog_density_per_m};
+  std::array<double, 24> light = {sky.sun[0],
+                                  sky.sun[1],
+                                  sky.sun[2],
+                                  ground[0],
+                                  ground[1],
+                                  ground[2],
+                                  ambient[0],
+                                  ambient[1],
+                                  ambient[2],
+                                  air.rayleigh_per_m[0],
+                                  air.rayleigh_per_m[1],
+                                  air.rayleigh_per_m[2],
+                                  air.rayleigh_height_m,
+                                  air.mie_per_m,
+                                  air.mie_height_m,
+                                  p.aerosol_g,
+                                  p.sky_brightness,
+                                  p.exposure,
+                                  p.water_colour[0],
+                                  p.water_colour[1],
+                                  p.water_colour[2],
+                                  p.crest_scatter,
+                                  p.foam_brightness,
+                                  p.fog_density_per_m};
   for (std::size_t i = 0; i < light.size(); ++i) light_values()[i] = static_cast<float>(light[i]);
   return lut.data();
 }
