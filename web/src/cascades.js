@@ -9,6 +9,8 @@ import { MipChain } from './mips.js';
 import { Simulation, shaderText } from './simulation.js';
 
 export const kMaxCascades = 4;  // the renderer's uniform holds four patch sides
+// The sun's azimuth and elevation, degrees: ShadingParams' defaults (ocean/render.hpp).
+export const kDefaultSunDeg = [35, 20];
 
 export class Ocean {
   static async create(device, core, sea) {
@@ -27,11 +29,17 @@ export class Ocean {
     this.sea = sea;
     this.simulations = [];
     this.geometryWavelengthsM = [];  // the render fades cascade c's displacement against these
+    this.foamWeights = [];  // the render weighs cascade c's foam by these (R.11)
     for (let c = 0; c < sizes.length; ++c) {
       core.configure(sea, c);
       this.geometryWavelengthsM.push(core.geometryWavelength());
+      this.foamWeights.push(core.foamTerms(1)[2]);
       this.simulations.push(await Simulation.create(device, core, { ...sea, patchSizeM: sizes[c] }));
     }
+    this.hsM = core.hs();  // the crests' light (R.11)
+    this.unresolvedSlopeVariance = core.unresolvedSlopeVariance();  // α₀² (R.5)
+    // The native renderer's sky for the sea's sun, from the library's render::Sky (R.1–R.4).
+    this.sky = core.sky(...(sea.sunDeg ?? kDefaultSunDeg));
     const n = sea.resolution;
     this.n = n;
     this.texelBytes = n * n * 16;

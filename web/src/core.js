@@ -26,6 +26,16 @@ export async function loadCore() {
     hs: () => m._ocean_web_hs(),                        // 4·√m0, m
     // The configured cascade's geometry fade length, m (the native renderer's, R.9).
     geometryWavelength: () => m._ocean_web_geometry_wavelength(),
+    // The breaking foam source at choppiness λ: [threshold, gain, the cascade's foam weight].
+    foamTerms: (lambda) => Array.from(f32(m._ocean_web_foam_terms(lambda), 3)),
+    // The short waves' slope variance (the renderer's α₀², R.5).
+    unresolvedSlopeVariance: () => m._ocean_web_unresolved_slope_variance(),
+    // The native renderer's sky for the sun at (azimuth, elevation) degrees: { lut: the sky-view
+    // table (128 × 64 RGBA floats, R.1–R.4), light: the 24 numbers ocean_web_sky lists }.
+    sky(azimuthDeg, elevationDeg) {
+      const lut = f32(m._ocean_web_sky(azimuthDeg, elevationDeg), 4 * 128 * 64);
+      return { lut, width: 128, height: 64, light: f32(m._ocean_web_light(), 24) };
+    },
     packed: () => f32(m._ocean_web_packed(), 4 * texels),
     phaseRate: () => f32(m._ocean_web_phase_rate(), texels),
     h0: () => new Float64Array(m.HEAPF64.buffer, m._ocean_web_h0(), 2 * texels).slice(),

@@ -1,7 +1,8 @@
 // main.js — the page: loads the WebAssembly core, starts WebGPU, wires the panel and animates.
 // URL options (for tests and small screens): n (resolution, default 256), patch (the cascades'
 // patch sides in m, largest first, comma-separated; default the native 1000,233,57),
-// seed (default 1), t (a fixed time in s: no animation), panel=0 (hide the panel).
+// seed (default 1), t (a fixed time in s: no animation), panel=0 (hide the panel), sun (the sun's
+// azimuth and elevation in degrees, default 35,20 as natively).
 // The camera flies with the mouse, touch and keys (controls.js); the panel's quality picks the
 // cascades' resolution; the readout gives the frame time, the GPU time where the adapter has
 // timestamp queries, and the adapter, with a note when it is a software one.
@@ -137,6 +138,8 @@ function setUp() {
     resolution: Number(params.get('n') ?? 256),
     patchSizesM: (params.get('patch') ?? '1000,233,57').split(',').map(Number),
     seed: Number(params.get('seed') ?? 1), loopPeriodS: 200,
+    // The sun's azimuth and elevation, degrees (ShadingParams' 35 and 20 by default).
+    sunDeg: params.has('sun') ? params.get('sun').split(',').map(Number) : undefined,
   };
   const quality = form.elements.quality;
   if (![...quality.options].some((o) => Number(o.value) === sea.resolution)) {

@@ -7,6 +7,36 @@ import { cameraMatrices } from './camera.js';
 const kRings = 160;     // rings of the polar grid
 const kSegments = 256;  // segments per ring
 
+// IEEE 754 binary16 of each float (round to nearest even), for rgba16float uploads.
+function toHalf(values) {
+  const out = new Uint16Array(values.length);
+  const f = new Float32Array(1);
+  const u = new Uint32Array(f.buffer);
+  for (let i = 0; i < values.length; ++i) {
+    f[0] = values[i];
+    const x = u[0];
+    const sign = (x >>> 16) & 0x8000;
+    const e = (x >>> 23) & 0xff;
+    let mant = x & 0x7fffff;
+    let h;
+    if (e === 255) h = sign | 0x7c00 | (mant ? 0x200 : 0);
+    else if (e > 142) h = sign | 0x7c00;  // overflow: infinity
+    else if (e > 112) {
+      h = sign | ((e - 112) << 10) | (mant >>> 13);
+      const rest = mant & 0x1fff;
+      if (rest > 0x1000 || (rest === 0x1000 && (h & 1))) h++;
+    } else if (e > 101) {  // subnormal half
+      mant |= 0x800000;
+      const shift = 126 - e;
+      h = sign | (mant >>> shift);
+      const rest = mant & ((1 << shift) - 1), halfway = 1 << (shift - 1);
+      if (rest > halfway || (rest === halfway && (h & 1))) h++;
+    } else h = sign;
+    out[i] = h;
+  }
+  return out;
+}
+
 export class Renderer {
   static async create(device, canvas, ocean) {
     const r = new Renderer();
@@ -32,6 +62,8 @@ export class Renderer {
       { binding: 2, visibility: GPUShaderStage.FRAGMENT,
         texture: { sampleType: 'float', viewDimension: '2d-array' } },
       { binding: 3, visibility: GPUShaderStage.FRAGMENT, sampler: { type: 'filtering' } },
+      { binding: 4, visibility: GPUShaderStage.FRAGMENT, texture: { sampleType: 'float' } },
+      { binding: 5, visibility: GPUShaderStage.FRAGMENT, sampler: { type: 'filtering' } },
     ] });
     const pipelineLayout = device.createPipelineLayout({ bindGroupLayouts: [layout] });
     const depthStencil = (write) => ({
@@ -49,7 +81,15 @@ export class Renderer {
         fragment: { module, entryPoint: 'water_fs', targets } }),
     ]);
     this.view = device.createBuffer({
-      size: 208, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+      size: 320, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+    // The sky-view table (render::Sky::fill_lut, R.4) as rgba16float, which filters without any
+    // optional feature (rgba32float needs 'float32-filterable').
+    const sky = ocean.sky;
+    this.skyTexture = device.createTexture({
+      size: [sky.width, sky.height], format: 'rgba16float',
+      usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+    device.queue.writeTexture({ texture: this.skyTexture }, toHalf(sky.lut),
+                              { bytesPerRow: sky.width * 8 }, [sky.width, sky.height]);
     this.bindGroup = device.createBindGroup({ layout, entries: [
       { binding: 0, resource: { buffer: this.view } },
       { binding: 1, resource: { buffer: ocean.displacement } },
@@ -57,6 +97,10 @@ export class Renderer {
       { binding: 3, resource: device.createSampler({
         addressModeU: 'repeat', addressModeV: 'repeat', magFilter: 'linear',
         minFilter: 'linear', mipmapFilter: 'linear', maxAnisotropy: 4 }) },
+      { binding: 4, resource: this.skyTexture.createView() },
+      { binding: 5, resource: device.createSampler({
+        addressModeU: 'repeat', addressModeV: 'clamp-to-edge', magFilter: 'linear',
+        minFilter: 'linear' }) },
     ] });
     this.depth = null;
     // The render pass's GPU time, where the device has timestamp queries (gpuMs; null before the
@@ -96,17 +140,24 @@ export class Renderer {
         size: [width, height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT });
     }
     const m = cameraMatrices(camera, width / height);
-    const sun = [0.55, 0.3, -0.78];
-    const l = Math.hypot(...sun);
-    const data = new Float32Array(52);
+    const o = this.ocean;
+    const light = o.sky.light;  // ocean_web_sky's list (web/wasm/ocean_web.cpp)
+    const data = new Float32Array(80);
     data.set(m.viewProj, 0);
     data.set(m.invViewProj, 16);
-    data.set([...m.eye, 1], 32);
-    data.set([sun[0] / l, sun[1] / l, sun[2] / l, 0], 36);
-    const sizes = this.ocean.sea.patchSizesM;
-    data.set([this.ocean.n, kRings, kSegments, sizes.length], 40);
+    data.set([...m.eye, o.hsM], 32);
+    data.set([light[0], light[1], light[2], this.exposure ?? light[17]], 36);
+    const sizes = o.sea.patchSizesM;
+    data.set([o.n, kRings, kSegments, sizes.length], 40);
     data.set(sizes, 44);
-    data.set(this.ocean.geometryWavelengthsM, 48);
+    data.set(o.geometryWavelengthsM, 48);
+    data.set(o.foamWeights, 52);
+    data.set([light[3], light[4], light[5], o.unresolvedSlopeVariance], 56);
+    data.set([light[6], light[7], light[8], light[21]], 60);
+    data.set([light[18], light[19], light[20], light[22]], 64);
+    data.set(light.subarray(9, 13), 68);
+    data.set(light.subarray(13, 17), 72);
+    data.set([light[23], 0, 0, 0], 76);
     this.device.queue.writeBuffer(this.view, 0, data);
     const texture = this.context.getCurrentTexture();
     const timed = this.timer && !this.timer.reading && !this.timer.recorded;

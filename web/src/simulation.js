@@ -6,7 +6,7 @@
 // Contract: Simulation.create validates nothing the core has not validated; step(t) records one
 // frame into a command encoder and never allocates GPU memory; readFields() is for tests.
 
-const kFoam = { jacobianStart: 0.8, jacobianFull: 0.5, decayPerS: 0.6 };  // sim.hpp FoamParams
+const kFoam = { decayPerS: 0.6 };  // sim.hpp FoamParams
 
 export async function shaderText(name) {
   const response = await fetch(new URL(`shaders/${name}`, import.meta.url));
@@ -89,6 +89,10 @@ export class Simulation {
     };
     this.spectrum = upload(core.packed());
     this.phaseRate = upload(core.phaseRate());
+    // The breaking foam source's terms at λ = 1 (FoamPlan, M.7.4) and the cascade's foam weight
+    // (R.11); step() scales them to the choppiness as the plan's formulas do.
+    const terms = core.foamTerms(1);
+    [this.foamThresholdAt1, this.foamGainAt1, this.foamWeight] = terms;
     const twiddle = new Float32Array(2 * n);  // e^{+2πi·t/N} in double, stored as float
     for (let t = 0; t < n; ++t) {
       twiddle[2 * t] = Math.cos((2 * Math.PI * t) / n);
@@ -127,8 +131,8 @@ export class Simulation {
     f.set([hi, mid, lo, this.choppiness, (2 * Math.PI) / this.sea.patchSizeM,
            this.n / this.sea.patchSizeM, kFoam.decayPerS * dt]);
     u[7] = reset ? 1 : 0;
-    f[8] = kFoam.jacobianStart;
-    f[9] = kFoam.jacobianStart - kFoam.jacobianFull;
+    f[8] = this.choppiness > 0 ? 1 - this.choppiness * (1 - this.foamThresholdAt1) : 0;
+    f[9] = this.choppiness > 0 ? this.foamGainAt1 / this.choppiness : 1e9;
     this.device.queue.writeBuffer(this.params, 0, data);
 
     const pass = encoder.beginComputePass();

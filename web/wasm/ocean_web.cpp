@@ -19,6 +19,7 @@
 #include "cpu_backend.hpp"
 #include "ocean/fft.hpp"
 #include "ocean/plan.hpp"
+#include "ocean/render.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/spectrum.hpp"
 #include "ocean/task_runner.hpp"
@@ -38,12 +39,23 @@ struct WebSea {
   std::vector<float> surface;          // (nx, ny, nz, J) per texel, the GPU's layout
   double choppiness = -1.0;            // λ the plane factors were built for
   double geometry_wavelength_m = 0.0;  // the plan's tiling wavelength of this cascade (R.9)
+  // The breaking foam source of this cascade at λ = 1 (FoamPlan, M.7.4): J_thr = 1 − α/β and
+  // gain β/s₁; at λ the plan's formulas give 1 − λ·α/β and β/(λ·s₁). Then the cascade's foam
+  // weight (FoamPlan::weights, R.11) and the short waves' slope variance (R.5).
+  double foam_threshold_1 = 0.0, foam_gain_1 = 0.0, foam_weight = 1.0;
+  double unresolved_slope_variance = 0.0;
+  float foam_terms[3] = {};  // threshold, gain, weight at the last λ asked for
   std::string error;
 };
 
 WebSea& sea() {
   static WebSea s;
   return s;
+}
+
+float* light_values() {
+  static float values[24] = {};
+  return values;
 }
 
 int fail(const ocean::Status& status) {
@@ -82,7 +94,8 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
   config.cascade_patch_sizes_m.assign(patch_sizes_m, patch_sizes_m + cascade_count);
   config.loop_period_s = loop_period_s;
   config.seed = static_cast<std::uint64_t>(seed);
-  config.foam.source = ocean::FoamSource::ramp;  // the page's compute shader's (common.wgsl)
+  config.choppiness = 1.0;  // the foam terms at λ = 1; other λ follow (ocean_web_foam_terms)
+  // config.foam.source stays the native default, FoamSource::breaking (M.7.4).
   ocean::Result<ocean::SimulationPlan> made = ocean::SimulationPlan::make(config);
   if (!made.ok()) return fail(made.status());
   const double patch_size_m = config.cascade_patch_sizes_m[static_cast<std::size_t>(cascade)];
@@ -111,7 +124,13 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
     s.h0[2 * i + 1] = s.state.spectrum.h0[i].imag();
   }
   s.state.foam.assign(texels, 0.0f);
-  s.state.foam_source = ocean::packing::foam_terms(config.foam, {});
+  const ocean::FoamPlan& foam = made.value().foam();
+  s.foam_threshold_1 = foam.cascades[static_cast<std::size_t>(cascade)].threshold;
+  s.foam_gain_1 = foam.cascades[static_cast<std::size_t>(cascade)].gain;
+  s.foam_weight = foam.weights.empty() ? 1.0 : foam.weights[static_cast<std::size_t>(cascade)];
+  const std::optional<ocean::SlopeVariance>& tail = made.value().unresolved_slope_variance();
+  s.unresolved_slope_variance = tail ? tail->total() : 0.0;
+  s.config.foam = config.foam;
   s.state.mip_work.assign(4 * texels, 0.0f);
   s.frame = {};
   s.frame.resolution = resolution;
@@ -135,6 +154,30 @@ EMSCRIPTEN_KEEPALIVE int ocean_web_configure(double wind_mps, double fetch_m, do
 EMSCRIPTEN_KEEPALIVE double ocean_web_geometry_wavelength() {
   const WebSea& s = sea();
   return s.sea ? s.geometry_wavelength_m : std::nan("");
+}
+
+/// The breaking foam source's terms of the configured cascade at choppiness λ ≥ 0, as floats
+/// (threshold J_thr, gain, and the cascade's foam weight of R.11): FoamPlan's
+/// 1 − λα/β and β/(λ·s₁) (M.7.4; λ = 0 makes no foam: threshold 0, gain 10⁹, as the plan's);
+/// nullptr when nothing is configured. The reference's finalize uses the same terms.
+EMSCRIPTEN_KEEPALIVE const float* ocean_web_foam_terms(double choppiness) {
+  WebSea& s = sea();
+  if (!s.sea) return nullptr;
+  const bool foams = choppiness > 0.0;
+  s.state.foam_source = {
+      static_cast<float>(foams ? 1.0 - choppiness * (1.0 - s.foam_threshold_1) : 0.0),
+      static_cast<float>(foams ? s.foam_gain_1 / choppiness : 1e9), true};
+  s.foam_terms[0] = s.state.foam_source.threshold;
+  s.foam_terms[1] = s.state.foam_source.gain;
+  s.foam_terms[2] = static_cast<float>(s.foam_weight);
+  return s.foam_terms;
+}
+
+/// The slope variance of the waves shorter than the finest cascade (M.9; the renderer's α₀²,
+/// R.5), 0 for a sea that names no wind; NaN when nothing is configured.
+EMSCRIPTEN_KEEPALIVE double ocean_web_unresolved_slope_variance() {
+  const WebSea& s = sea();
+  return s.sea ? s.unresolved_slope_variance : std::nan("");
 }
 
 /// The last configuration error, one line ("" after a success).
@@ -179,6 +222,7 @@ EMSCRIPTEN_KEEPALIVE const float* ocean_web_reference(double time_s, double chop
     ocean::cpu::build_plane_factors(s.state, ocean::NormalMethod::central_difference, choppiness);
     s.config.choppiness = choppiness;
     s.choppiness = choppiness;
+    ocean_web_foam_terms(choppiness);
   }
   ocean::cpu::evolve(s.state, time_s, s.loop_period_s, *s.runner, nullptr);
   ocean::fft::SplitComplex planes[2] = {ocean::cpu::plane_of(s.state, 0),
@@ -197,5 +241,52 @@ EMSCRIPTEN_KEEPALIVE const float* ocean_web_reference(double time_s, double chop
 EMSCRIPTEN_KEEPALIVE const float* ocean_web_surface() { return sea().surface.data(); }
 /// Accumulated foam per texel of the last ocean_web_reference.
 EMSCRIPTEN_KEEPALIVE const float* ocean_web_foam() { return sea().frame.foam.data(); }
+
+/// The native renderer's sky (render::Sky, docs/rendering.md R.1–R.4) for the default shading
+/// with the sun at azimuth_deg, elevation_deg: fills the sky-view table (Sky::kLutWidth ×
+/// kLutHeight RGBA floats, Sky::fill_lut) and returns it; ocean_web_light() then holds the rest.
+EMSCRIPTEN_KEEPALIVE const float* ocean_web_sky(double azimuth_deg, double elevation_deg) {
+  static std::vector<float> lut(4 * ocean::render::Sky::kLutWidth * ocean::render::Sky::kLutHeight);
+  ocean::render::ShadingParams p;
+  p.sun_azimuth_deg = azimuth_deg;
+  p.sun_elevation_deg = elevation_deg;
+  const ocean::render::Sky sky(p);
+  sky.fill_lut(lut);
+  const std::array<double, 3> ground = sky.sun_irradiance_ground();
+  const std::array<double, 3> ambient = sky.sky_irradiance_horizontal();
+  const ocean::render::Sky::Air air = sky.air();
+  // 0–2 sun direction, 3–5 sun irradiance at sea level (R.3), 6–8 sky irradiance on a
+  // horizontal plane (R.4), 9–11 Rayleigh β per m, 12 H_R, 13 haze β·aerosol, 14 H_M, 15 g,
+  // 16 sky brightness, 17 exposure, 18–20 water albedo, 21 crest scatter, 22 foam brightness,
+  // 23 fog density per m (ShadingParams' defaults).
+  std::array<double, 24> light = {sky.sun[0],
+                                  sky.sun[1],
+                                  sky.sun[2],
+                                  ground[0],
+                                  ground[1],
+                                  ground[2],
+                                  ambient[0],
+                                  ambient[1],
+                                  ambient[2],
+                                  air.rayleigh_per_m[0],
+                                  air.rayleigh_per_m[1],
+                                  air.rayleigh_per_m[2],
+                                  air.rayleigh_height_m,
+                                  air.mie_per_m,
+                                  air.mie_height_m,
+                                  p.aerosol_g,
+                                  p.sky_brightness,
+                                  p.exposure,
+                                  p.water_colour[0],
+                                  p.water_colour[1],
+                                  p.water_colour[2],
+                                  p.crest_scatter,
+                                  p.foam_brightness,
+                                  p.fog_density_per_m};
+  for (std::size_t i = 0; i < light.size(); ++i) light_values()[i] = static_cast<float>(light[i]);
+  return lut.data();
+}
+/// The light of the last ocean_web_sky (24 floats, listed there).
+EMSCRIPTEN_KEEPALIVE const float* ocean_web_light() { return light_values(); }
 
 }  // extern "C"

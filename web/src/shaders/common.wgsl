@@ -14,8 +14,8 @@ struct Params {
   inv_spacing: f32,  // N/L, 1/m
   foam_decay: f32,   // decay_per_s·dt
   reset_foam: u32,   // 1 on the first step or after a jump back in time
-  j_start: f32,      // foam ramp (M.7.4)
-  j_range: f32,      // jacobian_start − jacobian_full
+  j_threshold: f32,  // breaking foam source (M.7.4): Φ((J_thr − J)·gain)
+  j_gain: f32,
   pad0: f32,
   pad1: f32,
 }
@@ -30,6 +30,18 @@ struct Params {
 @group(0) @binding(7) var<storage, read_write> foam: array<f32>;           // accumulated foam
 
 const WG: u32 = max(N / 4u, 1u);  // threads per line of the FFT kernels
+
+// Φ(x), the standard normal distribution function, as ½·erfc(−x/√2) by Abramowitz & Stegun,
+// Handbook of Mathematical Functions, eq. 7.1.26 (packing::normal_cdf; |error| ≤ 1.5·10⁻⁷, the
+// argument capped at 10.5).
+fn normal_cdf(x: f32) -> f32 {
+  let z = min(abs(x) * 0.70710678, 10.5);
+  let t = 1.0 / (1.0 + 0.3275911 * z);
+  let poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 +
+             t * 1.061405429))));
+  let tail = 0.5 * poly * exp(-z * z);
+  return select(1.0 - tail, tail, x < 0.0);
+}
 
 fn cmul(a: vec2f, b: vec2f) -> vec2f {
   return vec2f(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x);

@@ -5,7 +5,8 @@
 // This work is based on:
 //   - Aebi, VR Ocean, §3.7–3.8: eq. 44 (displacement), eqs. 45–46 (central differences),
 //     eq. 48 (Jacobian).
-//   - Vincevičius 2024, §2.4 (Jacobian foam and its accumulation, listing 2.4).
+//   - Longuet-Higgins 1969 (breaking where the downward acceleration exceeds g/2; M.7.4).
+//   - Vincevičius 2024, §2.4 (foam accumulation, listing 2.4).
 // Equations: docs/math.md §7.
 
 // (Dx, h, Dz) at a wrapped texel: plane 0 = h + i·Dx, plane 1 = Dz + i·(…) (M.7.2).
@@ -38,8 +39,10 @@ fn main(@builtin(global_invocation_id) id: vec3u) {
   let len = length(n);
   n = select(vec3f(0.0, 1.0, 0.0), n / len, len > 0.0);
 
-  // Foam: a ramp on J, accumulated with Vincevičius's (2024) decay, listing 2.4 (M.7.4).
-  let now = clamp((params.j_start - jacobian) / params.j_range, 0.0, 1.0);
+  // Foam: the probability that the sea breaks given this cascade's J (Longuet-Higgins 1969;
+  // the native default source "breaking", M.7.4), accumulated with Vincevičius's (2024) decay,
+  // listing 2.4.
+  let now = normal_cdf((params.j_threshold - jacobian) * params.j_gain);
   var f = now;
   if (params.reset_foam == 0u) {
     let accumulated = foam[i] - params.foam_decay / max(now, 0.5);
