@@ -72,11 +72,11 @@ fn horizon_fog(distance_m: f32, view_y: f32) -> f32 {
   return (1.0 - exp(-d * d)) * w * w;
 }
 
-// render_common.glsl fog_colour: the sky just above the horizon in this azimuth.
+// render_common.glsl fog_colour: the sky's horizon (elevation 0) in this azimuth.
 fn fog_colour(view_dir: vec3f) -> vec3f {
   let h = view_dir.xz;
   let len = length(h);
-  let dir = select(vec3f(1.0, 0.02, 0.0), vec3f(h.x / len, 0.02, h.y / len), len > 1e-5);
+  let dir = select(vec3f(1.0, 0.0, 0.0), vec3f(h.x / len, 0.0, h.y / len), len > 1e-5);
   return sky(normalize(dir));
 }
 
