@@ -13,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "support/depth_law.hpp"
 #include "ocean/scene.hpp"
 #include "ocean/waves.hpp"
 #include "render/render_helpers.hpp"
@@ -25,17 +26,7 @@ using ocean::render::View;
 constexpr double kG = 9.81;
 constexpr double kGamma = 0.78;
 
-// Φ(ω, d) of Kitaigorodskii et al. 1975 / Bouws et al. 1985 in closed form (docs/waves.md W.12).
-double kitaigorodskii_phi(double omega, double depth) {
-  const double y = omega * omega * depth / kG;
-  double lo = 0.0, hi = y + 1.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (mid * std::tanh(mid) < y ? lo : hi) = mid;
-  }
-  const double x = 0.5 * (lo + hi);
-  return std::pow(std::tanh(x), 2) / (1.0 + 2.0 * x / std::sinh(2.0 * x));
-}
+using ocean_test::kitaigorodskii_phi;  // W.12's closed form (support/depth_law.hpp)
 
 // Q_b of Battjes & Janssen (1978): the root of (1 − Q)/ln Q = −b², by bisection on ln Q.
 double battjes_janssen(double b) {

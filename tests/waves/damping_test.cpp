@@ -8,6 +8,7 @@
 #include <limits>
 #include <numbers>
 
+#include "support/depth_law.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/waves.hpp"
@@ -89,18 +90,7 @@ std::vector<std::array<double, 2>> grid(double x0, double z0, double side, int n
   return p;
 }
 
-// Φ(ω, d) of Kitaigorodskii et al. 1975 / Bouws et al. 1985 in closed form: tanh²x/(1 + 2x/sinh
-// 2x) with x = k_d·d the root of x·tanh x = ω²d/g, found here by bisection.
-double kitaigorodskii_phi(double omega, double depth) {
-  const double y = omega * omega * depth / kG;
-  double lo = 0.0, hi = y + 1.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (mid * std::tanh(mid) < y ? lo : hi) = mid;
-  }
-  const double x = 0.5 * (lo + hi);
-  return std::pow(std::tanh(x), 2) / (1.0 + 2.0 * x / std::sinh(2.0 * x));
-}
+using ocean_test::kitaigorodskii_phi;  // W.12's closed form (support/depth_law.hpp)
 
 TEST(Damping, BandWavenumbersAreTheGeometricMeansOfTheBandEdges) {
   const double edge = 0.5 * kPi * 64 / 300.0;  // (M.7.1)

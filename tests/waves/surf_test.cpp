@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 
+#include "support/depth_law.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/waves.hpp"
 
@@ -24,18 +25,7 @@ constexpr double kPi = std::numbers::pi;
 constexpr double kG = 9.81;
 constexpr double kGamma = 0.78;  // McCowan (1894)
 
-// Φ(ω, d) of Kitaigorodskii et al. 1975 / Bouws et al. 1985 in closed form: tanh²x/(1 + 2x/sinh
-// 2x) with x = k_d·d the root of x·tanh x = ω²d/g, found here by bisection.
-double kitaigorodskii_phi(double omega, double depth) {
-  const double y = omega * omega * depth / kG;
-  double lo = 0.0, hi = y + 1.0;
-  for (int i = 0; i < 200; ++i) {
-    const double mid = 0.5 * (lo + hi);
-    (mid * std::tanh(mid) < y ? lo : hi) = mid;
-  }
-  const double x = 0.5 * (lo + hi);
-  return std::pow(std::tanh(x), 2) / (1.0 + 2.0 * x / std::sinh(2.0 * x));
-}
+using ocean_test::kitaigorodskii_phi;  // W.12's closed form (support/depth_law.hpp)
 
 // A fetch-limited wind sea on the project's three default-sized cascades at a small grid.
 ocean::SimulationConfig beach_sea() {

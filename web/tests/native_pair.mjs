@@ -3,11 +3,12 @@
 // docs/web.md. Run from web/ after web/build.sh, with OCEAN_NATIVE the built apps/ocean/ocean:
 //   OCEAN_NATIVE=../build/release/apps/ocean/ocean node tests/native_pair.mjs ../docs/images/web_vs_native.png
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
 import zlib from 'node:zlib';
 import { openPage, requireChromium } from './browser.mjs';
+import { readPng } from './png.mjs';
 
 const kWidth = 480, kHeight = 270, kGap = 6;
 requireChromium();
@@ -18,37 +19,6 @@ if (!native) {
   process.exit(1);
 }
 
-// A PNG's RGB(A) pixels, 8 bits, non-interlaced (what `ocean render` writes), as RGB rows.
-function readPng(file) {
-  const buf = readFileSync(file);
-  let pos = 8, width = 0, height = 0, channels = 0;
-  const idat = [];
-  while (pos < buf.length) {
-    const length = buf.readUInt32BE(pos), type = buf.toString('latin1', pos + 4, pos + 8);
-    const data = buf.subarray(pos + 8, pos + 8 + length);
-    if (type === 'IHDR') {
-      [width, height, channels] = [data.readUInt32BE(0), data.readUInt32BE(4), data[9] === 6 ? 4 : 3];
-    } else if (type === 'IDAT') idat.push(data);
-    pos += 12 + length;
-  }
-  const raw = zlib.inflateSync(Buffer.concat(idat));
-  const stride = width * channels, rgb = new Uint8Array(width * height * 3);
-  let prev = new Uint8Array(stride);
-  for (let y = 0; y < height; ++y) {
-    const filter = raw[y * (stride + 1)];
-    const line = Uint8Array.from(raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1)));
-    for (let i = 0; i < stride; ++i) {
-      const a = i >= channels ? line[i - channels] : 0, b = prev[i];
-      const c = i >= channels ? prev[i - channels] : 0;
-      const p = a + b - c, pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
-      line[i] = (line[i] + [0, a, b, (a + b) >> 1, pa <= pb && pa <= pc ? a : pb <= pc ? b : c][filter]) & 0xff;
-    }
-    for (let x = 0; x < width; ++x)
-      for (let k = 0; k < 3; ++k) rgb[3 * (y * width + x) + k] = line[x * channels + k];
-    prev = line;
-  }
-  return rgb;
-}
 
 // RGB rows as a PNG (filter 0 on every row).
 function writePng(file, width, height, rgb) {
@@ -114,7 +84,7 @@ execFileSync(native, ['render', '--wind-speed', '10', '--fetch', '100000',
   '--fov', '55', '--width', String(kWidth), '--height', String(kHeight), '--sun-azimuth', '35',
   '--sun-elevation', '20', '--exposure', '0.45', '--planet-radius', 'inf',
   '--out', path.join(dir, 'native.png')], { stdio: ['ignore', 'ignore', 'inherit'] });
-const nativeRgb = readPng(path.join(dir, 'native.png'));
+const nativePicture = readPng(path.join(dir, 'native.png'));
 rmSync(dir, { recursive: true, force: true });
 
 const width = 2 * kWidth + kGap;
@@ -123,7 +93,7 @@ for (let y = 0; y < kHeight; ++y) {
   for (let x = 0; x < kWidth; ++x) {
     for (let k = 0; k < 3; ++k) {
       rgb[3 * (y * width + x) + k] = pageRgba[4 * (y * kWidth + x) + k];
-      rgb[3 * (y * width + kWidth + kGap + x) + k] = nativeRgb[3 * (y * kWidth + x) + k];
+      rgb[3 * (y * width + kWidth + kGap + x) + k] = nativePicture.rgba[4 * (y * kWidth + x) + k];
     }
   }
 }

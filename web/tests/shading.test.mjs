@@ -11,11 +11,11 @@
 //      (`ocean render`, OCEAN_NATIVE) has the page's mean luminance within 10 %.
 // Needs OCEAN_NATIVE (the build tree's apps/ocean/ocean; ctest sets it) for part 5.
 import { execFileSync } from 'node:child_process';
-import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { existsSync, mkdtempSync, rmSync } from 'node:fs';
 import os from 'node:os';
 import path from 'node:path';
-import zlib from 'node:zlib';
 import { openPage, run } from './browser.mjs';
+import { readPng } from './png.mjs';
 
 const kWidth = 320, kHeight = 180;
 // The view both renderers draw: eye 12 m up, heading 20° (from +x towards +z), pitch −8°, 55°
@@ -78,44 +78,6 @@ function meanLuminance({ width, rgba }, y0, y1, x0 = 0, x1 = width) {
   return sum / ((x1 - x0) * (y1 - y0));
 }
 
-// A non-interlaced 8-bit RGB or RGBA PNG (what `ocean render` writes) as RGBA8.
-function readPng(file) {
-  const buf = readFileSync(file);
-  let pos = 8, width = 0, height = 0, channels = 0;
-  const idat = [];
-  while (pos < buf.length) {
-    const length = buf.readUInt32BE(pos), type = buf.toString('latin1', pos + 4, pos + 8);
-    const data = buf.subarray(pos + 8, pos + 8 + length);
-    if (type === 'IHDR') {
-      width = data.readUInt32BE(0);
-      height = data.readUInt32BE(4);
-      if (data[8] !== 8 || data[12] !== 0 || (data[9] !== 2 && data[9] !== 6))
-        throw new Error(`${file}: not an 8-bit non-interlaced RGB(A) PNG`);
-      channels = data[9] === 6 ? 4 : 3;
-    } else if (type === 'IDAT') idat.push(data);
-    pos += 12 + length;
-  }
-  const raw = zlib.inflateSync(Buffer.concat(idat));
-  const stride = width * channels, out = new Uint8Array(width * height * 4);
-  let prev = new Uint8Array(stride);
-  for (let y = 0; y < height; ++y) {
-    const filter = raw[y * (stride + 1)];
-    const line = Uint8Array.from(raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1)));
-    for (let i = 0; i < stride; ++i) {
-      const a = i >= channels ? line[i - channels] : 0, b = prev[i];
-      const c = i >= channels ? prev[i - channels] : 0;
-      const p = a + b - c, pa = Math.abs(p - a), pb = Math.abs(p - b), pc = Math.abs(p - c);
-      const predictor = [0, a, b, (a + b) >> 1, pa <= pb && pa <= pc ? a : pb <= pc ? b : c][filter];
-      line[i] = (line[i] + predictor) & 0xff;
-    }
-    for (let x = 0; x < width; ++x) {
-      for (let k = 0; k < 3; ++k) out[4 * (y * width + x) + k] = line[x * channels + k];
-      out[4 * (y * width + x) + 3] = channels === 4 ? line[x * channels + 3] : 255;
-    }
-    prev = line;
-  }
-  return { width, height, rgba: out };
-}
 
 // The native renderer's picture of the page's sea and view (flat sea, as the page's).
 function nativePicture(binary) {
