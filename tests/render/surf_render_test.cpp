@@ -13,10 +13,10 @@
 #include <numbers>
 #include <vector>
 
-#include "support/depth_law.hpp"
 #include "ocean/scene.hpp"
 #include "ocean/waves.hpp"
 #include "render/render_helpers.hpp"
+#include "support/depth_law.hpp"
 #include "support/require_devices.hpp"
 
 namespace surf_render_test {

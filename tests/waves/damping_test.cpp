@@ -8,10 +8,10 @@
 #include <limits>
 #include <numbers>
 
-#include "support/depth_law.hpp"
 #include "ocean/backends.hpp"
 #include "ocean/sim.hpp"
 #include "ocean/waves.hpp"
+#include "support/depth_law.hpp"
 
 namespace {
 
