@@ -163,10 +163,9 @@ Result<SimulationPlan> SimulationPlan::make(const SimulationConfig& config) {
           const double k = std::hypot(w.kx_radpm, w.kz_radpm);
           w.kx_radpm = lattice * std::round(w.kx_radpm / lattice);
           w.kz_radpm = lattice * std::round(w.kz_radpm / lattice);
-          w.amplitude_m *= k / std::hypot(w.kx_radpm, w.kz_radpm);  // a·k kept
-          w.omega_radps = std::hypot(w.kx_radpm, w.kz_radpm) *
-                          capillary_gravity_phase_speed(std::hypot(w.kx_radpm, w.kz_radpm),
-                                                        wind.gravity_mps2);
+          const double snapped = std::hypot(w.kx_radpm, w.kz_radpm);
+          w.amplitude_m *= k / snapped;  // a·k kept
+          w.omega_radps = snapped * capillary_gravity_phase_speed(snapped, wind.gravity_mps2);
         }
         plan.short_waves_ = std::move(waves).value();
       }
