@@ -206,19 +206,27 @@ Result<Image> create_image_array(const Context& ctx, VkFormat format, std::uint3
 void destroy_image(const Context& ctx, Image& image);
 
 /// A single 2D image with one view over its only mip level (render targets); with `layers` > 1
-/// a layered target (multiview) whose view is a 2D array over every layer.
+/// a layered target (multiview) whose view is a 2D array over every layer. With `mips` > 1 (a
+/// target sampled through its mip chain) `view` spans every level and `level0_view` the first,
+/// the one to render into.
 struct Image2D {
   VkImage image = VK_NULL_HANDLE;
   VkDeviceMemory memory = VK_NULL_HANDLE;
   VkImageView view = VK_NULL_HANDLE;
+  VkImageView level0_view = VK_NULL_HANDLE;  ///< with mips > 1 only
   VkFormat format = VK_FORMAT_UNDEFINED;
   std::uint32_t width = 0, height = 0;
-  std::uint32_t layers = 1;
+  std::uint32_t layers = 1, mips = 1;
 };
 Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32_t width,
                                 std::uint32_t height, VkImageUsageFlags usage,
                                 VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT,
-                                std::uint32_t layers = 1);
+                                std::uint32_t layers = 1, std::uint32_t mips = 1);
+/// Fills levels 1… of a mipped Image2D from level 0 by linear blits (each level the mean of 2 × 2
+/// texels of the one above at an exact halving), level 0 in COLOR_ATTACHMENT_OPTIMAL after
+/// rendering; leaves every level in SHADER_READ_ONLY_OPTIMAL for the fragment shaders. The image
+/// needs TRANSFER_SRC and TRANSFER_DST usage.
+void generate_mips(VkCommandBuffer cmd, const Image2D& image);
 void destroy_image(const Context& ctx, Image2D& image);
 
 /// A compute pipeline, its layout and its shader module.

@@ -25,6 +25,9 @@ struct ObjectPass : Pass {
   // The objects mirrored in the sea level (R.53, reflection.cpp): half-resolution colour (alpha:
   // coverage) and depth while there are meshes, 1×1 otherwise.
   vk::Image2D reflection, reflection_depth;
+  // Bilinear through the reflection's mip chain (R.53b): each water pixel reads it over the
+  // footprint its reflected rays cover.
+  VkSampler reflection_sampler = VK_NULL_HANDLE;
 
   // The pipeline layout (the scene set, ObjectPush) and the pipeline.
   Status create(Renderer::State& st);

@@ -50,6 +50,9 @@ Status ObjectPass::create(Renderer::State& st) {
                            "vkCreatePipelineLayout");
       !s.ok())
     return s;
+  Result<VkSampler> sampler = make_sampler(*st.ctx, true, true, false, 1.0f);
+  if (!sampler.ok()) return sampler.status();
+  reflection_sampler = sampler.value();
   Result<VkPipeline> mono = make_object_pipeline(st, spirv::object_vert(), spirv::object_frag(), 0);
   if (!mono.ok()) return mono.status();
   pipeline = mono.value();
@@ -145,8 +148,11 @@ void destroy_objects(Renderer::State& st, bool all) {
   if (!all) return;
   if (op.pipeline != VK_NULL_HANDLE) vkDestroyPipeline(st.ctx->device, op.pipeline, nullptr);
   if (op.layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(st.ctx->device, op.layout, nullptr);
+  if (op.reflection_sampler != VK_NULL_HANDLE)
+    vkDestroySampler(st.ctx->device, op.reflection_sampler, nullptr);
   op.pipeline = VK_NULL_HANDLE;
   op.layout = VK_NULL_HANDLE;
+  op.reflection_sampler = VK_NULL_HANDLE;
 }
 
 void ObjectPass::destroy(Renderer::State& st) { destroy_objects(st, true); }

@@ -8,6 +8,9 @@
 // camera happens to see. The waves only distort the lookup (the reflected ray is followed to the
 // water point's distance and mirrored back into the target), so reflections of objects far above
 // steep waves are approximate; the sky's reflection stays exact.
+#include <algorithm>
+#include <cstdint>
+
 #include "object_pass.hpp"
 #include "state.hpp"
 
@@ -21,8 +24,14 @@ Status size_reflection(Renderer::State& st) {
   const bool objects = !op.meshes.empty();
   const std::uint32_t w = objects ? (st.hdr.width + 1) / 2 : 1;
   const std::uint32_t h = objects ? (st.hdr.height + 1) / 2 : 1;
+  // With a mip chain down to 1 × 1 (R.53b), filled after the objects are drawn.
+  std::uint32_t mips = 1;
+  while ((std::max(w, h) >> mips) > 0) ++mips;
   Result<vk::Image2D> colour = vk::create_image_2d(
-      *st.ctx, kHdrFormat, w, h, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+      *st.ctx, kHdrFormat, w, h,
+      VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+          VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+      VK_IMAGE_ASPECT_COLOR_BIT, 1, mips);
   if (!colour.ok()) return colour.status();
   op.reflection = colour.value();
   Result<vk::Image2D> depth =
@@ -49,7 +58,9 @@ void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& vie
       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
       VK_IMAGE_ASPECT_DEPTH_BIT);
   const VkRenderingAttachmentInfo colour{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
-                                         .imageView = op.reflection.view,
+                                         .imageView = op.reflection.mips > 1
+                                                          ? op.reflection.level0_view
+                                                          : op.reflection.view,
                                          .imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                                          .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
                                          .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
@@ -76,18 +87,14 @@ void record_reflection(Renderer::State& st, VkCommandBuffer cmd, const View& vie
   if (!op.meshes.empty() && view.object_reflections)
     record_objects(st, cmd, view, stats, VK_NULL_HANDLE, true);
   vkCmdEndRendering(cmd);
-  vk::image_barrier(cmd, op.reflection.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                    VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL,
-                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
-                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT,
-                    VK_ACCESS_SHADER_READ_BIT);
+  vk::generate_mips(cmd, op.reflection);  // every level ready for the fragment shaders
 }
 
 Status ObjectPass::resize(Renderer::State& st) { return size_reflection(st); }
 
-void ObjectPass::scene_images(const Renderer::State& st, SceneImages& images) const {
+void ObjectPass::scene_images(const Renderer::State&, SceneImages& images) const {
   images.add(OCEAN_RENDER_BINDING_REFLECTION, VK_SHADER_STAGE_FRAGMENT_BIT,
-             {st.hdr_sampler, reflection.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+             {reflection_sampler, reflection.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
 }
 
 void ObjectPass::release_targets(Renderer::State& st) {

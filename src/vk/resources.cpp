@@ -1,5 +1,6 @@
 // Buffers and images with memory-type selection, compute pipelines from SPIR-V, command
 // submission, barriers and timestamp queries.
+#include <algorithm>
 #include <cassert>
 #include <cstring>
 #include <string>
@@ -151,19 +152,23 @@ void destroy_image(const Context& ctx, Image& im) {
 
 Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32_t width,
                                 std::uint32_t height, VkImageUsageFlags usage,
-                                VkImageAspectFlags aspect, std::uint32_t layers) {
+                                VkImageAspectFlags aspect, std::uint32_t layers,
+                                std::uint32_t mips) {
   Image2D im;
-  im.format = format, im.width = width, im.height = height, im.layers = layers;
-  Status s = create_device_image(ctx, format, width, height, layers, 1, usage, im.image, im.memory);
-  if (s.ok()) {
+  im.format = format, im.width = width, im.height = height, im.layers = layers, im.mips = mips;
+  Status s =
+      create_device_image(ctx, format, width, height, layers, mips, usage, im.image, im.memory);
+  const auto make_view = [&](std::uint32_t levels, VkImageView& view) {
     const VkImageViewCreateInfo v{
         .sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
         .image = im.image,
         .viewType = layers > 1 ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D,
         .format = format,
-        .subresourceRange = {aspect, 0, 1, 0, layers}};
-    s = check(vkCreateImageView(ctx.device, &v, nullptr, &im.view), "vkCreateImageView");
-  }
+        .subresourceRange = {aspect, 0, levels, 0, layers}};
+    return check(vkCreateImageView(ctx.device, &v, nullptr, &view), "vkCreateImageView");
+  };
+  if (s.ok()) s = make_view(mips, im.view);
+  if (s.ok() && mips > 1) s = make_view(1, im.level0_view);
   if (!s.ok()) {
     destroy_image(ctx, im);
     return s;
@@ -173,6 +178,7 @@ Result<Image2D> create_image_2d(const Context& ctx, VkFormat format, std::uint32
 
 void destroy_image(const Context& ctx, Image2D& im) {
   if (im.view != VK_NULL_HANDLE) vkDestroyImageView(ctx.device, im.view, nullptr);
+  if (im.level0_view != VK_NULL_HANDLE) vkDestroyImageView(ctx.device, im.level0_view, nullptr);
   if (im.image != VK_NULL_HANDLE) vkDestroyImage(ctx.device, im.image, nullptr);
   if (im.memory != VK_NULL_HANDLE) vkFreeMemory(ctx.device, im.memory, nullptr);
   im = {};
@@ -342,6 +348,55 @@ void image_barrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, VkIma
       .image = image,
       .subresourceRange = {aspect, 0, VK_REMAINING_MIP_LEVELS, 0, VK_REMAINING_ARRAY_LAYERS}};
   vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+void generate_mips(VkCommandBuffer cmd, const Image2D& im) {
+  const auto barrier = [&](std::uint32_t level, std::uint32_t count, VkImageLayout from,
+                           VkImageLayout to, VkPipelineStageFlags src_stage,
+                           VkAccessFlags src_access, VkPipelineStageFlags dst_stage,
+                           VkAccessFlags dst_access) {
+    const VkImageMemoryBarrier b{
+        .sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
+        .srcAccessMask = src_access,
+        .dstAccessMask = dst_access,
+        .oldLayout = from,
+        .newLayout = to,
+        .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+        .image = im.image,
+        .subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, level, count, 0, im.layers}};
+    vkCmdPipelineBarrier(cmd, src_stage, dst_stage, 0, 0, nullptr, 0, nullptr, 1, &b);
+  };
+  // Level 0 (rendered) and the rest (undefined) to the blits' layouts.
+  barrier(0, 1, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+          VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT,
+          VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  if (im.mips > 1)
+    barrier(1, im.mips - 1, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+            VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+            VK_ACCESS_TRANSFER_WRITE_BIT);
+  for (std::uint32_t level = 1; level < im.mips; ++level) {
+    const auto w = [&](std::uint32_t l) {
+      return static_cast<std::int32_t>(std::max(im.width >> l, 1u));
+    };
+    const auto h = [&](std::uint32_t l) {
+      return static_cast<std::int32_t>(std::max(im.height >> l, 1u));
+    };
+    const VkImageBlit blit{
+        .srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level - 1, 0, im.layers},
+        .srcOffsets = {{0, 0, 0}, {w(level - 1), h(level - 1), 1}},
+        .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, 0, im.layers},
+        .dstOffsets = {{0, 0, 0}, {w(level), h(level), 1}}};
+    vkCmdBlitImage(cmd, im.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, im.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_LINEAR);
+    barrier(level, 1, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+  }
+  barrier(0, im.mips, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+          VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+          VK_ACCESS_TRANSFER_WRITE_BIT | VK_ACCESS_TRANSFER_READ_BIT,
+          VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, VK_ACCESS_SHADER_READ_BIT);
 }
 
 Result<Timestamps> create_timestamps(const Context& ctx, std::uint32_t count) {

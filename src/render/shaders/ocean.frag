@@ -25,12 +25,24 @@ layout(set = 0, binding = OCEAN_RENDER_BINDING_REFLECTION) uniform sampler2D ref
 // The reflection target's texel where the reflected ray R from the water point P shows an
 // object: the ray followed for the eye's distance r to P, mirrored in y = 0 and projected. On
 // calm water this is P's own pixel, exactly the mirror's geometry; waves move it with R.
-vec4 object_reflection(vec3 P, vec3 R, float r) {
-  vec3 X = P + r * R;
+vec3 reflection_lookup(vec3 X) {  // (u, v, w of the clip position)
   vec4 clip = u.view_proj * vec4(X.x, -X.y, X.z, 1.0);
-  if (clip.w <= 0.0) return vec4(0.0);
-  vec2 ndc = clip.xy / clip.w;
-  return textureLod(reflection_map, vec2(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y), 0.0);
+  vec2 ndc = clip.xy / max(abs(clip.w), 1e-6);
+  return vec3(0.5 + 0.5 * ndc.x, 0.5 - 0.5 * ndc.y, clip.w);
+}
+
+// The objects' reflection seen from P, filtered over the pixel's footprint (R.53b): bilinear,
+// from the mip level whose texels are as wide as the lookup's spread between neighbouring pixels
+// along the footprint's short axis (their reflected rays through the waves the pixels resolve,
+// scaled as the rest of the shading's footprint). The long axis would spread an object's image
+// sideways across the water where waves turn a quad's rays apart; the short one does not.
+vec4 object_reflection(vec3 P, vec3 R, float r) {
+  vec3 c = reflection_lookup(P + r * R);
+  vec2 gx = dFdx(c.xy) * u.footprint_scale, gy = dFdy(c.xy) * u.footprint_scale;
+  if (c.z <= 0.0) return vec4(0.0);
+  vec2 size = vec2(textureSize(reflection_map, 0));
+  float texels = min(length(gx * size), length(gy * size));
+  return textureLod(reflection_map, c.xy, max(log2(max(texels, 1e-6)), 0.0));
 }
 
 layout(location = 0) in vec2 world_xz;
