@@ -348,12 +348,12 @@ typedef uint64_t ocean_vk_handle;
 /** An engine's Vulkan objects for ocean_simulator_create_on_vulkan. The library destroys none of
  *  them: they must outlive the simulator (destroy it, then the device, then the instance). */
 typedef struct ocean_vulkan_device {
-  size_t struct_size;     /**< set by the caller: sizeof(ocean_vulkan_device) */
-  void* instance;         /**< VkInstance, made through the system's Vulkan loader */
-  void* physical_device;  /**< VkPhysicalDevice: one of instance's, Vulkan 1.2 or later */
-  void* device;           /**< VkDevice made from physical_device; no extension or feature needed */
-  uint32_t queue_family;  /**< the family of `queue`: must support compute */
-  void* queue;            /**< VkQueue: vkGetDeviceQueue(device, queue_family, any index) */
+  size_t struct_size;    /**< set by the caller: sizeof(ocean_vulkan_device) */
+  void* instance;        /**< VkInstance, made through the system's Vulkan loader */
+  void* physical_device; /**< VkPhysicalDevice: one of instance's, Vulkan 1.2 or later */
+  void* device;          /**< VkDevice made from physical_device; no extension or feature needed */
+  uint32_t queue_family; /**< the family of `queue`: must support compute */
+  void* queue;           /**< VkQueue: vkGetDeviceQueue(device, queue_family, any index) */
   /** VkApplicationInfo::apiVersion the instance was made with: VK_API_VERSION_1_2 or later. */
   uint32_t api_version;
 } ocean_vulkan_device;
@@ -376,7 +376,7 @@ OCEAN_API ocean_status ocean_simulator_create_on_vulkan(const ocean_config* conf
  *  does). The handles are valid until the simulator is
  *  destroyed and belong to its device (the engine's with ocean_simulator_create_on_vulkan). */
 typedef struct ocean_vulkan_image {
-  size_t struct_size;   /**< set by the caller: sizeof(ocean_vulkan_image) */
+  size_t struct_size;    /**< set by the caller: sizeof(ocean_vulkan_image) */
   ocean_vk_handle image; /**< VkImage: 2D, `layers` array layers, exclusive to the queue family */
   /** VkImageView: VK_IMAGE_VIEW_TYPE_2D_ARRAY over every layer and mip level, for sampling. */
   ocean_vk_handle view;

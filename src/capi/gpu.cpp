@@ -87,9 +87,10 @@ Status vulkan_image(const Simulator& simulator, ocean_field field, ocean_vulkan_
   const vk::SimulationImages images = backend->images();
   const bool displacement = field == OCEAN_FIELD_DISPLACEMENT_HALF;
   if (!displacement && field != OCEAN_FIELD_PACKED) {
-    return unsupported("field = " + std::to_string(static_cast<long long>(field)) +
-                       " has no Vulkan image: only OCEAN_FIELD_DISPLACEMENT_HALF and "
-                       "OCEAN_FIELD_PACKED are images (read the others with ocean_simulator_field)");
+    return unsupported(
+        "field = " + std::to_string(static_cast<long long>(field)) +
+        " has no Vulkan image: only OCEAN_FIELD_DISPLACEMENT_HALF and "
+        "OCEAN_FIELD_PACKED are images (read the others with ocean_simulator_field)");
   }
   out.image = to_c(displacement ? images.displacement : images.normal_foam);
   out.view = to_c(displacement ? images.displacement_view : images.normal_foam_view);
@@ -100,8 +101,8 @@ Status vulkan_image(const Simulator& simulator, ocean_field field, ocean_vulkan_
   out.layout = VK_IMAGE_LAYOUT_GENERAL;  // vk/images.hpp: the images never leave it
   // The usage of gpu_state.cpp's output images and the stage and access of their writers (the
   // finalize and mip kernels' imageStore).
-  out.usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-              VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+  out.usage =
+      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   out.src_stage_mask = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
   out.src_access_mask = VK_ACCESS_SHADER_WRITE_BIT;
   out.frame_index = simulator.frame().index;
@@ -112,11 +113,12 @@ Status vulkan_image(const Simulator& simulator, ocean_field field, ocean_vulkan_
 #endif
 }
 
-Status cuda_field(const Simulator& simulator, std::size_t cascade, ocean_field field,
-                  int32_t level, ocean_field_view& view, int32_t* device) {
+Status cuda_field(const Simulator& simulator, std::size_t cascade, ocean_field field, int32_t level,
+                  ocean_field_view& view, int32_t* device) {
 #ifdef OCEAN_HAS_CUDA
   const auto* backend = dynamic_cast<const cuda::CudaBackend*>(&simulator.backend());
-  if (backend == nullptr) return wrong_backend(simulator, "a CUDA device pointer", "the cuda backend");
+  if (backend == nullptr)
+    return wrong_backend(simulator, "a CUDA device pointer", "the cuda backend");
   if (Status s = backend->status(); !s.ok()) return s;
   const Frame& frame = simulator.frame();
   if (cascade >= frame.cascades.size()) {
@@ -173,7 +175,8 @@ OCEAN_API ocean_status ocean_simulator_create_on_vulkan(const ocean_config* conf
     if (ocean::Status s = require_not_null(config, f, "config"); !s.ok()) return s;
     if (ocean::Status s = require_not_null(device, f, "device"); !s.ok()) return s;
     if (ocean::Status s = require_not_null(out, f, "out"); !s.ok()) return s;
-    if (ocean::Status s = require_struct_size(device->struct_size, sizeof(ocean_vulkan_device), f, "device", "ocean_vulkan_device");
+    if (ocean::Status s = require_struct_size(device->struct_size, sizeof(ocean_vulkan_device), f,
+                                              "device", "ocean_vulkan_device");
         !s.ok())
       return s;
     ocean_simulator_options defaults;
@@ -181,7 +184,8 @@ OCEAN_API ocean_status ocean_simulator_create_on_vulkan(const ocean_config* conf
     const ocean_simulator_options* o = options != nullptr ? options : &defaults;
 #ifdef OCEAN_HAS_VULKAN
     const ocean_vulkan_device d = *device;
-    return simulator_with_options(*config, *o, f, [&] { return vulkan_backend_on(d); }, *out);
+    return simulator_with_options(
+        *config, *o, f, [&] { return vulkan_backend_on(d); }, *out);
 #else
     (void)o;
     return ocean::unsupported(std::string(f) +
@@ -197,7 +201,8 @@ OCEAN_API ocean_status ocean_simulator_vulkan_image(const ocean_simulator* simul
     constexpr std::string_view f = "ocean_simulator_vulkan_image";
     if (ocean::Status s = require_not_null(simulator, f, "simulator"); !s.ok()) return s;
     if (ocean::Status s = require_not_null(image, f, "image"); !s.ok()) return s;
-    if (ocean::Status s = require_struct_size(image->struct_size, sizeof(ocean_vulkan_image), f, "image", "ocean_vulkan_image");
+    if (ocean::Status s = require_struct_size(image->struct_size, sizeof(ocean_vulkan_image), f,
+                                              "image", "ocean_vulkan_image");
         !s.ok())
       return s;
     if (ocean::Status s = require_field(field); !s.ok()) return s;
@@ -216,7 +221,8 @@ OCEAN_API ocean_status ocean_simulator_cuda_field(const ocean_simulator* simulat
     constexpr std::string_view f = "ocean_simulator_cuda_field";
     if (ocean::Status s = require_not_null(simulator, f, "simulator"); !s.ok()) return s;
     if (ocean::Status s = require_not_null(view, f, "view"); !s.ok()) return s;
-    if (ocean::Status s = require_struct_size(view->struct_size, sizeof(ocean_field_view), f, "view", "ocean_field_view");
+    if (ocean::Status s = require_struct_size(view->struct_size, sizeof(ocean_field_view), f,
+                                              "view", "ocean_field_view");
         !s.ok())
       return s;
     return cuda_field(*simulator->simulator, cascade, field, level, *view, device);

@@ -15,42 +15,66 @@
  * Then the error paths: wrong backend, fields without an image, bad structs and devices, CUDA on
  * a Vulkan simulator. Prints the measured errors. Exit 77 (skip) without a Vulkan device unless
  * OCEAN_REQUIRE_DEVICES=1. */
-#include <vulkan/vulkan.h>
-
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <vulkan/vulkan.h>
 
 #include "ocean/ocean.h"
 
 static int g_failures = 0;
+/* Warnings and errors of the Khronos validation layer (where installed) about any call on the
+ * test's device, the library's included; the test fails on any. */
+static int g_validation_messages = 0;
+static char g_last_message[1024];
 
-#define CHECK(cond)                                                  \
-  do {                                                               \
-    if (!(cond)) {                                                   \
+static VKAPI_ATTR VkBool32 VKAPI_CALL on_message(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
+                                                 VkDebugUtilsMessageTypeFlagsEXT types,
+                                                 const VkDebugUtilsMessengerCallbackDataEXT* data,
+                                                 void* user) {
+  (void)severity, (void)types, (void)user;
+  ++g_validation_messages;
+  snprintf(g_last_message, sizeof g_last_message, "%s",
+           data->pMessage != NULL ? data->pMessage : "");
+  return VK_FALSE;
+}
+
+static int has_layer(const char* name) {
+  VkLayerProperties layers[64];
+  uint32_t count = 64, i;
+  if (vkEnumerateInstanceLayerProperties(&count, layers) < 0) return 0;
+  for (i = 0; i < count; ++i) {
+    if (strcmp(layers[i].layerName, name) == 0) return 1;
+  }
+  return 0;
+}
+
+#define CHECK(cond)                                                            \
+  do {                                                                         \
+    if (!(cond)) {                                                             \
       fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++g_failures;                                                  \
-    }                                                                \
+      ++g_failures;                                                            \
+    }                                                                          \
   } while (0)
 
-#define REQUIRE_OK(call)                                                               \
-  do {                                                                                 \
-    ocean_status s_ = (call);                                                          \
-    if (s_ != OCEAN_OK) {                                                              \
+#define REQUIRE_OK(call)                                                                        \
+  do {                                                                                          \
+    ocean_status s_ = (call);                                                                   \
+    if (s_ != OCEAN_OK) {                                                                       \
       fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, ocean_last_error()); \
-      exit(1);                                                                         \
-    }                                                                                  \
+      exit(1);                                                                                  \
+    }                                                                                           \
   } while (0)
 
-#define REQUIRE_VK(call)                                                                 \
-  do {                                                                                   \
-    VkResult r_ = (call);                                                                \
-    if (r_ != VK_SUCCESS) {                                                              \
+#define REQUIRE_VK(call)                                                                      \
+  do {                                                                                        \
+    VkResult r_ = (call);                                                                     \
+    if (r_ != VK_SUCCESS) {                                                                   \
       fprintf(stderr, "%s:%d: %s failed: VkResult %d\n", __FILE__, __LINE__, #call, (int)r_); \
-      exit(1);                                                                           \
-    }                                                                                    \
+      exit(1);                                                                                \
+    }                                                                                         \
   } while (0)
 
 /* `status` is `expected` and the last error contains `part`. */
@@ -95,6 +119,7 @@ static int half_ulps(uint16_t a, uint16_t b) {
 
 typedef struct Engine {
   VkInstance instance;
+  VkDebugUtilsMessengerEXT messenger;
   VkPhysicalDevice physical;
   VkDevice device;
   uint32_t family;
@@ -111,15 +136,40 @@ typedef struct Engine {
 
 /* 0 on success, else the reason there is no device. */
 static const char* make_engine(Engine* e) {
-  const VkApplicationInfo app = {VK_STRUCTURE_TYPE_APPLICATION_INFO, NULL, "engine", 1, NULL, 0,
-                                 VK_API_VERSION_1_2};
+  const VkApplicationInfo app = {
+      VK_STRUCTURE_TYPE_APPLICATION_INFO, NULL, "engine", 1, NULL, 0, VK_API_VERSION_1_2};
   VkInstanceCreateInfo info;
   uint32_t count = 0, d, f;
   VkPhysicalDevice devices[16];
+  const char* layer = "VK_LAYER_KHRONOS_validation";
+  const char* extension = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+  const int validation = has_layer(layer);
+  VkDebugUtilsMessengerCreateInfoEXT messenger;
+  memset(&messenger, 0, sizeof messenger);
+  messenger.sType = VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT;
+  messenger.messageSeverity = VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT |
+                              VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+  messenger.messageType =
+      VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT;
+  messenger.pfnUserCallback = on_message;
   memset(&info, 0, sizeof info);
   info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+  info.pNext = validation ? &messenger : NULL;
   info.pApplicationInfo = &app;
-  if (vkCreateInstance(&info, NULL, &e->instance) != VK_SUCCESS) return "no Vulkan loader or driver";
+  info.enabledLayerCount = validation ? 1u : 0u;
+  info.ppEnabledLayerNames = &layer;
+  info.enabledExtensionCount = validation ? 1u : 0u;
+  info.ppEnabledExtensionNames = &extension;
+  if (vkCreateInstance(&info, NULL, &e->instance) != VK_SUCCESS)
+    return "no Vulkan loader or driver";
+  printf("validation layer: %s\n", validation ? "on" : "not installed");
+  if (validation) {
+    PFN_vkCreateDebugUtilsMessengerEXT create =
+        (PFN_vkCreateDebugUtilsMessengerEXT)(void (*)(void))vkGetInstanceProcAddr(
+            e->instance, "vkCreateDebugUtilsMessengerEXT");
+    CHECK(create != NULL);
+    if (create != NULL) REQUIRE_VK(create(e->instance, &messenger, NULL, &e->messenger));
+  }
   vkEnumeratePhysicalDevices(e->instance, &count, NULL);
   if (count > 16) count = 16;
   vkEnumeratePhysicalDevices(e->instance, &count, devices);
@@ -199,7 +249,8 @@ static void make_readback(Engine* e, VkDeviceSize bytes) {
   alloc.allocationSize = req.size;
   alloc.memoryTypeIndex = UINT32_MAX;
   for (t = 0; t < e->memory.memoryTypeCount; ++t) {
-    if ((req.memoryTypeBits & (1u << t)) && (e->memory.memoryTypes[t].propertyFlags & want) == want) {
+    if ((req.memoryTypeBits & (1u << t)) &&
+        (e->memory.memoryTypes[t].propertyFlags & want) == want) {
       alloc.memoryTypeIndex = t;
       break;
     }
@@ -238,8 +289,8 @@ static VkDeviceSize copy_image(Engine* e, const ocean_vulkan_image* image, uint3
   barrier.subresourceRange.aspectMask = VK_IMAGE_ASPECT_COLOR_BIT;
   barrier.subresourceRange.levelCount = image->mip_levels;
   barrier.subresourceRange.layerCount = image->layers;
-  vkCmdPipelineBarrier(e->cmd, image->src_stage_mask, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, NULL,
-                       0, NULL, 1, &barrier);
+  vkCmdPipelineBarrier(e->cmd, image->src_stage_mask, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, NULL, 0,
+                       NULL, 1, &barrier);
   for (level = 0; level < image->mip_levels; ++level) {
     const uint32_t size = image->width >> level;
     for (layer = 0; layer < image->layers; ++layer) {
@@ -328,7 +379,8 @@ static void compare_frame(Engine* e, const ocean_simulator* gpu, const ocean_sim
   CHECK(disp.layers == cascades && packed.layers == cascades);
   CHECK(disp.mip_levels == 1 && (1u << (packed.mip_levels - 1)) == packed.width);
   CHECK(disp.view != 0 && packed.view != 0 && disp.image != packed.image);
-  CHECK((disp.usage & VK_IMAGE_USAGE_SAMPLED_BIT) && (packed.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT));
+  CHECK((disp.usage & VK_IMAGE_USAGE_SAMPLED_BIT) &&
+        (packed.usage & VK_IMAGE_USAGE_TRANSFER_SRC_BIT));
 
   /* Displacement: layer c is cascade c, N² half4 texels. */
   copy_image(e, &disp, 8);
@@ -376,11 +428,12 @@ static void compare_frame(Engine* e, const ocean_simulator* gpu, const ocean_sim
       }
     }
   }
-  printf("frame %llu: Hs %.4f m; half displacement vs CPU max |dD|/(2^-10|D| + 8e-6 Hs) = %.3g; "
-         "vs its own readback %d ulp; packed vs CPU %d LSB, %zu of %zu texels differ (%.2g); "
-         "vs its own readback %d LSB\n",
-         (unsigned long long)index, hs, worst_disp, worst_half_ulps, worst_lsb_cpu, packed_differ,
-         packed_texels, (double)packed_differ / (double)packed_texels, worst_lsb_self);
+  printf(
+      "frame %llu: Hs %.4f m; half displacement vs CPU max |dD|/(2^-10|D| + 8e-6 Hs) = %.3g; "
+      "vs its own readback %d ulp; packed vs CPU %d LSB, %zu of %zu texels differ (%.2g); "
+      "vs its own readback %d LSB\n",
+      (unsigned long long)index, hs, worst_disp, worst_half_ulps, worst_lsb_cpu, packed_differ,
+      packed_texels, (double)packed_differ / (double)packed_texels, worst_lsb_self);
   CHECK(hs > 0.1);
   CHECK(worst_disp <= 1.0);
   CHECK(worst_half_ulps <= 1);
@@ -439,8 +492,8 @@ int main(void) {
                "runs on the 'cpu' backend");
   expect_error(ocean_simulator_vulkan_image(gpu, OCEAN_FIELD_NORMAL, &image), OCEAN_UNSUPPORTED,
                "ocean_simulator_field");
-  expect_error(ocean_simulator_vulkan_image(gpu, (ocean_field)42, &image),
-               OCEAN_INVALID_ARGUMENT, "field = 42 is out of range");
+  expect_error(ocean_simulator_vulkan_image(gpu, (ocean_field)42, &image), OCEAN_INVALID_ARGUMENT,
+               "field = 42 is out of range");
   CHECK(image.image == 0 && image.view == 0);
   image.struct_size = 8;
   expect_error(ocean_simulator_vulkan_image(gpu, OCEAN_FIELD_PACKED, &image),
@@ -458,8 +511,7 @@ int main(void) {
                "device is NULL");
   device.api_version = 0;
   expect_error(ocean_simulator_create_on_vulkan(config, &device, NULL, &bad),
-               OCEAN_INVALID_ARGUMENT,
-               "ocean_simulator_create_on_vulkan: api_version not stated");
+               OCEAN_INVALID_ARGUMENT, "ocean_simulator_create_on_vulkan: api_version not stated");
   device.api_version = VK_API_VERSION_1_2;
   device.queue_family = 1000;
   expect_error(ocean_simulator_create_on_vulkan(config, &device, NULL, &bad),
@@ -470,8 +522,8 @@ int main(void) {
                OCEAN_INVALID_ARGUMENT, "device->struct_size = 4 is too small");
   device.struct_size = sizeof device;
   options.outputs = OCEAN_OUTPUT_DEFAULT | OCEAN_OUTPUT_VELOCITY;
-  expect_error(ocean_simulator_create_on_vulkan(config, &device, &options, &bad),
-               OCEAN_UNSUPPORTED, "velocity");
+  expect_error(ocean_simulator_create_on_vulkan(config, &device, &options, &bad), OCEAN_UNSUPPORTED,
+               "velocity");
   CHECK(bad == NULL);
 
   /* The library's objects first, then the engine's device and instance. */
@@ -484,7 +536,18 @@ int main(void) {
   vkDestroyFence(e.device, e.fence, NULL);
   vkDestroyCommandPool(e.device, e.pool, NULL);
   vkDestroyDevice(e.device, NULL);
+  if (e.messenger != VK_NULL_HANDLE) {
+    PFN_vkDestroyDebugUtilsMessengerEXT destroy =
+        (PFN_vkDestroyDebugUtilsMessengerEXT)(void (*)(void))vkGetInstanceProcAddr(
+            e.instance, "vkDestroyDebugUtilsMessengerEXT");
+    if (destroy != NULL) destroy(e.instance, e.messenger, NULL);
+  }
   vkDestroyInstance(e.instance, NULL);
+  if (g_validation_messages != 0) {
+    fprintf(stderr, "%d validation message(s), the last: %s\n", g_validation_messages,
+            g_last_message);
+    ++g_failures;
+  }
   if (g_failures != 0) {
     fprintf(stderr, "%d check(s) failed\n", g_failures);
     return 1;

@@ -214,11 +214,11 @@ Status CudaBackend::share_inputs(interop::SharedInputs& shared) {
 }
 
 static_assert(static_cast<int>(DeviceOutput::displacement) == detail::displacement &&
-              static_cast<int>(DeviceOutput::displacement_half) == detail::displacement_half &&
-              static_cast<int>(DeviceOutput::normal) == detail::normal &&
-              static_cast<int>(DeviceOutput::jacobian) == detail::jacobian &&
-              static_cast<int>(DeviceOutput::foam) == detail::foam &&
-              static_cast<int>(DeviceOutput::packed_mips) == detail::packed_mips,
+                  static_cast<int>(DeviceOutput::displacement_half) == detail::displacement_half &&
+                  static_cast<int>(DeviceOutput::normal) == detail::normal &&
+                  static_cast<int>(DeviceOutput::jacobian) == detail::jacobian &&
+                  static_cast<int>(DeviceOutput::foam) == detail::foam &&
+                  static_cast<int>(DeviceOutput::packed_mips) == detail::packed_mips,
               "DeviceOutput follows the readback block's order");
 
 Result<const void*> CudaBackend::device_output(int cascade, DeviceOutput output) const {
@@ -232,7 +232,8 @@ Result<const void*> CudaBackend::device_output(int cascade, DeviceOutput output)
   const detail::Region& r = l.outputs[static_cast<int>(output)];
   if (r.bytes == 0)
     return unsupported("the output is not computed by this configuration (see outputs)");
-  return static_cast<const void*>(gpu_->device + static_cast<std::size_t>(cascade) * l.cascade_bytes +
+  return static_cast<const void*>(gpu_->device +
+                                  static_cast<std::size_t>(cascade) * l.cascade_bytes +
                                   l.readback.offset + r.offset);
 }
 
