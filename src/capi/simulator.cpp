@@ -50,6 +50,47 @@ Status describe(const LargeVector<T>& data, std::size_t offset, int width, int c
   return {};
 }
 
+}  // namespace
+
+Status field_view(const CascadeFrame& c, ocean_field field, int32_t level, ocean_field_view& v) {
+  const int n = c.resolution;
+  if (field != OCEAN_FIELD_PACKED && level != 0) {
+    return invalid_argument("level = " + std::to_string(level) +
+                            " is out of range: must be 0 for a field other than packed");
+  }
+  switch (field) {
+    case OCEAN_FIELD_DISPLACEMENT:
+      return describe(c.displacement, 0, n, 3, OCEAN_ELEMENT_FLOAT32, "displacement", v);
+    case OCEAN_FIELD_DISPLACEMENT_HALF:
+      return describe(c.displacement_half, 0, n, 4, OCEAN_ELEMENT_FLOAT16, "displacement", v);
+    case OCEAN_FIELD_NORMAL: return describe(c.normal, 0, n, 3, OCEAN_ELEMENT_FLOAT32, "normal", v);
+    case OCEAN_FIELD_JACOBIAN:
+      return describe(c.jacobian, 0, n, 1, OCEAN_ELEMENT_FLOAT32, "jacobian", v);
+    case OCEAN_FIELD_FOAM: return describe(c.foam, 0, n, 1, OCEAN_ELEMENT_FLOAT32, "foam", v);
+    case OCEAN_FIELD_PACKED: {
+      const int levels = static_cast<int>(std::log2(n)) + 1;
+      if (level < 0 || level >= levels) {
+        return invalid_argument("level = " + std::to_string(level) +
+                                " is out of range: must be 0 to " + std::to_string(levels - 1));
+      }
+      return describe(c.packed_mips, mip_offset(n, level), n >> level, 4, OCEAN_ELEMENT_UINT8,
+                      "packed", v);
+    }
+    case OCEAN_FIELD_VELOCITY:
+      return describe(c.velocity, 0, n, 3, OCEAN_ELEMENT_FLOAT32, "velocity", v);
+    case OCEAN_FIELD_MAX_ENUM: break;
+  }
+  return invalid_argument("field = " + std::to_string(static_cast<int>(field)) +
+                          " is out of range: must be 0 to 6 (ocean_field)");
+}
+
+Status device_status(const Simulator& simulator) {
+  const DeviceCapabilities* device = capabilities(simulator.backend());
+  return device != nullptr ? device->status() : Status{};
+}
+
+namespace {
+
 // ocean_simulator_step and _kick: the checks, then `frame` (Simulator::step or kick) at time_s.
 ocean_status start_frame(ocean_simulator* simulator, double time_s, std::string_view function,
                          void (Simulator::*frame)(double)) {
@@ -97,38 +138,6 @@ void surface_batches(const Simulator& simulator, const double* x, const double* 
 
 }  // namespace
 
-Status field_view(const CascadeFrame& c, ocean_field field, int32_t level, ocean_field_view& v) {
-  const int n = c.resolution;
-  if (field != OCEAN_FIELD_PACKED && level != 0) {
-    return invalid_argument("level = " + std::to_string(level) +
-                            " is out of range: must be 0 for a field other than packed");
-  }
-  switch (field) {
-    case OCEAN_FIELD_DISPLACEMENT:
-      return describe(c.displacement, 0, n, 3, OCEAN_ELEMENT_FLOAT32, "displacement", v);
-    case OCEAN_FIELD_DISPLACEMENT_HALF:
-      return describe(c.displacement_half, 0, n, 4, OCEAN_ELEMENT_FLOAT16, "displacement", v);
-    case OCEAN_FIELD_NORMAL: return describe(c.normal, 0, n, 3, OCEAN_ELEMENT_FLOAT32, "normal", v);
-    case OCEAN_FIELD_JACOBIAN:
-      return describe(c.jacobian, 0, n, 1, OCEAN_ELEMENT_FLOAT32, "jacobian", v);
-    case OCEAN_FIELD_FOAM: return describe(c.foam, 0, n, 1, OCEAN_ELEMENT_FLOAT32, "foam", v);
-    case OCEAN_FIELD_PACKED: {
-      const int levels = static_cast<int>(std::log2(n)) + 1;
-      if (level < 0 || level >= levels) {
-        return invalid_argument("level = " + std::to_string(level) +
-                                " is out of range: must be 0 to " + std::to_string(levels - 1));
-      }
-      return describe(c.packed_mips, mip_offset(n, level), n >> level, 4, OCEAN_ELEMENT_UINT8,
-                      "packed", v);
-    }
-    case OCEAN_FIELD_VELOCITY:
-      return describe(c.velocity, 0, n, 3, OCEAN_ELEMENT_FLOAT32, "velocity", v);
-    case OCEAN_FIELD_MAX_ENUM: break;
-  }
-  return invalid_argument("field = " + std::to_string(static_cast<int>(field)) +
-                          " is out of range: must be 0 to 6 (ocean_field)");
-}
-
 Status simulator_with_options(const ocean_config& config, const ocean_simulator_options& o,
                               std::string_view f, const BackendFactory& make,
                               ocean_simulator*& out) {
@@ -175,11 +184,6 @@ Status simulator_with_options(const ocean_config& config, const ocean_simulator_
   return {};
 }
 
-Status device_status(const Simulator& simulator) {
-  const DeviceCapabilities* device = capabilities(simulator.backend());
-  return device != nullptr ? device->status() : Status{};
-}
-
 }  // namespace ocean::capi
 
 extern "C" {
@@ -219,7 +223,7 @@ OCEAN_API ocean_status ocean_simulator_wait(ocean_simulator* simulator) {
   return guarded([&]() -> ocean::Status {
     if (ocean::Status s = require_simulator(simulator, "ocean_simulator_wait"); !s.ok()) return s;
     simulator->simulator->wait();
-    return ocean::capi::device_status(*simulator->simulator);
+    return device_status(*simulator->simulator);
   });
 }
 
