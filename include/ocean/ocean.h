@@ -337,9 +337,9 @@ OCEAN_API ocean_status ocean_simulator_create_with_options(const ocean_config* c
  * Queue (Vulkan): the library submits on the given queue, which Vulkan requires to be externally
  * synchronised: the engine must not use it from another thread during ocean_simulator_create_
  * on_vulkan, _step, _wait, and from _kick until the matching _wait returns (the kicked frame is
- * submitted from a library thread). Create and destroy call vkDeviceWaitIdle: no queue of the
- * device may be in use then. Giving the library a queue of its own (another index of the family)
- * leaves only that last rule. */
+ * submitted from a library thread). ocean_simulator_destroy calls vkDeviceWaitIdle: no queue of
+ * the device may be in use then. Giving the library a queue of its own (another index of the
+ * family) leaves only that last rule. */
 
 /** A non-dispatchable Vulkan handle (VkImage, VkImageView) as a 64-bit integer: in C on a 64-bit
  *  target (VkImage)(uintptr_t)h, on a 32-bit one (VkImage)h (Vulkan defines it as uint64_t). */
