@@ -1,7 +1,8 @@
 /* ocean/ocean.h — the stable C ABI of the ocean library (libocean_c.so): presets, a simulator
  * stepped in time (on its own threads or an engine's job system), its fields as pointers with a
- * layout, batched height, normal and particle-velocity queries and the one-sided wave spectrum
- * S(ω). Pure C99; callable from C, C#, Rust, Python ctypes, Godot...
+ * layout (or, on an engine's Vulkan device or on CUDA, as GPU images and device pointers), batched
+ * height, normal and particle-velocity queries and the one-sided wave spectrum S(ω). Pure C99,
+ * no GPU header; callable from C, C#, Rust, Python ctypes, Godot...
  * The contract in full, with an example: docs/capi.md.
  *
  * Errors: every function that can fail returns an ocean_status. OCEAN_OK is 0; any other value
