@@ -1,7 +1,8 @@
 /* ocean/ocean.h — the stable C ABI of the ocean library (libocean_c.so): presets, a simulator
  * stepped in time (on its own threads or an engine's job system), its fields as pointers with a
- * layout, batched height, normal and particle-velocity queries and the one-sided wave spectrum
- * S(ω). Pure C99; callable from C, C#, Rust, Python ctypes, Godot...
+ * layout (or, on an engine's Vulkan device or on CUDA, as GPU images and device pointers), batched
+ * height, normal and particle-velocity queries and the one-sided wave spectrum S(ω). Pure C99,
+ * no GPU header; callable from C, C#, Rust, Python ctypes, Godot...
  * The contract in full, with an example: docs/capi.md.
  *
  * Errors: every function that can fail returns an ocean_status. OCEAN_OK is 0; any other value
@@ -310,6 +311,112 @@ OCEAN_API void ocean_simulator_options_init(ocean_simulator_options* options);
 OCEAN_API ocean_status ocean_simulator_create_with_options(const ocean_config* config,
                                                            const ocean_simulator_options* options,
                                                            ocean_simulator** out);
+
+/* ---- GPU-resident outputs: an engine's Vulkan device, CUDA device pointers ---------------- */
+
+/* The frame's outputs where the GPU computed them, for an engine to sample with no host copy:
+ * a simulator made on the engine's own Vulkan device gives its output images as Vulkan handles;
+ * one on the CUDA backend gives its arrays as device pointers. This header needs neither
+ * vulkan.h nor cuda.h: dispatchable Vulkan handles (VkInstance, VkPhysicalDevice, VkDevice,
+ * VkQueue) pass as void*, non-dispatchable ones (VkImage, VkImageView) as ocean_vk_handle, enum
+ * and flag values as integers of Vulkan's numbering.
+ *
+ * Synchronisation (both APIs): the outputs hold the published frame once ocean_simulator_step or
+ * ocean_simulator_wait has returned OCEAN_OK, until the next ocean_simulator_step or
+ * ocean_simulator_kick starts overwriting them. Before returning, the library has waited on the
+ * host for every command that wrote them (a VkFence; cudaStreamSynchronize), so no semaphore
+ * passes between the two sides:
+ *  - reading (read after write): any queue of the simulator's queue family, any CUDA stream of
+ *    its device, may read after the call returns; Vulkan readers first record a memory barrier
+ *    from (src_stage_mask, src_access_mask) of ocean_vulkan_image to their own stage and access,
+ *    the image staying in its layout (GENERAL);
+ *  - overwriting (write after read): the next step or kick must not start while the engine's
+ *    reads of the frame may still run: wait for their fence (or stream) first, or, on the very
+ *    queue the simulator was given, record after the reads an execution barrier from the reading
+ *    stages to VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, which orders the library's later submission.
+ *
+ * Queue (Vulkan): the library submits on the given queue, which Vulkan requires to be externally
+ * synchronised: the engine must not use it from another thread during ocean_simulator_create_
+ * on_vulkan, _step, _wait, and from _kick until the matching _wait returns (the kicked frame is
+ * submitted from a library thread). ocean_simulator_destroy calls vkDeviceWaitIdle: no queue of
+ * the device may be in use then. Giving the library a queue of its own (another index of the
+ * family) leaves only that last rule. */
+
+/** A non-dispatchable Vulkan handle (VkImage, VkImageView) as a 64-bit integer: in C on a 64-bit
+ *  target (VkImage)(uintptr_t)h, on a 32-bit one (VkImage)h (Vulkan defines it as uint64_t). */
+typedef uint64_t ocean_vk_handle;
+
+/** An engine's Vulkan objects for ocean_simulator_create_on_vulkan. The library destroys none of
+ *  them: they must outlive the simulator (destroy it, then the device, then the instance). */
+typedef struct ocean_vulkan_device {
+  size_t struct_size;    /**< set by the caller: sizeof(ocean_vulkan_device) */
+  void* instance;        /**< VkInstance, made through the system's Vulkan loader */
+  void* physical_device; /**< VkPhysicalDevice: one of instance's, Vulkan 1.2 or later */
+  void* device;          /**< VkDevice made from physical_device; no extension or feature needed */
+  uint32_t queue_family; /**< the family of `queue`: must support compute */
+  void* queue;           /**< VkQueue: vkGetDeviceQueue(device, queue_family, any index) */
+  /** VkApplicationInfo::apiVersion the instance was made with: VK_API_VERSION_1_2 or later. */
+  uint32_t api_version;
+} ocean_vulkan_device;
+
+/** ocean_simulator_create_with_options on the Vulkan backend, on the engine's `device` (checked:
+ *  handles not NULL, the family in range with compute, Vulkan 1.2 on both sides; one line naming
+ *  what is missing). options may be NULL (the defaults); its `backend` is not read (the backend
+ *  is Vulkan), its outputs, threads and job system count as there (OCEAN_OUTPUT_VELOCITY is
+ *  OCEAN_UNSUPPORTED: the Vulkan backend does not compute it). A build without Vulkan answers
+ *  OCEAN_UNSUPPORTED. Uploads the spectra and records the frame on `queue` before it returns. */
+OCEAN_API ocean_status ocean_simulator_create_on_vulkan(const ocean_config* config,
+                                                        const ocean_vulkan_device* device,
+                                                        const ocean_simulator_options* options,
+                                                        ocean_simulator** out);
+
+/** One output image of a simulator on the Vulkan backend. Layer c, mip level l holds cascade c's
+ *  field at level l as ocean_simulator_field gives it, texel (col, row) at (x, y) = (col, row),
+ *  up to the rounding of the device's conversion into the image format (one unit in the last
+ *  place of half or of 8-bit unorm, where the device rounds otherwise than the library's packing
+ *  does). The handles are valid until the simulator is
+ *  destroyed and belong to its device (the engine's with ocean_simulator_create_on_vulkan). */
+typedef struct ocean_vulkan_image {
+  size_t struct_size;    /**< set by the caller: sizeof(ocean_vulkan_image) */
+  ocean_vk_handle image; /**< VkImage: 2D, `layers` array layers, exclusive to the queue family */
+  /** VkImageView: VK_IMAGE_VIEW_TYPE_2D_ARRAY over every layer and mip level, for sampling. */
+  ocean_vk_handle view;
+  /** VkFormat: VK_FORMAT_R16G16B16A16_SFLOAT (97) for OCEAN_FIELD_DISPLACEMENT_HALF,
+   *  VK_FORMAT_R8G8B8A8_UNORM (37) for OCEAN_FIELD_PACKED. */
+  int32_t format;
+  uint32_t width, height; /**< texels of level 0: N × N */
+  uint32_t layers;        /**< array layers: one per cascade (ocean_simulator_cascade_count) */
+  uint32_t mip_levels;    /**< 1 for the displacement, log2(N) + 1 for the packed map */
+  /** VkImageLayout the image is always in: VK_IMAGE_LAYOUT_GENERAL (1). Do not transition it. */
+  int32_t layout;
+  /** VkImageUsageFlags it was made with: STORAGE | SAMPLED | TRANSFER_SRC (0x1 | 0x4 | 0x8). */
+  uint32_t usage;
+  /** The library's last writes to it, the first scope of the engine's barrier before reading:
+   *  VkPipelineStageFlags (VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT) and VkAccessFlags
+   *  (VK_ACCESS_SHADER_WRITE_BIT). */
+  uint32_t src_stage_mask;
+  uint32_t src_access_mask;
+  uint64_t frame_index; /**< the published frame it holds (as ocean_simulator_frame_time) */
+} ocean_vulkan_image;
+
+/** Fills *image for `field` of a simulator on the Vulkan backend: OCEAN_FIELD_DISPLACEMENT_HALF
+ *  (half4 (Dx, h, Dz, 0), m) or OCEAN_FIELD_PACKED (RGBA8 (n_x, n_z, foam or Jacobian,
+ *  smoothness), every mip level). The other fields live in device buffers the library reads back:
+ *  OCEAN_UNSUPPORTED, as for a simulator on another backend or a build without Vulkan. A frame
+ *  that failed on the device (device lost) is returned as that error. Synchronisation: above. */
+OCEAN_API ocean_status ocean_simulator_vulkan_image(const ocean_simulator* simulator,
+                                                    ocean_field field, ocean_vulkan_image* image);
+
+/** The device pointer of one field of a simulator on the CUDA backend: *view as
+ *  ocean_simulator_field fills it (same layout, struct_size set by the caller), but view->data
+ *  is an address in the memory of CUDA device *device (an ordinal, for cudaSetDevice), which
+ *  holds the published frame. Read it from any stream of that device (synchronisation: above);
+ *  never write it. A simulator on another backend, and every simulator in a build without CUDA,
+ *  is OCEAN_UNSUPPORTED (the message names the backend); OCEAN_FIELD_VELOCITY is not computed
+ *  there. `device` may be NULL. */
+OCEAN_API ocean_status ocean_simulator_cuda_field(const ocean_simulator* simulator, size_t cascade,
+                                                  ocean_field field, int32_t level,
+                                                  ocean_field_view* view, int32_t* device);
 
 /* ---- sea-state spectra -------------------------------------------------------------------- */
 

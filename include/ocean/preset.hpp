@@ -72,8 +72,9 @@ std::string_view builtin_json(std::string_view name);
 Result<SimulationConfig> builtin(std::string_view name);
 
 /// A preset assembled in layers, in the order the calls are made: SimulationConfig's defaults,
-/// then presets merged over them (RFC 7386 merge patch: keys present replace, null removes),
-/// then single-key overrides. config() reads and validates the result.
+/// then presets merged over them (key by key: an object merges into an object, any other value
+/// replaces; null is a value, "unset", as in from_json, not a removal that would restore a
+/// default), then single-key overrides. config() reads and validates the result.
 class Document {
  public:
   Document();  ///< SimulationConfig{} as a document

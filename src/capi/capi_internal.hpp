@@ -3,6 +3,7 @@
 // turns every Status and every exception into an ocean_status.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <new>
 #include <string>
@@ -45,6 +46,24 @@ Status require_not_null(const void* pointer, std::string_view function, std::str
 
 /// "<name>[<index>]", how messages name an element of a caller's array.
 std::string indexed(std::string_view name, std::size_t index);
+
+/// Makes the backend of a simulator (by name, or on an engine's Vulkan device).
+using BackendFactory = std::function<Result<std::unique_ptr<Backend>>()>;
+
+/// ocean_simulator_create_with_options' checks of `o` (named in messages as `function`'s
+/// options), then a simulator of `config` with o's outputs and runner on the backend `make`
+/// makes (o.backend by name when `make` is empty).
+Status simulator_with_options(const ocean_config& config, const ocean_simulator_options& o,
+                              std::string_view function, const BackendFactory& make,
+                              ocean_simulator*& out);
+
+/// Fills `view` (but its struct_size and patch size) for one field of a cascade's host arrays.
+Status field_view(const CascadeFrame& cascade, ocean_field field, int32_t level,
+                  ocean_field_view& view);
+
+/// The first failure of a frame on the simulator's device backend (device lost, timeout); ok on
+/// the CPU backend and while everything works. Not while a kicked frame runs.
+Status device_status(const Simulator& simulator);
 
 /// Runs `body` (returning a Status) so that nothing escapes into C: its Status becomes the
 /// result, std::bad_alloc OCEAN_OUT_OF_MEMORY, any other exception OCEAN_INTERNAL.

@@ -50,6 +50,8 @@ Status describe(const LargeVector<T>& data, std::size_t offset, int width, int c
   return {};
 }
 
+}  // namespace
+
 Status field_view(const CascadeFrame& c, ocean_field field, int32_t level, ocean_field_view& v) {
   const int n = c.resolution;
   if (field != OCEAN_FIELD_PACKED && level != 0) {
@@ -82,6 +84,13 @@ Status field_view(const CascadeFrame& c, ocean_field field, int32_t level, ocean
                           " is out of range: must be 0 to 6 (ocean_field)");
 }
 
+Status device_status(const Simulator& simulator) {
+  const DeviceCapabilities* device = capabilities(simulator.backend());
+  return device != nullptr ? device->status() : Status{};
+}
+
+namespace {
+
 // ocean_simulator_step and _kick: the checks, then `frame` (Simulator::step or kick) at time_s.
 ocean_status start_frame(ocean_simulator* simulator, double time_s, std::string_view function,
                          void (Simulator::*frame)(double)) {
@@ -89,7 +98,8 @@ ocean_status start_frame(ocean_simulator* simulator, double time_s, std::string_
     if (Status s = require_simulator(simulator, function); !s.ok()) return s;
     if (Status s = require_finite("time_s", time_s); !s.ok()) return s;
     (simulator->simulator.get()->*frame)(time_s);
-    return {};
+    // A kicked frame may still run (its failure shows at the wait).
+    return frame == &Simulator::kick ? Status{} : device_status(*simulator->simulator);
   });
 }
 
@@ -126,16 +136,17 @@ void surface_batches(const Simulator& simulator, const double* x, const double* 
   }
 }
 
-// The configuration and runner of ocean_simulator_create_with_options, checked.
+}  // namespace
+
 Status simulator_with_options(const ocean_config& config, const ocean_simulator_options& o,
+                              std::string_view f, const BackendFactory& make,
                               ocean_simulator*& out) {
-  constexpr std::string_view f = "ocean_simulator_create_with_options";
   const std::string prefix = std::string(f) + ": options->";
   if (o.struct_size < sizeof(ocean_simulator_options)) {
     return invalid_argument(prefix + "struct_size = " + std::to_string(o.struct_size) +
                             " is too small: set it with ocean_simulator_options_init");
   }
-  if (o.backend == nullptr) return invalid_argument(prefix + "backend is NULL");
+  if (!make && o.backend == nullptr) return invalid_argument(prefix + "backend is NULL");
   if ((o.outputs & ~kOutputBits) != 0) {
     return invalid_argument(prefix + "outputs = " + std::to_string(o.outputs) +
                             " has unknown bits: must be a combination of ocean_output_flags (" +
@@ -163,14 +174,16 @@ Status simulator_with_options(const ocean_config& config, const ocean_simulator_
                .jacobian = (o.outputs & OCEAN_OUTPUT_JACOBIAN) != 0,
                .foam = (o.outputs & OCEAN_OUTPUT_FOAM) != 0,
                .velocity = (o.outputs & OCEAN_OUTPUT_VELOCITY) != 0};
-  Result<std::unique_ptr<Simulator>> sim = make_simulator(c, o.backend, std::move(runner));
+  Result<std::unique_ptr<Backend>> backend = make ? make() : make_backend(o.backend);
+  if (!backend.ok()) return backend.status();
+  Result<std::unique_ptr<Simulator>> sim =
+      Simulator::make(c, std::move(backend).value(), std::move(runner));
   if (!sim.ok()) return sim.status();
   out = new ocean_simulator{std::move(sim).value()};
   log_created(*out->simulator, threads);
   return {};
 }
 
-}  // namespace
 }  // namespace ocean::capi
 
 extern "C" {
@@ -210,7 +223,7 @@ OCEAN_API ocean_status ocean_simulator_wait(ocean_simulator* simulator) {
   return guarded([&]() -> ocean::Status {
     if (ocean::Status s = require_simulator(simulator, "ocean_simulator_wait"); !s.ok()) return s;
     simulator->simulator->wait();
-    return {};
+    return device_status(*simulator->simulator);
   });
 }
 
@@ -343,7 +356,7 @@ OCEAN_API ocean_status ocean_simulator_create_with_options(const ocean_config* c
     ocean_simulator_options_init(&defaults);
     // Only the struct_size first: a caller's struct may be shorter than this library's.
     const ocean_simulator_options* o = options != nullptr ? options : &defaults;
-    return simulator_with_options(*config, *o, *out);
+    return simulator_with_options(*config, *o, f, {}, *out);
   });
 }
 

@@ -51,6 +51,22 @@ Result<Json> read_preset(std::string_view name_or_path, std::string_view label) 
   return std::move(parsed.value);
 }
 
+// Merges `patch` into `target` key by key: an object merges into an object, any other value
+// (null included) replaces. Unlike an RFC 7386 merge patch, null does not remove the key: in a
+// preset, null is a value ("unset": no fetch, deep water, no swell; ocean/preset.hpp), and a
+// removed key would fall back to SimulationConfig's default instead (a 100 km fetch where the
+// file said none). So a file merged over the defaults reads as preset::from_json reads its text.
+void merge_values(Json& target, const Json& patch) {
+  for (const auto& [key, value] : patch.items()) {
+    Json& slot = target[key];
+    if (value.is_object() && slot.is_object()) {
+      merge_values(slot, value);
+    } else {
+      slot = value;
+    }
+  }
+}
+
 }  // namespace
 
 std::vector<std::string_view> builtin_names() {
@@ -91,7 +107,13 @@ Document& Document::operator=(const Document& other) {
 Status Document::merge_preset(std::string_view name_or_path, std::string_view label) {
   Result<Json> preset = read_preset(name_or_path, label);
   if (!preset.ok()) return preset.status();
-  impl_->document.merge_patch(preset.value());
+  // A preset document is an object (from_value reports anything else); a non-object replaces
+  // the document whole, so that config() names what is wrong with it.
+  if (preset.value().is_object() && impl_->document.is_object()) {
+    merge_values(impl_->document, preset.value());
+  } else {
+    impl_->document = std::move(preset).value();
+  }
   return {};
 }
 

@@ -155,6 +155,38 @@ TEST(PresetDocument, ReadsFiles) {
   fs::remove_all(dir);
 }
 
+// null is a value in a preset ("unset"), in a file merged over the defaults as in a text read
+// by from_json: a Pierson-Moskowitz sea given by its wind has no fetch (the spectrum's parameter
+// check refuses one), so "fetch_m": null must not fall back to the default 100 km fetch; and
+// "swell": null over a preset with swell leaves none.
+TEST(PresetDocument, NullInAFileIsUnsetAsInFromJson) {
+  const fs::path dir = fs::temp_directory_path() / ("preset_null_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string text =
+      R"({"sea": {"wind_sea": {"model": "pierson-moskowitz", "wind_speed_mps": 12,)"
+      R"( "fetch_m": null}, "swell": null}})";
+  const fs::path file = dir / "pm.json";
+  std::ofstream(file) << text;
+  const auto direct = preset::from_json(text);
+  ASSERT_TRUE(direct.ok()) << direct.status().message();
+  EXPECT_TRUE(std::isnan(direct.value().sea.wind_sea.spectrum.fetch_m));
+
+  preset::Document doc;
+  ASSERT_TRUE(doc.merge_preset("calm").ok());
+  ASSERT_TRUE(doc.config().value().sea.has_swell);  // calm has a swell for the null to remove
+  ASSERT_TRUE(doc.merge_preset(file.string()).ok());
+  const auto merged = doc.config();
+  ASSERT_TRUE(merged.ok()) << merged.status().message();
+  EXPECT_TRUE(std::isnan(merged.value().sea.wind_sea.spectrum.fetch_m));
+  EXPECT_FALSE(merged.value().sea.has_swell);
+  // Over the defaults alone the file is the text: the same configuration, key for key.
+  preset::Document plain;
+  ASSERT_TRUE(plain.merge_preset(file.string()).ok());
+  ASSERT_TRUE(plain.config().ok()) << plain.config().status().message();
+  EXPECT_EQ(preset::to_json(plain.config().value()), preset::to_json(direct.value()));
+  fs::remove_all(dir);
+}
+
 TEST(Preset, BandRolesRoundTripAndBadOnesAreNamed) {
   SimulationConfig c;
   EXPECT_EQ(preset::to_json(c).find("band_roles"), std::string::npos);  // unset: not written

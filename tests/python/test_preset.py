@@ -30,6 +30,24 @@ def test_save_load_and_pickle_round_trips(tmp_path):
     assert json.loads(q.to_json())["sea"] == json.loads(ocean.Preset("storm").to_json())["sea"]
 
 
+def test_a_null_in_a_file_is_unset_as_in_from_json(tmp_path):
+    # A Pierson-Moskowitz sea given by its wind has no fetch: saved from a dict, "fetch_m" is
+    # null in the file, and loading the file must not give it the default 100 km fetch (which
+    # the spectrum's check refuses for Pierson-Moskowitz).
+    sea = {"model": "pierson-moskowitz", "wind_speed_mps": 12.0, "fetch_m": None}
+    p = ocean.Preset.from_dict({"sea": {"wind_sea": sea, "swell": None}})
+    path = tmp_path / "pm.json"
+    p.save(str(path))
+    assert json.loads(path.read_text())["sea"]["wind_sea"]["fetch_m"] is None
+    loaded = ocean.Preset(str(path))
+    assert loaded == ocean.Preset.from_json(path.read_text()) == p
+    assert loaded["sea.wind_sea.fetch_m"] is None
+    # Merged over a preset with a fetch and a swell, the nulls unset both.
+    over = ocean.Preset("calm").merge(str(path))
+    assert over["sea.wind_sea.fetch_m"] is None and over["sea.swell"] is None
+    assert ocean.Simulator(over.set("resolution=16")).resolution == 16
+
+
 def test_presets_compare_by_value():
     assert ocean.Preset("moderate") == ocean.Preset("moderate")
     assert ocean.Preset("moderate") != ocean.Preset("storm")

@@ -47,6 +47,9 @@ Result<std::vector<DeviceInfo>> list_devices();
 /// Driver and runtime versions as "driver 13.0, runtime 13.0" (driver "none" without one).
 std::string runtime_versions();
 
+/// A per-cascade output of a frame on the device, in the order of CascadeFrame's arrays.
+enum class DeviceOutput { displacement, displacement_half, normal, jacobian, foam, packed_mips };
+
 /// Implements DeviceCapabilities: asynchronous frames, shared inputs, time_frames; no GPU images
 /// and no noise map alone (`unsupported`).
 class CudaBackend final : public Backend, public DeviceCapabilities {
@@ -86,6 +89,15 @@ class CudaBackend final : public Backend, public DeviceCapabilities {
   Status share_inputs(interop::SharedInputs& shared) override;
   /// The last frame written into the shared buffer (1, 2, …), 0 before the first or unshared.
   [[nodiscard]] std::uint64_t shared_frame() const override;
+
+  /// GPU-resident outputs: the device address of `output` of cascade `cascade` in the backend's
+  /// own allocation, the array read() copies into the Frame (same layout: CascadeFrame's), on
+  /// device `device()`. It holds the last frame read() returned until the next submit(); stable
+  /// until the next configure(). `unsupported` for an output the configuration does not compute
+  /// (FrameOutputs), invalid_argument for a cascade out of range, internal before configure().
+  [[nodiscard]] Result<const void*> device_output(int cascade, DeviceOutput output) const;
+  /// The CUDA device ordinal the backend runs on.
+  [[nodiscard]] int device() const { return device_; }
 
   /// The first failure of a frame since configure(); ok while everything works.
   [[nodiscard]] const Status& status() const override { return status_; }

@@ -213,6 +213,30 @@ Status CudaBackend::share_inputs(interop::SharedInputs& shared) {
   return made;
 }
 
+static_assert(static_cast<int>(DeviceOutput::displacement) == detail::displacement &&
+                  static_cast<int>(DeviceOutput::displacement_half) == detail::displacement_half &&
+                  static_cast<int>(DeviceOutput::normal) == detail::normal &&
+                  static_cast<int>(DeviceOutput::jacobian) == detail::jacobian &&
+                  static_cast<int>(DeviceOutput::foam) == detail::foam &&
+                  static_cast<int>(DeviceOutput::packed_mips) == detail::packed_mips,
+              "DeviceOutput follows the readback block's order");
+
+Result<const void*> CudaBackend::device_output(int cascade, DeviceOutput output) const {
+  if (!gpu_) return Status(ErrorCode::internal, "CUDA backend queried before configure()");
+  const detail::Layout& l = gpu_->layout;
+  if (cascade < 0 || cascade >= l.cascades) {
+    return invalid_argument("cascade = " + std::to_string(cascade) +
+                            " is out of range: must be 0 to " + std::to_string(l.cascades - 1));
+  }
+  // Every output sits in the cascade's readback block, the region read() copies to the host.
+  const detail::Region& r = l.outputs[static_cast<int>(output)];
+  if (r.bytes == 0)
+    return unsupported("the output is not computed by this configuration (see outputs)");
+  return static_cast<const void*>(gpu_->device +
+                                  static_cast<std::size_t>(cascade) * l.cascade_bytes +
+                                  l.readback.offset + r.offset);
+}
+
 std::uint64_t CudaBackend::shared_frame() const {
   return gpu_ && gpu_->shared_frame != nullptr ? gpu_->shared_frames : 0;
 }
