@@ -116,7 +116,6 @@ struct SurfaceDescription {
   double foam_decay_time_s = kWhitecapDecayTimeS;
 };
 
-
 /// The crest bound's factor: the highest crest of a few thousand Rayleigh-distributed waves is
 /// about 1.2·Hs (Longuet-Higgins 1952, "On the statistical distribution of the heights of sea
 /// waves": H_max ≈ 1.86–2·Hs, crests about 0.6 of the height in steep seas).

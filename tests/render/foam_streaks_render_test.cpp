@@ -7,8 +7,8 @@
 // u_d·ā downwind (ā = Σw_j·a_j, the taps' mean age) and not across, and grow its variance along
 // the wind by |u_d|²·Var(a) and not across — identities of the footprint, not of our output.
 // On a storm sea (the storm preset's wind, 22 m/s) the drawn flecks must be smooth along the wind
-// and rough across it, where without the drift they are alike both ways. Skips where no Vulkan device exists (fails with
-// OCEAN_REQUIRE_DEVICES=1).
+// and rough across it, where without the drift they are alike both ways. Skips where no Vulkan
+// device exists (fails with OCEAN_REQUIRE_DEVICES=1).
 #include <gtest/gtest.h>
 
 #include <array>
@@ -117,10 +117,13 @@ TEST(FoamStreaksRender, ABlobMovesAndStretchesDownwindByTheFootprintsMoments) {
     for (int i = 0; i < size * size; ++i)
       cf.packed_mips[base + static_cast<std::size_t>(i)] =
           ocean::packing::pack_rgba8(0.0f, 0.0f, level[static_cast<std::size_t>(i)], 1.0f);
-    std::vector<float> next(static_cast<std::size_t>(std::max(size / 2, 1) * std::max(size / 2, 1)));
+    std::vector<float> next(
+        static_cast<std::size_t>(std::max(size / 2, 1) * std::max(size / 2, 1)));
     for (int r = 0; r < size / 2; ++r)
       for (int c = 0; c < size / 2; ++c) {
-        const auto at = [&](int rr, int cc) { return level[static_cast<std::size_t>(rr * size + cc)]; };
+        const auto at = [&](int rr, int cc) {
+          return level[static_cast<std::size_t>(rr * size + cc)];
+        };
         next[static_cast<std::size_t>(r * (size / 2) + c)] =
             0.25f * (at(2 * r, 2 * c) + at(2 * r, 2 * c + 1) + at(2 * r + 1, 2 * c) +
                      at(2 * r + 1, 2 * c + 1));
@@ -165,8 +168,9 @@ TEST(FoamStreaksRender, ABlobMovesAndStretchesDownwindByTheFootprintsMoments) {
   // The centroid: u_d·ā along, 0 across; allowed: a quarter of a pixel (0.044 m).
   EXPECT_NEAR(shift_along, len * taps.mean, 0.044);
   EXPECT_NEAR(shift_across, 0.0, 0.044);
-  // The spread: Var(a)·|u_d|² more along the wind, none across (a pixel's variance, 1/12 px²).
-  EXPECT_NEAR(along_var(b) - along_var(a), len * len * taps.variance, 0.05 * len * len * taps.variance);
+  // The spread: Var(a)·|u_d|² more along the wind (bound 5 %).
+  EXPECT_NEAR(along_var(b) - along_var(a), len * len * taps.variance,
+              0.05 * len * len * taps.variance);
   // Across: unchanged but for the pixels' bilinear reconstruction, a tent of variance px²/6
   // that aliases with the blob's place among the pixels.
   EXPECT_NEAR(across_var(b), across_var(a), 0.175 * 0.175 / 6.0);
@@ -189,11 +193,13 @@ double half_correlation_length(const std::vector<float>& hdr, const View& view, 
   mean /= static_cast<double>(f.size());
   for (double& v : f) v -= mean;
   const auto correlation = [&](int lag) {
-    const int li = static_cast<int>(std::lround(lag * dx)), lk = static_cast<int>(std::lround(lag * dz));
+    const int li = static_cast<int>(std::lround(lag * dx)),
+              lk = static_cast<int>(std::lround(lag * dz));
     double sum = 0.0;
     for (int i = 0; i + li < n; ++i)
       for (int k = 0; k + lk < n; ++k)
-        sum += f[static_cast<std::size_t>(i) * n + k] * f[static_cast<std::size_t>(i + li) * n + k + lk];
+        sum += f[static_cast<std::size_t>(i) * n + k] *
+               f[static_cast<std::size_t>(i + li) * n + k + lk];
     return sum / (static_cast<double>(n - li) * (n - lk));
   };
   const double c0 = correlation(0);
