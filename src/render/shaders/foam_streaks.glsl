@@ -13,8 +13,10 @@
 // the taps join into one streak instead of repeating a fleck, and the streak stays as narrow as
 // the fleck.
 
-// Cascade c's foam at uv drawn out downwind; dx_uv, dy_uv the pixel's footprint in uv.
-float streaked_foam(vec2 uv, int c, vec2 dx_uv, vec2 dy_uv) {
+// Cascade c's foam at uv drawn out downwind; dx_uv, dy_uv the pixel's footprint in uv, `plain`
+// the map's foam there, which a pixel longer along the wind than the whole footprint keeps (the
+// taps would all read it, a fraction of the pixel apart).
+float streaked_foam(vec2 uv, int c, vec2 dx_uv, vec2 dy_uv, float plain) {
   vec2 drift_m = u.foam_streak.xy;  // u_d·τ, m
   float inv_size = 1.0 / u.cascades[c].patch_size_m;
   float step_tau = OCEAN_RENDER_FOAM_STREAK_SPAN / float(OCEAN_RENDER_FOAM_STREAK_TAPS);
@@ -23,6 +25,7 @@ float streaked_foam(vec2 uv, int c, vec2 dx_uv, vec2 dy_uv) {
   float spacing_uv = length(drift_m) * step_tau * inv_size;
   float pixel_along = max(abs(dot(dx_uv, along)), abs(dot(dy_uv, along)));
   float pixel_across = max(abs(dot(dx_uv, across)), abs(dot(dy_uv, across)));
+  if (spacing_uv * float(OCEAN_RENDER_FOAM_STREAK_TAPS) <= pixel_along) return plain;
   vec2 g_along = along * max(spacing_uv, pixel_along), g_across = across * pixel_across;
   float sum = 0.0, weights = 0.0;
   for (int j = 0; j < OCEAN_RENDER_FOAM_STREAK_TAPS; ++j) {

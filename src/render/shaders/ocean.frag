@@ -89,7 +89,7 @@ void main() {
       plain = shade_of(texture(normal_map, vec3(uv, float(c)), log2(u.footprint_scale)));
     // The foam drifted downwind over its age (W.31); the hex tiles, beyond D_min, keep the map's.
     if (u.foam_streak.x != 0.0 || u.foam_streak.y != 0.0)
-      plain.foam = streaked_foam(uv, c, dx * inv_size, dy * inv_size);
+      plain.foam = streaked_foam(uv, c, dx * inv_size, dy * inv_size, plain.foam);
     float taps_sum = 0.0;
     if (hex > 0.0) {
       HexTaps taps = hex_taps(uv, c);
