@@ -69,6 +69,14 @@ struct FoamPlan {
 /// al.'s capillary range carries under 10⁻⁵ of the slope variance.
 inline constexpr double kShortWaveDetailMaxRadpm = 3000.0;
 
+/// The surface's wind drift as a fraction of U10: about 3 % (Wu 1975, "Wind-induced drift
+/// currents", J. Fluid Mech. 68; Wu 1983, "Sea-surface drift currents induced by wind and
+/// waves", J. Phys. Oceanogr. 13) — the speed at which floating foam moves downwind (W.29).
+inline constexpr double kWindDriftFraction = 0.03;
+/// The e-folding time of an oceanic whitecap's foam area in salt water, s (Monahan 1971,
+/// "Oceanic whitecaps", J. Phys. Oceanogr. 1; Callaghan et al. 2012 measure 0.5–8 s) (W.30).
+inline constexpr double kWhitecapDecayTimeS = 3.85;
+
 /// What a renderer needs to know of the surface it draws, and nothing of the configuration:
 /// heights that bound the waves, each cascade's patch and the scale its tiling is hidden at, the
 /// foam ramp and the far field's noise.
@@ -99,6 +107,13 @@ struct SurfaceDescription {
   /// Aebi, VR Ocean, eqs. 49–53 encode it, quantised to 8 bits and decoded again. A mip's
   /// shorter normal carries the slope variance the filtering removed (R.5).
   double map_base_normal_length = 1.0;
+  /// The wind drift of the surface that carries the foam, (x, z) m/s: kWindDriftFraction·U10
+  /// along the wind (docs/waves.md W.29); zero when no wind is given (an Hs/Tp sea).
+  std::array<double, 2> foam_drift_mps{0.0, 0.0};
+  /// The foam's e-folding decay time, s (kWhitecapDecayTimeS): the ages of the foam on the
+  /// surface are distributed as e^{−a/τ}/τ, and a renderer draws each cascade's foam spread
+  /// downwind over drift·age (W.30–W.31).
+  double foam_decay_time_s = kWhitecapDecayTimeS;
 };
 
 /// The crest bound's factor: the highest crest of a few thousand Rayleigh-distributed waves is

@@ -29,6 +29,8 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   st.choppiness = surface.choppiness;
   st.foam_ramp = surface.foam_ramp;
   st.foam_weights = surface.foam_weights;
+  st.foam_drift_mps = surface.foam_drift_mps;
+  st.foam_decay_time_s = surface.foam_decay_time_s;
   st.unresolved_slope_variance = surface.unresolved_slope_variance;
   st.map_base_normal_length = surface.map_base_normal_length;
   pass<FarFieldPass>(st).noise = surface.far_noise;

@@ -87,6 +87,8 @@ struct Renderer::State {
   double map_base_normal_length = 1.0;              // SurfaceDescription's, from configure()
   std::array<double, 2> foam_ramp{0.8, 0.5};  // FoamParams' J start and full, from configure()
   std::vector<double> foam_weights;  // SurfaceDescription's (empty: the cascades' foam united)
+  std::array<double, 2> foam_drift_mps{0.0, 0.0};  // SurfaceDescription's, from configure()
+  double foam_decay_time_s = 0.0;                  // SurfaceDescription's, from configure()
   Passes passes;                     // one object per feature (passes.hpp)
 
   ~State();

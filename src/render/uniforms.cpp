@@ -64,6 +64,8 @@ void fill_uniforms(const Renderer::State& st, const View& view, const lod::Mat4&
      : c % 4 == 2 ? w.z
                   : w.w) = static_cast<float>(st.foam_weights[c]);
   }
+  u.foam_streak = {static_cast<float>(st.foam_drift_mps[0] * st.foam_decay_time_s),
+                   static_cast<float>(st.foam_drift_mps[1] * st.foam_decay_time_s), 0.0f, 0.0f};
 }
 
 // Inverse of a 4×4 column-major matrix by cofactors (double precision).

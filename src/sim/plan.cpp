@@ -207,6 +207,16 @@ SurfaceDescription SimulationPlan::surface() const {
       packing::normal_length_from_roughness(static_cast<float>(config_.roughness)));
   const double stored = std::floor(std::clamp(smoothness, 0.0f, 1.0f) * 255.0 + 0.5) / 255.0;
   d.map_base_normal_length = packing::normal_length_from_smoothness(static_cast<float>(stored));
+  // The foam's drift (W.29): kWindDriftFraction·U10 along the wind sea's mean direction.
+  const FrequencySpectrumParams& wind = config_.sea.wind_sea.spectrum;
+  const double u10 = wind.model == SpectrumModel::pierson_moskowitz ? wind.wind_speed_mps / 1.026
+                                                                    : wind.wind_speed_mps;
+  if (u10 >= 0.5 && u10 <= 60.0) {  // false for NaN: an Hs/Tp sea has no wind to drift with
+    const double theta = config_.sea.wind_sea.direction_rad;
+    d.foam_drift_mps = {kWindDriftFraction * u10 * std::cos(theta),
+                        kWindDriftFraction * u10 * std::sin(theta)};
+  }
+  d.foam_decay_time_s = kWhitecapDecayTimeS;
   return d;
 }
 

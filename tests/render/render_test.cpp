@@ -284,6 +284,11 @@ TEST(Renderer, FoamOnlyWhereTheJacobianIsLow) {
   const int n = 96;
   auto rig = make_rig(c, n, n, false);
   REQUIRE_RIG(rig);
+  // The foam where the map holds it: the wind drift's footprint (docs/waves.md W.31) draws it
+  // downwind of where J is low, which tests/render/foam_streaks_render_test.cpp measures.
+  ocean::SurfaceDescription surface = ocean::SimulationPlan::make(c).value().surface();
+  surface.foam_drift_mps = {0.0, 0.0};
+  ASSERT_TRUE(rig->renderer->configure(surface).ok());
   rig->step(7.0);
   View view = eye_level_view(n, n);
   const double height = 200.0, fov = 2.0 * std::atan(24.0 / height);  // 48 m across

@@ -18,6 +18,7 @@
 #include "seabed.glsl"
 #include "underwater.glsl"
 #include "ripples.glsl"
+#include "foam_streaks.glsl"
 
 // The objects mirrored in the sea level (R.53): colour, coverage in alpha.
 layout(set = 0, binding = OCEAN_RENDER_BINDING_REFLECTION) uniform sampler2D reflection_map;
@@ -98,6 +99,9 @@ void main() {
       plain = shade_of(texture(normal_map, vec3(uv, float(c))));
     else
       plain = shade_of(texture(normal_map, vec3(uv, float(c)), log2(u.footprint_scale)));
+    // The foam drifted downwind over its age (W.31); the hex tiles, beyond D_min, keep the map's.
+    if (u.foam_streak.x != 0.0 || u.foam_streak.y != 0.0)
+      plain.foam = streaked_foam(uv, c, dx * inv_size, dy * inv_size, plain.foam);
     float taps_sum = 0.0;
     if (hex > 0.0) {
       HexTaps taps = hex_taps(uv, c);

@@ -31,6 +31,9 @@ struct mat4 {
 #define OCEAN_RENDER_MAX_CASCADES 8
 // The most short waves drawn as detail normals (R.62): SimulationPlan::short_waves' 16 × 3.
 #define OCEAN_RENDER_MAX_RIPPLES 48
+// The foam's drift footprint (R.11, docs/waves.md W.31): taps at ages (j + ½)·S·τ/K, j < K.
+#define OCEAN_RENDER_FOAM_STREAK_TAPS 16
+#define OCEAN_RENDER_FOAM_STREAK_SPAN 4.0
 // PatchInstance::level of the horizon skirt's single instance (patches use 0 … lod::kMaxLevels).
 #define OCEAN_RENDER_SKIRT_LEVEL 255u
 // Triangles of the hex-tiled cascade lookups per cascade period (R.14): a point and the point
@@ -240,6 +243,9 @@ struct FrameUniforms {
   vec4 air_rayleigh;
   vec4 air_mie;
   RippleUniforms ripples;  // the short waves near the eye (R.62)
+  // The foam's drift over its e-folding time (W.29–W.31): xy = u_d·τ along the wind, (x, z) m;
+  // zero draws each cascade's foam where the map holds it. zw unused.
+  vec4 foam_streak;
 };
 
 // Push constants of the sky pass (std430).
@@ -288,8 +294,10 @@ static_assert(offsetof(FrameUniforms, foam_weights) == 880 + 32 * OCEAN_RENDER_M
 static_assert(offsetof(FrameUniforms, air_rayleigh) == 880 + 36 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, ripples) == 912 + 36 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(RippleUniforms) == 16 * OCEAN_RENDER_MAX_RIPPLES + 16);
-static_assert(sizeof(FrameUniforms) ==
+static_assert(offsetof(FrameUniforms, foam_streak) ==
               928 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
+static_assert(sizeof(FrameUniforms) ==
+              944 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
