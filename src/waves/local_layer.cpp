@@ -277,11 +277,51 @@ void add_wake(const Placed& p, double choppiness, double x, double z, std::array
   d[2] += c * (-v[1] * p.sin_h + v[2] * p.cos_h);
 }
 
-// One hull's foam at world (x, z) (W.20–W.21), in its frame at its placed pose.
-double hull_foam(const KelvinWake& w, const Placed& p, double x, double z) {
-  const double dx = x - p.x, dz = z - p.z;
-  return hull_foam_coverage(w.foam, w.hull_length_m, p.speed_mps, -(dx * p.cos_h + dz * p.sin_h),
-                            -dx * p.sin_h + dz * p.cos_h);
+// (W.21b) Where (x, z) lies along the track an object on a path has left at time t: s the arc
+// length behind the object's placed position to the track's nearest point (negative ahead of it,
+// along its heading), ζ the distance from that point to the left of the travel there. The track
+// is the polyline from the placed position back through the waypoints already passed, newest
+// first, continued straight beyond the oldest; without a path, the straight line of the heading.
+std::array<double, 2> track_coordinates(const KelvinWake& w, const Placed& p, double t, double x,
+                                        double z) {
+  double best = std::numeric_limits<double>::infinity();
+  std::array<double, 2> out{0.0, 0.0};
+  // A piece of the track from (ax, az) backwards along the unit travel direction (ux, uz)
+  // reversed, `length` long (infinite: a ray), starting `s0` metres behind the object.
+  const auto piece = [&](double ax, double az, double ux, double uz, double length, double s0,
+                         bool ahead) {
+    const double dx = x - ax, dz = z - az;
+    double u = ahead ? dx * ux + dz * uz : -(dx * ux + dz * uz);  // metres along the piece
+    u = std::clamp(u, 0.0, length);
+    const double qx = ahead ? ax + u * ux : ax - u * ux, qz = ahead ? az + u * uz : az - u * uz;
+    const double d = std::hypot(x - qx, z - qz);
+    if (d < best) {
+      best = d;
+      out = {ahead ? s0 - u : s0 + u, -(x - qx) * uz + (z - qz) * ux};
+    }
+  };
+  const double inf = std::numeric_limits<double>::infinity();
+  piece(p.x, p.z, p.cos_h, p.sin_h, inf, 0.0, true);  // ahead, along the heading
+  double ax = p.x, az = p.z, ux = p.cos_h, uz = p.sin_h, s0 = 0.0;
+  if (w.path.size() >= 2) {
+    for (std::size_t i = w.path.size(); i-- > 0;) {
+      const Waypoint& q = w.path[i];
+      if (!(q.time_s < t)) continue;  // not yet passed
+      const double len = std::hypot(ax - q.x_m, az - q.z_m);
+      if (len < 1e-9) continue;
+      ux = (ax - q.x_m) / len, uz = (az - q.z_m) / len;
+      piece(ax, az, ux, uz, len, s0, false);
+      s0 += len, ax = q.x_m, az = q.z_m;
+    }
+  }
+  piece(ax, az, ux, uz, inf, s0, false);  // beyond the oldest point passed, straight on
+  return out;
+}
+
+// One hull's foam at world (x, z) (W.20–W.21) at time t, in the frame of its track (W.21b).
+double hull_foam(const KelvinWake& w, const Placed& p, double t, double x, double z) {
+  const auto [s, zeta] = track_coordinates(w, p, t, x, z);
+  return hull_foam_coverage(w.foam, w.hull_length_m, p.speed_mps, s, zeta);
 }
 
 // The footprints' waterline foam at world (x, z) (W.20).
@@ -306,7 +346,7 @@ double LocalLayer::foam_at(double x, double z, double time_s) const {
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     const KelvinWake& w = params_.wakes[i];
     if (w.foam.beam_m > 0.0)
-      c = std::max(c, hull_foam(w, place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s), x, z));
+      c = std::max(c, hull_foam(w, place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s), time_s, x, z));
   }
   return weight * c;
 }
@@ -347,7 +387,7 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
       double foam = footprint_foam(params_.footprints, x, z);
       for (std::size_t i = 0; i < placed.size(); ++i) {
         if (params_.wakes[i].foam.beam_m > 0.0)
-          foam = std::max(foam, hull_foam(params_.wakes[i], placed[i], x, z));
+          foam = std::max(foam, hull_foam(params_.wakes[i], placed[i], time_s, x, z));
       }
       out.foam[row * n + col] = static_cast<float>(weight * foam);
     }

@@ -8,6 +8,7 @@
 // footprint's rim; bad parameters refused by name.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -160,6 +161,53 @@ TEST(HullFoam, WaterlineFoamOnTheFootprintsRim) {
   const int col = column_at(0.0);
   const int row_side = kN / 2 + static_cast<int>(std::lround(1.5 / f.cell));  // ζ ≈ B/2
   EXPECT_GT(f.at(col, row_side), 0.9);
+}
+
+// On a turn the trail follows the track (W.21b): a boat circling at radius 60 m, its path
+// recorded every 2 s. At a point of the track 30 m of arc behind it the foam is the law's for
+// s = 30 m on the centreline, exactly; 30 m straight behind along its present heading, about
+// 7.5 m off the track, where a straight trail would put its centreline, little foam is left.
+TEST(HullFoam, OnATurnTheTrailFollowsTheTrack) {
+  constexpr double kR = 60.0, kDt = 2.0, kNow = 101.0;
+  const double omega = kU / kR;  // rad/s, anticlockwise seen from +y: heading turns towards +z
+  KelvinWake w{.hull_length_m = kL, .peak_height_m = 0.0, .foam = {.beam_m = kB, .lifetime_s = kT}};
+  for (int i = 0; i <= 60; ++i) {
+    const double t = i * kDt;
+    w.path.push_back({.time_s = t, .x_m = kR * std::sin(omega * t),
+                      .z_m = kR * (1.0 - std::cos(omega * t))});
+  }
+  LayerParams p;
+  p.area = {.origin_m = {-200.0, -200.0}, .size_m = 400.0, .resolution = 16, .edge_fraction = 0.05};
+  p.wakes.push_back(w);
+  auto layer = LocalLayer::make(std::move(p));
+  ASSERT_TRUE(layer.ok()) << layer.status().message();
+  // The object's position now, on the chord between the waypoints at 100 s and 102 s (pose_at).
+  const WakePose pose = pose_at(w, kNow);
+  // Walk 30 m back along the polyline: now → waypoint at 100 s → 98 s → ...
+  std::vector<std::array<double, 2>> track{{pose.x_m, pose.z_m}};
+  for (int i = 50; i >= 0; --i) track.push_back({w.path[i].x_m, w.path[i].z_m});
+  double left = 30.0;
+  std::array<double, 2> on_track{};
+  for (std::size_t i = 0; i + 1 < track.size(); ++i) {
+    const double len = std::hypot(track[i + 1][0] - track[i][0], track[i + 1][1] - track[i][1]);
+    if (left <= len) {
+      const double f = left / len;
+      on_track = {track[i][0] + f * (track[i + 1][0] - track[i][0]),
+                  track[i][1] + f * (track[i + 1][1] - track[i][1])};
+      break;
+    }
+    left -= len;
+  }
+  const double expected = hull_foam_coverage(w.foam, kL, pose.speed_mps, 30.0, 0.0);
+  EXPECT_NEAR(layer.value()->foam_at(on_track[0], on_track[1], kNow), expected, 1e-9);
+  EXPECT_GT(expected, 0.2);
+  // Straight behind along the present heading.
+  const double sx = pose.x_m - 30.0 * std::cos(pose.heading_rad),
+               sz = pose.z_m - 30.0 * std::sin(pose.heading_rad);
+  const double off = std::hypot(sx - 0.0, sz - kR) - kR;  // from the circle, ≈ 30²/(2R)
+  EXPECT_GT(off, 6.0);
+  const double straight = layer.value()->foam_at(sx, sz, kNow);
+  EXPECT_LT(straight, 0.05 * expected) << "the trail lies straight behind the boat, not on its track";
 }
 
 TEST(HullFoam, FootprintsFoamTheirRimAtRestAndAreValidated) {
