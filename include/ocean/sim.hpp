@@ -325,6 +325,12 @@ class Backend {
   /// FarNoiseFrame::origin_m says which window it holds. Allocates nothing. Backends without the
   /// map (it is off, or they refuse it at configure) ignore it.
   virtual void set_far_noise_origin(const std::array<double, 2>& origin_m) { (void)origin_m; }
+  /// A hint from a frame loop that step(…, out) follows soon (about 1 ms): brings the state and
+  /// `out`'s arrays that the step reads and writes into the caches of the threads that will
+  /// compute them, so that a frame after an idle gap does not start from cold caches
+  /// (docs/performance.md, paced frames). Changes nothing the step computes; allocates nothing;
+  /// costs about the step's memory traffic in time. The default (GPU backends) does nothing.
+  virtual void warm_caches(const Frame& out) { (void)out; }
 };
 
 /// The result of a height query at a world position (x, z).
@@ -371,6 +377,11 @@ class Simulator {
   void kick(double time_s);
   /// Waits for the kicked frame and publishes it (swaps front and back). No-op if none.
   void wait();
+  /// A hint from a frame loop that the next step or kick follows within about 1–3 ms: wakes
+  /// the runner's workers (TaskRunner::wake) and warms the caches for the back buffer
+  /// (Backend::warm_caches). Call it before waiting for the frame's start (ocean xr: before
+  /// xrWaitFrame), not right before step(). Waits for a kicked frame first; allocates nothing.
+  void prepare_step();
 
   /// The last published frame.
   [[nodiscard]] const Frame& frame() const;

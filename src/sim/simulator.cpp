@@ -105,6 +105,12 @@ void Simulator::wait() {
   front_ = 1 - front_;
 }
 
+void Simulator::prepare_step() {
+  wait();
+  runner_->wake();
+  backend_->warm_caches(frames_[1 - front_]);
+}
+
 const Frame& Simulator::frame() const { return frames_[front_]; }
 
 const Frame& Simulator::back_buffer() const { return frames_[1 - front_]; }

@@ -95,7 +95,8 @@ TEST(BenchCli, FrameIntervalPacesTheFrames) {
 }
 
 // --pacing: one row per period, thread count and runner; 90 and 120 Hz unless --frame-interval
-// gives one; the ratio is the medians' and the rounds' spread brackets their median.
+// gives one; paced without and with the cache warm-up, each ratio the medians' and the rounds'
+// spread bracketing their median.
 TEST(BenchCli, PacingRowsGiveTheRatioAndItsSpread) {
   const ocean_test::CliRun r = ocean_test::run_cli(
       "bench --pacing --json --resolution 16 --cascades 1 --threads 1,2 --min-time 0");
@@ -120,13 +121,25 @@ TEST(BenchCli, PacingRowsGiveTheRatioAndItsSpread) {
     EXPECT_LE(row["round_ratio_median"].get<double>(), row["round_ratio_max"].get<double>());
     EXPECT_GE(row["paced_frames"].get<int>(), 5 * rounds);
     EXPECT_GE(row["back_to_back_frames"].get<int>(), 5 * rounds);
+    const double warmed = row["warmed_ms"].get<double>();
+    EXPECT_GT(warmed, 0.0);
+    EXPECT_DOUBLE_EQ(row["warmed_ratio"].get<double>(), warmed / b2b);
+    EXPECT_LE(row["warmed_round_ratio_min"].get<double>(),
+              row["warmed_round_ratio_median"].get<double>());
+    EXPECT_LE(row["warmed_round_ratio_median"].get<double>(),
+              row["warmed_round_ratio_max"].get<double>());
+    EXPECT_GE(row["warmed_frames"].get<int>(), 5 * rounds);
+    EXPECT_GT(row["warm_up_ms"].get<double>(), 0.0);
+    for (const char* kind : {"paced_stages", "warmed_stages", "back_to_back_stages"})
+      EXPECT_GT(row[kind]["synthesis_ms"].get<double>(), 0.0) << kind;
   }
   const ocean_test::CliRun one = ocean_test::run_cli(
       "bench --pacing --resolution 16 --cascades 1 --threads 1 --min-time 0 --frame-interval 4 "
       "--runner tbb");
   ASSERT_EQ(one.exit_code, 0) << one.err;
-  EXPECT_NE(one.out.find("rounds: median [min, max]"), std::string::npos) << one.out;
-  EXPECT_NE(one.out.find("  250    1    tbb"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("(rounds' median [min, max])"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("   4.00  250    1    tbb"), std::string::npos) << one.out;
+  EXPECT_NE(one.out.find("stages (synthesis, surface, mips; ms)"), std::string::npos) << one.out;
   for (const char* bad : {"bench --pacing --backend vulkan", "bench --pacing --overlap",
                           "bench --pacing --frame-interval 0"}) {
     const ocean_test::CliRun e = ocean_test::run_cli(bad);

@@ -35,8 +35,14 @@ struct Samples {
 
 // Times one round on a configured backend, appending to `out`.
 void time_round(cpu::CpuBackend& backend, Frame& frame, double& t, double min_time, double interval,
-                TaskRunner& runner, Samples& out) {
+                TaskRunner& runner, Samples& out, std::vector<double>* warm_up = nullptr) {
   std::vector<double> synthesis, finalize, mips;
+  const auto warm_body = [&] {
+    const Clock::time_point start = Clock::now();
+    backend.warm_caches(frame);
+    warm_up->push_back(std::chrono::duration<double>(Clock::now() - start).count());
+  };
+  FunctionRef<void()> warm(warm_body);
   const std::vector<double> frames = time_runs(
       min_time,
       [&] {
@@ -46,7 +52,7 @@ void time_round(cpu::CpuBackend& backend, Frame& frame, double& t, double min_ti
         finalize.push_back(backend.last_stage_times().finalize_s);
         mips.push_back(backend.last_stage_times().mips_s);
       },
-      interval, &runner);
+      interval, &runner, warm_up != nullptr ? &warm : nullptr);
   const auto append_timed = [](std::vector<double>& to, const std::vector<double>& from) {
     to.insert(to.end(), from.begin() + 2, from.end());  // without the two warm-up frames
   };
@@ -110,18 +116,26 @@ Result<PacedResult> run_paced_pipeline(const SimulationConfig& config, cpu::CpuO
   cpu::CpuBackend& backend = *c.value().backend;
   Frame& frame = c.value().frame;
   double t = 0.0;
-  Samples paced, back_to_back;
-  std::vector<double> round_ratios;
+  Samples paced, warmed, back_to_back;
+  std::vector<double> round_ratios, warmed_round_ratios, warm_up;
+  const double kind_time = min_time / kPacedRounds;
   for (int round = 0; round < kPacedRounds; ++round) {
-    Samples paced_round, back_to_back_round;
-    time_round(backend, frame, t, min_time / kPacedRounds, 0.0, runner, back_to_back_round);
-    time_round(backend, frame, t, min_time / kPacedRounds, interval, runner, paced_round);
-    round_ratios.push_back(stats_of(paced_round.frames).median_ms /
-                           stats_of(back_to_back_round.frames).median_ms);
-    append(paced, paced_round), append(back_to_back, back_to_back_round);
+    Samples paced_round, warmed_round, back_to_back_round;
+    time_round(backend, frame, t, kind_time, 0.0, runner, back_to_back_round);
+    time_round(backend, frame, t, kind_time, interval, runner, paced_round);
+    time_round(backend, frame, t, kind_time, interval, runner, warmed_round, &warm_up);
+    const double b2b = stats_of(back_to_back_round.frames).median_ms;
+    round_ratios.push_back(stats_of(paced_round.frames).median_ms / b2b);
+    warmed_round_ratios.push_back(stats_of(warmed_round.frames).median_ms / b2b);
+    append(paced, paced_round), append(warmed, warmed_round);
+    append(back_to_back, back_to_back_round);
   }
-  return PacedResult{result_of(paced, backend, frame), result_of(back_to_back, backend, frame),
-                     std::move(round_ratios)};
+  return PacedResult{.paced = result_of(paced, backend, frame),
+                     .warmed = result_of(warmed, backend, frame),
+                     .back_to_back = result_of(back_to_back, backend, frame),
+                     .round_ratios = std::move(round_ratios),
+                     .warmed_round_ratios = std::move(warmed_round_ratios),
+                     .warm_up = stats_of(warm_up)};
 }
 
 }  // namespace ocean::cli::bench

@@ -31,14 +31,20 @@ using Clock = std::chrono::steady_clock;
 // runner's default wake spin (4 ms). A worker woken 1 ms ahead was still slow when the frame
 // began (docs/performance.md, paced frames): 3 ms is the shortest lead measured at full speed.
 constexpr double kWakeLead_s = 3e-3;
+// How long before a paced frame's start the harness calls Backend::warm_caches where a row asks
+// for it (after the wake, on the woken workers). Measured (4 × 256², 1 thread, 90 Hz, a loaded
+// machine): leads of 0.7, 1.5 and 3 ms gave paced / back to back 1.00–1.05, 1.01–1.13 and
+// 1.06–1.15; the warm-up itself takes 0.3–0.7 ms, so 1.5 ms leaves it time to finish.
+constexpr double kWarmLead_s = 1.5e-3;
 
 // Times body() repeatedly: 2 warm-up runs, then at least 5 runs and about min_time seconds
 // (at most 500 runs). With an interval, the runs start that many seconds apart, as frames of a
 // frame loop do (the thread sleeps in between, and wakes `runner` kWakeLead_s before each
-// frame when one is given); min_time then counts the intervals.
+// frame when one is given, then calls warm() kWarmLead_s before it when one is given);
+// min_time then counts the intervals. The samples are body()'s times, warm()'s not included.
 template <typename Body>
 std::vector<double> time_runs(double min_time, Body body, double interval = 0.0,
-                              TaskRunner* runner = nullptr) {
+                              TaskRunner* runner = nullptr, FunctionRef<void()>* warm = nullptr) {
   const auto at = [](Clock::time_point start, double seconds) {
     return start +
            std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(seconds));
@@ -48,6 +54,10 @@ std::vector<double> time_runs(double min_time, Body body, double interval = 0.0,
     if (runner != nullptr && interval > kWakeLead_s) {
       std::this_thread::sleep_until(at(start, interval - kWakeLead_s));
       runner->wake();
+    }
+    if (warm != nullptr && interval > kWarmLead_s) {
+      std::this_thread::sleep_until(at(start, interval - kWarmLead_s));
+      (*warm)();
     }
     std::this_thread::sleep_until(at(start, interval));
   };
@@ -82,14 +92,17 @@ Result<PipelineResult> run_pipeline(const SimulationConfig& config, cpu::CpuOpti
                                     TaskRunner& runner, double min_time, double interval);
 
 struct PacedResult {
-  PipelineResult paced, back_to_back;
-  /// Each round's paced median over its back-to-back median: the ratio's spread.
-  std::vector<double> round_ratios;
+  /// Paced frames with the runner woken ahead only (`paced`) and woken ahead plus
+  /// Backend::warm_caches kWarmLead_s before each frame (`warmed`), and back-to-back frames.
+  PipelineResult paced, warmed, back_to_back;
+  /// Each round's paced (and warmed) median over its back-to-back median: the ratios' spread.
+  std::vector<double> round_ratios, warmed_round_ratios;
+  Stats warm_up;  ///< the warm_caches calls' wall times
 };
 
-/// The same pipeline paced `interval` s apart and back to back, alternated in kPacedRounds
-/// rounds of min_time / kPacedRounds seconds each so that both see the same minutes of a noisy
-/// machine; the medians are over all rounds' frames.
+/// The same pipeline paced `interval` s apart without and with the cache warm-up, and back to
+/// back, alternated in kPacedRounds rounds of min_time / kPacedRounds seconds per kind so that
+/// all three see the same minutes of a noisy machine; the medians are over all rounds' frames.
 constexpr int kPacedRounds = 6;
 Result<PacedResult> run_paced_pipeline(const SimulationConfig& config, cpu::CpuOptions options,
                                        TaskRunner& runner, double min_time, double interval);

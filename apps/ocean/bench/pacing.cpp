@@ -29,8 +29,14 @@ struct PacingRow {
   int threads = 0;
   std::string runner;
   PacedResult result;
-  RatioSpread rounds;
+  RatioSpread rounds, warmed_rounds;
 };
+
+// "synthesis, surface, mips" medians of one kind of frame, ms.
+std::string stages(const PipelineResult& r) {
+  return fixed(r.synthesis.median_ms, 3) + ", " + fixed(r.finalize.median_ms, 3) + ", " +
+         fixed(r.mips.median_ms, 3);
+}
 
 }  // namespace
 
@@ -52,7 +58,8 @@ int run_pacing(const PacingOptions& o) {
                       .threads = runner->concurrency(),
                       .runner = runner_name,
                       .result = r.value(),
-                      .rounds = spread_of(r.value().round_ratios)};
+                      .rounds = spread_of(r.value().round_ratios),
+                      .warmed_rounds = spread_of(r.value().warmed_round_ratios)};
         rows.push_back(std::move(row));
         progress.update(++done);
       }
@@ -65,41 +72,73 @@ int run_pacing(const PacingOptions& o) {
     out["cascades"] = o.cascades;
     out["outputs"] = o.outputs_name;
     out["wake_lead_ms"] = kWakeLead_s * 1e3;
+    out["warm_lead_ms"] = kWarmLead_s * 1e3;
     out["rounds"] = kPacedRounds;
     out["rows"] = nlohmann::ordered_json::array();
+    const auto stage_json = [](const PipelineResult& p) {
+      return nlohmann::ordered_json{{"synthesis_ms", p.synthesis.median_ms},
+                                    {"surface_ms", p.finalize.median_ms},
+                                    {"mips_ms", p.mips.median_ms}};
+    };
     for (const PacingRow& r : rows) {
-      out["rows"].push_back(
-          {{"frame_interval_ms", r.interval_ms},
-           {"threads", r.threads},
-           {"runner", r.runner},
-           {"paced_ms", r.result.paced.frame.median_ms},
-           {"back_to_back_ms", r.result.back_to_back.frame.median_ms},
-           {"paced_ratio", r.result.paced.frame.median_ms / r.result.back_to_back.frame.median_ms},
-           {"round_ratio_median", r.rounds.median},
-           {"round_ratio_min", r.rounds.min},
-           {"round_ratio_max", r.rounds.max},
-           {"paced_frames", r.result.paced.frames},
-           {"back_to_back_frames", r.result.back_to_back.frames}});
+      const PacedResult& p = r.result;
+      const double b2b = p.back_to_back.frame.median_ms;
+      out["rows"].push_back({{"frame_interval_ms", r.interval_ms},
+                             {"threads", r.threads},
+                             {"runner", r.runner},
+                             {"paced_ms", p.paced.frame.median_ms},
+                             {"warmed_ms", p.warmed.frame.median_ms},
+                             {"back_to_back_ms", b2b},
+                             {"paced_ratio", p.paced.frame.median_ms / b2b},
+                             {"warmed_ratio", p.warmed.frame.median_ms / b2b},
+                             {"round_ratio_median", r.rounds.median},
+                             {"round_ratio_min", r.rounds.min},
+                             {"round_ratio_max", r.rounds.max},
+                             {"warmed_round_ratio_median", r.warmed_rounds.median},
+                             {"warmed_round_ratio_min", r.warmed_rounds.min},
+                             {"warmed_round_ratio_max", r.warmed_rounds.max},
+                             {"warm_up_ms", p.warm_up.median_ms},
+                             {"paced_stages", stage_json(p.paced)},
+                             {"warmed_stages", stage_json(p.warmed)},
+                             {"back_to_back_stages", stage_json(p.back_to_back)},
+                             {"paced_frames", p.paced.frames},
+                             {"warmed_frames", p.warmed.frames},
+                             {"back_to_back_frames", p.back_to_back.frames}});
     }
     print_json(out);
     return kExitOk;
   }
   std::cout << "N = " << o.resolution << ", " << o.cascades << " cascades, outputs "
             << o.outputs_name << "; paced frames start a period apart, the runner woken "
-            << fixed(kWakeLead_s * 1e3, 1) << " ms ahead; " << kPacedRounds
-            << " rounds alternate back-to-back and paced frames; times are medians in ms\n";
-  std::cout << std::setw(9) << "period" << std::setw(6) << "Hz" << std::setw(5) << "thr"
-            << std::setw(7) << "runner" << std::setw(9) << "paced" << std::setw(9) << "b2b"
-            << std::setw(7) << "ratio"
-            << "   rounds: median [min, max]\n";
+            << fixed(kWakeLead_s * 1e3, 1) << " ms ahead; warmed: paced, and the backend's cache "
+            << "warm-up called " << fixed(kWarmLead_s * 1e3, 1) << " ms ahead; " << kPacedRounds
+            << " rounds alternate back-to-back, paced and warmed frames; medians in ms, ratios "
+               "to back to back (rounds' median [min, max])\n";
+  std::cout << std::setw(7) << "period" << std::setw(5) << "Hz" << std::setw(5) << "thr"
+            << std::setw(7) << "runner" << std::setw(8) << "b2b" << std::setw(8) << "paced" << std::setw(7) << "ratio"
+            << std::setw(20) << "rounds" << std::setw(8) << "warmed" << std::setw(7) << "ratio"
+            << std::setw(20) << "rounds" << std::setw(9) << "warm-up\n";
+  const auto spread = [](const RatioSpread& r) {
+    return fixed(r.median, 2) + " [" + fixed(r.min, 2) + ", " + fixed(r.max, 2) + "]";
+  };
   for (const PacingRow& r : rows) {
-    std::cout << std::setw(9) << fixed(r.interval_ms, 2) << std::setw(6)
+    const PacedResult& p = r.result;
+    const double b2b = p.back_to_back.frame.median_ms;
+    std::cout << std::setw(7) << fixed(r.interval_ms, 2) << std::setw(5)
               << fixed(1000.0 / r.interval_ms, 0) << std::setw(5) << r.threads << std::setw(7)
-              << r.runner << std::setw(9) << fixed(r.result.paced.frame.median_ms, 3)
-              << std::setw(9) << fixed(r.result.back_to_back.frame.median_ms, 3) << std::setw(7)
-              << fixed(r.result.paced.frame.median_ms / r.result.back_to_back.frame.median_ms, 2)
-              << "   " << fixed(r.rounds.median, 2) << " [" << fixed(r.rounds.min, 2) << ", "
-              << fixed(r.rounds.max, 2) << "]\n";
+              << r.runner << std::setw(8) << fixed(b2b, 3) << std::setw(8)
+              << fixed(p.paced.frame.median_ms, 3) << std::setw(7)
+              << fixed(p.paced.frame.median_ms / b2b, 2) << std::setw(20) << spread(r.rounds)
+              << std::setw(8) << fixed(p.warmed.frame.median_ms, 3) << std::setw(7)
+              << fixed(p.warmed.frame.median_ms / b2b, 2) << std::setw(20)
+              << spread(r.warmed_rounds) << std::setw(9) << fixed(p.warm_up.median_ms, 3) << "\n";
+  }
+  std::cout << "stages (synthesis, surface, mips; ms):\n";
+  for (const PacingRow& r : rows) {
+    std::cout << std::setw(6) << fixed(1000.0 / r.interval_ms, 0) << std::setw(5) << r.threads
+              << std::setw(7) << r.runner << "  b2b " << stages(r.result.back_to_back)
+              << "; paced " << stages(r.result.paced) << "; warmed " << stages(r.result.warmed)
+              << "\n";
   }
   return kExitOk;
 }

@@ -1,8 +1,10 @@
 // `ocean bench --pacing`: the frame budget of a paced frame loop. The CPU pipeline is timed with
 // its frames a display period apart (the harness wakes the runner kWakeLead_s ahead, as a frame
-// loop does) and back to back, alternated in kPacedRounds rounds on the same backend so that both
-// see the same minutes of a noisy machine; each row gives both medians, their ratio and the
-// ratio's spread over the rounds (docs/performance.md, paced frames).
+// loop does), the same with the backend's cache warm-up kWarmLead_s ahead (Backend::warm_caches,
+// as ocean xr does through Simulator::prepare_step), and back to back, alternated in kPacedRounds
+// rounds on the same backend so that all three see the same minutes of a noisy machine; each row
+// gives the medians, the paced/back-to-back ratios and their spread over the rounds, the stages'
+// medians and the warm-up's own time (docs/performance.md, paced frames).
 #pragma once
 
 #include <string>
@@ -20,7 +22,7 @@ struct PacingOptions {
   std::vector<std::string> runners;  ///< tbb, ready
   FrameOutputs outputs;
   std::string outputs_name;  ///< as given: all or textures
-  double min_time = 2.0;     ///< seconds of frames per row, both kinds together
+  double min_time = 2.0;     ///< seconds of frames per row and kind
   bool json = false;
 };
 

@@ -320,10 +320,13 @@ Command add_bench_command(CLI::App& app) {
   cmd->add_flag("--pacing", options->pacing,
                 "the frame budget of a paced frame loop: the CPU pipeline (the first --resolution "
                 "and --cascades, default 256 and 4) at 90 and 120 Hz (or --frame-interval), each "
-                "--threads count and --runner (default ready), paced and back to back in " +
+                "--threads count and --runner (default ready), paced (the runner woken 3 ms "
+                "ahead), paced with the cache warm-up (also Backend::warm_caches 1.5 ms ahead) "
+                "and back to back in " +
                     std::to_string(bench::kPacedRounds) +
-                    " alternated rounds (--min-time: seconds per row, default 2): both medians, "
-                    "their ratio and its spread over the rounds");
+                    " alternated rounds (--min-time: seconds of each kind per row, default 2): "
+                    "the medians, the paced/back-to-back ratios and their spread over the rounds, "
+                    "the stages' medians and the warm-up's time");
   add_option(*cmd, kFarNoiseResolution, options->far_noise_resolution,
              "--overlap: texels per side of the noise map (16…4096); the CPU runs on the first "
              "--threads count (default all)")

@@ -4,7 +4,8 @@
 // included, docs/vr.md V.1–V.2): both eyes in one multiview pass when the device has multiview,
 // each half copied into its eye's swapchain image, else one render per eye.
 // The simulation runs on the ready task runner, woken before xrWaitFrame returns, so that its
-// workers are running when the frame's work starts (docs/performance.md, paced frames).
+// workers are running when the frame's work starts, and its caches are warmed for the step then
+// (Simulator::prepare_step; docs/performance.md, paced frames).
 #include "ocean/xr.hpp"
 
 #include <array>
@@ -104,7 +105,9 @@ int run_xr(const XrOptions& o) {
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
       continue;
     }
-    runner->wake();  // xrWaitFrame returns about a period before display: be ready for it
+    // xrWaitFrame returns about a period before display: wake the workers and warm the caches
+    // for the step that follows it.
+    sim.value()->prepare_step();
     Result<xr::FrameState> f = session.begin_frame();
     if (!f.ok()) return report(f.status());
     const xr::FrameState& frame = f.value();

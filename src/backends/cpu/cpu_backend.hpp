@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <complex>
 #include <cstdint>
 #include <memory>
@@ -123,6 +124,7 @@ class CpuBackendImpl final : public CpuBackend {
   void set_far_noise_origin(const std::array<double, 2>& origin_m) override {
     config_.far_noise.origin_m = origin_m;
   }
+  void warm_caches(const Frame& out) override;
 
  private:
   struct CascadeGroup;
@@ -173,6 +175,7 @@ class CpuBackendImpl final : public CpuBackend {
   FarFieldNoise far_noise_;  ///< fitted at configure when config_.far_noise is on
   double last_time_s_ = 0.0;
   bool has_stepped_ = false;
+  std::atomic<unsigned> warm_sink_{0};  ///< what warm_caches read, so that its loads stay
 };
 
 }  // namespace ocean::cpu
