@@ -53,8 +53,8 @@ vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N) {
   if (seabed.absorption_enabled.a < 0.5 || T.y > -1e-4 || depth >= OCEAN_RENDER_DEEP_M)
     return body;
   vec3 a = seabed.absorption_enabled.rgb;
-  // Light on the bed (R.23), as underwater.glsl computes it for the view from below.
-  vec3 bed = seabed_albedo(P.xz, footprint) * bed_irradiance(depth) / PI;
+  // Light on the bed (R.23), focused by the waves (R.65), as underwater.glsl computes it.
+  vec3 bed = seabed_albedo(P.xz, footprint) * bed_irradiance_at(P.xz, depth) / PI;
   vec3 view = exp(-a * t);
   return body * (1.0 - view * exp(-a * depth)) + bed * view;
 }
