@@ -72,7 +72,8 @@ inline constexpr double kCausticMaxIrradiance = 100.0;
 /// 1.333) and carried in straight lines to the plane. A lattice of spacing δ on the surface,
 /// each cell two triangles, is mapped to the plane by the refracted rays; every triangle that
 /// lands over (x, z) adds its flux (its area times its vertices' mean weight w = N·L/(N_y·L_y))
-/// over the area it lands on; the sum is capped at kCausticMaxIrradiance. Exactly 1 under a
+/// over the area it lands on; the sum is capped at kCausticMaxIrradiance, and a point that no
+/// triangle of the block covers (rays deflected beyond it) takes the mean, 1. Exactly 1 under a
 /// flat surface; its mean over a period of a periodic surface is the lattice's mean w, 1 (where
 /// no point is capped); for a smooth surface it tends, as δ → 0, to w/|det ∂X/∂x| of the ray
 /// mapping x ↦ X (the intensity law), summed over the points whose rays cross there. `sun_dir`

@@ -58,8 +58,10 @@ struct Photon {
 
 // The irradiance a triangle of three photons gives X, over a flat surface's: the flux of the
 // surface triangle (its area times the vertices' mean weight) over the area it lands on, where X
-// lies inside it (folded triangles count with their area's magnitude), else 0.
-double triangle_irradiance(const Photon& a, const Photon& b, const Photon& c, double x, double z) {
+// lies inside it (folded triangles count with their area's magnitude), else 0; `inside` set
+// where X lies inside.
+double triangle_irradiance(const Photon& a, const Photon& b, const Photon& c, double x, double z,
+                           bool& inside) {
   const auto cross = [](double ux, double uz, double vx, double vz) { return ux * vz - uz * vx; };
   double area2 = cross(b.x - a.x, b.z - a.z, c.x - a.x, c.z - a.z);
   double e0 = cross(b.x - a.x, b.z - a.z, x - a.x, z - a.z);
@@ -72,6 +74,7 @@ double triangle_irradiance(const Photon& a, const Photon& b, const Photon& c, do
     e2 = -e2;
   }
   if (!(area2 > 0.0) || e0 < 0.0 || e1 < 0.0 || e2 < 0.0) return 0.0;
+  inside = true;
   return (a.w + b.w + c.w) / 3.0 / area2;  // × the surface triangle's doubled area, by the caller
 }
 
@@ -106,15 +109,19 @@ double caustic_irradiance(const SlopeField& slope, const std::array<double, 3>& 
   // Each lattice cell as two triangles, (a, b, d) and (a, d, c); each surface triangle's doubled
   // area is δ².
   double sum = 0.0;
+  bool covered = false;
   for (int j = 0; j + 1 < side; ++j)
     for (int i = 0; i + 1 < side; ++i) {
       const Photon& a = photons[static_cast<std::size_t>(j * side + i)];
       const Photon& b = photons[static_cast<std::size_t>(j * side + i + 1)];
       const Photon& c = photons[static_cast<std::size_t>((j + 1) * side + i)];
       const Photon& d = photons[static_cast<std::size_t>((j + 1) * side + i + 1)];
-      sum += triangle_irradiance(a, b, d, x_m, z_m) + triangle_irradiance(a, d, c, x_m, z_m);
+      sum += triangle_irradiance(a, b, d, x_m, z_m, covered) +
+             triangle_irradiance(a, d, c, x_m, z_m, covered);
     }
-  return std::min(sum * delta * delta, kCausticMaxIrradiance);
+  // A point no landed triangle of the block covers lies where rays deflected beyond the block
+  // land: it takes the mean, 1, rather than a hole.
+  return covered ? std::min(sum * delta * delta, kCausticMaxIrradiance) : 1.0;
 }
 
 std::array<double, 3> refracted_sun(const std::array<double, 3>& sun_dir) {

@@ -164,6 +164,7 @@ TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
   View v = helpers::eye_level_view(kUnderW, kUnderH);
   v.shading.water_colour = {0.0, 0.0, 0.03};
   v.shading.foam_brightness = 0.0;
+  v.underwater.scattering_per_m = 0.0;  // no sunlight scattered white in the water (R.66)
   // A flat world: on a curved one the skirt meets the patches at T-junctions whose hairline
   // cracks let single pixels of the horizon row through from below (docs/rendering.md R.50).
   v.planet_radius_m = std::numeric_limits<double>::infinity();

@@ -26,7 +26,7 @@ void main() {
   if (ray_stays_in_water(v)) {
     float depth;  // and the sunlight scattered towards the eye on the way (R.66)
     float r = path_to_bed(eye_position(), v, depth);
-    colour = vec4(seen_under_water(eye_position(), v) + sunlit_water(eye_position(), v, r), 1.0);
+    colour = vec4(seen_under_water(eye_position(), v, true) + sunlit_water(eye_position(), v, r), 1.0);
     return;
   }
   vec3 c = sky_radiance(sky_direction_seen(v));  // from the eye's height (R.8d)

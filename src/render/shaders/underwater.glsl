@@ -170,6 +170,8 @@ vec2 caustic_slope(vec2 xz, float spacing_m, DampingSample damping) {
   vec2 s = vec2(0.0);
   int cascades = u.local.calm > 0.5 ? 0 : int(u.cascade_count);
   for (int c = 0; c < cascades; ++c) {
+    // A cascade whose waves are shorter than two cells averages to no slope over a cell.
+    if (u.cascades[c].wavelength_m < 2.0 * spacing_m) continue;
     float texel = u.cascades[c].patch_size_m / u.cascades[c].resolution;
     float lod = clamp(log2(spacing_m / texel), 0.0, u.cascades[c].coarsest_mip);
     vec2 n = textureLod(normal_map, vec3(cascade_uv(xz, c), float(c)), lod).xy * 2.0 - 1.0;
@@ -187,8 +189,9 @@ vec2 caustic_offset(vec3 N, float depth_m) {
 
 // The irradiance a triangle of three photons (landing point xy, flux weight z) gives xz, over a
 // flat surface's, times the surface triangle's doubled area: the vertices' mean weight over the
-// doubled area it lands on where xz lies inside it (folded ones by magnitude), else 0.
-float caustic_triangle(vec3 a, vec3 b, vec3 c, vec2 xz) {
+// doubled area it lands on where xz lies inside it (folded ones by magnitude), else 0; and
+// whether it does (y).
+vec2 caustic_triangle(vec3 a, vec3 b, vec3 c, vec2 xz) {
   float area2 = cross(vec3(b.xy - a.xy, 0.0), vec3(c.xy - a.xy, 0.0)).z;
   vec3 e = vec3(cross(vec3(b.xy - a.xy, 0.0), vec3(xz - a.xy, 0.0)).z,
                 cross(vec3(c.xy - b.xy, 0.0), vec3(xz - b.xy, 0.0)).z,
@@ -197,8 +200,8 @@ float caustic_triangle(vec3 a, vec3 b, vec3 c, vec2 xz) {
     area2 = -area2;
     e = -e;
   }
-  if (!(area2 > 0.0) || min(e.x, min(e.y, e.z)) < 0.0) return 0.0;
-  return (a.z + b.z + c.z) / (3.0 * area2);
+  if (!(area2 > 0.0) || min(e.x, min(e.y, e.z)) < 0.0) return vec2(0.0);
+  return vec2((a.z + b.z + c.z) / (3.0 * area2), 1.0);
 }
 
 // The sun's irradiance on the horizontal plane `depth_m` down at xz over a flat surface's
@@ -226,19 +229,30 @@ float caustic_irradiance(vec2 xz, float depth_m, int half_width) {
       photon[j * side + i] = vec3(x + caustic_offset(N, depth_m), w);
     }
   float sum = 0.0;
+  bool covered = false;
   for (int j = 0; j + 1 < side; ++j)
     for (int i = 0; i + 1 < side; ++i) {
       vec3 a = photon[j * side + i], b = photon[j * side + i + 1];
       vec3 c = photon[(j + 1) * side + i], d = photon[(j + 1) * side + i + 1];
-      sum += caustic_triangle(a, b, d, xz) + caustic_triangle(a, d, c, xz);
+      vec2 abd = caustic_triangle(a, b, d, xz), adc = caustic_triangle(a, d, c, xz);
+      covered = covered || abd.y > 0.0 || adc.y > 0.0;
+      sum += abd.x + adc.x;
     }
-  return min(sum * delta * delta, kCausticMaxIrradiance);
+  // A point no landed triangle of the block covers lies where rays deflected beyond the block
+  // land: it takes the mean, 1, rather than a hole.
+  return covered ? min(sum * delta * delta, kCausticMaxIrradiance) : 1.0;
 }
 
 // Irradiance on a bed `depth_m` down at xz (R.23, R.65): the sun's part focused by the waves.
-vec3 bed_irradiance_at(vec2 xz, float depth_m) {
+// `footprint_m` is how far apart the pixel's neighbours see the bed: where it nears the
+// lattice's spacing the pattern is finer than the pixel and fades to its mean, 1, as the sand's
+// ripples do (seen from above through the waves, the refracted view rays scatter by more).
+vec3 bed_irradiance_at(vec2 xz, float depth_m, float footprint_m) {
   vec3 sky = u.sky_ambient * exp(-u.underwater.absorption_per_m * depth_m);
-  return (bed_irradiance(depth_m) - sky) * caustic_irradiance(xz, depth_m, kCausticHalfWidth) + sky;
+  float fade = clamp(2.0 - 4.0 * footprint_m / caustic_spacing_m(depth_m, kCausticHalfWidth),
+                     0.0, 1.0);
+  float C = fade > 0.0 ? caustic_irradiance(xz, depth_m, kCausticHalfWidth) : 1.0;
+  return (bed_irradiance(depth_m) - sky) * (1.0 + fade * (C - 1.0)) + sky;
 }
 
 // --- light shafts (R.66) -----------------------------------------------------------------------
@@ -257,7 +271,7 @@ float water_phase(float cos_theta) {
 // the attenuation's integral (green), each integrated exactly for its exponential and weighted
 // by the caustics at its middle: under a flat surface (C = 1) the sum is the closed form
 // b·p·E⊥·e^{−a·z_e/μ_w}·(1 − e^{−κ·r})/κ, κ = c − a·v_y/μ_w (sun_single_scattering).
-const int kShaftSamples = 8;
+const int kShaftSamples = 6;
 vec3 sunlit_water(vec3 eye, vec3 dir, float r) {
   vec3 L = u.sun_dir;
   if (L.y <= 0.0 || u.underwater.scattering_per_m <= 0.0) return vec3(0.0);
@@ -303,12 +317,17 @@ float path_to_bed(vec3 eye, vec3 v, out float depth) {
 // What a ray from `eye` under the sea along v, one that meets no surface, sees (R.51, R.52): the
 // seabed where it reaches one (uniform albedo: the sand's ripples are left out) lit through the
 // waves' caustics (R.65), through the water's fog, or the water's own light.
-vec3 seen_under_water(vec3 eye, vec3 v) {
+// `caustics`: false for a ray the waves have reflected (R.50's total internal reflection), whose
+// directions they scramble at a pixel's scale: the pattern would turn into noise there.
+vec3 seen_under_water(vec3 eye, vec3 v, bool caustics) {
   vec3 deep = water_path_radiance(eye_depth(), v);
   float depth;
   float t = path_to_bed(eye, v, depth);
   if (t >= kEndlessPath_m) return deep;
-  vec3 bed = u.underwater.bed_albedo_depth.rgb * bed_irradiance_at(eye.xz + t * v.xz, depth) / PI;
+  // Straight rays from the eye: the pattern is not scrambled as through the waves from above
+  // (and this runs in non-uniform control flow, without screen derivatives).
+  vec3 bed = u.underwater.bed_albedo_depth.rgb *
+             bed_irradiance_at(eye.xz + t * v.xz, depth, caustics ? 0.0 : 1e9) / PI;
   return water_fog(bed, t, -v);
 }
 
@@ -355,7 +374,7 @@ vec3 underside_radiance(vec3 P, vec3 N, vec3 V, float cos_width, float foam) {
   if (cos_i < 1e-3) n_water = normalize(n_water + (1e-3 - cos_i) * V);  // bent back, as above
   cos_i = max(cos_i, 1e-3);
   // Total internal reflection: the water below, or the seabed, mirrored.
-  vec3 depth_light = seen_under_water(P, reflect(-V, n_water));
+  vec3 depth_light = seen_under_water(P, reflect(-V, n_water), false);
   float T = window_transmittance(cos_i, cos_width);
   // The refracted ray (Snell's law), held at grazing beyond the critical angle, where the filtered
   // transmittance of a pixel across the edge still looks through it.
