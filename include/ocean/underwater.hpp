@@ -18,7 +18,10 @@ namespace ocean::render {
 struct Underwater {
   /// Scattering coefficient b of the water, 1/m, [0, 10], the same for every channel: Morel's
   /// (1988, eq. 12) b(550 nm) = 0.30·C^0.62 for a chlorophyll concentration C = 0.1 mg/m³
-  /// (clear open ocean) is 0.072 m⁻¹. Larger: murkier water, a shorter view.
+  /// (clear open ocean) is 0.072 m⁻¹. Larger: murkier water, a shorter view (coastal water
+  /// 0.3–1 m⁻¹). `ocean render --scattering` or a preset's "underwater": {"scattering_per_m"}
+  /// (preset::PictureSettings) set it; the fog (R.51), the light shafts (R.66) and the
+  /// visibility (R.54) follow it.
   double scattering_per_m = 0.072;
 };
 /// invalid_argument naming the field for a value outside the range above or not finite.
