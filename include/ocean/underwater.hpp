@@ -82,8 +82,8 @@ inline constexpr double kCausticMaxIrradiance = 100.0;
 /// mapping x ↦ X (the intensity law), summed over the points whose rays cross there. `sun_dir`
 /// is the unit vector towards the sun (y > 0). Mirrored by `caustic_irradiance` in
 /// shaders/underwater.glsl.
-double caustic_irradiance(const SlopeField& slope, const std::array<double, 3>& sun_dir,
-                          double x_m, double z_m, double depth_m, double spacing_m,
+double caustic_irradiance(const SlopeField& slope, const std::array<double, 3>& sun_dir, double x_m,
+                          double z_m, double depth_m, double spacing_m,
                           int half_width = kCausticHalfWidth);
 
 /// The direction of the sun's light in the water under a flat surface (R.66): Snell's law

@@ -85,9 +85,8 @@ double caustic_spacing_m(double depth_m, int half_width) {
                   std::max(depth_m, 0.0) * kCausticTilt / (static_cast<double>(half_width) - 1.5));
 }
 
-double caustic_irradiance(const SlopeField& slope, const std::array<double, 3>& sun_dir,
-                          double x_m, double z_m, double depth_m, double spacing_m,
-                          int half_width) {
+double caustic_irradiance(const SlopeField& slope, const std::array<double, 3>& sun_dir, double x_m,
+                          double z_m, double depth_m, double spacing_m, int half_width) {
   if (sun_dir[1] <= 0.0) return 1.0;  // no sun: nothing to focus
   const double delta = spacing_m;
   const std::array<double, 2> o0 = ray_offset(sun_dir, {0.0, 1.0, 0.0}, depth_m);

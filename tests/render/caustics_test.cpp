@@ -153,9 +153,10 @@ TEST(Caustics, TheMeanOverAPeriodIsTheSunsIrradiance) {
           hi = std::max(hi, c);
         }
       const double mean = sum / (static_cast<double>(n) * n);
-      std::printf("sun %.0f deg, depth %.0f m, lattice %.3f m: mean E/E0 %.12f (min %.3f, "
-                  "max %.3f)\n",
-                  elevation, depth, delta, mean, lo, hi);
+      std::printf(
+          "sun %.0f deg, depth %.0f m, lattice %.3f m: mean E/E0 %.12f (min %.3f, "
+          "max %.3f)\n",
+          elevation, depth, delta, mean, lo, hi);
       // The grid's error for a function constant on triangles a few grid steps wide; beyond the
       // focus also the energy of the cusps above the cap.
       EXPECT_NEAR(mean, 1.0, hi < kCausticMaxIrradiance ? 1e-3 : 1e-2);
@@ -196,9 +197,10 @@ TEST(Caustics, ReproducesTheJacobianOfTheRefractedRays) {
     worst_weak = std::max(worst_weak, std::abs((got - 1.0) - weak));
     weak_scale = std::max(weak_scale, std::abs(weak));
   }
-  std::printf("Jacobian: largest relative error %.4f (|E/E0 - 1| up to %.3f); weak focusing: "
-              "largest error %.2e of a modulation up to %.2e\n",
-              worst, largest_focus, worst_weak, weak_scale);
+  std::printf(
+      "Jacobian: largest relative error %.4f (|E/E0 - 1| up to %.3f); weak focusing: "
+      "largest error %.2e of a modulation up to %.2e\n",
+      worst, largest_focus, worst_weak, weak_scale);
   EXPECT_LT(worst, 0.01);
   EXPECT_GT(largest_focus, 0.2);  // the cases do focus
   EXPECT_LT(worst_weak, 0.05 * weak_scale);
@@ -211,14 +213,14 @@ TEST(Shafts, TheClosedFormIsTheSingleScatteringIntegral) {
               std::tan(std::asin(std::cos(60.0 * kPi / 180.0) / kWaterIor)), 1e-12);  // Snell
   const double mu_w = -t[1];
   double worst = 0.0;
-  for (const Vec3 view : {Vec3{1.0, 0.0, 0.0}, Vec3{0.6, -0.8, 0.0}, Vec3{-t[0], -t[1], -t[2]},
-                          Vec3{0.0, 0.6, 0.8}})
+  for (const Vec3 view :
+       {Vec3{1.0, 0.0, 0.0}, Vec3{0.6, -0.8, 0.0}, Vec3{-t[0], -t[1], -t[2]}, Vec3{0.0, 0.6, 0.8}})
     for (const double r : {2.0, 15.0, 80.0}) {
       const double depth = 6.0, a = 0.0565, b = 0.2;
       const double closed = sun_single_scattering(sun, view, depth, r, a, b);
       // ∫₀^r b·p(θ)·(1/μ_w)·e^{−a·z(s)/μ_w}·e^{−(a+b)·s} ds, z(s) = depth − s·v_y, midpoint rule.
       const double p = henyey_greenstein_phase(-(t[0] * view[0] + t[1] * view[1] + t[2] * view[2]),
-                                         kWaterPhaseG);
+                                               kWaterPhaseG);
       constexpr int kSteps = 200000;
       double sum = 0.0;
       for (int i = 0; i < kSteps; ++i) {

@@ -238,10 +238,10 @@ TEST(Underwater, TheBedBelowShowsThroughTheWatersFog) {
                          std::numbers::pi * std::exp(-a * 2.0);  // looking down: 3^0
     const double t = std::exp(-(a + b) * 3.0);
     // The sunlight the 3 m of water scatters back up to the eye (R.66).
-    const double shafts = sun[c] * mu_s * (1.0 - fresnel) *
-                          sun_single_scattering(sun_direction(v.shading.sun_azimuth_deg,
-                                                              v.shading.sun_elevation_deg),
-                                                {0.0, -1.0, 0.0}, 2.0, 3.0, a, b);
+    const double shafts =
+        sun[c] * mu_s * (1.0 - fresnel) *
+        sun_single_scattering(sun_direction(v.shading.sun_azimuth_deg, v.shading.sun_elevation_deg),
+                              {0.0, -1.0, 0.0}, 2.0, 3.0, a, b);
     const double expected = bed * t + water * (1.0 - t) + shafts;
     EXPECT_NEAR(hdr[centre + c], expected, 0.01 * expected) << "channel " << c;
   }
@@ -370,7 +370,9 @@ TEST(Underwater, CausticsOnTheBedConserveTheSunsLight) {
   v.camera.fov_y_rad = 90.0 * kDeg;
   v.shading.sun_elevation_deg = 70.0;
   v.shading.water_colour = {0.0, 0.0, 0.0};
-  v.seabed = {.enabled = true, .depth_m = 12.0, .albedo = {0.5, 0.5, 0.5},
+  v.seabed = {.enabled = true,
+              .depth_m = 12.0,
+              .albedo = {0.5, 0.5, 0.5},
               .absorption_per_m = {0.0, 0.0, 0.0}};
   v.underwater.scattering_per_m = 0.0;
   const auto picture = [&]() {
@@ -384,7 +386,8 @@ TEST(Underwater, CausticsOnTheBedConserveTheSunsLight) {
   const std::vector<float> calm = picture();
   const Sky sky(v.shading);
   const double mu_s = std::sin(v.shading.sun_elevation_deg * kDeg);
-  const double sun_h = sky.sun_irradiance_ground()[1] * mu_s * (1.0 - (0.02 + 0.98 * std::pow(1.0 - mu_s, 5.0)));
+  const double sun_h =
+      sky.sun_irradiance_ground()[1] * mu_s * (1.0 - (0.02 + 0.98 * std::pow(1.0 - mu_s, 5.0)));
   const double f = sun_h / (sun_h + sky.sky_irradiance_horizontal()[1]);
   double sum = 0.0, sum_sq = 0.0, lo = 1e9, hi = 0.0, calm_lo = 1e9, calm_hi = 0.0;
   const int n = kSide * kSide;
@@ -399,9 +402,10 @@ TEST(Underwater, CausticsOnTheBedConserveTheSunsLight) {
     calm_hi = std::max(calm_hi, c0);
   }
   const double mean = sum / n, sd = std::sqrt(std::max(sum_sq / n - mean * mean, 0.0));
-  std::printf("caustics on a 12 m bed: mean E/E0 %.4f, sd %.3f, min %.3f, max %.3f (sun's share "
-              "%.2f); calm bed uniform within %.2e\n",
-              mean, sd, lo, hi, f, calm_hi / calm_lo - 1.0);
+  std::printf(
+      "caustics on a 12 m bed: mean E/E0 %.4f, sd %.3f, min %.3f, max %.3f (sun's share "
+      "%.2f); calm bed uniform within %.2e\n",
+      mean, sd, lo, hi, f, calm_hi / calm_lo - 1.0);
   EXPECT_LT(calm_hi / calm_lo - 1.0, 1e-3);  // a Lambertian bed seen through clear water
   EXPECT_NEAR(mean, 1.0, 0.05);
   EXPECT_GT(sd, 0.1);
@@ -450,8 +454,7 @@ TEST(Underwater, LightShaftsFollowTheSingleScatteringIntegral) {
     for (int y = 0; y < kShaftH; ++y)
       for (int x = 0; x < kShaftW; ++x) {
         const auto ray = pixel_ray(v, kShaftW, kShaftH, x, y);
-        const double r =
-            ray[1] > 0.0 ? depth / ray[1] : std::numeric_limits<double>::infinity();
+        const double r = ray[1] > 0.0 ? depth / ray[1] : std::numeric_limits<double>::infinity();
         const std::size_t i = 4 * static_cast<std::size_t>(y * kShaftW + x);
         for (std::size_t c = 0; c < 3; ++c) {
           const double expected =
@@ -466,9 +469,10 @@ TEST(Underwater, LightShaftsFollowTheSingleScatteringIntegral) {
         }
       }
   }
-  std::printf("shafts under a flat surface: largest error against the closed form %.2e (the "
-              "picture spans %.0fx in brightness)\n",
-              worst, brightest / dimmest);
+  std::printf(
+      "shafts under a flat surface: largest error against the closed form %.2e (the "
+      "picture spans %.0fx in brightness)\n",
+      worst, brightest / dimmest);
   EXPECT_LT(worst, 0.01);
   EXPECT_GT(brightest / dimmest, 10.0);  // the phase function's peak is in the picture
 
