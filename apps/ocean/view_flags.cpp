@@ -20,6 +20,8 @@ constexpr NumberOption<double> kPlanetRadius{.flag = "--planet-radius",
                                              .accept = Accept::in_range,
                                              .lo = 1000.0,
                                              .says = "a radius >= 1000 m, or inf for a flat sea"};
+constexpr NumberOption<double> kScattering{
+    .flag = "--scattering", .accept = Accept::in_range, .lo = 0.0, .hi = 10.0};
 constexpr NumberOption<int> kFarNoiseResolution{
     .flag = "--far-noise-resolution", .accept = Accept::integer_in_range, .lo = 0, .hi = 4096};
 constexpr NumberOption<double> kOceanSize{.flag = "--ocean-size",
@@ -50,6 +52,11 @@ void add_view_flags(CLI::App& command, ViewFlags& f, const std::string& what) {
              "beyond DMIN (0: none, the noise evaluated per pixel; else " +
                  std::to_string(render::kFarNoiseMinResolution) + "..4096, default " +
                  f.far_noise_resolution + ")");
+  add_option(command, kScattering, f.scattering,
+             "the water's scattering coefficient b, 1/m (0..10): its turbidity, which sets the "
+             "fog, the light shafts and the visibility 4.8/(a + b) under water (default: the "
+             "preset's underwater.scattering_per_m, else 0.072, clear open ocean; coastal water "
+             "about 0.3-1)");
   add_option(command, kPlanetRadius, f.planet_radius,
              "radius of the planet whose curvature bends the sea and sets the horizon, m; inf: "
              "a flat sea (default " +
@@ -139,6 +146,13 @@ Status parse_view_flags(const ViewFlags& f, int min_size, render::SceneParams& s
       return invalid_argument("--far-field-range = " + excerpt(f.far_field_range) +
                               ": DMIN must be below DMAX");
   }
+  if (!f.scattering.empty()) {
+    Result<double> b = parse(kScattering, f.scattering);
+    if (!b.ok()) return b.status();
+    v.underwater.scattering_per_m = b.value();
+  } else if (f.preset_scattering) {
+    v.underwater.scattering_per_m = *f.preset_scattering;
+  }
   Result<render::DebugView> debug = render::parse_debug_view(f.view);
   if (!debug.ok())
     return invalid_argument("--view = " + excerpt(f.view) + " is not a view: must be " +
@@ -174,6 +188,7 @@ Status parse_view_flags(const ViewFlags& flags, const SimulationFlags& sim, int 
   if (const auto& range = picture.value().far_field_range_m)
     with_preset.preset_far_field =
         render::FarFieldRange{.near_m = (*range)[0], .far_m = (*range)[1]};
+  with_preset.preset_scattering = picture.value().scattering_per_m;
   return parse_view_flags(with_preset, min_size, scene, view);
 }
 

@@ -27,6 +27,9 @@ struct ViewFlags {
   std::string planet_radius = "6371000";  // R of the sea's curvature (R.15), m; inf: flat
   std::string environment;                // equirectangular HDR OpenEXR sky (R.17); empty: none
   std::string mesh = "quadtree";          // quadtree or tessellation (R.40–R.42)
+  // The water's scattering b, 1/m (R.51, R.66); empty: the preset's, else clear open ocean's.
+  std::string scattering;
+  std::optional<double> preset_scattering;  // the preset's underwater.scattering_per_m
   bool validation = false;
   SphereFlags sphere;  // --sphere, --latitude, --longitude, --altitude
 };
@@ -34,7 +37,8 @@ struct ViewFlags {
 void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what);
 
 /// Size, backend and validation into `scene`; camera, quality, ocean size, far-field range
-/// (--far-field-range, else flags.preset_far_field, else render::FarFieldRange's default) and
+/// (--far-field-range, else flags.preset_far_field, else render::FarFieldRange's default), the
+/// water's scattering (--scattering, else flags.preset_scattering, else render::Underwater's) and
 /// debug view into `view` (its shading is left alone); the far field's noise map
 /// (--far-noise-resolution) into scene.config.far_noise, its window around the camera and sized
 /// for the range (render::far_noise_window; off on a sphere, which draws no far field). `min_size`
@@ -42,7 +46,8 @@ void add_view_flags(CLI::App& command, ViewFlags& flags, const std::string& what
 Status parse_view_flags(const ViewFlags& flags, int min_size, render::SceneParams& scene,
                         render::View& view);
 /// The same under the picture settings of the preset `sim` names (resolve_picture): its
-/// far_field_range where --far-field-range is not given.
+/// far_field_range where --far-field-range is not given, its underwater.scattering_per_m where
+/// --scattering is not.
 Status parse_view_flags(const ViewFlags& flags, const SimulationFlags& sim, int min_size,
                         render::SceneParams& scene, render::View& view);
 

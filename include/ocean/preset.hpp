@@ -9,6 +9,7 @@
 // Besides the simulation a preset may carry settings of the picture (PictureSettings), which
 // `ocean render` and `ocean view` use unless their flags say otherwise:
 //   "far_field_range": [D_min, D_max]   where the far field takes over, m (docs/rendering.md R.13)
+//   "underwater": {"scattering_per_m": b}   the water's turbidity, 1/m (R.51, R.54, R.66)
 //
 // Bounds: a preset holds at most kMaxPresetBytes bytes and nests objects and arrays at most
 // kMaxPresetDepth deep; both are checked before a document is built, so neither a huge file
@@ -48,7 +49,14 @@ inline constexpr int kFifoWaitMs = 5000;
 struct PictureSettings {
   /// "far_field_range": [D_min, D_max], m: finite, 0 ≤ D_min < D_max (render::FarFieldRange).
   std::optional<std::array<double, 2>> far_field_range_m;
+  /// "underwater": {"scattering_per_m": b}, 1/m in [0, kMaxScatteringPerM]: the water's
+  /// scattering coefficient (render::Underwater::scattering_per_m; 0.072 of clear open ocean by
+  /// default, about 0.3–1 in coastal water). It sets the fog, the light shafts and the
+  /// visibility 4.8/(a + b) (docs/rendering.md R.51, R.54, R.66).
+  std::optional<double> scattering_per_m;
 };
+/// The largest scattering coefficient a preset may set, 1/m (render::Underwater's range).
+inline constexpr double kMaxScatteringPerM = 10.0;
 
 /// The most spaces a level to_json indents by; a larger indent is written as this one.
 inline constexpr int kMaxPresetIndent = 64;
@@ -116,7 +124,10 @@ class Document {
   [[nodiscard]] Result<SimulationConfig> config() const;
   /// The picture settings the document carries. Errors (invalid_argument), one line:
   ///   "far_field_range: expected [DMIN, DMAX], two distances in metres, got <value>",
-  ///   "far_field_range: [<a>, <b>] must be finite distances with 0 <= DMIN < DMAX".
+  ///   "far_field_range: [<a>, <b>] must be finite distances with 0 <= DMIN < DMAX",
+  ///   "underwater.scattering_per_m = <b> is out of range: must be in [0, 10] 1/m" (also
+  ///   "underwater: expected an object", "underwater.<key>: unknown key", "underwater.
+  ///   scattering_per_m: expected a number").
   [[nodiscard]] Result<PictureSettings> picture() const;
 
  private:

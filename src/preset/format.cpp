@@ -238,7 +238,8 @@ Result<SimulationConfig> from_value(const Json& document) {
     }
     r.adopt(nr.finish());
   }
-  r.child("far_field_range");  // a picture setting: picture_from_value reads it
+  r.child("far_field_range");  // picture settings: picture_from_value reads them
+  r.child("underwater");
   if (Status s = r.finish(); !s.ok()) return s;
   if (Result<PictureSettings> picture = picture_from_value(document); !picture.ok())
     return picture.status();
@@ -254,9 +255,34 @@ Result<SimulationConfig> from_value(const Json& document) {
   return c;
 }
 
+// "underwater": {"scattering_per_m": b}: the water's turbidity (render::Underwater).
+static Status underwater_from_value(const Json& document, PictureSettings& p) {
+  const auto it = document.find("underwater");
+  if (it == document.end() || it->is_null()) return {};
+  if (!it->is_object())
+    return invalid_argument("underwater: expected an object, got " + excerpt(it->dump()));
+  for (const auto& [key, value] : it->items()) {
+    if (key != "scattering_per_m")
+      return invalid_argument("underwater." + excerpt(key) +
+                              ": unknown key: must be scattering_per_m");
+    if (value.is_null()) continue;
+    if (!value.is_number())
+      return invalid_argument("underwater.scattering_per_m: expected a number, got " +
+                              excerpt(value.dump()));
+    const double b = value.get<double>();
+    if (!std::isfinite(b) || b < 0.0 || b > kMaxScatteringPerM)
+      return invalid_argument("underwater.scattering_per_m = " + format_number(b) +
+                              " is out of range: must be in [0, " +
+                              format_number(kMaxScatteringPerM) + "] 1/m");
+    p.scattering_per_m = b;
+  }
+  return {};
+}
+
 Result<PictureSettings> picture_from_value(const Json& document) {
   PictureSettings p;
   if (!document.is_object()) return p;
+  if (Status s = underwater_from_value(document, p); !s.ok()) return s;
   const auto it = document.find("far_field_range");
   if (it == document.end() || it->is_null()) return p;
   const Json& range = *it;

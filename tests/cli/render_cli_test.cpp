@@ -243,6 +243,12 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --far-field-range -5,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range nan,100", "--far-field-range");
   ocean_test::expect_usage_error("render --far-field-range 100", "two distances DMIN,DMAX");
+  // The water's scattering (R.54, R.66): 0..10 1/m, from the flag or a preset.
+  ocean_test::expect_usage_error("render --scattering -0.1", "--scattering");
+  ocean_test::expect_usage_error("render --scattering 11", "--scattering");
+  ocean_test::expect_usage_error("render --scattering nan", "--scattering");
+  ocean_test::expect_usage_error("render --set underwater.scattering_per_m=12",
+                                 "underwater.scattering_per_m");
   // The far field's noise map (R.13b): 0 (none) or 128..4096 texels, a window within 1e6 m.
   ocean_test::expect_usage_error("render --far-noise-resolution 100", "[128, 4096]");
   ocean_test::expect_usage_error("render --far-noise-resolution -1", "--far-noise-resolution");

@@ -265,4 +265,30 @@ TEST(PresetDocument, FarFieldRangeIsAPictureSettingValidatedInOneLine) {
   EXPECT_TRUE(preset::from_json(R"({"far_field_range": [0, 2]})").ok());
 }
 
+// "underwater": {"scattering_per_m": b}, the water's turbidity: a picture setting read by
+// Document::picture(), in [0, 10] 1/m; a bad value or an unknown key is one line naming the
+// field, from picture() and config() alike.
+TEST(PresetDocument, UnderwaterScatteringIsAPictureSettingValidatedInOneLine) {
+  preset::Document doc;
+  EXPECT_FALSE(doc.picture().value().scattering_per_m.has_value());
+  ASSERT_TRUE(doc.set("underwater.scattering_per_m=0.45").ok());
+  ASSERT_TRUE(doc.config().ok()) << doc.config().status().message();
+  ASSERT_TRUE(doc.picture().value().scattering_per_m.has_value());
+  EXPECT_EQ(*doc.picture().value().scattering_per_m, 0.45);
+  EXPECT_EQ(preset::to_json(doc.config().value()), preset::to_json(SimulationConfig{}));
+  ASSERT_TRUE(doc.set("underwater.scattering_per_m=0").ok());  // no scattering at all
+  EXPECT_EQ(*doc.picture().value().scattering_per_m, 0.0);
+  EXPECT_TRUE(preset::from_json(R"({"underwater": {"scattering_per_m": 10}})").ok());
+  for (const char* bad : {R"({"underwater": {"scattering_per_m": -0.1}})",
+                          R"({"underwater": {"scattering_per_m": 10.5}})",
+                          R"({"underwater": {"scattering_per_m": "murky"}})",
+                          R"({"underwater": {"turbidity": 1}})", R"({"underwater": 3})"}) {
+    const std::string message = error_of(bad);
+    EXPECT_EQ(message.rfind("underwater", 0), 0u) << bad << ": " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  EXPECT_NE(error_of(R"({"underwater": {"scattering_per_m": 11}})").find("[0, 10]"),
+            std::string::npos);
+}
+
 }  // namespace

@@ -164,6 +164,7 @@ TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
   View v = helpers::eye_level_view(kUnderW, kUnderH);
   v.shading.water_colour = {0.0, 0.0, 0.03};
   v.shading.foam_brightness = 0.0;
+  v.underwater.scattering_per_m = 0.0;  // no sunlight scattered white in the water (R.66)
   // A flat world: on a curved one the skirt meets the patches at T-junctions whose hairline
   // cracks let single pixels of the horizon row through from below (docs/rendering.md R.50).
   v.planet_radius_m = std::numeric_limits<double>::infinity();
@@ -206,7 +207,8 @@ TEST(Underwater, TheWaterlineShowsNoGapAndNoBar) {
 
 // Looking straight down from 2 m under calm water onto a 5 m bed (R.51, R.52): the bed's light
 // (R.23's irradiance at 5 m on its albedo, Lambertian) through 3 m of water, plus the water's own
-// light looking down from 2 m, as R.51 writes them with the stated absorption and scattering.
+// light looking down from 2 m, as R.51 writes them with the stated absorption and scattering, and
+// the sunlight the path scatters back (R.66).
 TEST(Underwater, TheBedBelowShowsThroughTheWatersFog) {
   constexpr int kSide = 33;
   auto rig = make_rig(kSide, kSide);
@@ -235,7 +237,12 @@ TEST(Underwater, TheBedBelowShowsThroughTheWatersFog) {
     const double water = v.shading.water_colour[c] * (sun[c] * mu_s * (1.0 - fresnel) + sky_e[c]) /
                          std::numbers::pi * std::exp(-a * 2.0);  // looking down: 3^0
     const double t = std::exp(-(a + b) * 3.0);
-    const double expected = bed * t + water * (1.0 - t);
+    // The sunlight the 3 m of water scatters back up to the eye (R.66).
+    const double shafts =
+        sun[c] * mu_s * (1.0 - fresnel) *
+        sun_single_scattering(sun_direction(v.shading.sun_azimuth_deg, v.shading.sun_elevation_deg),
+                              {0.0, -1.0, 0.0}, 2.0, 3.0, a, b);
+    const double expected = bed * t + water * (1.0 - t) + shafts;
     EXPECT_NEAR(hdr[centre + c], expected, 0.01 * expected) << "channel " << c;
   }
 }
@@ -305,6 +312,184 @@ TEST(Underwater, ContrastFadesByTheBeamAttenuation) {
       v.seabed.absorption_per_m[0] + v.underwater.scattering_per_m,
       v.seabed.absorption_per_m[1] + v.underwater.scattering_per_m,
       v.seabed.absorption_per_m[2] + v.underwater.scattering_per_m, visibility, measured);
+}
+
+// A sea of short waves for the caustics: cascades of 47 and 11 m (texels 0.73 and 0.17 m) of a
+// 7 m/s wind sea, Hs about 0.8 m.
+std::unique_ptr<Rig> make_short_wave_rig(int width, int height) {
+  auto rig = std::make_unique<Rig>();
+  rig->ctx = helpers::graphics_context();
+  if (rig->ctx == nullptr) return nullptr;
+  ocean::SimulationConfig c = helpers::small_config();
+  c.cascade_patch_sizes_m = {47.0, 11.0};
+  c.sea.wind_sea.spectrum.wind_speed_mps = 7.0;
+  c.sea.wind_sea.spectrum.fetch_m = 20e3;
+  rig->sim = ocean::make_simulator(c).value();
+  rig->sim->step(3.0);
+  rig->renderer = Renderer::make(rig->ctx, {.width = width, .height = height}).value();
+  EXPECT_TRUE(rig->renderer->configure(ocean::SimulationPlan::make(c).value().surface()).ok());
+  EXPECT_TRUE(rig->renderer->upload(rig->sim->frame()).ok());
+  return rig;
+}
+
+// The unit view direction of pixel (x, y) (row 0 at the top) of a camera without roll.
+std::array<double, 3> pixel_ray(const View& v, int width, int height, int x, int y) {
+  const auto& p = v.camera.position_m;
+  const auto& t = v.camera.target_m;
+  std::array<double, 3> f{t.x - p.x, t.y - p.y, t.z - p.z};
+  const auto normalise = [](std::array<double, 3> a) {
+    const double l = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    return std::array<double, 3>{a[0] / l, a[1] / l, a[2] / l};
+  };
+  f = normalise(f);
+  const std::array<double, 3> r = normalise({-f[2], 0.0, f[0]});  // f × up
+  const std::array<double, 3> up{r[1] * f[2] - r[2] * f[1], r[2] * f[0] - r[0] * f[2],
+                                 r[0] * f[1] - r[1] * f[0]};
+  const double half = std::tan(0.5 * v.camera.fov_y_rad);
+  const double sx = (2.0 * (x + 0.5) / width - 1.0) * half * width / height;
+  const double sy = (1.0 - 2.0 * (y + 0.5) / height) * half;
+  return normalise({f[0] + sx * r[0] + sy * up[0], f[1] + sx * r[1] + sy * up[1],
+                    f[2] + sx * r[2] + sy * up[2]});
+}
+
+// Caustics on the bed seen from below (R.65): looking straight down from 2 m under the short
+// waves onto a bed 12 m down, through water that neither absorbs nor scatters, has no light of
+// its own and so shows the bed's light unchanged. Per pixel the waves' picture over the calm
+// one's is f·C + (1 − f), C the caustic irradiance and f the sun's share of the bed's light
+// (R.23): the mean of C over the 20 m × 20 m of bed in view is the sun's irradiance (energy is
+// conserved: the exact mean over a period is 1, here a sample of some 400 caustic cells), and
+// the waves do focus it (bright lines, dark cells).
+TEST(Underwater, CausticsOnTheBedConserveTheSunsLight) {
+  constexpr int kSide = 96;
+  auto rig = make_short_wave_rig(kSide, kSide);
+  if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  View v = helpers::eye_level_view(kSide, kSide);
+  v.planet_radius_m = std::numeric_limits<double>::infinity();
+  v.camera.position_m = {0.0, -2.0, 0.0};
+  v.camera.target_m = {1e-3, -10.0, 0.0};  // straight down
+  v.camera.fov_y_rad = 90.0 * kDeg;
+  v.shading.sun_elevation_deg = 70.0;
+  v.shading.water_colour = {0.0, 0.0, 0.0};
+  v.seabed = {.enabled = true,
+              .depth_m = 12.0,
+              .albedo = {0.5, 0.5, 0.5},
+              .absorption_per_m = {0.0, 0.0, 0.0}};
+  v.underwater.scattering_per_m = 0.0;
+  const auto picture = [&]() {
+    std::vector<float> hdr;
+    EXPECT_TRUE(rig->renderer->draw(v).ok());
+    EXPECT_TRUE(rig->renderer->read_hdr(hdr).ok());
+    return hdr;
+  };
+  const std::vector<float> waves = picture();
+  rig->renderer->set_calm(true);
+  const std::vector<float> calm = picture();
+  const Sky sky(v.shading);
+  const double mu_s = std::sin(v.shading.sun_elevation_deg * kDeg);
+  const double sun_h =
+      sky.sun_irradiance_ground()[1] * mu_s * (1.0 - (0.02 + 0.98 * std::pow(1.0 - mu_s, 5.0)));
+  const double f = sun_h / (sun_h + sky.sky_irradiance_horizontal()[1]);
+  double sum = 0.0, sum_sq = 0.0, lo = 1e9, hi = 0.0, calm_lo = 1e9, calm_hi = 0.0;
+  const int n = kSide * kSide;
+  for (int i = 0; i < n; ++i) {
+    const double c0 = calm[4 * static_cast<std::size_t>(i) + 1];
+    const double C = (waves[4 * static_cast<std::size_t>(i) + 1] / c0 - (1.0 - f)) / f;
+    sum += C;
+    sum_sq += C * C;
+    lo = std::min(lo, C);
+    hi = std::max(hi, C);
+    calm_lo = std::min(calm_lo, c0);
+    calm_hi = std::max(calm_hi, c0);
+  }
+  const double mean = sum / n, sd = std::sqrt(std::max(sum_sq / n - mean * mean, 0.0));
+  std::printf(
+      "caustics on a 12 m bed: mean E/E0 %.4f, sd %.3f, min %.3f, max %.3f (sun's share "
+      "%.2f); calm bed uniform within %.2e\n",
+      mean, sd, lo, hi, f, calm_hi / calm_lo - 1.0);
+  EXPECT_LT(calm_hi / calm_lo - 1.0, 1e-3);  // a Lambertian bed seen through clear water
+  EXPECT_NEAR(mean, 1.0, 0.05);
+  EXPECT_GT(sd, 0.1);
+  EXPECT_GT(hi, 1.3);
+  EXPECT_LT(lo, 0.8);
+}
+
+// Light shafts under a flat surface (R.66): from 5 and 10 m deep, looking up towards the sun
+// under a black sky into water with no light of its own, each pixel shows only the sunlight its
+// path scatters once towards the eye, E_h·sun_single_scattering: b·p(θ)/μ_w·e^{−a·z/μ_w}·
+// (1 − e^{−κ·r})/κ per channel, r the path to the surface (or endless, below the horizon), with
+// the phase function's forward peak towards the refracted sun in the picture. Under waves the
+// shafts vary from pixel to pixel about the same mean.
+TEST(Underwater, LightShaftsFollowTheSingleScatteringIntegral) {
+  constexpr int kShaftW = 64, kShaftH = 48;
+  auto rig = make_short_wave_rig(kShaftW, kShaftH);
+  if (rig == nullptr) OCEAN_SKIP_OR_FAIL("no Vulkan device");
+  const Environment black{.width = 4, .height = 2, .rgb = std::vector<float>(24, 0.0f)};
+  ASSERT_TRUE(rig->renderer->set_environment(&black).ok());
+  View v = helpers::eye_level_view(kShaftW, kShaftH);
+  v.planet_radius_m = std::numeric_limits<double>::infinity();
+  v.shading.sun_elevation_deg = 60.0;
+  v.shading.sun_azimuth_deg = 0.0;  // the sun over +x: its light runs towards −x
+  v.shading.water_colour = {0.0, 0.0, 0.0};
+  v.shading.foam_brightness = 0.0;
+  v.underwater.scattering_per_m = 0.3;  // coastal water
+  v.camera.fov_y_rad = 80.0 * kDeg;
+  const auto look_from = [&](double depth) {
+    // Towards +x, 30° up: the refracted sun's source, 68° up, lies near the top row.
+    v.camera.position_m = {0.0, -depth, 0.0};
+    v.camera.target_m = {10.0, -depth + 10.0 * std::tan(30.0 * kDeg), 0.0};
+    std::vector<float> hdr;
+    EXPECT_TRUE(rig->renderer->draw(v).ok());
+    EXPECT_TRUE(rig->renderer->read_hdr(hdr).ok());
+    return hdr;
+  };
+  rig->renderer->set_calm(true);
+  const Sky sky(v.shading);
+  const auto sun = sun_direction(v.shading.sun_azimuth_deg, v.shading.sun_elevation_deg);
+  const double mu_s = sun[1], fresnel = 0.02 + 0.98 * std::pow(1.0 - mu_s, 5.0);
+  double worst = 0.0, brightest = 0.0, dimmest = 1e9;
+  std::vector<float> shallow;
+  for (const double depth : {5.0, 10.0}) {
+    const std::vector<float> hdr = look_from(depth);
+    if (depth == 5.0) shallow = hdr;
+    for (int y = 0; y < kShaftH; ++y)
+      for (int x = 0; x < kShaftW; ++x) {
+        const auto ray = pixel_ray(v, kShaftW, kShaftH, x, y);
+        const double r = ray[1] > 0.0 ? depth / ray[1] : std::numeric_limits<double>::infinity();
+        const std::size_t i = 4 * static_cast<std::size_t>(y * kShaftW + x);
+        for (std::size_t c = 0; c < 3; ++c) {
+          const double expected =
+              sky.sun_irradiance_ground()[c] * mu_s * (1.0 - fresnel) *
+              sun_single_scattering(sun, ray, depth, r, v.seabed.absorption_per_m[c],
+                                    v.underwater.scattering_per_m);
+          worst = std::max(worst, std::abs(hdr[i + c] - expected) / expected);
+          if (c == 1) {
+            brightest = std::max(brightest, expected);
+            dimmest = std::min(dimmest, expected);
+          }
+        }
+      }
+  }
+  std::printf(
+      "shafts under a flat surface: largest error against the closed form %.2e (the "
+      "picture spans %.0fx in brightness)\n",
+      worst, brightest / dimmest);
+  EXPECT_LT(worst, 0.01);
+  EXPECT_GT(brightest / dimmest, 10.0);  // the phase function's peak is in the picture
+
+  rig->renderer->set_calm(false);
+  const std::vector<float> waves = look_from(5.0);
+  double sum = 0.0, sum_sq = 0.0;
+  const int n = kShaftW * kShaftH;
+  for (int i = 0; i < n; ++i) {
+    const std::size_t g = 4 * static_cast<std::size_t>(i) + 1;
+    const double r = waves[g] / shallow[g];
+    sum += r;
+    sum_sq += r * r;
+  }
+  const double mean = sum / n, sd = std::sqrt(std::max(sum_sq / n - mean * mean, 0.0));
+  std::printf("shafts under waves over a flat surface's: mean %.4f, sd %.4f\n", mean, sd);
+  EXPECT_NEAR(mean, 1.0, 0.1);
+  EXPECT_GT(sd, 0.02);
 }
 
 TEST(Underwater, RefusesBadOptics) {

@@ -55,6 +55,9 @@ void main() {
   vec3 F_sun = schlick(f0, max(dot(V, H), 0.0));
   vec3 diffuse_albedo = base * (1.0 - metallic);
   vec3 sun = u.sun_ground * n_dot_l * (D * G_over * F_sun + (1.0 - F_sun) * diffuse_albedo / PI);
+  bool submerged = !mirrored && under_surface(world_pos);
+  if (submerged)  // the waves' caustics on what lies under them (R.65)
+    sun *= caustic_irradiance(world_pos.xz, -world_pos.y, kCausticHalfWidth);
 
   // Sky: a diffuse hemisphere and the reflected sky (R.21).
   vec3 F_env = schlick(f0, n_dot_v);
@@ -66,8 +69,8 @@ void main() {
   vec3 c = sun + (1.0 - F_env) * sky_diffuse + sky_specular;
 
   if (!mirrored) {
-    if (under_surface(world_pos) && under_surface(u.camera_pos_m))  // both in the water (R.51)
-      c = water_fog(c, distance_m, V);
+    if (submerged && under_surface(u.camera_pos_m))  // both in the water (R.51, R.66)
+      c = seen_through_water(c, distance_m, -V);
     else
       c = mix(aerial_perspective(c, world_pos.y, distance_m, -V), fog_colour(-V),
               horizon_fog_seen(distance_m, world_pos.y, V));

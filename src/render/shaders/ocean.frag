@@ -246,7 +246,7 @@ void main() {
   }
 
   if (below) {  // the underside, through the water between it and the camera (R.50, R.51)
-    c = water_fog(underside_radiance(world_pos, N_up, V, cos_width, foam), distance_m, V);
+    c = seen_through_water(underside_radiance(world_pos, N_up, V, cos_width, foam), distance_m, -V);
   } else {  // the air between (R.8b), then the horizon fog (Paleologue 2024, R.8)
     c = aerial_perspective(c, height, distance_m, -V);
     c = mix(c, fog_colour(-V), horizon_fog_seen(distance_m, height, V));

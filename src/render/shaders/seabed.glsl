@@ -48,13 +48,19 @@ vec3 through_water(vec3 body, vec3 P0, vec3 V, vec3 N) {
   depth = bed_depth_at(P0.xz + t * T.xz, seabed.albedo_depth.a);
   t = max(P0.y + depth, 0.0) / max(-T.y, 1e-4);
   vec3 P = P0 + t * T;
+  // The caustics (R.65) are looked up where the ray refracted by the mean surface lands: the
+  // waves' own scrambling of the view, at a pixel's scale, would turn their pattern into noise.
+  vec3 T_mean = refract(-V, vec3(0.0, 1.0, 0.0), 1.0 / kWaterIor);
+  vec2 P_mean = P0.xz + (max(P0.y + depth, 0.0) / max(-T_mean.y, 1e-4)) * T_mean.xz;
   // Derivatives in uniform control flow, before any pixel leaves.
   vec2 footprint = max(abs(dFdx(P.xz)), abs(dFdy(P.xz))) * u.footprint_scale;
+  vec2 mean_footprint = max(abs(dFdx(P_mean)), abs(dFdy(P_mean))) * u.footprint_scale;
   if (seabed.absorption_enabled.a < 0.5 || T.y > -1e-4 || depth >= OCEAN_RENDER_DEEP_M)
     return body;
   vec3 a = seabed.absorption_enabled.rgb;
-  // Light on the bed (R.23), as underwater.glsl computes it for the view from below.
-  vec3 bed = seabed_albedo(P.xz, footprint) * bed_irradiance(depth) / PI;
+  // Light on the bed (R.23), focused by the waves (R.65), as underwater.glsl computes it.
+  vec3 bed = seabed_albedo(P.xz, footprint) *
+             bed_irradiance_at(P_mean, depth, max(mean_footprint.x, mean_footprint.y)) / PI;
   vec3 view = exp(-a * t);
   return body * (1.0 - view * exp(-a * depth)) + bed * view;
 }

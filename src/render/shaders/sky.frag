@@ -24,7 +24,9 @@ void main() {
   // A ray that meets no surface lies in the water all along when it ends under the sea: the
   // pixel looks into the depth (R.50, R.51).
   if (ray_stays_in_water(v)) {
-    colour = vec4(seen_under_water(eye_position(), v), 1.0);
+    float depth;  // and the sunlight scattered towards the eye on the way (R.66)
+    float r = path_to_bed(eye_position(), v, depth);
+    colour = vec4(seen_under_water(eye_position(), v, true) + sunlit_water(eye_position(), v, r), 1.0);
     return;
   }
   vec3 c = sky_radiance(sky_direction_seen(v));  // from the eye's height (R.8d)
