@@ -13,26 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "capi_check.h"
 #include "ocean/ocean.h"
 
-static int g_failures = 0;
-
-#define CHECK(cond)                                                            \
-  do {                                                                         \
-    if (!(cond)) {                                                             \
-      fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++g_failures;                                                            \
-    }                                                                          \
-  } while (0)
-
-#define REQUIRE_OK(call)                                                                        \
-  do {                                                                                          \
-    ocean_status s_ = (call);                                                                   \
-    if (s_ != OCEAN_OK) {                                                                       \
-      fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, ocean_last_error()); \
-      exit(1);                                                                                  \
-    }                                                                                           \
-  } while (0)
 
 /* Every field of every cascade through the device pointer against the host readback; returns
  * the bytes compared. */

@@ -22,9 +22,9 @@
 #include <string.h>
 #include <vulkan/vulkan.h>
 
+#include "capi_check.h"
 #include "ocean/ocean.h"
 
-static int g_failures = 0;
 /* Warnings and errors of the Khronos validation layer (where installed) about any call on the
  * test's device, the library's included; the test fails on any. */
 static int g_validation_messages = 0;
@@ -50,23 +50,6 @@ static int has_layer(const char* name) {
   }
   return 0;
 }
-
-#define CHECK(cond)                                                            \
-  do {                                                                         \
-    if (!(cond)) {                                                             \
-      fprintf(stderr, "%s:%d: CHECK failed: %s\n", __FILE__, __LINE__, #cond); \
-      ++g_failures;                                                            \
-    }                                                                          \
-  } while (0)
-
-#define REQUIRE_OK(call)                                                                        \
-  do {                                                                                          \
-    ocean_status s_ = (call);                                                                   \
-    if (s_ != OCEAN_OK) {                                                                       \
-      fprintf(stderr, "%s:%d: %s failed: %s\n", __FILE__, __LINE__, #call, ocean_last_error()); \
-      exit(1);                                                                                  \
-    }                                                                                           \
-  } while (0)
 
 #define REQUIRE_VK(call)                                                                      \
   do {                                                                                        \

@@ -45,18 +45,7 @@ TapMoments tap_moments() {
   return {m1 / w_sum, m2 / w_sum - (m1 / w_sum) * (m1 / w_sum)};
 }
 
-View top_down() {
-  View view;
-  view.camera = {.position_m = {0.0, kHeight, 0.0},
-                 .target_m = {1e-3 * kHeight, 0.0, 0.0},
-                 .fov_y_rad = 50.0 * std::numbers::pi / 180.0,
-                 .aspect = 1.0,
-                 .near_m = 0.5,
-                 .far_m = 1e5};
-  view.shading = ocean::render::sky_preset("clear").value();
-  view.debug = ocean::render::DebugView::normals;
-  return view;
-}
+View top_down() { return ocean::render::testing::top_down_debug_view(kHeight); }
 
 // The drawn foam at world (x, 0, z), bilinear between pixel centres of the HDR alpha.
 double foam_at(const std::vector<float>& hdr, const View& view, double x, double z) {

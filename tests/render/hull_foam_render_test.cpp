@@ -47,15 +47,7 @@ TEST(HullFoamRender, TrailWidthFromAboveIsTheLaws) {
   ASSERT_TRUE(layer.ok()) << layer.status().message();
   s.simulator().set_local_layer(std::move(layer).value());
   ASSERT_TRUE(s.step(kTime).ok());
-  View view;
-  view.camera = {.position_m = {0.0, kTrailHeight, 0.0},
-                 .target_m = {1e-3 * kTrailHeight, 0.0, 0.0},
-                 .fov_y_rad = 50.0 * std::numbers::pi / 180.0,
-                 .aspect = 1.0,
-                 .near_m = 0.5,
-                 .far_m = 1e5};
-  view.shading = ocean::render::sky_preset("clear").value();
-  view.debug = ocean::render::DebugView::normals;
+  const View view = ocean::render::testing::top_down_debug_view(kTrailHeight);
   ASSERT_TRUE(s.renderer().draw(view).ok());
   std::vector<float> hdr;
   ASSERT_TRUE(s.renderer().read_hdr(hdr).ok());

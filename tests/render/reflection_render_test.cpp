@@ -147,10 +147,7 @@ constexpr std::array<double, 3> kBoxSize{6.0, 2.4, 2.4};
 constexpr std::array<double, 3> kEye{0.0, 2.5, 0.0};
 constexpr std::array<double, 3> kTarget{30.0, 0.0, 5.0};
 
-double decode(double srgb8) {  // IEC 61966-2-1, 0..255 → linear
-  const double c = srgb8 / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+using ocean::render::testing::srgb8_to_linear;
 
 // Luminance of the moderate sea at `time_s` without and with the box, drawn `factor` times
 // larger and resolved.
@@ -190,7 +187,8 @@ std::array<std::vector<double>, 2> pictures(int factor, double time_s) {
     y.resize(static_cast<std::size_t>(kPicW) * kPicH);
     for (std::size_t i = 0; i < y.size(); ++i) {
       const std::uint8_t* p = &resolved.value()[4 * i];
-      y[i] = 0.2126 * decode(p[0]) + 0.7152 * decode(p[1]) + 0.0722 * decode(p[2]);
+      y[i] = 0.2126 * srgb8_to_linear(p[0]) + 0.7152 * srgb8_to_linear(p[1]) +
+             0.0722 * srgb8_to_linear(p[2]);
     }
   }
   const ocean::vk::Context& ctx = *scene.value()->context();

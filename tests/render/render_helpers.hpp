@@ -88,6 +88,27 @@ inline View eye_level_view(int width, int height) {
   return v;
 }
 
+/// A square picture straight down from `height_m` over the origin (50° field of view, +x up the
+/// picture) in the normals debug view: the shading normal as colour, the foam in alpha.
+inline View top_down_debug_view(double height_m) {
+  View view;
+  view.camera = {.position_m = {0.0, height_m, 0.0},
+                 .target_m = {1e-3 * height_m, 0.0, 0.0},
+                 .fov_y_rad = 50.0 * std::numbers::pi / 180.0,
+                 .aspect = 1.0,
+                 .near_m = 0.5,
+                 .far_m = 1e5};
+  view.shading = render::sky_preset("clear").value();
+  view.debug = render::DebugView::normals;
+  return view;
+}
+
+/// An 8-bit sRGB code (0..255) in linear light (IEC 61966-2-1).
+inline double srgb8_to_linear(double code) {
+  const double c = code / 255.0;
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
 /// Mean and largest absolute difference of two RGBA8 pictures of equal size, in LSB.
 struct PictureDifference {
   double mean = 0.0;

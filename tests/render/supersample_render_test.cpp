@@ -26,10 +26,7 @@ namespace {
 
 using ocean::render::resolve_supersampled;
 
-double decode(double srgb8) {  // IEC 61966-2-1, 0..255 → linear
-  const double c = srgb8 / 255.0;
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
+using ocean::render::testing::srgb8_to_linear;
 
 // A constant picture resolves to itself; a block of black and white to the sRGB code of their
 // linear mean (not of their codes' mean, 128); alpha is averaged as stored; bad sizes are refused.
@@ -45,7 +42,7 @@ TEST(Supersample, ResolveAveragesInLinearLight) {
   ASSERT_TRUE(half.ok());
   // Linear 0.5 is sRGB 0.7354 → 187.5 → 188.
   EXPECT_EQ(half.value(), (std::vector<std::uint8_t>{188, 188, 188, 128}));
-  EXPECT_NEAR(decode(188), 0.5, 0.003);
+  EXPECT_NEAR(srgb8_to_linear(188), 0.5, 0.003);
   const std::vector<float> hdr = {1, 2, 3, 4, 3, 2, 1, 0};
   auto mean = resolve_supersampled(std::span<const float>(hdr), 2, 1, 1);
   ASSERT_TRUE(mean.ok());
@@ -120,7 +117,8 @@ std::vector<std::vector<double>> render_luminance(const Drawing& how,
     std::vector<double> y(static_cast<std::size_t>(kW) * kH);
     for (std::size_t i = 0; i < y.size(); ++i) {
       const std::uint8_t* p = &resolved.value()[4 * i];
-      y[i] = 0.2126 * decode(p[0]) + 0.7152 * decode(p[1]) + 0.0722 * decode(p[2]);
+      y[i] = 0.2126 * srgb8_to_linear(p[0]) + 0.7152 * srgb8_to_linear(p[1]) +
+             0.0722 * srgb8_to_linear(p[2]);
     }
     out.push_back(std::move(y));
   }

@@ -26,16 +26,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 using Rig = helpers::ValidatedRig;
 
 std::unique_ptr<Rig> make_rig(int width, int height) {
-  auto rig = std::make_unique<Rig>();
-  rig->ctx = helpers::graphics_context();
-  if (rig->ctx == nullptr) return nullptr;
-  const ocean::SimulationConfig c = helpers::small_config();
-  rig->sim = ocean::make_simulator(c).value();
-  rig->sim->step(3.0);
-  rig->renderer = Renderer::make(rig->ctx, {.width = width, .height = height}).value();
-  EXPECT_TRUE(rig->renderer->configure(ocean::SimulationPlan::make(c).value().surface()).ok());
-  EXPECT_TRUE(rig->renderer->upload(rig->sim->frame()).ok());
-  return rig;
+  return helpers::make_rig(helpers::graphics_context(), helpers::small_config(), width, height);
 }
 
 // Looking straight up from 3 m under calm water at a uniform grey sky, through water that neither
@@ -317,19 +308,11 @@ TEST(Underwater, ContrastFadesByTheBeamAttenuation) {
 // A sea of short waves for the caustics: cascades of 47 and 11 m (texels 0.73 and 0.17 m) of a
 // 7 m/s wind sea, Hs about 0.8 m.
 std::unique_ptr<Rig> make_short_wave_rig(int width, int height) {
-  auto rig = std::make_unique<Rig>();
-  rig->ctx = helpers::graphics_context();
-  if (rig->ctx == nullptr) return nullptr;
   ocean::SimulationConfig c = helpers::small_config();
   c.cascade_patch_sizes_m = {47.0, 11.0};
   c.sea.wind_sea.spectrum.wind_speed_mps = 7.0;
   c.sea.wind_sea.spectrum.fetch_m = 20e3;
-  rig->sim = ocean::make_simulator(c).value();
-  rig->sim->step(3.0);
-  rig->renderer = Renderer::make(rig->ctx, {.width = width, .height = height}).value();
-  EXPECT_TRUE(rig->renderer->configure(ocean::SimulationPlan::make(c).value().surface()).ok());
-  EXPECT_TRUE(rig->renderer->upload(rig->sim->frame()).ok());
-  return rig;
+  return helpers::make_rig(helpers::graphics_context(), c, width, height);
 }
 
 // The unit view direction of pixel (x, y) (row 0 at the top) of a camera without roll.
