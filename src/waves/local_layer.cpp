@@ -9,6 +9,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "kelvin_table.hpp"
 #include "ocean/waves.hpp"
@@ -277,31 +278,20 @@ void add_wake(const Placed& p, double choppiness, double x, double z, std::array
   d[2] += c * (-v[1] * p.sin_h + v[2] * p.cos_h);
 }
 
-// (W.21b) Where (x, z) lies along the track an object on a path has left at time t: s the arc
-// length behind the object's placed position to the track's nearest point (negative ahead of it,
-// along its heading), ζ the distance from that point to the left of the travel there. The track
-// is the polyline from the placed position back through the waypoints already passed, newest
-// first, continued straight beyond the oldest; without a path, the straight line of the heading.
-std::array<double, 2> track_coordinates(const KelvinWake& w, const Placed& p, double t, double x,
-                                        double z) {
-  double best = std::numeric_limits<double>::infinity();
-  std::array<double, 2> out{0.0, 0.0};
-  // A piece of the track from (ax, az) backwards along the unit travel direction (ux, uz)
-  // reversed, `length` long (infinite: a ray), starting `s0` metres behind the object.
-  const auto piece = [&](double ax, double az, double ux, double uz, double length, double s0,
-                         bool ahead) {
-    const double dx = x - ax, dz = z - az;
-    double u = ahead ? dx * ux + dz * uz : -(dx * ux + dz * uz);  // metres along the piece
-    u = std::clamp(u, 0.0, length);
-    const double qx = ahead ? ax + u * ux : ax - u * ux, qz = ahead ? az + u * uz : az - u * uz;
-    const double d = std::hypot(x - qx, z - qz);
-    if (d < best) {
-      best = d;
-      out = {ahead ? s0 - u : s0 + u, -(x - qx) * uz + (z - qz) * ux};
-    }
-  };
+// (W.21b) The track an object on a path has left at time t, as pieces: the polyline from the
+// placed position back through the waypoints already passed, newest first, continued straight
+// beyond the oldest; without a path, the straight line of the heading. Each piece runs from
+// (ax, az) backwards against the unit travel direction (ux, uz), `length` long (infinite: a
+// ray), starting s0 metres behind the object; the first, `ahead`, runs forwards along the
+// heading (s negative). Made once per placement, read for every point.
+struct TrackPiece {
+  double ax = 0.0, az = 0.0, ux = 1.0, uz = 0.0, length = 0.0, s0 = 0.0;
+  bool ahead = false;
+};
+
+std::vector<TrackPiece> track_of(const KelvinWake& w, const Placed& p, double t) {
   const double inf = std::numeric_limits<double>::infinity();
-  piece(p.x, p.z, p.cos_h, p.sin_h, inf, 0.0, true);  // ahead, along the heading
+  std::vector<TrackPiece> pieces{{p.x, p.z, p.cos_h, p.sin_h, inf, 0.0, true}};
   double ax = p.x, az = p.z, ux = p.cos_h, uz = p.sin_h, s0 = 0.0;
   if (w.path.size() >= 2) {
     for (std::size_t i = w.path.size(); i-- > 0;) {
@@ -310,17 +300,38 @@ std::array<double, 2> track_coordinates(const KelvinWake& w, const Placed& p, do
       const double len = std::hypot(ax - q.x_m, az - q.z_m);
       if (len < 1e-9) continue;
       ux = (ax - q.x_m) / len, uz = (az - q.z_m) / len;
-      piece(ax, az, ux, uz, len, s0, false);
+      pieces.push_back({ax, az, ux, uz, len, s0, false});
       s0 += len, ax = q.x_m, az = q.z_m;
     }
   }
-  piece(ax, az, ux, uz, inf, s0, false);  // beyond the oldest point passed, straight on
+  pieces.push_back({ax, az, ux, uz, inf, s0, false});  // beyond the oldest point passed
+  return pieces;
+}
+
+// Where (x, z) lies along a track: s the arc length behind the object to the track's nearest
+// point, ζ the distance from that point to the left of the travel there.
+std::array<double, 2> track_coordinates(const std::vector<TrackPiece>& track, double x, double z) {
+  double best = std::numeric_limits<double>::infinity();
+  std::array<double, 2> out{0.0, 0.0};
+  for (const TrackPiece& k : track) {
+    const double dx = x - k.ax, dz = z - k.az;
+    double u = k.ahead ? dx * k.ux + dz * k.uz : -(dx * k.ux + dz * k.uz);  // metres along it
+    u = std::clamp(u, 0.0, k.length);
+    const double qx = k.ahead ? k.ax + u * k.ux : k.ax - u * k.ux,
+                 qz = k.ahead ? k.az + u * k.uz : k.az - u * k.uz;
+    const double d = std::hypot(x - qx, z - qz);
+    if (d < best) {
+      best = d;
+      out = {k.ahead ? k.s0 - u : k.s0 + u, -(x - qx) * k.uz + (z - qz) * k.ux};
+    }
+  }
   return out;
 }
 
-// One hull's foam at world (x, z) (W.20–W.21) at time t, in the frame of its track (W.21b).
-double hull_foam(const KelvinWake& w, const Placed& p, double t, double x, double z) {
-  const auto [s, zeta] = track_coordinates(w, p, t, x, z);
+// One hull's foam at world (x, z) (W.20–W.21), in the frame of its track (W.21b).
+double hull_foam(const KelvinWake& w, const Placed& p, const std::vector<TrackPiece>& track,
+                 double x, double z) {
+  const auto [s, zeta] = track_coordinates(track, x, z);
   return hull_foam_coverage(w.foam, w.hull_length_m, p.speed_mps, s, zeta);
 }
 
@@ -345,8 +356,10 @@ double LocalLayer::foam_at(double x, double z, double time_s) const {
   double c = footprint_foam(params_.footprints, x, z);
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     const KelvinWake& w = params_.wakes[i];
-    if (w.foam.beam_m > 0.0)
-      c = std::max(c, hull_foam(w, place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s), time_s, x, z));
+    if (w.foam.beam_m > 0.0) {
+      const Placed p = place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
+      c = std::max(c, hull_foam(w, p, track_of(w, p, time_s), x, z));
+    }
   }
   return weight * c;
 }
@@ -372,8 +385,11 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
   out.displacement.assign(3 * n * n, 0.0f);
   out.foam.assign(n * n, 0.0f);
   std::vector<Placed> placed;
-  for (std::size_t i = 0; i < params_.wakes.size(); ++i)
+  std::vector<std::vector<TrackPiece>> tracks;
+  for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     placed.push_back(place(params_.wakes[i], impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s));
+    tracks.push_back(track_of(params_.wakes[i], placed.back(), time_s));
+  }
   for (std::size_t row = 0; row < n; ++row) {
     for (std::size_t col = 0; col < n; ++col) {
       const auto [x, z] = cell_centre(area, static_cast<int>(col), static_cast<int>(row));
@@ -387,7 +403,7 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
       double foam = footprint_foam(params_.footprints, x, z);
       for (std::size_t i = 0; i < placed.size(); ++i) {
         if (params_.wakes[i].foam.beam_m > 0.0)
-          foam = std::max(foam, hull_foam(params_.wakes[i], placed[i], time_s, x, z));
+          foam = std::max(foam, hull_foam(params_.wakes[i], placed[i], tracks[i], x, z));
       }
       out.foam[row * n + col] = static_cast<float>(weight * foam);
     }
