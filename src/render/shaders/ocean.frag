@@ -19,6 +19,7 @@
 #include "underwater.glsl"
 #include "ripples.glsl"
 #include "foam_streaks.glsl"
+#include "whitecaps.h"
 
 // The objects mirrored in the sea level (R.53): colour, coverage in alpha.
 layout(set = 0, binding = OCEAN_RENDER_BINDING_REFLECTION) uniform sampler2D reflection_map;
@@ -165,6 +166,13 @@ void main() {
       no_foam -= u.foam_weights[c / 4][c % 4] * sh.foam;
     else
       no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
+  }
+  // The sea's breaking probability drawn as white patches, its mean kept (R.11b).
+  if (u.foam_weighted > 0.5 && u.whitecaps.count > 0.0) {
+    vec2 r = world_xz - u.camera_pos_m.xz;
+    float g, v, s2;
+    whitecap_field(u.whitecaps, r.x, r.y, dx.x, dx.y, dy.x, dy.y, g, v, s2);
+    no_foam = 1.0 - whitecap_patch(clamp(1.0 - no_foam, 0.0, 1.0), g, v, s2);
   }
   ripples_at(world_xz, dx, dy, slope, variance);  // the short waves the pixel resolves (R.62)
   vec2 local_slope;  // wakes and waveforms (R.19): what they change in slope and foam adds

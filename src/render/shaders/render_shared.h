@@ -34,6 +34,8 @@ struct mat4 {
 // The foam's drift footprint (R.11, docs/waves.md W.31): taps at ages (j + ½)·S·τ/K, j < K.
 #define OCEAN_RENDER_FOAM_STREAK_TAPS 16
 #define OCEAN_RENDER_FOAM_STREAK_SPAN 4.0
+// The sines of the field that places whitecaps as patches (R.11b).
+#define OCEAN_RENDER_WHITECAP_WAVES 48
 // PatchInstance::level of the horizon skirt's single instance (patches use 0 … lod::kMaxLevels).
 #define OCEAN_RENDER_SKIRT_LEVEL 255u
 // Triangles of the hex-tiled cascade lookups per cascade period (R.14): a point and the point
@@ -190,6 +192,15 @@ struct RippleUniforms {
   float ripple_pad0, ripple_pad1, ripple_pad2;
 };
 
+// The sea's whitecaps as patches (R.11b): the sines of a Gaussian field g of unit variance, per
+// sine (k_x, k_z, amplitude, phase at the camera and the frame's time); count 0 draws each
+// cascade's breaking probability as it is.
+struct WhitecapUniforms {
+  vec4 waves[OCEAN_RENDER_WHITECAP_WAVES];
+  float count;
+  float whitecap_pad0, whitecap_pad1, whitecap_pad2;
+};
+
 // Everything per frame, one uniform buffer (std140).
 struct FrameUniforms {
   mat4 view_proj;  // lod::view_projection of the camera, column-major
@@ -246,6 +257,7 @@ struct FrameUniforms {
   // The foam's drift over its e-folding time (W.29–W.31): xy = u_d·τ along the wind, (x, z) m;
   // zero draws each cascade's foam where the map holds it. zw unused.
   vec4 foam_streak;
+  WhitecapUniforms whitecaps;  // the sea's whitecaps as patches (R.11b)
 };
 
 // Push constants of the sky pass (std430).
@@ -296,8 +308,12 @@ static_assert(offsetof(FrameUniforms, ripples) == 912 + 36 * OCEAN_RENDER_MAX_CA
 static_assert(sizeof(RippleUniforms) == 16 * OCEAN_RENDER_MAX_RIPPLES + 16);
 static_assert(offsetof(FrameUniforms, foam_streak) ==
               928 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
-static_assert(sizeof(FrameUniforms) ==
+static_assert(offsetof(FrameUniforms, whitecaps) ==
               944 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
+static_assert(sizeof(WhitecapUniforms) == 16 * OCEAN_RENDER_WHITECAP_WAVES + 16);
+static_assert(sizeof(FrameUniforms) == 960 + 36 * OCEAN_RENDER_MAX_CASCADES +
+                                           16 * OCEAN_RENDER_MAX_RIPPLES +
+                                           16 * OCEAN_RENDER_WHITECAP_WAVES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
