@@ -45,12 +45,13 @@ double swash_elevation_m(const Runup& runup, double phase) {
 
 double swash_alongshore_phase(double x_m, double z_m, double l0_m) {
   if (!(l0_m > 0.0)) return 0.0;
-  // (W.43): two slow waves of phase along the shore, 0.45·L0 and 0.29·L0 long, in directions
+  // (W.43): two slow waves of phase along the shore, 1.7·L0 and 1.1·L0 long, in directions
   // 37° and 120° from +x: chosen values, so that the swash of neighbouring stretches of beach
-  // arrives at different times without one period of the pattern showing.
+  // arrives at different times (a cycle apart over about L0/2, as obliquely incident waves
+  // reach the shore) without one period of the pattern showing.
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  return 0.3 * std::sin(kTwoPi * (0.8 * x_m + 0.6 * z_m) / (0.45 * l0_m)) +
-         0.2 * std::sin(kTwoPi * (-0.5 * x_m + 0.866 * z_m) / (0.29 * l0_m) + 1.9);
+  return 0.35 * std::sin(kTwoPi * (0.8 * x_m + 0.6 * z_m) / (1.7 * l0_m)) +
+         0.15 * std::sin(kTwoPi * (-0.5 * x_m + 0.866 * z_m) / (1.1 * l0_m) + 1.9);
 }
 
 }  // namespace ocean::waves

@@ -9,6 +9,7 @@
 #define OCEAN_RENDER_SWASH_GLSL
 
 #include "damping.glsl"
+#include "far_noise.h"
 
 // The steepest foreshore the law is applied at (waves::kMaxForeshoreSlope).
 const float kMaxForeshoreSlope = 0.2;
@@ -37,8 +38,21 @@ float swash_elevation(vec4 runup, float phase) {
 float swash_alongshore_phase(vec2 p, float l0_m) {
   if (!(l0_m > 0.0)) return 0.0;
   const float kTwoPi = 6.28318531;
-  return 0.3 * sin(kTwoPi * dot(vec2(0.8, 0.6), p) / (0.45 * l0_m)) +
-         0.2 * sin(kTwoPi * dot(vec2(-0.5, 0.866), p) / (0.29 * l0_m) + 1.9);
+  return 0.35 * sin(kTwoPi * dot(vec2(0.8, 0.6), p) / (1.7 * l0_m)) +
+         0.15 * sin(kTwoPi * dot(vec2(-0.5, 0.866), p) / (1.1 * l0_m) + 1.9);
+}
+
+// Value noise in [0, 1] on a unit lattice (the far field's integer hash), bilinear with a
+// smoothstep fade: the swash's foam patches.
+float swash_noise(vec2 p) {
+  vec2 i = floor(p), f = p - i;
+  f = f * f * (3.0 - 2.0 * f);
+  ivec2 c = ivec2(i);
+  float a = float(far_hash(uint(c.x) ^ far_hash(uint(c.y))) >> 8u) / 16777216.0;
+  float b = float(far_hash(uint(c.x + 1) ^ far_hash(uint(c.y))) >> 8u) / 16777216.0;
+  float d = float(far_hash(uint(c.x) ^ far_hash(uint(c.y + 1))) >> 8u) / 16777216.0;
+  float e = float(far_hash(uint(c.x + 1) ^ far_hash(uint(c.y + 1))) >> 8u) / 16777216.0;
+  return mix(mix(a, b, f.x), mix(d, e, f.x), f.y);
 }
 
 struct Swash {
@@ -80,10 +94,16 @@ Swash swash_at(vec2 xz, float height_m) {
     s.covered = 1.0;
     float depth = level - height_m;
     s.sheet_m = min(0.3 * depth, 0.1);  // a lens thinning to its tip, a few cm deep
-    // Foam: full at the running tip, thinning behind it, and less as the backwash drains.
-    float tip = exp(-depth / (0.25 * range));
-    float draining = phase < 0.5 ? 1.0 : 1.0 - 1.2 * (phase - 0.5);
-    s.foam = max(0.9 * mix(0.2, 1.0, tip) * draining, 0.1);
+    // Foam: a line along the running tip, patches behind it (drawn in a frame that moves with
+    // the tip: across the shore the distance behind it, (level − h)/β), fewer as the backwash
+    // drains; a tenth at least, the sheet's aerated water.
+    float tip = exp(-depth / (0.04 * range));
+    float draining = phase < 0.5 ? 1.0 : 1.0 - 1.4 * (phase - 0.5);
+    vec2 up = beta > 1e-4 ? grad / beta : vec2(1.0, 0.0);
+    vec2 p = 1.5 * (xz - u.damping.origin_m - up * dot(up, xz - u.damping.origin_m) -
+                    up * (depth / max(beta, 0.02)));
+    float patches = smoothstep(0.45, 0.8, 0.65 * swash_noise(p) + 0.35 * swash_noise(3.1 * p));
+    s.foam = max(max(0.85 * tip, 0.7 * patches * exp(-depth / (0.5 * range))) * draining, 0.1);
     s.wet = s.film = 1.0;
     return s;
   }
