@@ -239,7 +239,7 @@ void main() {
 
   if (damping.depth_m < 0.0 && !below) {  // land (R.64): sand under the same sun and sky
     N_up = land_normal(world_xz);
-    Swash swash = swash_at(world_xz, -damping.depth_m);  // the run-up over it (R.67)
+    Swash swash = swash_at(world_xz, -damping.depth_m, footprint);  // the run-up over it (R.67)
     foam = swash.foam;
     // Wet sand, darker: where the swash wets it, else up to half the significant height above
     // the mean level.

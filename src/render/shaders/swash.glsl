@@ -65,8 +65,9 @@ struct Swash {
   float film;       // the water film's share of the surface: 1 under the sheet, draining behind
 };
 
-// The swash over land of height `height_m` above the mean sea level at xz (R.67).
-Swash swash_at(vec2 xz, float height_m) {
+// The swash over land of height `height_m` above the mean sea level at xz (R.67); footprint_m
+// the pixel's width on the ground, over which the foam's patches are filtered.
+Swash swash_at(vec2 xz, float height_m, float footprint_m) {
   Swash s = Swash(false, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
   float l0 = u.damping.swash_wavelength_m;
   if (!(l0 > 0.0) || !(u.hs_m > 0.0)) return s;
@@ -102,7 +103,10 @@ Swash swash_at(vec2 xz, float height_m) {
     vec2 up = beta > 1e-4 ? grad / beta : vec2(1.0, 0.0);
     vec2 p = 1.5 * (xz - u.damping.origin_m - up * dot(up, xz - u.damping.origin_m) -
                     up * (depth / max(beta, 0.02)));
-    float patches = smoothstep(0.45, 0.8, 0.65 * swash_noise(p) + 0.35 * swash_noise(3.1 * p));
+    // Each octave fades to its mean where its cells are under 4 pixels wide (as R.13's).
+    vec2 fade = clamp(2.0 - 4.0 * footprint_m * vec2(1.5, 4.65), 0.0, 1.0);
+    float noise = 0.65 * mix(0.5, swash_noise(p), fade.x) + 0.35 * mix(0.5, swash_noise(3.1 * p), fade.y);
+    float patches = smoothstep(0.45, 0.8, noise);
     s.foam = max(max(0.85 * tip, 0.7 * patches * exp(-depth / (0.5 * range))) * draining, 0.1);
     s.wet = s.film = 1.0;
     return s;
