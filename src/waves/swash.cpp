@@ -31,10 +31,10 @@ Runup stockdon_runup(double h0_m, double l0_m, double foreshore_slope) {
                           ? std::clamp(std::abs(foreshore_slope), 0.0, kMaxForeshoreSlope)
                           : kMaxForeshoreSlope;
   const double hl = h0_m * l0_m;
-  r.setup_m = 0.35 * beta * std::sqrt(hl);                      // (W.41a), eq. 10
-  r.swash_m = std::sqrt(hl * (0.563 * beta * beta + 0.004));     // (W.41b), eq. 19
-  r.runup2_m = 1.1 * (r.setup_m + 0.5 * r.swash_m);              // (W.41c), eq. 19
-  r.rundown_m = r.setup_m - 0.5 * r.swash_m;                     // (W.41d)
+  r.setup_m = 0.35 * beta * std::sqrt(hl);                    // (W.41), eq. 10
+  r.swash_m = std::sqrt(hl * (0.563 * beta * beta + 0.004));  // (W.41), eq. 19
+  r.runup2_m = 1.1 * (r.setup_m + 0.5 * r.swash_m);           // (W.41), eq. 19
+  r.rundown_m = r.setup_m - 0.5 * r.swash_m;                  // (W.41)
   return r;
 }
 

@@ -30,7 +30,8 @@ TEST(SwashRender, TheSheetReachesTheRunupOncePerPeriodAndTheLineMoves) {
   // The peak of the JONSWAP fetch law (Hasselmann et al. 1973): f_p = 3.5·(g/U)·x̃^−0.33,
   // x̃ = g·F/U², for the small sea's U = 12 m/s and F = 100 km.
   const double g = 9.81, u10 = 12.0, fetch = 100e3;
-  const double omega_p = 2.0 * std::numbers::pi * 3.5 * (g / u10) * std::pow(g * fetch / (u10 * u10), -0.33);
+  const double omega_p =
+      2.0 * std::numbers::pi * 3.5 * (g / u10) * std::pow(g * fetch / (u10 * u10), -0.33);
   const double period = 2.0 * std::numbers::pi / omega_p;
   auto plan = ocean::SimulationPlan::make(config);
   ASSERT_TRUE(plan.ok()) << plan.status().message();
