@@ -31,6 +31,7 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   st.foam_weights = surface.foam_weights;
   st.foam_drift_mps = surface.foam_drift_mps;
   st.foam_decay_time_s = surface.foam_decay_time_s;
+  st.peak_period_s = surface.peak_period_s;
   st.unresolved_slope_variance = surface.unresolved_slope_variance;
   st.map_base_normal_length = surface.map_base_normal_length;
   pass<FarFieldPass>(st).noise = surface.far_noise;

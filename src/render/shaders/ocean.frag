@@ -15,6 +15,7 @@
 #include "planet.glsl"
 #include "local_layer.glsl"
 #include "damping.glsl"
+#include "swash.glsl"
 #include "seabed.glsl"
 #include "underwater.glsl"
 #include "ripples.glsl"
@@ -246,11 +247,27 @@ void main() {
 
   if (damping.depth_m < 0.0 && !below) {  // land (R.64): sand under the same sun and sky
     N_up = land_normal(world_xz);
-    foam = 0.0;
-    // Wet sand, darker, up to half the significant height above the mean level.
-    float wet = 1.0 - smoothstep(0.0, max(0.5 * u.hs_m, 0.05), -damping.depth_m);
+    Swash swash = swash_at(world_xz, -damping.depth_m, footprint);  // the run-up over it (R.67)
+    foam = swash.foam;
+    // Wet sand, darker: where the swash wets it, else up to half the significant height above
+    // the mean level.
+    float wet = swash.on ? swash.wet
+                         : 1.0 - smoothstep(0.0, max(0.5 * u.hs_m, 0.05), -damping.depth_m);
     vec3 albedo = u.damping.bottom_albedo * mix(1.0, kWetSandDarkening, wet);
-    c = albedo * (sun_e * max(dot(N_up, L), 0.0) + sky_e * 0.5 * (1.0 + N_up.y)) / PI;
+    vec3 irradiance = sun_e * max(dot(N_up, L), 0.0) + sky_e * 0.5 * (1.0 + N_up.y);
+    c = albedo * irradiance / PI;
+    if (swash.film > 0.0) {  // a film of water over the sand: the sheet, or what drains behind it
+      float f = fresnel_schlick(max(dot(N_up, V), 1e-3));
+      vec3 H_land = normalize(V + L);
+      // The film is smooth: the sky's mirror image and the sun's glint on a narrow lobe.
+      vec3 glint = sun_e * glitter_lobe(max(dot(N_up, H_land), 0.0), max(dot(N_up, V), 1e-3),
+                                        max(dot(N_up, L), 0.0), 0.02) *
+                   fresnel_schlick(max(dot(V, H_land), 0.0)) * max(dot(N_up, L), 0.0);
+      vec3 film = c * (1.0 - f) * exp(-2.0 * u.damping.absorption_per_m * swash.sheet_m) +
+                  f * sky_radiance(reflect(-V, N_up)) + glint;
+      c = mix(c, film, swash.film);
+      c = mix(c, 0.85 * u.foam_brightness * irradiance / PI, foam);
+    }
   }
 
   if (below) {  // the underside, through the water between it and the camera (R.50, R.51)

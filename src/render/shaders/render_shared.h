@@ -142,13 +142,13 @@ struct LocalLayerUniforms {
 // The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.24): per-band weights
 // and the depth baked on a square world grid; weight 1 and deep water outside it.
 struct DampingUniforms {
-  vec2 origin_m;          // (x0, z0)
-  float size_m;           // side
-  float resolution;       // N cells per side; 0: no damping
-  vec3 absorption_per_m;  // pure water's absorption, RGB (R.24)
-  float damping_pad;
-  vec3 bottom_albedo;  // the seabed's reflectance seen through shallow water, RGB
-  float damping_pad2;
+  vec2 origin_m;             // (x0, z0)
+  float size_m;              // side
+  float resolution;          // N cells per side; 0: no damping
+  vec3 absorption_per_m;     // pure water's absorption, RGB (R.24)
+  float swash_phase;         // the swash's phase at the frame's time, fract(t/T_p), cycles (R.67)
+  vec3 bottom_albedo;        // the seabed's reflectance seen through shallow water, RGB
+  float swash_wavelength_m;  // L0 = g·T_p²/(2π) of the swash (W.40); 0: no swash drawn
 };
 
 // The sea on a sphere (docs/rendering.md R.30–R.38): positions relative to the camera in the
