@@ -43,8 +43,9 @@ inline constexpr double kDefaultPeakHeightPerLength = 0.02;
 inline constexpr double kWakePressureAspect = 0.35;
 /// (W.9b) A wake's soft edge spans at least this many of its transverse wavelengths 2πU²/g, so
 /// that the steepest fall of its envelope over the edge, 1.5·a/width for a wave of height a, is
-/// 1.5/(2π·4) = 6 % of that wave's own slope k·a, and at most kWakeEdgeMaxFraction of the area's side (the driven
-/// square's edge, W.22). Only a square with a soft edge of its own (edge_fraction > 0) widens it.
+/// 1.5/(2π·4) = 6 % of that wave's own slope k·a, and at most kWakeEdgeMaxFraction of the area's
+/// side (the driven square's edge, W.22). Only a square with a soft edge of its own
+/// (edge_fraction > 0) widens it.
 inline constexpr double kWakeEdgeWavelengths = 4.0;
 inline constexpr double kWakeEdgeMaxFraction = 0.25;
 
@@ -143,8 +144,8 @@ struct KelvinWake {
   /// Empty: the object moves in a straight line, at (x_m, z_m) at time 0, along heading_deg at
   /// speed_mps. Two or more waypoints (times strictly increasing): the position is interpolated
   /// linearly between them and extrapolated along the first/last segment; heading and speed are
-  /// those of the current segment (the pattern is the steady wake of that motion, swung rigidly
-  /// on a turn). One waypoint: the object stays there, with heading_deg and speed_mps (a moored
+  /// those of the current segment; the pattern, the steady wake of that speed, is laid along the
+  /// track of the waypoints passed, s the arc length behind the object (W.21c). One waypoint: the object stays there, with heading_deg and speed_mps (a moored
   /// object in a current).
   std::vector<Waypoint> path;
   /// The foam along the hull's waterline and in its trail (W.20–W.21); beam_m = 0: none.

@@ -247,9 +247,9 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
   if (params.area.edge_fraction > 0.0) {
     double longest = 0.0;
     for (const auto& t : impl.tables) longest = std::max(longest, t->transverse_wavelength_m());
-    impl.wake_edge_fraction =
-        std::max(params.area.edge_fraction,
-                 std::min(kWakeEdgeWavelengths * longest / params.area.size_m, kWakeEdgeMaxFraction));
+    impl.wake_edge_fraction = std::max(
+        params.area.edge_fraction,
+        std::min(kWakeEdgeWavelengths * longest / params.area.size_m, kWakeEdgeMaxFraction));
   }
   layer->params_ = std::move(params);
   return layer;
@@ -430,7 +430,8 @@ double LocalLayer::foam_at(double x, double z, double time_s) const {
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     const KelvinWake& w = params_.wakes[i];
     if (w.foam.beam_m > 0.0) {
-      const Placed p = place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
+      const Placed p =
+          place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
       c = std::max(c, hull_foam(w, p, track_of(w, p, time_s), x, z));
     }
   }
@@ -443,7 +444,8 @@ std::array<double, 3> LocalLayer::displacement_at(double x, double z, double tim
   if (weight == 0.0) return d;
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     const KelvinWake& w = params_.wakes[i];
-    const Placed p = place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
+    const Placed p =
+        place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
     if (on_path(w)) {
       double best = std::numeric_limits<double>::infinity();
       TrackPoint q;
@@ -492,8 +494,8 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
         const TrackPoint q = track_point(tracks[i], x, z);
         if (on_path(w)) add_wake_at(placed[i], params_.choppiness, q.s, q.zeta, q.ux, q.uz, d);
         if (foams) {
-          foam = std::max(foam, hull_foam_coverage(w.foam, w.hull_length_m, placed[i].speed_mps,
-                                                   q.s, q.zeta));
+          foam = std::max(
+              foam, hull_foam_coverage(w.foam, w.hull_length_m, placed[i].speed_mps, q.s, q.zeta));
         }
       }
       finish(d, waveforms_at(params_.waveforms, x, z, time_s), weight,
@@ -531,8 +533,8 @@ std::vector<std::string> LocalLayer::warnings(double time_s) const {
       const auto tenth = [](double v) { return format_number(std::round(10.0 * v) / 10.0); };
       out.push_back(name + " at (" + format_number(p.x_m) + ", " + format_number(p.z_m) + ") is " +
                     tenth(in) + " m inside the local area's border, within the wakes' " +
-                    tenth(band) + " m soft edge at t = " +
-                    format_number(time_s) + " s; its waves near the hull are weakened");
+                    tenth(band) + " m soft edge at t = " + format_number(time_s) +
+                    " s; its waves near the hull are weakened");
     }
     for (std::size_t t : impl_->wake_tables[i]) {
       const detail::KelvinTable& table = *impl_->tables[t];

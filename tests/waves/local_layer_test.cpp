@@ -181,7 +181,8 @@ TEST(LocalArea, AnExplicitSquaresWakeFadesIntoTheSeaWithoutASeam) {
   double band_max = 0.0, inside_max = 0.0;
   for (int r = 1; r + 1 < n; ++r) {
     for (int c = 1; c + 1 < n; ++c) {
-      const double g = std::hypot(h(c + 1, r) - h(c - 1, r), h(c, r + 1) - h(c, r - 1)) / (2 * cell);
+      const double g =
+          std::hypot(h(c + 1, r) - h(c - 1, r), h(c, r + 1) - h(c, r - 1)) / (2 * cell);
       const double d = cell * (std::min({c, r, n - 1 - c, n - 1 - r}) + 0.5);
       double& m = d < band ? band_max : inside_max;
       m = std::max(m, g);

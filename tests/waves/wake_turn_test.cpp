@@ -21,8 +21,8 @@ constexpr double kPi = std::numbers::pi;
 // its path recorded every 0.5 s as a WakeTrack records it (2 m chords, 1.43° turns).
 constexpr double kU = 4.0, kL = 10.0, kR = 80.0, kDt = 0.5, kNow = 50.0, kPeak = 0.5;
 // One square and grid for both layers, so both wakes have the same table (cell 0.3125 m).
-constexpr LocalArea kArea{.origin_m = {-160.0, -160.0}, .size_m = 320.0, .resolution = 1024,
-                          .edge_fraction = 0.0};
+constexpr LocalArea kArea{
+    .origin_m = {-160.0, -160.0}, .size_m = 320.0, .resolution = 1024, .edge_fraction = 0.0};
 
 // Anticlockwise seen from +y, from (0, 0) heading +x: the heading turns towards +z.
 std::array<double, 2> on_circle(double t) {
@@ -114,10 +114,11 @@ TEST(KelvinWake, OnATurnThePatternFollowsTheTrack) {
                  cz = pose.z_m - s * std::sin(pose.heading_rad);
     axis_rigid = std::max(axis_rigid, std::abs(std::hypot(cx, cz - kR) - kR));
   }
-  std::printf("on the circle: %d of %d points outside the bound; largest |difference| from the "
-              "straight pattern %.4f m at s = %.1f m, zeta = %.2f m (swung rigidly: %.3f m) of a "
-              "largest height %.3f m; the swung centreline %.1f m off the track\n",
-              outside_bound, points, worst, worst_s, worst_zeta, worst_rigid, largest, axis_rigid);
+  std::printf(
+      "on the circle: %d of %d points outside the bound; largest |difference| from the "
+      "straight pattern %.4f m at s = %.1f m, zeta = %.2f m (swung rigidly: %.3f m) of a "
+      "largest height %.3f m; the swung centreline %.1f m off the track\n",
+      outside_bound, points, worst, worst_s, worst_zeta, worst_rigid, largest, axis_rigid);
   EXPECT_GT(largest, 0.5 * kPeak);  // the comparison saw the wake
   EXPECT_EQ(outside_bound, 0);
   // Swung rigidly the pattern misses: its centreline lies √(s² + R²) − R off the track (33 m at
