@@ -140,9 +140,10 @@ constexpr double kSuggestedWavelengths = 12.0;
 constexpr double kSuggestedHulls = 5.0;
 constexpr double kSuggestedCellsPerWavelength = 10.0;
 
-// A square holding each wake's object at time t with its wake behind it — the object a fifth of
-// the side in from the front, its track along the middle, so the 19.5° wedge stays clear of the
-// soft edge — and each waveform's map, turned any way. Numbers rounded to two or three
+// A square holding each wake's object at time t with its wake behind it — the object 0.3 of the
+// side in from the front, its track along the middle, so the hull and the 19.5° wedge stay clear
+// of the wakes' soft edge (W.9b: 4 transverse wavelengths, at most a quarter side) — and each
+// waveform's map, turned any way. Numbers rounded to two or three
 // significant digits.
 struct SuggestedArea {
   double x0 = 0.0, z0 = 0.0, size = 0.0;
@@ -161,9 +162,10 @@ SuggestedArea suggested_area(const std::vector<waves::KelvinWake>& wakes,
     const waves::WakePose p = waves::pose_at(w, time_s);
     const double wavelength = 2.0 * std::numbers::pi * p.speed_mps * p.speed_mps / kG;
     out.shortest_wavelength_m = std::min(out.shortest_wavelength_m, wavelength);
+    // 0.7 of the side behind the object: 1.05 times the length wanted.
     const double side =
-        1.25 * std::max(kSuggestedWavelengths * wavelength, kSuggestedHulls * w.hull_length_m);
-    const double back = 0.3 * side;  // from the object to the square's centre
+        1.5 * std::max(kSuggestedWavelengths * wavelength, kSuggestedHulls * w.hull_length_m);
+    const double back = 0.2 * side;  // from the object to the square's centre
     hold(p.x_m - back * std::cos(p.heading_rad), p.z_m - back * std::sin(p.heading_rad),
          0.5 * side);
   }

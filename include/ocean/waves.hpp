@@ -41,6 +41,13 @@ inline constexpr double kDefaultPeakHeightPerLength = 0.02;
 /// disturbance's from 2 hull lengths behind at Fr = 0.1–0.4 while the wake still narrows at high
 /// Froude numbers as Rabaud & Moisy (2013) observe (W.11, W.18).
 inline constexpr double kWakePressureAspect = 0.35;
+/// (W.9b) A wake's soft edge spans at least this many of its transverse wavelengths 2πU²/g, so
+/// that the steepest fall of its envelope over the edge, 1.5·a/width for a wave of height a, is
+/// 1.5/(2π·4) = 6 % of that wave's own slope k·a, and at most kWakeEdgeMaxFraction of the area's
+/// side (the driven square's edge, W.22). Only a square with a soft edge of its own
+/// (edge_fraction > 0) widens it.
+inline constexpr double kWakeEdgeWavelengths = 4.0;
+inline constexpr double kWakeEdgeMaxFraction = 0.25;
 
 /// The square world area the layer covers and its grid.
 struct LocalArea {
@@ -48,7 +55,8 @@ struct LocalArea {
   double size_m = 256.0;                           ///< side, m, finite and > 0
   int resolution = 512;  ///< N cells per side, in [kMinLocalResolution, kMaxLocalResolution]
   /// Width of the soft edge as a fraction of size_m, in [0, 0.5]: the layer's weight rises from
-  /// 0 at the border to 1 at this distance inside (smoothstep), so it fades into the sea.
+  /// 0 at the border to 1 at this distance inside (smoothstep), so it fades into the sea. The
+  /// wakes fade over a wider edge where their waves are long (W.9b); 0 keeps a hard edge.
   double edge_fraction = 0.1;
 };
 /// invalid_argument naming the field, the value and the valid range.
@@ -136,8 +144,8 @@ struct KelvinWake {
   /// Empty: the object moves in a straight line, at (x_m, z_m) at time 0, along heading_deg at
   /// speed_mps. Two or more waypoints (times strictly increasing): the position is interpolated
   /// linearly between them and extrapolated along the first/last segment; heading and speed are
-  /// those of the current segment (the pattern is the steady wake of that motion, swung rigidly
-  /// on a turn). One waypoint: the object stays there, with heading_deg and speed_mps (a moored
+  /// those of the current segment; the pattern, the steady wake of that speed, is laid along the
+  /// track of the waypoints passed, s the arc length behind the object (W.21c). One waypoint: the object stays there, with heading_deg and speed_mps (a moored
   /// object in a current).
   std::vector<Waypoint> path;
   /// The foam along the hull's waterline and in its trail (W.20–W.21); beam_m = 0: none.
@@ -467,9 +475,13 @@ class LocalLayer {
   [[nodiscard]] std::size_t table_count() const;
   /// How many of them make() computed (the rest were shared from `tables_from`).
   [[nodiscard]] std::size_t tables_computed() const;
+  /// The wakes' soft edge as a fraction of the side (W.9b): the area's edge_fraction, widened to
+  /// kWakeEdgeWavelengths of the longest transverse wave up to kWakeEdgeMaxFraction.
+  [[nodiscard]] double wake_edge_fraction() const;
   /// (Dx, h, Dz) of the layer at the undisplaced world point (x, z) at time t, m: the sum of the
-  /// wakes (their tables moved and turned to each object's pose, bilinear) and the waveforms,
-  /// times the soft-edge weight. Never allocates.
+  /// wakes (their tables moved and turned to each object's pose, or laid along its track for a
+  /// wake on a path, W.21c; bilinear) times their soft edge (W.9b) and the waveforms times the
+  /// area's (W.9). Never allocates.
   [[nodiscard]] std::array<double, 3> displacement_at(double x, double z, double time_s) const;
   /// The hulls' foam coverage in [0, 1] at world (x, z) at time t (W.20–W.21): the largest of the
   /// wakes' HullFoam at their poses and of the footprints', times the soft-edge weight. Never

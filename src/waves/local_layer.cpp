@@ -1,7 +1,7 @@
 // src/waves/local_layer.cpp — the local layer: validation, one Kelvin table per distinct (U, L)
 // made up front (or shared with an earlier layer that has it, W.17), and the per-frame
 // composition of wakes (tables moved and turned to each object's pose) and waveforms under the
-// soft edge (W.7–W.10).
+// soft edge (W.7–W.10, the wakes' W.9b); a wake on a path laid along its track (W.21c).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -30,6 +30,9 @@ struct LocalLayer::Impl {
     double speed_mps, hull_length_m, gravity_mps2, c;
   };
   std::vector<Scale> scales;
+  /// The wakes' soft edge as a fraction of the side (W.9b): at least the area's own, wide enough
+  /// for kWakeEdgeWavelengths of the longest transverse wave, at most kWakeEdgeMaxFraction.
+  double wake_edge_fraction = 0.0;
 };
 
 namespace {
@@ -61,6 +64,8 @@ LocalLayer::~LocalLayer() = default;
 std::size_t LocalLayer::table_count() const { return impl_->tables.size(); }
 
 std::size_t LocalLayer::tables_computed() const { return impl_->computed; }
+
+double LocalLayer::wake_edge_fraction() const { return impl_->wake_edge_fraction; }
 
 namespace {
 
@@ -234,6 +239,18 @@ Result<std::unique_ptr<LocalLayer>> LocalLayer::make(LayerParams params,
     impl.wake_tables.push_back(std::move(mine));
     impl.wake_amplitudes.push_back(std::move(amplitudes));
   }
+  // (W.9b) The wakes' soft edge: a square with a soft edge of its own (edge_fraction > 0) fades
+  // each wake over at least kWakeEdgeWavelengths of its longest (transverse) wave, so that the
+  // pattern's envelope changes slowly against its waves, and at most over kWakeEdgeMaxFraction
+  // of the side; never over less than the area's own edge. A hard edge (0) stays hard.
+  impl.wake_edge_fraction = params.area.edge_fraction;
+  if (params.area.edge_fraction > 0.0) {
+    double longest = 0.0;
+    for (const auto& t : impl.tables) longest = std::max(longest, t->transverse_wavelength_m());
+    impl.wake_edge_fraction = std::max(
+        params.area.edge_fraction,
+        std::min(kWakeEdgeWavelengths * longest / params.area.size_m, kWakeEdgeMaxFraction));
+  }
   layer->params_ = std::move(params);
   return layer;
 }
@@ -263,70 +280,103 @@ Placed place(const KelvinWake& w, const std::vector<std::size_t>& tables,
   return p;
 }
 
-// Adds one placed wake at world (x, z) to (Dx, h, Dz).
-void add_wake(const Placed& p, double choppiness, double x, double z, std::array<double, 3>& d) {
-  const double dx = x - p.x, dz = z - p.z;
-  const double s = -(dx * p.cos_h + dz * p.sin_h);   // metres behind the object
-  const double zeta = -dx * p.sin_h + dz * p.cos_h;  // metres to its left
-  const std::array<double, 3> v = p.table->sample(s, zeta);
-  if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0) return;
-  const double a = p.amplitude_m * (p.fade_m > 0.0 ? std::exp(-s / p.fade_m) : 1.0);  // (W.8)
-  d[1] += a * v[0];
-  // D_s points backwards (−heading), D_ζ to the left (heading turned +90°).
-  const double c = choppiness * a;
-  d[0] += c * (-v[1] * p.cos_h - v[2] * p.sin_h);
-  d[2] += c * (-v[1] * p.sin_h + v[2] * p.cos_h);
-}
-
 // (W.21b) The track an object on a path has left at time t, as pieces: the polyline from the
 // placed position back through the waypoints already passed, newest first, continued straight
 // beyond the oldest; without a path, the straight line of the heading. Each piece runs from
 // (ax, az) backwards against the unit travel direction (ux, uz), `length` long (infinite: a
 // ray), starting s0 metres behind the object; the first, `ahead`, runs forwards along the
-// heading (s negative). Made once per placement, read for every point.
+// heading (s negative). Made once per placement, read for every point; with `reach`, the
+// waypoints more than that far back along it are left out (a wake's table ends there, W.21c).
 struct TrackPiece {
   double ax = 0.0, az = 0.0, ux = 1.0, uz = 0.0, length = 0.0, s0 = 0.0;
   bool ahead = false;
 };
 
-std::vector<TrackPiece> track_of(const KelvinWake& w, const Placed& p, double t) {
+// Calls f(piece) for each piece of the track, newest first.
+template <class F>
+void for_each_piece(const KelvinWake& w, const Placed& p, double t, double reach, F&& f) {
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<TrackPiece> pieces{{p.x, p.z, p.cos_h, p.sin_h, inf, 0.0, true}};
+  f(TrackPiece{p.x, p.z, p.cos_h, p.sin_h, inf, 0.0, true});
   double ax = p.x, az = p.z, ux = p.cos_h, uz = p.sin_h, s0 = 0.0;
   if (w.path.size() >= 2) {
     for (std::size_t i = w.path.size(); i-- > 0;) {
       const Waypoint& q = w.path[i];
       if (!(q.time_s < t)) continue;  // not yet passed
+      if (s0 > reach) break;          // beyond what the caller reads: the ray below ends it
       const double len = std::hypot(ax - q.x_m, az - q.z_m);
       if (len < 1e-9) continue;
       ux = (ax - q.x_m) / len, uz = (az - q.z_m) / len;
-      pieces.push_back({ax, az, ux, uz, len, s0, false});
+      f(TrackPiece{ax, az, ux, uz, len, s0, false});
       s0 += len, ax = q.x_m, az = q.z_m;
     }
   }
-  pieces.push_back({ax, az, ux, uz, inf, s0, false});  // beyond the oldest point passed
+  f(TrackPiece{ax, az, ux, uz, inf, s0, false});  // beyond the oldest point passed
+}
+
+std::vector<TrackPiece> track_of(const KelvinWake& w, const Placed& p, double t,
+                                 double reach = std::numeric_limits<double>::infinity()) {
+  std::vector<TrackPiece> pieces;
+  for_each_piece(w, p, t, reach, [&](const TrackPiece& k) { pieces.push_back(k); });
   return pieces;
 }
 
 // Where (x, z) lies along a track: s the arc length behind the object to the track's nearest
-// point, ζ the distance from that point to the left of the travel there.
-std::array<double, 2> track_coordinates(const std::vector<TrackPiece>& track, double x, double z) {
-  double best = std::numeric_limits<double>::infinity();
-  std::array<double, 2> out{0.0, 0.0};
-  for (const TrackPiece& k : track) {
-    const double dx = x - k.ax, dz = z - k.az;
-    double u = k.ahead ? dx * k.ux + dz * k.uz : -(dx * k.ux + dz * k.uz);  // metres along it
-    u = std::clamp(u, 0.0, k.length);
-    const double qx = k.ahead ? k.ax + u * k.ux : k.ax - u * k.ux,
-                 qz = k.ahead ? k.az + u * k.uz : k.az - u * k.uz;
-    const double d = std::hypot(x - qx, z - qz);
-    if (d < best) {
-      best = d;
-      out = {k.ahead ? k.s0 - u : k.s0 + u, -(x - qx) * k.uz + (z - qz) * k.ux};
-    }
+// point, ζ the distance from that point to the left of the travel there, and (ux, uz) the unit
+// travel direction there.
+struct TrackPoint {
+  double s = 0.0, zeta = 0.0, ux = 1.0, uz = 0.0;
+};
+
+// Keeps in `out` the nearer of what it holds, `best` metres away, and (x, z)'s nearest point on k.
+void nearer(const TrackPiece& k, double x, double z, double& best, TrackPoint& out) {
+  const double dx = x - k.ax, dz = z - k.az;
+  double u = k.ahead ? dx * k.ux + dz * k.uz : -(dx * k.ux + dz * k.uz);  // metres along it
+  u = std::clamp(u, 0.0, k.length);
+  const double qx = k.ahead ? k.ax + u * k.ux : k.ax - u * k.ux,
+               qz = k.ahead ? k.az + u * k.uz : k.az - u * k.uz;
+  const double d = std::hypot(x - qx, z - qz);
+  if (d < best) {
+    best = d;
+    out = {k.ahead ? k.s0 - u : k.s0 + u, -(x - qx) * k.uz + (z - qz) * k.ux, k.ux, k.uz};
   }
+}
+
+TrackPoint track_point(const std::vector<TrackPiece>& track, double x, double z) {
+  double best = std::numeric_limits<double>::infinity();
+  TrackPoint out;
+  for (const TrackPiece& k : track) nearer(k, x, z, best, out);
   return out;
 }
+
+std::array<double, 2> track_coordinates(const std::vector<TrackPiece>& track, double x, double z) {
+  const TrackPoint q = track_point(track, x, z);
+  return {q.s, q.zeta};
+}
+
+// Adds one placed wake's table value at (s, ζ) in its frame, whose travel direction is (ux, uz),
+// to (Dx, h, Dz).
+void add_wake_at(const Placed& p, double choppiness, double s, double zeta, double ux, double uz,
+                 std::array<double, 3>& d) {
+  const std::array<double, 3> v = p.table->sample(s, zeta);
+  if (v[0] == 0.0 && v[1] == 0.0 && v[2] == 0.0) return;
+  const double a = p.amplitude_m * (p.fade_m > 0.0 ? std::exp(-s / p.fade_m) : 1.0);  // (W.8)
+  d[1] += a * v[0];
+  // D_s points backwards (−travel), D_ζ to the left (travel turned +90°).
+  const double c = choppiness * a;
+  d[0] += c * (-v[1] * ux - v[2] * uz);
+  d[2] += c * (-v[1] * uz + v[2] * ux);
+}
+
+// Adds one placed wake at world (x, z) to (Dx, h, Dz) in the frame of its present heading.
+void add_wake(const Placed& p, double choppiness, double x, double z, std::array<double, 3>& d) {
+  const double dx = x - p.x, dz = z - p.z;
+  const double s = -(dx * p.cos_h + dz * p.sin_h);   // metres behind the object
+  const double zeta = -dx * p.sin_h + dz * p.cos_h;  // metres to its left
+  add_wake_at(p, choppiness, s, zeta, p.cos_h, p.sin_h, d);
+}
+
+// Whether a wake's pattern follows its track (W.21c): a wake on a path.
+bool on_path(const KelvinWake& w) { return w.path.size() >= 2; }
 
 // One hull's foam at world (x, z) (W.20–W.21), in the frame of its track (W.21b).
 double hull_foam(const KelvinWake& w, const Placed& p, const std::vector<TrackPiece>& track,
@@ -348,6 +398,29 @@ double footprint_foam(const std::vector<Footprint>& footprints, double x, double
   return c;
 }
 
+// The waveforms' height at world (x, z).
+double waveforms_at(const std::vector<Waveform>& waveforms, double x, double z, double time_s) {
+  double h = 0.0;
+  for (const Waveform& w : waveforms) h += waveform_height(w, x, z, time_s);
+  return h;
+}
+
+// (W.9b) The wakes' soft-edge weight at world (x, z): the area's own where the two edges agree.
+double wake_weight(const LocalArea& area, double wake_edge_fraction, double weight, double x,
+                   double z) {
+  if (wake_edge_fraction == area.edge_fraction) return weight;
+  LocalArea wide = area;
+  wide.edge_fraction = wake_edge_fraction;
+  return edge_weight(wide, x, z);
+}
+
+// The layer's (Dx, h, Dz) from the wakes' sum d and the waveforms' height h: the wakes under
+// their soft edge (W.9b), the waveforms under the area's (W.9).
+void finish(std::array<double, 3>& d, double h, double weight, double wake_weight) {
+  for (double& v : d) v *= wake_weight;
+  d[1] += weight * h;
+}
+
 }  // namespace
 
 double LocalLayer::foam_at(double x, double z, double time_s) const {
@@ -357,7 +430,8 @@ double LocalLayer::foam_at(double x, double z, double time_s) const {
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     const KelvinWake& w = params_.wakes[i];
     if (w.foam.beam_m > 0.0) {
-      const Placed p = place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
+      const Placed p =
+          place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
       c = std::max(c, hull_foam(w, p, track_of(w, p, time_s), x, z));
     }
   }
@@ -369,11 +443,21 @@ std::array<double, 3> LocalLayer::displacement_at(double x, double z, double tim
   const double weight = edge_weight(params_.area, x, z);
   if (weight == 0.0) return d;
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
-    add_wake(place(params_.wakes[i], impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s),
-             params_.choppiness, x, z, d);
+    const KelvinWake& w = params_.wakes[i];
+    const Placed p =
+        place(w, impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s);
+    if (on_path(w)) {
+      double best = std::numeric_limits<double>::infinity();
+      TrackPoint q;
+      for_each_piece(w, p, time_s, p.table->length_m(),
+                     [&](const TrackPiece& k) { nearer(k, x, z, best, q); });
+      add_wake_at(p, params_.choppiness, q.s, q.zeta, q.ux, q.uz, d);
+    } else {
+      add_wake(p, params_.choppiness, x, z, d);
+    }
   }
-  for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z, time_s);
-  for (double& v : d) v *= weight;
+  finish(d, waveforms_at(params_.waveforms, x, z, time_s), weight,
+         wake_weight(params_.area, impl_->wake_edge_fraction, weight, x, z));
   return d;
 }
 
@@ -388,7 +472,11 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
   std::vector<std::vector<TrackPiece>> tracks;
   for (std::size_t i = 0; i < params_.wakes.size(); ++i) {
     placed.push_back(place(params_.wakes[i], impl_->wake_tables[i], impl_->wake_amplitudes[i], impl_->tables, time_s));
-    tracks.push_back(track_of(params_.wakes[i], placed.back(), time_s));
+    // The foam's track reaches as far as the foam does; a pattern's, as far as its table.
+    tracks.push_back(track_of(params_.wakes[i], placed.back(), time_s,
+                              params_.wakes[i].foam.beam_m > 0.0
+                                  ? std::numeric_limits<double>::infinity()
+                                  : placed.back().table->length_m()));
   }
   for (std::size_t row = 0; row < n; ++row) {
     for (std::size_t col = 0; col < n; ++col) {
@@ -396,15 +484,24 @@ void LocalLayer::evaluate(double time_s, LocalFrame& out) const {
       const double weight = edge_weight(area, x, z);
       if (weight == 0.0) continue;
       std::array<double, 3> d{0.0, 0.0, 0.0};
-      for (const Placed& p : placed) add_wake(p, params_.choppiness, x, z, d);
-      for (const Waveform& w : params_.waveforms) d[1] += waveform_height(w, x, z, time_s);
-      float* cell = out.displacement.data() + 3 * (row * n + col);
-      for (std::size_t k = 0; k < 3; ++k) cell[k] = static_cast<float>(weight * d[k]);
       double foam = footprint_foam(params_.footprints, x, z);
       for (std::size_t i = 0; i < placed.size(); ++i) {
-        if (params_.wakes[i].foam.beam_m > 0.0)
-          foam = std::max(foam, hull_foam(params_.wakes[i], placed[i], tracks[i], x, z));
+        const KelvinWake& w = params_.wakes[i];
+        const bool foams = w.foam.beam_m > 0.0;
+        if (!on_path(w)) add_wake(placed[i], params_.choppiness, x, z, d);
+        if (!on_path(w) && !foams) continue;
+        // One nearest point on the track serves the pattern (W.21c) and the foam (W.21b).
+        const TrackPoint q = track_point(tracks[i], x, z);
+        if (on_path(w)) add_wake_at(placed[i], params_.choppiness, q.s, q.zeta, q.ux, q.uz, d);
+        if (foams) {
+          foam = std::max(
+              foam, hull_foam_coverage(w.foam, w.hull_length_m, placed[i].speed_mps, q.s, q.zeta));
+        }
       }
+      finish(d, waveforms_at(params_.waveforms, x, z, time_s), weight,
+             wake_weight(area, impl_->wake_edge_fraction, weight, x, z));
+      float* cell = out.displacement.data() + 3 * (row * n + col);
+      for (std::size_t k = 0; k < 3; ++k) cell[k] = static_cast<float>(d[k]);
       out.foam[row * n + col] = static_cast<float>(weight * foam);
     }
   }
@@ -429,6 +526,15 @@ std::vector<std::string> LocalLayer::warnings(double time_s) const {
       out.push_back(name + " at (" + format_number(p.x_m) + ", " + format_number(p.z_m) +
                     ") is outside the local area " + box + " at t = " + format_number(time_s) +
                     " s; only what trails into the area shows");
+    } else if (const double band = impl_->wake_edge_fraction * a.size_m,
+               in = std::min({p.x_m - a.origin_m[0], a.origin_m[0] + a.size_m - p.x_m,
+                              p.z_m - a.origin_m[1], a.origin_m[1] + a.size_m - p.z_m});
+               in < band) {
+      const auto tenth = [](double v) { return format_number(std::round(10.0 * v) / 10.0); };
+      out.push_back(name + " at (" + format_number(p.x_m) + ", " + format_number(p.z_m) + ") is " +
+                    tenth(in) + " m inside the local area's border, within the wakes' " +
+                    tenth(band) + " m soft edge at t = " + format_number(time_s) +
+                    " s; its waves near the hull are weakened");
     }
     for (std::size_t t : impl_->wake_tables[i]) {
       const detail::KelvinTable& table = *impl_->tables[t];

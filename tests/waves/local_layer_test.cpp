@@ -3,7 +3,9 @@
 // displacement is the project's choppy sign; the soft edge; bad parameters; warnings.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 #include "ocean/waves.hpp"
@@ -16,10 +18,11 @@ using ocean::waves::LocalLayer;
 
 constexpr double kLayerPi = std::numbers::pi;
 
-// A 10 m boat at 4 m/s (Fr = 0.40) heading +x from (60, 0) at t = 0, in a 160 m area of 256².
+// A 10 m boat at 4 m/s (Fr = 0.40) heading +x from (60, 0) at t = 0, in a 160 m area of 256²
+// with a hard edge: the identities below are the pattern's own, not its soft edge's (W.9b).
 LayerParams boat(double heading_deg = 0.0) {
   LayerParams p;
-  p.area = {.origin_m = {-80.0, -80.0}, .size_m = 160.0, .resolution = 256};
+  p.area = {.origin_m = {-80.0, -80.0}, .size_m = 160.0, .resolution = 256, .edge_fraction = 0.0};
   p.wakes.push_back({.x_m = 60.0 * std::cos(heading_deg * kLayerPi / 180),
                      .z_m = 60.0 * std::sin(heading_deg * kLayerPi / 180),
                      .heading_deg = heading_deg,
@@ -148,6 +151,65 @@ TEST(LocalArea, SoftEdgeIsZeroOnTheBorderAndOneInside) {
   const auto c = ocean::waves::cell_centre(a, 0, 63);
   EXPECT_DOUBLE_EQ(c[0], 10.0 + 0.5 * 100.0 / 64);
   EXPECT_DOUBLE_EQ(c[1], 20.0 + 63.5 * 100.0 / 64);
+}
+
+// No seam where an explicit square ends (W.9b): the wake of docs/rendering.md's pictures,
+// `--kelvin-wake -120,0,0,6,40 --local-area -350,-200,400 --local-resolution 512` at t = 20 s,
+// with the square's default soft edge (a tenth of its side). Its transverse waves are
+// 2πU²/g = 23.06 m long, so the wakes fade over 4 of them, 92.2 m (0.2306 of the side), and
+// across the square's own edge band (the outer 40 m, where the layer meets the sea) the layer
+// changes no faster than the sea's own surface: its largest slope there (central differences on
+// its grid) stays below half the rms slope along one direction of a clean sea at the calm
+// preset's 4 m/s wind, √((0.003 + 5.12e-3·4)/2) = 0.108 (Cox & Munk 1954, JOSA 44(11), eq. 3),
+// while the wake inside is steeper than that sea. With the wakes under the square's own 40 m edge
+// the band's largest slope was 0.144.
+TEST(LocalArea, AnExplicitSquaresWakeFadesIntoTheSeaWithoutASeam) {
+  LayerParams p;
+  p.area = {.origin_m = {-350.0, -200.0}, .size_m = 400.0, .resolution = 512};
+  p.wakes.push_back(
+      {.x_m = -120.0, .z_m = 0.0, .heading_deg = 0.0, .speed_mps = 6.0, .hull_length_m = 40.0});
+  const auto layer = make(p);
+  const double wavelength = 2.0 * kLayerPi * 36.0 / 9.81;
+  EXPECT_NEAR(layer->wake_edge_fraction(), 4.0 * wavelength / 400.0, 1e-12);
+  ocean::waves::LocalFrame frame;
+  layer->evaluate(20.0, frame);
+  const int n = p.area.resolution;
+  const double cell = p.area.size_m / n, band = p.area.edge_fraction * p.area.size_m;
+  const auto h = [&](int c, int r) {
+    return static_cast<double>(frame.displacement[3 * (static_cast<std::size_t>(r) * n + c) + 1]);
+  };
+  double band_max = 0.0, inside_max = 0.0;
+  for (int r = 1; r + 1 < n; ++r) {
+    for (int c = 1; c + 1 < n; ++c) {
+      const double g =
+          std::hypot(h(c + 1, r) - h(c - 1, r), h(c, r + 1) - h(c, r - 1)) / (2 * cell);
+      const double d = cell * (std::min({c, r, n - 1 - c, n - 1 - r}) + 0.5);
+      double& m = d < band ? band_max : inside_max;
+      m = std::max(m, g);
+    }
+  }
+  const double sea_slope = std::sqrt((0.003 + 5.12e-3 * 4.0) / 2.0);
+  std::printf("largest slope in the edge band %.4f, inside %.4f, sea rms %.4f\n", band_max,
+              inside_max, sea_slope);
+  EXPECT_GT(inside_max, sea_slope);  // the wake itself is steep enough to see
+  EXPECT_LT(band_max, 0.5 * sea_slope);
+  // The object 50 m from the square's front, inside the wakes' edge: the layer says so.
+  const auto warned = layer->warnings(20.0);
+  ASSERT_EQ(warned.size(), 1u);
+  EXPECT_NE(warned[0].find("within the wakes' 92.2 m soft edge"), std::string::npos) << warned[0];
+}
+
+// The wakes' edge is 4 transverse wavelengths up to a quarter side, never narrower than the
+// area's own; a hard edge asked for (edge_fraction 0) stays hard for the wakes too.
+TEST(LocalArea, TheWakesEdgeSpansTheirWaves) {
+  LayerParams p = boat();  // λ = 2π·4²/9.81 = 10.25 m, side 160 m
+  EXPECT_EQ(make(p)->wake_edge_fraction(), 0.0);
+  p.area.edge_fraction = 0.1;
+  EXPECT_EQ(make(p)->wake_edge_fraction(), 0.25);  // 41 m capped at 40 m
+  p.area.size_m = 400.0;
+  EXPECT_NEAR(make(p)->wake_edge_fraction(), 4.0 * 2.0 * kLayerPi * 16.0 / 9.81 / 400.0, 1e-15);
+  p.area.edge_fraction = 0.3;
+  EXPECT_EQ(make(p)->wake_edge_fraction(), 0.3);
 }
 
 TEST(LocalLayer, BadParametersNameTheField) {
