@@ -62,7 +62,9 @@ Result<std::optional<waves::Damping>> shallows_damping(
 /// and shoaled over the scene's depth map (waves::ShoreWave, W.32–W.37), drawn as an animated
 /// waveform of `frames` height maps over one period (looped), each the wave's height at the
 /// cells' centres times β = √(1 − w0²), w0 cascade 0's depth weight (W.12): the deterministic
-/// wave takes over the share of the low band's variance the depth law removes. nullopt for a
+/// wave takes over the share of the low band's variance the depth law removes. Its height is
+/// capped at `breaking_index`·d (W.36; 0 caps it at McCowan's 0.78·d all the same, as linear
+/// shoaling without a cap grows without bound at the shoreline). nullopt for a
 /// scene without a bathymetry (none, lily pads). Errors: the spectrum's, ShoreWave::make's.
 Result<std::optional<waves::Waveform>> shallows_shore_wave(Shallows scene,
                                                            std::array<double, 2> centre_m,

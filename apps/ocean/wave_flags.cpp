@@ -295,24 +295,25 @@ Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
 Status add_shore_wave(const WaveFlags& f, const SimulationConfig& config,
                       std::optional<waves::LayerParams>& layer) {
   const std::optional<Shallows> shallows = parse_shallows(f.shallows);
-  if (!shallows || f.calm) return {};
+  if (!shallows || f.calm || (*shallows != Shallows::lagoon && *shallows != Shallows::beach))
+    return {};
   Result<std::vector<double>> gamma =
       numbers("--breaking-index", f.breaking_index, 1, 1, "one number (0: no breaking)");
   if (!gamma.ok()) return {};
   Result<int> n = parse(kLocalResolution, f.local_resolution);
   if (!n.ok()) return n.status();
-  Result<std::optional<waves::Waveform>> form =
-      shallows_shore_wave(*shallows, {0.0, 0.0}, config, gamma.value()[0], n.value(),
-                          kShoreWaveFrames);
+  Result<std::optional<waves::Waveform>> form = shallows_shore_wave(
+      *shallows, {0.0, 0.0}, config, gamma.value()[0], n.value(), kShoreWaveFrames);
   if (!form.ok()) return form.status();
   if (!form.value().has_value()) return {};
   const waves::Waveform& w = *form.value();
   if (!layer.has_value()) {
-    layer = waves::LayerParams{.area = {.origin_m = {w.x_m - 0.5 * w.size_m, w.z_m - 0.5 * w.size_m},
-                                        .size_m = w.size_m,
-                                        .resolution = n.value()},
-                               .choppiness = config.choppiness,
-                               .gravity_mps2 = config.sea.dispersion.gravity_mps2};
+    layer =
+        waves::LayerParams{.area = {.origin_m = {w.x_m - 0.5 * w.size_m, w.z_m - 0.5 * w.size_m},
+                                    .size_m = w.size_m,
+                                    .resolution = n.value()},
+                           .choppiness = config.choppiness,
+                           .gravity_mps2 = config.sea.dispersion.gravity_mps2};
   }
   layer->waveforms.push_back(std::move(*form.value()));
   return {};

@@ -26,10 +26,10 @@ struct ShoreWaveParams {
   /// enters through the map's edge that faces it (its offshore edge); its phase and flux are
   /// computed on the map's own cells.
   PlacedMap bathymetry;
-  double period_s = 8.0;         ///< T, s, in [0.5, 60]; ω = 2π/T
-  double deep_height_m = 1.0;    ///< H0, crest-to-trough height in deep water, m, in [0, 100]
-  double direction_deg = 0.0;    ///< where the wave travels in deep water: 0 = +x, 90 = +z; finite
-  double gravity_mps2 = 9.81;    ///< g, in [0.1, 100]
+  double period_s = 8.0;       ///< T, s, in [0.5, 60]; ω = 2π/T
+  double deep_height_m = 1.0;  ///< H0, crest-to-trough height in deep water, m, in [0, 100]
+  double direction_deg = 0.0;  ///< where the wave travels in deep water: 0 = +x, 90 = +z; finite
+  double gravity_mps2 = 9.81;  ///< g, in [0.1, 100]
   double breaking_index = kMcCowanBreakingIndex;  ///< γ: H ≤ γ·d (W.25, W.36), in [0.3, 1.5]
 };
 /// invalid_argument naming the field: no map or a bad placement, non-finite depths, a period,

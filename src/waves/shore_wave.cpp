@@ -10,19 +10,20 @@
 //   coefficient K_r = √(b0/b) from the conservation of E·c_g·b between rays, Snell's law
 //   sin θ/c = sin θ0/c0 over straight parallel contours.
 // - Mei, Stiassnie & Yue (2005), "Theory and Applications of Ocean Surface Waves", ch. 3
-//   (refraction by slowly varying depth): the geometrical-optics (WKB) equations |∇S| = k(x) and ∇·(A²·c_g·∇S/k) = 0.
+//   (refraction by slowly varying depth): the geometrical-optics (WKB) equations |∇S| = k(x) and
+//   ∇·(A²·c_g·∇S/k) = 0.
 // - Zhao (2005), "A fast sweeping method for eikonal equations", Math. Comp. 74: the Godunov
 //   upwind update and the four alternating sweep orders; first-order accurate, exact for a
 //   plane wave over uniform k.
 // - LeVeque (2002), "Finite Volume Methods for Hyperbolic Problems", §20.1: the donor-cell
 //   (upwind) flux of a steady conservation law, which keeps Σ fluxes exactly.
+#include "ocean/shore_wave.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <vector>
-
-#include "ocean/shore_wave.hpp"
 
 namespace ocean::waves {
 namespace {
@@ -258,10 +259,9 @@ ShoreWavePoint ShoreWave::at(double x, double z) const {
   const int c0 = std::min(static_cast<int>(cu), m.cols - 1), c1 = std::min(c0 + 1, m.cols - 1);
   const int r0 = std::min(static_cast<int>(cv), m.rows - 1), r1 = std::min(r0 + 1, m.rows - 1);
   const double fu = cu - c0, fv = cv - r0;
-  const std::size_t idx[4] = {static_cast<std::size_t>(r0) * m.cols + c0,
-                              static_cast<std::size_t>(r0) * m.cols + c1,
-                              static_cast<std::size_t>(r1) * m.cols + c0,
-                              static_cast<std::size_t>(r1) * m.cols + c1};
+  const std::size_t idx[4] = {
+      static_cast<std::size_t>(r0) * m.cols + c0, static_cast<std::size_t>(r0) * m.cols + c1,
+      static_cast<std::size_t>(r1) * m.cols + c0, static_cast<std::size_t>(r1) * m.cols + c1};
   const double wt[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
   double sum = 0.0, s = 0.0, dx = 0.0, dz = 0.0, density = 0.0;
   for (int j = 0; j < 4; ++j) {

@@ -5,6 +5,8 @@
 // shallow water) until it reaches the breaking index γ·d. The expected values are computed here
 // from the formulas, with a dispersion root found by bisection independently of the library's
 // Newton iteration.
+#include "ocean/shore_wave.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,8 +14,6 @@
 #include <limits>
 #include <memory>
 #include <numbers>
-
-#include "ocean/shore_wave.hpp"
 
 namespace shore_wave_test {
 
@@ -142,9 +142,10 @@ TEST(ShoreWave, SnellAndShoalingOnAPlanarBeachAlongTheGrid) {
                                      .direction_deg = 30.0});
   ASSERT_TRUE(made.ok()) << made.status().message();
   const Error e = compare(made.value(), 0.0, theta0);
-  std::printf("beach along the grid, θ0 = 30°: %d cells down to d = %.2f m, θ within %.2e°, "
-              "H/H0 = K_s·K_r within %.2e\n",
-              e.cells, e.shallowest_m, e.snell * 180.0 / kPi, e.height);
+  std::printf(
+      "beach along the grid, θ0 = 30°: %d cells down to d = %.2f m, θ within %.2e°, "
+      "H/H0 = K_s·K_r within %.2e\n",
+      e.cells, e.shallowest_m, e.snell * 180.0 / kPi, e.height);
   ASSERT_GT(e.cells, 10000);
   ASSERT_LT(e.shallowest_m, 1.0);
   // On contours along the grid the discrete phase is k0·sin θ0·z + Σ h·√(k² − k0²·sin²θ0) and
@@ -163,9 +164,10 @@ TEST(ShoreWave, SnellAndShoalingOnAPlanarBeachAcrossTheGrid) {
                                      .direction_deg = 40.0});
   ASSERT_TRUE(made.ok()) << made.status().message();
   const Error e = compare(made.value(), phi, theta0);
-  std::printf("beach at 20° to the grid, θ0 = 20°: %d cells down to d = %.2f m, θ within %.3f°, "
-              "H/H0 = K_s·K_r within %.2e\n",
-              e.cells, e.shallowest_m, e.snell * 180.0 / kPi, e.height);
+  std::printf(
+      "beach at 20° to the grid, θ0 = 20°: %d cells down to d = %.2f m, θ within %.3f°, "
+      "H/H0 = K_s·K_r within %.2e\n",
+      e.cells, e.shallowest_m, e.snell * 180.0 / kPi, e.height);
   ASSERT_GT(e.cells, 5000);
   ASSERT_LT(e.shallowest_m, 1.0);
   // First order in the cell against the scale of k's change: the direction within 1.5° (the
