@@ -55,8 +55,8 @@ struct ShoreWavePoint {
 /// (W.35). Immutable; const methods are thread-safe and never allocate.
 class ShoreWave {
  public:
-  /// Validates and solves on the map's rows × cols cells (a few sweeps over them: about 10 ms
-  /// for 512²).
+  /// Validates and solves on the map's rows × cols cells: four sweeps per round until no cell
+  /// changes (at most 64 rounds), then one sort and one pass for the flux. Allocates.
   static Result<ShoreWave> make(ShoreWaveParams params);
   [[nodiscard]] const ShoreWaveParams& params() const { return params_; }
   [[nodiscard]] double omega_radps() const { return omega_; }

@@ -30,8 +30,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// Sweeps until no cell changes, at most this many rounds of four (a map whose rays bend around
-// an island needs a few; a planar beach two).
+// Sweeps until no cell changes, at most this many rounds of four: each round carries the
+// solution round one more turn of the rays against all four sweep orders.
 constexpr int kMaxSweepRounds = 64;
 
 }  // namespace
