@@ -114,11 +114,16 @@ Result<std::optional<waves::Waveform>> shallows_shore_wave(Shallows scene,
                                                            int frames) {
   if (scene != Shallows::lagoon && scene != Shallows::beach)
     return std::optional<waves::Waveform>{};
-  // The sea's peak wave: the swell's (else the wind sea's) peak period and mean direction, and
-  // the low band's rms height (W.38).
-  Result<WaveSystem> system =
-      WaveSystem::make(config.sea.has_swell ? config.sea.swell : config.sea.wind_sea);
+  // The sea's peak wave: the peak period and mean direction of the system holding the most
+  // variance, and the low band's rms height (W.38).
+  Result<WaveSystem> system = WaveSystem::make(config.sea.wind_sea);
   if (!system.ok()) return system.status();
+  if (config.sea.has_swell) {
+    Result<WaveSystem> swell = WaveSystem::make(config.sea.swell);
+    if (!swell.ok()) return swell.status();
+    if (swell.value().spectrum().moment(0) > system.value().spectrum().moment(0))
+      system = std::move(swell);
+  }
   Result<std::vector<double>> m0 = band_variances(config);
   if (!m0.ok()) return m0.status();
   const double g = config.sea.dispersion.gravity_mps2;

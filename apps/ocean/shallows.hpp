@@ -56,9 +56,9 @@ Result<std::optional<waves::Damping>> shallows_damping(
     Shallows scene, std::array<double, 2> centre_m, const SimulationConfig& config,
     double breaking_index = waves::kMcCowanBreakingIndex);
 
-/// The shore wave of a scene with a bathymetry (docs/waves.md W.38): the peak wave of `config`'s
-/// swell, or of its wind sea without one (its period Tp and mean direction; H0 = √(8·m0) of
-/// cascade 0's variance) refracted
+/// The shore wave of a scene with a bathymetry (docs/waves.md W.38): the peak wave of the wave
+/// system of `config` holding the most variance (its period Tp and mean direction; H0 = √(8·m0)
+/// of cascade 0's variance) refracted
 /// and shoaled over the scene's depth map (waves::ShoreWave, W.32–W.37), drawn as an animated
 /// waveform of `frames` height maps over one period (looped), each the wave's height at the
 /// cells' centres times β = √(1 − w0²), w0 cascade 0's depth weight (W.12): the deterministic
