@@ -82,6 +82,9 @@ inline constexpr double kWhitecapDecayTimeS = 3.85;
 /// foam ramp and the far field's noise.
 struct SurfaceDescription {
   double significant_wave_height_m = 0.0;  ///< Hs = 4·√m0 of the sea state (M.1)
+  /// T_p = 2π/ω_p of the wave system holding the most variance, s (0 when none has a peak): with
+  /// Hs, what a beach's run-up is reckoned from (docs/waves.md W.40–W.41).
+  double peak_period_s = 0.0;
   /// A bound on |h| of the displaced surface, m, for culling and the horizon skirt:
   /// kCrestHeightPerHs·Hs + kCrestMarginM (docs/rendering.md, Frame, step 2).
   double crest_bound_m = 0.0;

@@ -63,6 +63,10 @@ struct ShadingParams {
   /// normals where the pixels resolve them, their slope variance taken out of the roughness there
   /// (R.62): ripples on the nearest water. Off: all of it stays roughness.
   bool ripples = true;
+  /// The sea's whitecaps drawn as white patches where a field of the unresolved sea falls below
+  /// the breaking threshold, the cover's mean kept (R.11b). Off: each cascade's breaking
+  /// probability drawn as a grey fraction.
+  bool whitecap_patches = true;
 };
 /// invalid_argument naming the field for non-finite values or values outside the ranges above.
 Status validate(const ShadingParams& params);

@@ -388,6 +388,34 @@ class Damping {
   DampingParams params_;
 };
 
+/// The steepest foreshore the run-up law is applied at (W.41): Stockdon et al. (2006) fitted it
+/// on sandy beaches far gentler than this; a steeper slope (a cliff, a grid's step) is taken as it.
+inline constexpr double kMaxForeshoreSlope = 0.2;
+
+/// The deep-water wavelength of waves of period T, L0 = g·T²/(2π), m (W.40).
+double deep_water_wavelength_m(double period_s, double gravity_mps2);
+
+/// Run-up statistics on a beach (W.41, Stockdon, Holman, Howd & Sallenger 2006), elevations above
+/// the mean sea level, m.
+struct Runup {
+  double setup_m = 0.0;    ///< ⟨η⟩ = 0.35·β_f·√(H0·L0) (their eq. 10)
+  double swash_m = 0.0;    ///< S = √(H0·L0·(0.563·β_f² + 0.004)), the significant swash height
+  double runup2_m = 0.0;   ///< R2% = 1.1·(⟨η⟩ + S/2) (their eq. 19), exceeded by 2 % of the maxima
+  double rundown_m = 0.0;  ///< ⟨η⟩ − S/2: the lowest the drawn swash retreats to (W.42)
+};
+/// Stockdon et al.'s (2006) set-up, swash and R2% for deep-water significant height H0 (m), the
+/// deep-water wavelength of the peak period L0 (m, W.40) and the foreshore slope β_f (tan of its
+/// angle; |β_f| is used, clamped to kMaxForeshoreSlope; NaN is taken as the clamp). All zero
+/// unless H0 > 0 and L0 > 0. Never allocates.
+Runup stockdon_runup(double h0_m, double l0_m, double foreshore_slope);
+/// The elevation of the swash's water line at `phase` of its cycle (cycles; its fraction is used),
+/// m (W.42): Shen & Meyer's (1963) parabola in time from the run-down at phase 0 up to R2% at ½
+/// and back, rundown + (R2% − rundown)·4φ(1 − φ).
+double swash_elevation_m(const Runup& runup, double phase);
+/// The phase offset of the swash at the shoreline point (x, z), cycles (W.43): slow waves along
+/// the shore a fraction of L0 long, so the water line is not one rigid line. 0 unless L0 > 0.
+double swash_alongshore_phase(double x_m, double z_m, double l0_m);
+
 /// A floating object's waterline foam without a wake (W.20): the rim of its footprint, an
 /// ellipse of length_m along its heading and foam.beam_m across it, centred at (x, z).
 struct Footprint {

@@ -8,7 +8,9 @@
 #include <cstring>
 #include <string>
 
+#include "far_map.hpp"
 #include "ocean/half.hpp"
+#include "ocean/waves.hpp"
 #include "state.hpp"
 #include "world_grid.hpp"
 
@@ -17,6 +19,8 @@ namespace ocean::render {
 namespace {
 
 constexpr std::uint32_t kLayers = 3;
+// g of the deep-water wavelength the swash is reckoned from (W.40): the default sea's.
+constexpr double kSwashGravity_mps2 = 9.81;
 
 Status allocate_damping(Renderer::State& st, std::uint32_t side) {
   DampingPass& damping = pass<DampingPass>(st);
@@ -71,6 +75,15 @@ void DampingPass::fill_uniforms(const Renderer::State& st, const View&,
   // 0.0092 per m) and a sandy bottom's albedo, a chosen value (R.24).
   u.damping.absorption_per_m = {0.340f, 0.0565f, 0.0092f};
   u.damping.bottom_albedo = {0.45f, 0.40f, 0.30f};
+  // The swash on the land (R.67): its period is the sea's peak period, its phase taken here in
+  // double precision so that it does not lose its fraction over a long run.
+  const double period = st.peak_period_s;
+  if (period > 0.0 && std::isfinite(period) && st.hs_m > 0.0) {
+    const double cycles = pass<FarFieldPass>(st).time_s / period;
+    u.damping.swash_phase = static_cast<float>(cycles - std::floor(cycles));
+    u.damping.swash_wavelength_m =
+        static_cast<float>(waves::deep_water_wavelength_m(period, kSwashGravity_mps2));
+  }
 }
 
 void DampingPass::upload(Renderer::State&, VkCommandBuffer cmd) {

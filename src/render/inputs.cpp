@@ -31,10 +31,22 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   st.foam_weights = surface.foam_weights;
   st.foam_drift_mps = surface.foam_drift_mps;
   st.foam_decay_time_s = surface.foam_decay_time_s;
+  st.peak_period_s = surface.peak_period_s;
   st.unresolved_slope_variance = surface.unresolved_slope_variance;
   st.map_base_normal_length = surface.map_base_normal_length;
   pass<FarFieldPass>(st).noise = surface.far_noise;
   pass<RipplePass>(st).waves = surface.short_waves;
+  // Whitecaps as patches (R.11b) where the cascades' foam is the breaking probability.
+  const double drift = std::hypot(surface.foam_drift_mps[0], surface.foam_drift_mps[1]);
+  const double u10 = whitecap_wind_mps(surface);
+  WhitecapPass& whitecaps = pass<WhitecapPass>(st);
+  whitecaps.enabled = !surface.foam_weights.empty() && u10 > 0.0 && std::isfinite(u10);
+  if (whitecaps.enabled) {
+    whitecaps.waves = whitecap_waves(
+        u10, drift > 0.0 ? std::array<double, 2>{surface.foam_drift_mps[0] / drift,
+                                                 surface.foam_drift_mps[1] / drift}
+                         : std::array<double, 2>{0.0, 0.0});
+  }
   st.cascades = static_cast<int>(cascade_count);
   const int n = surface.resolution;
   for (int c = 0; c < st.cascades; ++c) {

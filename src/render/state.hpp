@@ -89,6 +89,7 @@ struct Renderer::State {
   std::vector<double> foam_weights;  // SurfaceDescription's (empty: the cascades' foam united)
   std::array<double, 2> foam_drift_mps{0.0, 0.0};  // SurfaceDescription's, from configure()
   double foam_decay_time_s = 0.0;                  // SurfaceDescription's, from configure()
+  double peak_period_s = 0.0;  // SurfaceDescription's T_p: the swash's period (W.40–W.43)
   Passes passes;                     // one object per feature (passes.hpp)
 
   ~State();

@@ -190,6 +190,14 @@ const FarFieldNoise& SimulationPlan::far_noise() const {
 SurfaceDescription SimulationPlan::surface() const {
   SurfaceDescription d;
   d.significant_wave_height_m = hs_m_;
+  double most = -1.0;  // the peak of the system with the largest variance (W.40)
+  for (const WaveSystem& w : sea_->systems()) {
+    const double m0 = w.spectrum().moment(0), omega_p = w.spectrum().peak_omega();
+    if (m0 > most && omega_p > 0.0 && std::isfinite(omega_p)) {
+      most = m0;
+      d.peak_period_s = 2.0 * std::numbers::pi / omega_p;
+    }
+  }
   d.crest_bound_m = kCrestHeightPerHs * hs_m_ + kCrestMarginM;
   d.choppiness = config_.choppiness;
   d.horizontal_reach_m = config_.choppiness * hs_m_;

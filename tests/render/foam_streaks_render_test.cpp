@@ -45,7 +45,13 @@ TapMoments tap_moments() {
   return {m1 / w_sum, m2 / w_sum - (m1 / w_sum) * (m1 / w_sum)};
 }
 
-View top_down() { return ocean::render::testing::top_down_debug_view(kHeight); }
+// The cascades' foam as the streaks draw it: without the whitecaps' patches (R.11b), whose
+// threshold would replace the drawn probability with its white share.
+View top_down() {
+  View view = ocean::render::testing::top_down_debug_view(kHeight);
+  view.shading.whitecap_patches = false;
+  return view;
+}
 
 // The drawn foam at world (x, 0, z), bilinear between pixel centres of the HDR alpha.
 double foam_at(const std::vector<float>& hdr, const View& view, double x, double z) {

@@ -63,6 +63,19 @@ TEST(SimulationPlan, ResolvesWhatEachDerivationGives) {
   EXPECT_EQ(&plan.far_noise(), &fitted);
 }
 
+// The swash's period (docs/waves.md W.40): the peak of the system with the most variance.
+TEST(SimulationPlan, ThePeakPeriodIsThatOfTheLargestSystem) {
+  SimulationConfig c = swell_and_sea();
+  c.sea.wind_sea.spectrum.wind_speed_mps = 10.0;
+  c.sea.wind_sea.spectrum.fetch_m = 100e3;
+  c.sea.swell.spectrum.significant_wave_height_m = 6.0;  // above the wind sea's 2 m or so
+  EXPECT_NEAR(SimulationPlan::make(c).value().surface().peak_period_s, 13.0, 1e-9);
+  c.sea.swell.spectrum.significant_wave_height_m = 0.2;
+  // The wind sea's: JONSWAP's fetch law (Hasselmann et al. 1973), f_p = 3.5·(g/U)·(gF/U²)^−0.33.
+  const double f_p = 3.5 * (9.81 / 10.0) * std::pow(9.81 * 100e3 / 100.0, -0.33);
+  EXPECT_NEAR(SimulationPlan::make(c).value().surface().peak_period_s, 1.0 / f_p, 1e-9);
+}
+
 TEST(SimulationPlan, SurfaceBoundsFollowHs) {
   SimulationConfig c = swell_and_sea();
   c.choppiness = 1.4;

@@ -15,10 +15,12 @@
 #include "planet.glsl"
 #include "local_layer.glsl"
 #include "damping.glsl"
+#include "swash.glsl"
 #include "seabed.glsl"
 #include "underwater.glsl"
 #include "ripples.glsl"
 #include "foam_streaks.glsl"
+#include "whitecaps.h"
 
 // The objects mirrored in the sea level (R.53): colour, coverage in alpha.
 layout(set = 0, binding = OCEAN_RENDER_BINDING_REFLECTION) uniform sampler2D reflection_map;
@@ -166,6 +168,13 @@ void main() {
     else
       no_foam *= 1.0 - sh.foam / (1.0 + 0.6 * float(c));
   }
+  // The sea's breaking probability drawn as white patches, its mean kept (R.11b).
+  if (u.foam_weighted > 0.5 && u.whitecaps.count > 0.0) {
+    vec2 r = world_xz - u.camera_pos_m.xz;
+    float g, v, s2;
+    whitecap_field(u.whitecaps, r.x, r.y, dx.x, dx.y, dy.x, dy.y, g, v, s2);
+    no_foam = 1.0 - whitecap_patch(clamp(1.0 - no_foam, 0.0, 1.0), g, v, s2);
+  }
   ripples_at(world_xz, dx, dy, slope, variance);  // the short waves the pixel resolves (R.62)
   vec2 local_slope;  // wakes and waveforms (R.19): what they change in slope and foam adds
   float local_foam;
@@ -238,11 +247,27 @@ void main() {
 
   if (damping.depth_m < 0.0 && !below) {  // land (R.64): sand under the same sun and sky
     N_up = land_normal(world_xz);
-    foam = 0.0;
-    // Wet sand, darker, up to half the significant height above the mean level.
-    float wet = 1.0 - smoothstep(0.0, max(0.5 * u.hs_m, 0.05), -damping.depth_m);
+    Swash swash = swash_at(world_xz, -damping.depth_m, footprint);  // the run-up over it (R.67)
+    foam = swash.foam;
+    // Wet sand, darker: where the swash wets it, else up to half the significant height above
+    // the mean level.
+    float wet = swash.on ? swash.wet
+                         : 1.0 - smoothstep(0.0, max(0.5 * u.hs_m, 0.05), -damping.depth_m);
     vec3 albedo = u.damping.bottom_albedo * mix(1.0, kWetSandDarkening, wet);
-    c = albedo * (sun_e * max(dot(N_up, L), 0.0) + sky_e * 0.5 * (1.0 + N_up.y)) / PI;
+    vec3 irradiance = sun_e * max(dot(N_up, L), 0.0) + sky_e * 0.5 * (1.0 + N_up.y);
+    c = albedo * irradiance / PI;
+    if (swash.film > 0.0) {  // a film of water over the sand: the sheet, or what drains behind it
+      float f = fresnel_schlick(max(dot(N_up, V), 1e-3));
+      vec3 H_land = normalize(V + L);
+      // The film is smooth: the sky's mirror image and the sun's glint on a narrow lobe.
+      vec3 glint = sun_e * glitter_lobe(max(dot(N_up, H_land), 0.0), max(dot(N_up, V), 1e-3),
+                                        max(dot(N_up, L), 0.0), 0.02) *
+                   fresnel_schlick(max(dot(V, H_land), 0.0)) * max(dot(N_up, L), 0.0);
+      vec3 film = c * (1.0 - f) * exp(-2.0 * u.damping.absorption_per_m * swash.sheet_m) +
+                  f * sky_radiance(reflect(-V, N_up)) + glint;
+      c = mix(c, film, swash.film);
+      c = mix(c, 0.85 * u.foam_brightness * irradiance / PI, foam);
+    }
   }
 
   if (below) {  // the underside, through the water between it and the camera (R.50, R.51)

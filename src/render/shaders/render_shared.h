@@ -34,6 +34,8 @@ struct mat4 {
 // The foam's drift footprint (R.11, docs/waves.md W.31): taps at ages (j + ½)·S·τ/K, j < K.
 #define OCEAN_RENDER_FOAM_STREAK_TAPS 16
 #define OCEAN_RENDER_FOAM_STREAK_SPAN 4.0
+// The sines of the field that places whitecaps as patches (R.11b).
+#define OCEAN_RENDER_WHITECAP_WAVES 48
 // PatchInstance::level of the horizon skirt's single instance (patches use 0 … lod::kMaxLevels).
 #define OCEAN_RENDER_SKIRT_LEVEL 255u
 // Triangles of the hex-tiled cascade lookups per cascade period (R.14): a point and the point
@@ -140,13 +142,13 @@ struct LocalLayerUniforms {
 // The damping of the bands (docs/waves.md W.12–W.13, docs/rendering.md R.24): per-band weights
 // and the depth baked on a square world grid; weight 1 and deep water outside it.
 struct DampingUniforms {
-  vec2 origin_m;          // (x0, z0)
-  float size_m;           // side
-  float resolution;       // N cells per side; 0: no damping
-  vec3 absorption_per_m;  // pure water's absorption, RGB (R.24)
-  float damping_pad;
-  vec3 bottom_albedo;  // the seabed's reflectance seen through shallow water, RGB
-  float damping_pad2;
+  vec2 origin_m;             // (x0, z0)
+  float size_m;              // side
+  float resolution;          // N cells per side; 0: no damping
+  vec3 absorption_per_m;     // pure water's absorption, RGB (R.24)
+  float swash_phase;         // the swash's phase at the frame's time, fract(t/T_p), cycles (R.67)
+  vec3 bottom_albedo;        // the seabed's reflectance seen through shallow water, RGB
+  float swash_wavelength_m;  // L0 = g·T_p²/(2π) of the swash (W.40); 0: no swash drawn
 };
 
 // The sea on a sphere (docs/rendering.md R.30–R.38): positions relative to the camera in the
@@ -188,6 +190,15 @@ struct RippleUniforms {
   vec4 waves[OCEAN_RENDER_MAX_RIPPLES];
   float count;  // waves in use; 0: none drawn
   float ripple_pad0, ripple_pad1, ripple_pad2;
+};
+
+// The sea's whitecaps as patches (R.11b): the sines of a Gaussian field g of unit variance, per
+// sine (k_x, k_z, amplitude, phase at the camera and the frame's time); count 0 draws each
+// cascade's breaking probability as it is.
+struct WhitecapUniforms {
+  vec4 waves[OCEAN_RENDER_WHITECAP_WAVES];
+  float count;
+  float whitecap_pad0, whitecap_pad1, whitecap_pad2;
 };
 
 // Everything per frame, one uniform buffer (std140).
@@ -246,6 +257,7 @@ struct FrameUniforms {
   // The foam's drift over its e-folding time (W.29–W.31): xy = u_d·τ along the wind, (x, z) m;
   // zero draws each cascade's foam where the map holds it. zw unused.
   vec4 foam_streak;
+  WhitecapUniforms whitecaps;  // the sea's whitecaps as patches (R.11b)
 };
 
 // Push constants of the sky pass (std430).
@@ -296,8 +308,12 @@ static_assert(offsetof(FrameUniforms, ripples) == 912 + 36 * OCEAN_RENDER_MAX_CA
 static_assert(sizeof(RippleUniforms) == 16 * OCEAN_RENDER_MAX_RIPPLES + 16);
 static_assert(offsetof(FrameUniforms, foam_streak) ==
               928 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
-static_assert(sizeof(FrameUniforms) ==
+static_assert(offsetof(FrameUniforms, whitecaps) ==
               944 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
+static_assert(sizeof(WhitecapUniforms) == 16 * OCEAN_RENDER_WHITECAP_WAVES + 16);
+static_assert(sizeof(FrameUniforms) == 960 + 36 * OCEAN_RENDER_MAX_CASCADES +
+                                           16 * OCEAN_RENDER_MAX_RIPPLES +
+                                           16 * OCEAN_RENDER_WHITECAP_WAVES);
 static_assert(sizeof(SkyPush) == 64);
 }  // namespace ocean::render::shader
 #endif
