@@ -232,9 +232,10 @@ void add_wave_flags(CLI::App& command, WaveFlags& f) {
                      "FILE,X0,Z0,SIZE_M: .npy water depth, m, from corner (X0, Z0); damps each "
                      "band where the water is shallow against its wavelength");
   command.add_option("--shallows", f.shallows,
-                     "none, lily-pads (a damping mask) or lagoon (an island 4 m high in a 400 m "
-                     "bathymetry), centred on the origin; instead of --damping-mask and "
-                     "--bathymetry");
+                     "none, lily-pads (a damping mask), lagoon (an island 4 m high in a 400 m "
+                     "bathymetry) or beach (a planar beach in a 600 m bathymetry), centred on the "
+                     "origin, the sea's peak wave refracted and shoaled over the lagoon and the "
+                     "beach; instead of --damping-mask and --bathymetry");
   command.add_option("--breaking-index", f.breaking_index,
                      "GAMMA: waves over --bathymetry break where their rms height exceeds GAMMA "
                      "times the depth (default 0.78, McCowan's solitary wave; 0: no breaking)");
@@ -245,7 +246,7 @@ Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
   const std::optional<Shallows> shallows = parse_shallows(f.shallows);
   if (!shallows)
     return invalid_argument("--shallows = '" + excerpt(f.shallows) +
-                            "': must be none, lily-pads or lagoon");
+                            "': must be none, lily-pads, lagoon or beach");
   if (f.damping_mask.empty() && f.bathymetry.empty() && *shallows == Shallows::none)
     return std::shared_ptr<const waves::Damping>();
   if (f.calm)
@@ -291,6 +292,33 @@ Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& f,
                    d.status());
   }
   return std::make_shared<const waves::Damping>(std::move(d).value());
+}
+
+Status add_shore_wave(const WaveFlags& f, const SimulationConfig& config,
+                      std::optional<waves::LayerParams>& layer) {
+  const std::optional<Shallows> shallows = parse_shallows(f.shallows);
+  if (!shallows || f.calm || (*shallows != Shallows::lagoon && *shallows != Shallows::beach))
+    return {};
+  Result<std::vector<double>> gamma =
+      numbers("--breaking-index", f.breaking_index, 1, 1, "one number (0: no breaking)");
+  if (!gamma.ok()) return {};
+  Result<int> n = parse(kLocalResolution, f.local_resolution);
+  if (!n.ok()) return n.status();
+  Result<std::optional<waves::Waveform>> form = shallows_shore_wave(
+      *shallows, {0.0, 0.0}, config, gamma.value()[0], n.value(), kShoreWaveFrames);
+  if (!form.ok()) return form.status();
+  if (!form.value().has_value()) return {};
+  const waves::Waveform& w = *form.value();
+  if (!layer.has_value()) {
+    layer =
+        waves::LayerParams{.area = {.origin_m = {w.x_m - 0.5 * w.size_m, w.z_m - 0.5 * w.size_m},
+                                    .size_m = w.size_m,
+                                    .resolution = n.value()},
+                           .choppiness = config.choppiness,
+                           .gravity_mps2 = config.sea.dispersion.gravity_mps2};
+  }
+  layer->waveforms.push_back(std::move(*form.value()));
+  return {};
 }
 
 DampingSamples sample_damping(const waves::Damping& damping, int resolution, std::size_t bands) {

@@ -48,6 +48,16 @@ Result<std::optional<waves::LayerParams>> layer_params(const WaveFlags& flags, d
 Result<std::shared_ptr<const waves::Damping>> make_damping(const WaveFlags& flags,
                                                            const SimulationConfig& config);
 
+/// With --shallows lagoon or beach (and neither --calm nor a bad flag, which make_damping
+/// reports): the scene's shore wave (shallows_shore_wave, docs/waves.md W.38) added to the
+/// layer's waveforms, kShoreWaveFrames frames over one period at --local-resolution; without a
+/// layer, one made over the scene's depth map. Errors: a bad --local-resolution, the spectrum's.
+Status add_shore_wave(const WaveFlags& flags, const SimulationConfig& config,
+                      std::optional<waves::LayerParams>& layer);
+/// Frames of the shore wave's looped waveform per period: 32 keep the amplitude of the blend
+/// between two frames of the travelling wave above cos(π/32) = 0.995 of its own (W.16).
+inline constexpr int kShoreWaveFrames = 32;
+
 /// The damping sampled on a square grid over its maps (the union of the mask's and the
 /// bathymetry's rectangles) for a renderer: per cell `bands` weights (Damping::band_weights; 1
 /// beyond the damping's bands) and the depth (+inf where no bathymetry covers the cell).

@@ -1,13 +1,18 @@
 // The damping flags of `ocean query`: a mask of 1 and deep water change nothing, a mask of 0 and
 // dry land do; bad maps, placements and values are one line and a non-zero exit; `ocean bake`
-// refuses the flags.
+// refuses the flags. Over `--shallows beach` the queried heights carry the peak wave shoaled and
+// refracted as linear theory's closed forms say (docs/waves.md W.32–W.38).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <nlohmann/json.hpp>
+#include <numbers>
 
 #include "cli/cli_run.hpp"
 #include "ocean/io.hpp"
+#include "ocean/sim.hpp"
+#include "support/depth_law.hpp"
 
 namespace {
 
@@ -79,6 +84,80 @@ TEST(DampingCli, BreakingHoldsTheHeightsOverShallowWaterAndTheLagoonHasAnIsland)
             (std::vector<double>{0.0, 0.0, 0.0}));
 }
 
+// The root k of ω² = g·k·tanh(k·d) by bisection (Dean & Dalrymple 1991, ch. 3).
+double beach_dispersion_root(double omega, double d) {
+  constexpr double g = 9.81;
+  double lo = 0.0, hi = 10.0 * omega * omega / g + omega / std::sqrt(g * d);
+  for (int i = 0; i < 200; ++i) {
+    const double mid = 0.5 * (lo + hi);
+    (g * mid * std::tanh(mid * d) < omega * omega ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The beach (apps/ocean/shallows.hpp): contours whose normal points 35° from +x towards +z, the
+// shore 100 m out along it, the bottom at 1:20 from 10 m deep. A wind sea of Tp = 8 s travelling
+// along +x meets them at θ0 = 35°. The shore wave's part of a queried height is what the query
+// gives less what it gives with the shore wave's layer moved away; its amplitude is read from two
+// instants a quarter period apart. Between 3 m and 1 m of water it grows by the ratio of
+// β·K_s·K_r (W.35, W.38): K_s = √(c_g0/c_g), K_r = √(cos θ0/cos θ) with Snell's
+// sin θ = (k0/k)·sin θ0, β = √(1 − Φ(√(g·k_low), d)), k_low the low band's wavenumber (W.14).
+TEST(DampingCli, TheBeachCarriesThePeakWaveShoaledAndRefracted) {
+  constexpr double pi = std::numbers::pi, gravity = 9.81, tp = 8.0, theta0 = 35.0 * pi / 180.0;
+  const double nx = std::cos(theta0), nz = std::sin(theta0);
+  const double u_deep = 40.0, u_shallow = 80.0;  // d = 3 m and 1 m
+  const std::string at = std::to_string(u_deep * nx) + "," + std::to_string(u_deep * nz) + ";" +
+                         std::to_string(u_shallow * nx) + "," + std::to_string(u_shallow * nz) +
+                         ";140,60;-400,0";  // land; off the map
+  const auto heights = [&](double t, const std::string& extra) {
+    const auto r = ocean_test::run_cli(
+        "query --resolution 32 --cascades 200,47 --seed 4 --hs 0.4 --tp 8 --json --choppiness 0 "
+        "--shallows beach --time " +
+        std::to_string(t) + " --at '" + at + "'" + extra);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    return r.exit_code == 0 ? nlohmann::json::parse(r.out)["height_m"].get<std::vector<double>>()
+                            : std::vector<double>(4, std::nan(""));
+  };
+  const std::string away = " --local-area 3000,3000,50 --local-resolution 64";
+  std::vector<double> amplitude(4, 0.0);
+  for (double t : {3.0, 3.0 + tp / 4.0}) {
+    const std::vector<double> with = heights(t, ""), without = heights(t, away);
+    ASSERT_EQ(with.size(), 4u);
+    ASSERT_EQ(without.size(), 4u);
+    for (std::size_t i = 0; i < 4; ++i)
+      amplitude[i] += (with[i] - without[i]) * (with[i] - without[i]);
+  }
+  for (double& a : amplitude) a = std::sqrt(a);
+  EXPECT_EQ(amplitude[2], 0.0);  // land carries no wave
+  EXPECT_EQ(amplitude[3], 0.0);  // nor does the sea beyond the map
+  ocean::SimulationConfig bands;
+  bands.resolution = 32;
+  bands.cascade_patch_sizes_m = {200.0, 47.0};
+  const double k_low = ocean::band_wavenumbers(bands).front();
+  const double omega = 2.0 * pi / tp, k0 = omega * omega / gravity;
+  const auto theory = [&](double d) {
+    const double k = beach_dispersion_root(omega, d);
+    const double cg = 0.5 * (1.0 + 2.0 * k * d / std::sinh(2.0 * k * d)) * omega / k;
+    const double sin_theta = k0 / k * std::sin(theta0);
+    const double ks = std::sqrt(gravity / (2.0 * omega) / cg);
+    const double kr = std::sqrt(std::cos(theta0) / std::sqrt(1.0 - sin_theta * sin_theta));
+    const double beta =
+        std::sqrt(1.0 - ocean_test::kitaigorodskii_phi(std::sqrt(gravity * k_low), d));
+    return beta * ks * kr;
+  };
+  const double want = theory(1.0) / theory(3.0);
+  ASSERT_GT(amplitude[0], 0.0);
+  const double got = amplitude[1] / amplitude[0];
+  std::printf(
+      "shore wave amplitude over 3 m and 1 m: %.4f and %.4f m, ratio %.4f, closed form "
+      "%.4f\n",
+      amplitude[0], amplitude[1], got, want);
+  // The layer's frames and cells: a blend of two frames keeps ≥ cos(π/32) of the amplitude, a
+  // bilinear sample between cells ≥ cos(π/n) at n cells per wavelength (21 over 1 m of water);
+  // the ray sweeps on contours at 35° to the grid ≈ 0.2 % (tests/waves/shore_wave_test.cpp).
+  EXPECT_NEAR(got, want, 0.03 * want);
+}
+
 TEST(DampingCli, BadInputIsOneLine) {
   ocean_test::ScratchDir dir("damping_cli_bad_");
   const std::string sea = kDampedSea;
@@ -101,7 +180,7 @@ TEST(DampingCli, BadInputIsOneLine) {
   ocean_test::expect_usage_error(sea + " --damping-mask " + two + ",0,0,10",
                                  "damping mask value 0 = 2 is not in [0, 1]");
   ocean_test::expect_usage_error(sea + " --bathymetry x.png,0,0,10", "need a .npy file");
-  ocean_test::expect_usage_error(sea + " --shallows beach", "--shallows = 'beach': must be");
+  ocean_test::expect_usage_error(sea + " --shallows reef", "--shallows = 'reef': must be");
   ocean_test::expect_usage_error(sea + " --shallows lagoon --bathymetry " + ok + ",0,0,10",
                                  "not with --damping-mask or --bathymetry");
   ocean_test::expect_usage_error(sea + " --bathymetry " + ok + ",0,0,10 --breaking-index 2",

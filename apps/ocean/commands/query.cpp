@@ -57,6 +57,7 @@ int run_query(const QueryOptions& o) {
   if (!layer.ok()) return report(layer.status());
   Result<std::shared_ptr<const waves::Damping>> damping = make_damping(o.waves, config.value());
   if (!damping.ok()) return report(damping.status());
+  if (Status s = add_shore_wave(o.waves, config.value(), layer.value()); !s.ok()) return report(s);
   // The world holds the layer (no objects) and hands it to the simulator.
   Result<std::unique_ptr<world::World>> world =
       world::World::make({.layer = std::move(layer).value()}, config.value());

@@ -125,6 +125,7 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
       layer_params(o.waves, in.scene.config.choppiness, in.time_s);
   if (!layer.ok()) return layer.status();
   in.layer = std::move(layer).value();
+  if (Status s = add_shore_wave(o.waves, in.scene.config, in.layer); !s.ok()) return s;
   // The preset's picture settings, under the flags (--far-field-range wins).
   if (Status s = parse_view_flags(o.picture, sim, 1, in.scene, in.view); !s.ok()) return s;
   if (in.calm) in.scene.config.far_noise.resolution = 0;  // no sea, no far field

@@ -89,7 +89,7 @@ Result<ViewInputs> parse_inputs(const ViewOptions& o) {
   const std::optional<view::Shallows> shallows = view::parse_shallows(o.shallows);
   if (!shallows)
     return invalid_argument("--shallows = '" + excerpt(o.shallows) +
-                            "': must be none, lily-pads or lagoon");
+                            "': must be none, lily-pads, lagoon or beach");
   in.shallows = *shallows;
   const Status taa = check_taa_support(in.scene, in.view);
   in.taa_available = taa.ok();
