@@ -160,7 +160,6 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
     in.scene.height = static_cast<int>(drawn_h);
   }
   in.taa = o.taa;
-  if (in.taa && in.ipd.has_value()) return invalid_argument("--taa draws one view, not --stereo");
   if (in.taa && in.supersample > 1)
     return invalid_argument("--taa or --supersample: one anti-aliasing, not both");
   if (in.taa) {
@@ -464,7 +463,9 @@ int run_render(const RenderOptions& o) {
       if (Status s = renderer.set_motion_vectors(true); !s.ok()) return report(s);
       view.temporal_aa = {.enabled = true, .current_weight = 1.0 / kTaaStillSamples};
       for (int k = 1; k < kTaaStillSamples; ++k)
-        if (Status s = renderer.draw(view); !s.ok()) return report(s);
+        if (Status s = in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
+            !s.ok())
+          return report(s);
     } else if (in.taa && f == 1) {
       view.temporal_aa.current_weight = render::View::TemporalAntiAliasing{}.current_weight;
     }
