@@ -126,7 +126,7 @@ Status prepare_motion(Renderer::State& st) {
     Result<vk::Image2D> target =
         vk::create_image_2d(*st.ctx, kMotionFormat, st.hdr.width, st.hdr.height,
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                VK_IMAGE_USAGE_SAMPLED_BIT |  // read by a later pass
+                                VK_IMAGE_USAGE_SAMPLED_BIT |       // read by a later pass
                                 VK_IMAGE_USAGE_TRANSFER_DST_BIT);  // a stereo frame's eyes
     if (!target.ok()) return target.status();
     mp.target = target.value();
@@ -221,8 +221,8 @@ void fill_stereo_motion(const Renderer::State& st, const std::array<lod::Camera,
     const lod::Camera& before = moved ? mp.eye_cameras[e] : eyes[e];
     u.eyes[e].previous_view_proj =
         to_mat4(lod::view_projection(relative_camera(before, st.selection)).m);
-    u.eyes[e].sky_reprojection = to_mat4(multiply(rotation_view_projection(before),
-                                                  inverse(rotation_view_projection(eyes[e]))));
+    u.eyes[e].sky_reprojection = to_mat4(
+        multiply(rotation_view_projection(before), inverse(rotation_view_projection(eyes[e]))));
   }
 }
 
@@ -258,10 +258,10 @@ Status record_stereo_motion(Renderer::State& st, VkCommandBuffer cmd,
   if (mp.stereo_target.image == VK_NULL_HANDLE || mp.stereo_target.width != depth.width ||
       mp.stereo_target.height != depth.height) {
     vk::destroy_image(*st.ctx, mp.stereo_target);
-    Result<vk::Image2D> target = vk::create_image_2d(
-        *st.ctx, kMotionFormat, depth.width, depth.height,
-        VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
-        VK_IMAGE_ASPECT_COLOR_BIT, 2);
+    Result<vk::Image2D> target =
+        vk::create_image_2d(*st.ctx, kMotionFormat, depth.width, depth.height,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                            VK_IMAGE_ASPECT_COLOR_BIT, 2);
     if (!target.ok()) return target.status();
     mp.stereo_target = target.value();
   }
@@ -293,8 +293,8 @@ Status record_stereo_motion(Renderer::State& st, VkCommandBuffer cmd,
                   .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
                   .dstOffset = {static_cast<std::int32_t>(e * mp.stereo_target.width), 0, 0},
                   .extent = {mp.stereo_target.width, mp.stereo_target.height, 1}};
-  vkCmdCopyImage(cmd, mp.stereo_target.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                 mp.target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 2, regions);
+  vkCmdCopyImage(cmd, mp.stereo_target.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, mp.target.image,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 2, regions);
   vk::image_barrier(cmd, mp.target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                     VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                     VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,

@@ -202,8 +202,8 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
   if (pass<MotionPass>(st).enabled) {
     // Both eyes' motion side by side as the picture is, then the temporal blend per eye (R.61),
     // which takes and leaves the HDR image as a colour attachment.
-    if (Status s = record_stereo_motion(st, cmd, eyes, view.camera, sp.depth,
-                                        skirt_instance.value());
+    if (Status s =
+            record_stereo_motion(st, cmd, eyes, view.camera, sp.depth, skirt_instance.value());
         !s.ok())
       return s;
     vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,

@@ -209,8 +209,7 @@ struct TemporalPass : Pass {
     const float push[6] = {static_cast<float>(frame.view.temporal_aa.current_weight),
                            static_cast<float>(1.0 / static_cast<double>(frames + 1)),
                            kClipSigmas,
-                           static_cast<float>(kSteadyShare *
-                                              frame.view.temporal_aa.current_weight),
+                           static_cast<float>(kSteadyShare * frame.view.temporal_aa.current_weight),
                            kSteadyClipSigmas,
                            static_cast<float>(frame.eyes)};
     draw_fullscreen(cmd, {.target = history[now].view,

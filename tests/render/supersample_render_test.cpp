@@ -172,8 +172,7 @@ std::vector<std::array<std::vector<double>, 2>> render_stereo_luminance(
         for (std::size_t col = 0; col < static_cast<std::size_t>(kW); ++col) {
           const std::uint8_t* p = &resolved.value()[4 * (row * 2 * kW + e * kW + col)];
           eyes[e][row * kW + col] = 0.2126 * srgb8_to_linear(p[0]) +
-                                    0.7152 * srgb8_to_linear(p[1]) +
-                                    0.0722 * srgb8_to_linear(p[2]);
+                                    0.7152 * srgb8_to_linear(p[1]) + 0.0722 * srgb8_to_linear(p[2]);
         }
     }
     out.push_back(std::move(eyes));

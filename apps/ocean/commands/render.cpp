@@ -463,7 +463,8 @@ int run_render(const RenderOptions& o) {
       if (Status s = renderer.set_motion_vectors(true); !s.ok()) return report(s);
       view.temporal_aa = {.enabled = true, .current_weight = 1.0 / kTaaStillSamples};
       for (int k = 1; k < kTaaStillSamples; ++k)
-        if (Status s = in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
+        if (Status s =
+                in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
             !s.ok())
           return report(s);
     } else if (in.taa && f == 1) {
@@ -592,8 +593,9 @@ Command add_render_command(CLI::App& app) {
       "jitter and blended into the last along the motion vectors (weight 0.2); the first frame "
       "is the mean of " +
           std::to_string(kTaaStillSamples) +
-          " jittered draws at its time (that many times its drawing work). Not with --stereo, "
-          "--supersample, --sphere, --mesh tessellation or --backend vulkan");
+          " jittered draws at its time (that many times its drawing work); with --stereo each eye "
+          "on its own. Not with --supersample, --sphere, --mesh tessellation or --backend "
+          "vulkan");
   command->add_option("--motion-vectors", o->motion_vectors,
                       "also write the last frame's motion vectors (camera and waves, pixels per "
                       "frame) as a PNG: red right, green down, grey still (docs/rendering.md "

@@ -71,11 +71,13 @@ int run_xr(const XrOptions& o) {
   const bool one_pass = session.context()->multiview && !o.no_multiview;
   // One renderer draws both eyes: its history holds both side by side, which the one-pass
   // frame keeps apart and a render per eye would overwrite.
+  if (o.taa && o.no_multiview)
+    return report(
+        invalid_argument("--taa: draws both eyes in one multiview pass, not with --no-multiview"));
   if (o.taa && !one_pass)
-    return report(invalid_argument(
-        o.no_multiview ? "--taa: draws both eyes in one multiview pass, not with --no-multiview"
-                       : "--taa: needs both eyes in one multiview pass, and the Vulkan device '" +
-                             session.context()->info.name + "' lacks multiview"));
+    return report(
+        unsupported("--taa: needs both eyes in one multiview pass, and the Vulkan device '" +
+                    session.context()->info.name + "' lacks multiview"));
   Result<std::unique_ptr<render::Renderer>> renderer = render::Renderer::make(
       session.context(),
       {.width = (one_pass ? 2 : 1) * session.eye_width(), .height = session.eye_height()});
