@@ -8,7 +8,10 @@
 // history — the last result, fetched where the pixel's surface point was a frame ago and clipped
 // to the colour box of the frame's 3 × 3 neighbourhood (Salvi 2016, variance clipping) in Karis's
 // (2014) luminance-weighted space — and the result, kept for the next frame, replaces the HDR
-// image before the tone map.
+// image before the tone map. Pixels that hold still (the frame's alpha: the sky, and the sea
+// where a pixel spans the finest cascade's tile) blend with a fifth of the weight in a wider box.
+// A stereo frame's eyes, side by side, are jittered each in its own pixels and blended each on
+// its own, along its own motion vectors (stereo.cpp).
 #pragma once
 
 #include <algorithm>
@@ -205,7 +208,8 @@ struct TemporalPass : Pass {
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    // The first frames are their plain mean; then the configured weight.
+    // The first frames are their plain mean; then the configured weight (a fifth of it where the
+    // picture holds still).
     const float push[6] = {static_cast<float>(frame.view.temporal_aa.current_weight),
                            static_cast<float>(1.0 / static_cast<double>(frames + 1)),
                            kClipSigmas,
