@@ -48,6 +48,16 @@ Status prepare_motion(Renderer::State& st);
 // `camera`, then this frame kept as the previous one.
 void record_motion(Renderer::State& st, VkCommandBuffer cmd, const lod::Camera& camera,
                    std::uint32_t skirt_instance);
+// Stereo (R.61): each eye's previous view-projection and sky reprojection into u.eyes (the eyes
+// of the last stereo frame; none before one: no motion), before the uniforms are written.
+void fill_stereo_motion(const Renderer::State& st, const std::array<lod::Camera, 2>& eyes,
+                        shader::FrameUniforms& u);
+// After the stereo HDR pass: both eyes' motion in one multiview pass over `depth` (the layered
+// stereo depth, cleared again), side by side into the motion target; the frame kept as the
+// previous one.
+Status record_stereo_motion(Renderer::State& st, VkCommandBuffer cmd,
+                            const std::array<lod::Camera, 2>& eyes, const lod::Camera& head,
+                            const vk::Image2D& depth, std::uint32_t skirt_instance);
 // stereo.cpp: a column-major double matrix as the shaders' float one.
 shader::mat4 to_mat4(const std::array<double, 16>& m);
 // Tone maps st.hdr (in `hdr_layout`, written by `src_stage`/`src_access`) into st.srgb with the

@@ -126,7 +126,8 @@ Status prepare_motion(Renderer::State& st) {
     Result<vk::Image2D> target =
         vk::create_image_2d(*st.ctx, kMotionFormat, st.hdr.width, st.hdr.height,
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
-                                VK_IMAGE_USAGE_SAMPLED_BIT);  // read by a later pass
+                                VK_IMAGE_USAGE_SAMPLED_BIT |       // read by a later pass
+                                VK_IMAGE_USAGE_TRANSFER_DST_BIT);  // a stereo frame's eyes
     if (!target.ok()) return target.status();
     mp.target = target.value();
   }
@@ -207,16 +208,113 @@ void record_motion(Renderer::State& st, VkCommandBuffer cmd, const lod::Camera& 
                     VK_ACCESS_TRANSFER_READ_BIT);
   keep_displacement(st, cmd, false);
   mp.camera = camera;
+  mp.previous_stereo = false;
   mp.previous_valid = true;
+}
+
+void fill_stereo_motion(const Renderer::State& st, const std::array<lod::Camera, 2>& eyes,
+                        shader::FrameUniforms& u) {
+  const MotionPass& mp = pass<MotionPass>(st);
+  if (!mp.enabled) return;
+  const bool moved = mp.previous_valid && mp.previous_stereo;
+  for (std::size_t e = 0; e < 2; ++e) {
+    const lod::Camera& before = moved ? mp.eye_cameras[e] : eyes[e];
+    u.eyes[e].previous_view_proj =
+        to_mat4(lod::view_projection(relative_camera(before, st.selection)).m);
+    u.eyes[e].sky_reprojection = to_mat4(
+        multiply(rotation_view_projection(before), inverse(rotation_view_projection(eyes[e]))));
+  }
+}
+
+Status record_stereo_motion(Renderer::State& st, VkCommandBuffer cmd,
+                            const std::array<lod::Camera, 2>& eyes, const lod::Camera& head,
+                            const vk::Image2D& depth, std::uint32_t skirt_instance) {
+  MotionPass& mp = pass<MotionPass>(st);
+  constexpr std::uint32_t kBothEyes = 0b11;
+  if (mp.ocean_mv == VK_NULL_HANDLE) {
+    Result<VkShaderModule> sky_vert = shader_module(st, spirv::sky_vert_mv());
+    Result<VkShaderModule> sky_frag = shader_module(st, spirv::motion_sky_frag_mv());
+    Result<VkShaderModule> ocean_vert = shader_module(st, spirv::ocean_vert_motion_mv());
+    Result<VkShaderModule> ocean_frag = shader_module(st, spirv::motion_frag());
+    for (const auto* m : {&sky_vert, &sky_frag, &ocean_vert, &ocean_frag})
+      if (!m->ok()) return m->status();
+    Result<VkPipeline> p = make_pipeline(*st.ctx, {.vert = sky_vert.value(),
+                                                   .frag = sky_frag.value(),
+                                                   .layout = mp.layout,
+                                                   .colour = kMotionFormat,
+                                                   .depth_test = false,
+                                                   .view_mask = kBothEyes});
+    if (!p.ok()) return p.status();
+    mp.sky_mv = p.value();
+    p = make_pipeline(*st.ctx, {.vert = ocean_vert.value(),
+                                .frag = ocean_frag.value(),
+                                .layout = mp.layout,
+                                .colour = kMotionFormat,
+                                .mesh_input = true,
+                                .view_mask = kBothEyes});
+    if (!p.ok()) return p.status();
+    mp.ocean_mv = p.value();
+  }
+  if (mp.stereo_target.image == VK_NULL_HANDLE || mp.stereo_target.width != depth.width ||
+      mp.stereo_target.height != depth.height) {
+    vk::destroy_image(*st.ctx, mp.stereo_target);
+    Result<vk::Image2D> target =
+        vk::create_image_2d(*st.ctx, kMotionFormat, depth.width, depth.height,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                            VK_IMAGE_ASPECT_COLOR_BIT, 2);
+    if (!target.ok()) return target.status();
+    mp.stereo_target = target.value();
+  }
+  if (!mp.previous_valid) keep_displacement(st, cmd, true);
+  const shader::MotionPush push{};  // the eyes' matrices are in the uniforms (fill_stereo_motion)
+  begin_scene(st, cmd, mp.stereo_target, depth, kBothEyes);
+  const VkDescriptorSet sets[] = {st.scene_set, mp.set};
+  vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mp.layout, 0, 2, sets, 0, nullptr);
+  vkCmdPushConstants(cmd, mp.layout, VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0,
+                     sizeof(push), &push);
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mp.sky_mv);
+  vkCmdDraw(cmd, 6, 1, 0, 0);  // the multiview sky's quad (sky.vert)
+  vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, mp.ocean_mv);
+  record_patches(st, cmd, skirt_instance, nullptr);
+  vkCmdEndRendering(cmd);
+  // The eyes' layers side by side into the motion target, left where read_motion() copies from.
+  vk::image_barrier(cmd, mp.stereo_target.image, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                    VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_READ_BIT);
+  vk::image_barrier(cmd, mp.target.image, VK_IMAGE_LAYOUT_UNDEFINED,
+                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
+                    VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+  VkImageCopy regions[2];
+  for (std::uint32_t e = 0; e < 2; ++e)
+    regions[e] = {.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, e, 1},
+                  .dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                  .dstOffset = {static_cast<std::int32_t>(e * mp.stereo_target.width), 0, 0},
+                  .extent = {mp.stereo_target.width, mp.stereo_target.height, 1}};
+  vkCmdCopyImage(cmd, mp.stereo_target.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, mp.target.image,
+                 VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 2, regions);
+  vk::image_barrier(cmd, mp.target.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                    VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VK_ACCESS_TRANSFER_READ_BIT);
+  keep_displacement(st, cmd, false);
+  mp.camera = head;
+  mp.eye_cameras = eyes;
+  mp.previous_stereo = true;
+  mp.previous_valid = true;
+  return {};
 }
 
 void destroy_motion(Renderer::State& st, bool all) {
   MotionPass& mp = pass<MotionPass>(st);
   vk::destroy_image(*st.ctx, mp.target);
+  vk::destroy_image(*st.ctx, mp.stereo_target);
   if (!all) return;
   vk::destroy_image(*st.ctx, mp.previous);
   const VkDevice d = st.ctx->device;
-  for (VkPipeline p : {mp.sky, mp.ocean})
+  for (VkPipeline p : {mp.sky, mp.ocean, mp.sky_mv, mp.ocean_mv})
     if (p != VK_NULL_HANDLE) vkDestroyPipeline(d, p, nullptr);
   if (mp.layout != VK_NULL_HANDLE) vkDestroyPipelineLayout(d, mp.layout, nullptr);
   if (mp.pool != VK_NULL_HANDLE) vkDestroyDescriptorPool(d, mp.pool, nullptr);

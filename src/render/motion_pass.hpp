@@ -3,6 +3,7 @@
 // cascades' displacement array and the camera. Made by Renderer::set_motion_vectors(true).
 #pragma once
 
+#include <array>
 #include <optional>
 
 #include "ocean/lod.hpp"
@@ -18,6 +19,12 @@ struct MotionPass : Pass {
   vk::Image previous;           // the displacement array of the previous frame (GENERAL)
   bool previous_valid = false;  // `previous` and `camera` hold the last drawn frame
   lod::Camera camera;           // the previous frame's camera, world metres
+  // A stereo frame (R.61): the eyes of the previous one (valid when previous_stereo), the
+  // multiview pipelines and the layered target of one eye's size, made on the first.
+  bool previous_stereo = false;
+  std::array<lod::Camera, 2> eye_cameras;
+  vk::Image2D stereo_target;
+  VkPipeline sky_mv = VK_NULL_HANDLE, ocean_mv = VK_NULL_HANDLE;
   VkDescriptorSetLayout set_layout = VK_NULL_HANDLE;
   VkDescriptorPool pool = VK_NULL_HANDLE;
   VkDescriptorSet set = VK_NULL_HANDLE;

@@ -55,6 +55,7 @@ struct FrameContext {
   const View& view;
   RenderStats& stats;
   std::uint32_t skirt_instance = 0;
+  int eyes = 1;  // 2: a stereo frame, the eyes side by side in the HDR image (R.25)
 };
 
 // The hooks' defaults (see above); a pass derives from it and hides the ones it implements.

@@ -138,11 +138,10 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
   if (view.sphere.enabled) return unsupported("stereo: not drawn for the sea on a sphere");
   if (view.tessellation.mesh == MeshMode::tessellation)
     return unsupported("stereo: not drawn with the tessellated mesh");
-  if (view.temporal_aa.enabled)
-    return unsupported("stereo: not drawn with temporal anti-aliasing (one view only)");
   if (Status s = create_stereo_pipelines(st); !s.ok()) return s;
   if (Status s = create_stereo_targets(st); !s.ok()) return s;
   if (Status s = prepare(view); !s.ok()) return s;
+  if (Status s = prepare_motion(st); !s.ok()) return s;
   // One selection for both eyes: distances from the head, culled by the planes that bound both
   // frusta (R.25, docs/lod.md L.13): for parallel eyes the left eye's left plane, the right
   // eye's right plane and the shared others; for a headset's canted, rolled eyes each side's
@@ -162,6 +161,10 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
                               static_cast<float>(eye.position_m.y),
                               static_cast<float>(eye.position_m.z), 0.0f};
   }
+  // Temporal anti-aliasing (R.61): each eye jittered in its own pixels; the motion vectors
+  // reproject each eye to where it was a frame ago.
+  pass<TemporalPass>(st).jitter_eyes(st, view, u);
+  fill_stereo_motion(st, eyes, u);
   std::memcpy(st.uniforms.mapped, &u, sizeof(u));
 
   begin_frame(st, cmd);
@@ -196,6 +199,24 @@ Status Renderer::record_stereo(VkCommandBuffer cmd, const View& view,
                   .extent = {sp.hdr.width, sp.hdr.height, 1}};
   vkCmdCopyImage(cmd, sp.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, st.hdr.image,
                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 2, regions);
+  if (pass<MotionPass>(st).enabled) {
+    // Both eyes' motion side by side as the picture is, then the temporal blend per eye (R.61),
+    // which takes and leaves the HDR image as a colour attachment.
+    if (Status s =
+            record_stereo_motion(st, cmd, eyes, view.camera, sp.depth, skirt_instance.value());
+        !s.ok())
+      return s;
+    vk::image_barrier(cmd, st.hdr.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                      VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                      VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                      VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    const FrameContext frame{view, stats_, skirt_instance.value(), 2};
+    if (Status s = pass<TemporalPass>(st).after_scene(st, cmd, frame); !s.ok()) return s;
+    finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                 VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
+                 VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, stats_);
+    return {};
+  }
   finish_frame(st, cmd, view, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT,
                VK_ACCESS_TRANSFER_WRITE_BIT, stats_);
   return {};

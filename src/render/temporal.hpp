@@ -8,7 +8,10 @@
 // history — the last result, fetched where the pixel's surface point was a frame ago and clipped
 // to the colour box of the frame's 3 × 3 neighbourhood (Salvi 2016, variance clipping) in Karis's
 // (2014) luminance-weighted space — and the result, kept for the next frame, replaces the HDR
-// image before the tone map.
+// image before the tone map. Pixels that hold still (the frame's alpha: the sky, and the sea
+// where a pixel spans the finest cascade's tile) blend with a fifth of the weight in a wider box.
+// A stereo frame's eyes, side by side, are jittered each in its own pixels and blended each on
+// its own, along its own motion vectors (stereo.cpp).
 #pragma once
 
 #include <algorithm>
@@ -41,11 +44,20 @@ struct TemporalPass : Pass {
   // (Salvi's) clips a still's 16-draw mean to 0.5–0.6 of the plain picture's error, two to 0.3
   // (tests/render/supersample_render_test.cpp).
   static constexpr float kClipSigmas = 2.0f;
+  // Where the frame's pixel spans the finest cascade's tile (its alpha, ocean.frag) or shows the
+  // sky, the picture changes little from frame to frame and the history holds: the frame weighs a
+  // fifth of current_weight (the default 0.2 → 0.04, an exponential mean of (2 − α)/α = 49
+  // frames, three jitter cycles) and the box is widened to 3 σ, so that neither each jittered
+  // frame's share nor the clip to each frame's noisy box flickers there
+  // (tests/render/supersample_render_test.cpp).
+  static constexpr double kSteadyShare = 0.2;
+  static constexpr float kSteadyClipSigmas = 3.0f;
   vk::Image2D history[2];  // RGBA16F, the picture's size, written in turn
   VkImageLayout history_layout[2] = {VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_UNDEFINED};
   int written = 0;       // the history image the last frame wrote
   int frames = 0;        // frames blended since the history was started (0: none)
   int jitter_index = 0;  // the next frame's Halton point, 0 … kJitterPositions − 1
+  int history_eyes = 1;  // the pictures side by side in the history (2: a stereo frame's eyes)
   // The images each set was last written with (set i reads history[1 − i]).
   VkImageView set_hdr[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
   VkImageView set_motion[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
@@ -84,7 +96,7 @@ struct TemporalPass : Pass {
                            {.frag = spirv::temporal_frag(),
                             .colour = kHdrFormat,
                             .samplers = bindings,
-                            .push_bytes = 2 * sizeof(float)},
+                            .push_bytes = 6 * sizeof(float)},
                            objects, sets);
   }
 
@@ -122,6 +134,23 @@ struct TemporalPass : Pass {
     u.footprint_scale = static_cast<float>(1.0 / std::sqrt(double{kJitterPositions}));
   }
 
+  // Stereo (R.25): each eye's matrix moved by the same offset in its own pixels (the eyes side by
+  // side, each half the HDR image's width), after fill_uniforms.
+  template <class State>
+  void jitter_eyes(const State& st, const View& view, shader::FrameUniforms& u) const {
+    if (!view.temporal_aa.enabled) return;
+    const std::array<double, 2> j = jitter_px();
+    const auto dx = static_cast<float>(2.0 * j[0] / (st.hdr.width / 2));
+    const auto dy = static_cast<float>(2.0 * j[1] / st.hdr.height);
+    for (shader::EyeUniforms& eye : u.eyes)
+      for (int c = 0; c < 4; ++c) {
+        eye.view_proj.m[c * 4 + 0] += dx * eye.view_proj.m[c * 4 + 3];
+        eye.view_proj.m[c * 4 + 1] += dy * eye.view_proj.m[c * 4 + 3];
+      }
+    u.jitter_ndc_x = dx;
+    u.jitter_ndc_y = dy;
+  }
+
   template <class State>
   Status after_scene(State& st, VkCommandBuffer cmd, const FrameContext& frame) {
     if (!frame.view.temporal_aa.enabled) {
@@ -142,6 +171,8 @@ struct TemporalPass : Pass {
       }
       break;
     }
+    if (history_eyes != frame.eyes) frames = 0;  // mono after stereo or back: a new history
+    history_eyes = frame.eyes;
     const MotionPass& motion = std::get<MotionPass>(st.passes);
     const int now = 1 - written, before = written;
     if (set_hdr[now] != st.hdr.view || set_motion[now] != motion.target.view) {
@@ -177,10 +208,14 @@ struct TemporalPass : Pass {
                       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, VK_PIPELINE_STAGE_TRANSFER_BIT, 0,
                       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT,
                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
-    // The first frames are their plain mean; then the configured weight.
-    const float push[2] = {static_cast<float>(std::max(frame.view.temporal_aa.current_weight,
-                                                       1.0 / static_cast<double>(frames + 1))),
-                           kClipSigmas};
+    // The first frames are their plain mean; then the configured weight (a fifth of it where the
+    // picture holds still).
+    const float push[6] = {static_cast<float>(frame.view.temporal_aa.current_weight),
+                           static_cast<float>(1.0 / static_cast<double>(frames + 1)),
+                           kClipSigmas,
+                           static_cast<float>(kSteadyShare * frame.view.temporal_aa.current_weight),
+                           kSteadyClipSigmas,
+                           static_cast<float>(frame.eyes)};
     draw_fullscreen(cmd, {.target = history[now].view,
                           .width = w,
                           .height = h,

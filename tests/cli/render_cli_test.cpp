@@ -231,7 +231,6 @@ TEST(RenderCli, BadInputSaysWhatIsWrong) {
   ocean_test::expect_usage_error("render --supersample 2 --motion-vectors m.png", "--supersample");
   ocean_test::expect_usage_error("render --supersample 2 --contact-sheet s.png", "--supersample");
   ocean_test::expect_usage_error("render --taa --supersample 2", "one anti-aliasing");
-  ocean_test::expect_usage_error("render --taa --stereo", "--taa draws one view");
   ocean_test::expect_usage_error("render --taa --sphere", "--taa: not with --sphere");
   ocean_test::expect_usage_error("render --taa --mesh tessellation", "--taa: not with --mesh");
   ocean_test::expect_usage_error("render --taa --backend vulkan", "--taa: not with --backend");

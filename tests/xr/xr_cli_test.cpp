@@ -27,13 +27,14 @@ using ocean_test::ScratchDir;
 
 constexpr std::int64_t kPeriod_ns = 11'111'111;  // the test runtime's 90 Hz
 
-void run_frames(bool validation) {
+void run_frames(bool validation, bool taa = false) {
   if (!ocean::vk::list_devices().ok()) OCEAN_SKIP_OR_FAIL("no Vulkan device");
   ScratchDir dir("ocean_xr_test");
   const std::string report = (dir.path / "report.json").string();
   const std::filesystem::path messages = dir.path / "validation.txt";
   std::vector<std::string> args = {"xr", "--frames", "5", "--quality", "low", "--json"};
   if (validation) args.push_back("--validation");
+  if (taa) args.push_back("--taa");
   const ocean_test::CliRun r = run_cli_argv(
       args, {},
       {std::string("XR_RUNTIME_JSON=") + OCEAN_TEST_XR_RUNTIME_JSON,
@@ -74,6 +75,20 @@ void run_frames(bool validation) {
 TEST(XrCli, RunsFramesAgainstTheTestRuntime) { run_frames(false); }
 
 TEST(XrCli, RunsFramesUnderTheValidationLayers) { run_frames(true); }
+
+// --taa (docs/rendering.md R.61): each eye jittered, its motion drawn in the multiview pass and
+// blended into its own half of the history, with both validation layers silent; a render per
+// eye (--no-multiview) would share one history between the eyes and is refused in one line.
+TEST(XrCli, RunsFramesWithTemporalAntiAliasingUnderTheValidationLayers) {
+  run_frames(true, true);
+  if (!ocean::vk::list_devices().ok()) return;
+  const ocean_test::CliRun r =
+      run_cli_argv({"xr", "--taa", "--no-multiview", "--frames", "1"}, {},
+                   {std::string("XR_RUNTIME_JSON=") + OCEAN_TEST_XR_RUNTIME_JSON});
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("--taa: draws both eyes in one multiview pass"), std::string::npos)
+      << r.err;
+}
 
 // The horizon of one eye image, in the view's tangent coordinates (a, b): the direction
 // (a, b, −1) of view space. The horizon is the brightest line of a column: the sky brightens

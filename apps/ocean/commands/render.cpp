@@ -161,7 +161,6 @@ Result<Inputs> parse_inputs(const RenderOptions& o) {
     in.scene.height = static_cast<int>(drawn_h);
   }
   in.taa = o.taa;
-  if (in.taa && in.ipd.has_value()) return invalid_argument("--taa draws one view, not --stereo");
   if (in.taa && in.supersample > 1)
     return invalid_argument("--taa or --supersample: one anti-aliasing, not both");
   if (in.taa) {
@@ -465,7 +464,10 @@ int run_render(const RenderOptions& o) {
       if (Status s = renderer.set_motion_vectors(true); !s.ok()) return report(s);
       view.temporal_aa = {.enabled = true, .current_weight = 1.0 / kTaaStillSamples};
       for (int k = 1; k < kTaaStillSamples; ++k)
-        if (Status s = renderer.draw(view); !s.ok()) return report(s);
+        if (Status s =
+                in.ipd.has_value() ? renderer.draw_stereo(view, *in.ipd) : renderer.draw(view);
+            !s.ok())
+          return report(s);
     } else if (in.taa && f == 1) {
       view.temporal_aa.current_weight = render::View::TemporalAntiAliasing{}.current_weight;
     }
@@ -592,8 +594,9 @@ Command add_render_command(CLI::App& app) {
       "jitter and blended into the last along the motion vectors (weight 0.2); the first frame "
       "is the mean of " +
           std::to_string(kTaaStillSamples) +
-          " jittered draws at its time (that many times its drawing work). Not with --stereo, "
-          "--supersample, --sphere, --mesh tessellation or --backend vulkan");
+          " jittered draws at its time (that many times its drawing work); with --stereo each eye "
+          "on its own. Not with --supersample, --sphere, --mesh tessellation or --backend "
+          "vulkan");
   command->add_option("--motion-vectors", o->motion_vectors,
                       "also write the last frame's motion vectors (camera and waves, pixels per "
                       "frame) as a PNG: red right, green down, grey still (docs/rendering.md "

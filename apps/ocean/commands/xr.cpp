@@ -37,6 +37,7 @@ struct XrOptions {
   std::string quality = "high";
   bool validation = false;
   bool no_multiview = false;
+  bool taa = false;  // temporal anti-aliasing per eye (R.61)
   bool json = false;
 };
 
@@ -68,13 +69,25 @@ int run_xr(const XrOptions& o) {
   if (!sim.ok()) return report(sim.status());
   // Both eyes side by side in one multiview pass (R.25), or one render per eye.
   const bool one_pass = session.context()->multiview && !o.no_multiview;
+  // One renderer draws both eyes: its history holds both side by side, which the one-pass
+  // frame keeps apart and a render per eye would overwrite.
+  if (o.taa && o.no_multiview)
+    return report(
+        invalid_argument("--taa: draws both eyes in one multiview pass, not with --no-multiview"));
+  if (o.taa && !one_pass)
+    return report(
+        unsupported("--taa: needs both eyes in one multiview pass, and the Vulkan device '" +
+                    session.context()->info.name + "' lacks multiview"));
   Result<std::unique_ptr<render::Renderer>> renderer = render::Renderer::make(
       session.context(),
       {.width = (one_pass ? 2 : 1) * session.eye_width(), .height = session.eye_height()});
   if (!renderer.ok()) return report(renderer.status());
   render::Renderer& r = *renderer.value();
   if (Status s = r.configure(sim.value()->plan().surface()); !s.ok()) return report(s);
+  if (o.taa)
+    if (Status s = r.set_motion_vectors(true); !s.ok()) return report(s);
   render::View view;
+  view.temporal_aa.enabled = o.taa;
   Result<lod::QualityPreset> quality = lod::parse_preset(o.quality);
   if (!quality.ok()) {
     return report(invalid_argument("--quality = " + excerpt(o.quality) +
@@ -182,6 +195,9 @@ Command add_xr_command(CLI::App& app) {
                 "OpenXR core validation layer and Vulkan validation layer on");
   cmd->add_flag("--no-multiview", options->no_multiview,
                 "Render the eyes one after the other even when the device has multiview");
+  cmd->add_flag("--taa", options->taa,
+                "Temporal anti-aliasing per eye (docs/rendering.md R.61): each frame jittered "
+                "and blended into the eye's history along its motion vectors; needs multiview");
   cmd->add_flag(
       "--json", options->json,
       "Print the frames' predicted display times and simulation times, and whether both eyes "

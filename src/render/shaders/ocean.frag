@@ -285,5 +285,15 @@ void main() {
     vec3 lc = level < 9u ? kLevelColours[level] : vec3(0.5);
     c = mix(c, lc * (0.4 + 0.6 * max(dot(N, L), 0.0)) * 0.5, 0.6);
   }
-  colour = vec4(c, 1.0);
+  // Alpha: with temporal anti-aliasing, the share of its weight the frame keeps in the blend
+  // (R.61): all of it where the pixel resolves the waves, whose glints move over the surface
+  // unlike the motion vectors; none where its whole footprint spans the finest cascade's tile,
+  // whose mean over every wave the cascade holds changes little from frame to frame.
+  float moving = 1.0;
+  if (u.footprint_scale < 1.0 && cascades > 0) {
+    float finest_m = u.cascades[0].patch_size_m;
+    for (int k = 1; k < cascades; ++k) finest_m = min(finest_m, u.cascades[k].patch_size_m);
+    moving = 1.0 - smoothstep(0.25 * finest_m, finest_m, footprint / u.footprint_scale);
+  }
+  colour = vec4(c, moving);
 }

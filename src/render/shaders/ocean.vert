@@ -8,6 +8,11 @@
 // hex tiles with random offsets and cascade 0 blends into the far field's noise (R.13, R.14).
 // All weights are functions of the world position and the camera alone, so vertices that two
 // patches share get the same displacement and the stitched mesh stays closed.
+// OCEAN_MOTION_MULTIVIEW: the motion vectors of both eyes in one multiview pass (R.61).
+#ifdef OCEAN_MOTION_MULTIVIEW
+#define OCEAN_MOTION 1
+#define OCEAN_MULTIVIEW 1
+#endif
 #include "ocean_displacement.glsl"
 #ifdef OCEAN_MOTION
 #include "motion_shared.h"
@@ -46,7 +51,12 @@ void main() {
   vec3 previous = ocean_displacement_from(previous_map, xz, spacing);
   clip_now = gl_Position;  // without the sub-pixel jitter (R.61): the motion of the surface
   clip_now.xy -= vec2(u.jitter_ndc_x, u.jitter_ndc_y) * gl_Position.w;
-  clip_previous = motion.previous_view_proj *
+#ifdef OCEAN_MULTIVIEW
+  mat4 previous_view_proj = u.eyes[gl_ViewIndex].previous_view_proj;
+#else
+  mat4 previous_view_proj = motion.previous_view_proj;
+#endif
+  clip_previous = previous_view_proj *
                   vec4(xz.x + previous.x, previous.y - curvature_drop(xz), xz.y + previous.z, 1.0);
 #endif
 }

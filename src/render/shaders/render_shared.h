@@ -171,6 +171,10 @@ struct EyeUniforms {
   mat4 view_proj;          // the eye's lod::view_projection relative to the origin (R.16)
   mat4 inverse_view_proj;  // its inverse (the sky's view rays)
   vec4 camera_pos_m;       // the eye relative to the origin; w unused
+  // The motion vectors of the eye (R.26, R.61), the OCEAN_MOTION_MULTIVIEW shaders': the eye a
+  // frame ago relative to this frame's origin, and a far point's current clip → previous clip.
+  mat4 previous_view_proj;
+  mat4 sky_reprojection;
 };
 
 // The water below the surface (docs/rendering.md R.50–R.52): its absorption (the seabed's, pure
@@ -295,23 +299,23 @@ static_assert(sizeof(DampingUniforms) == 48);
 static_assert(offsetof(FrameUniforms, damping) == 336 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(offsetof(FrameUniforms, sphere) == 384 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(SphereUniforms) == 64);
-static_assert(sizeof(EyeUniforms) == 144);
+static_assert(sizeof(EyeUniforms) == 272);
 static_assert(offsetof(FrameUniforms, eyes) == 448 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(offsetof(FrameUniforms, underwater) == 736 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, underwater) == 992 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(FarOctaveUniforms) == 16);
-static_assert(offsetof(FrameUniforms, far_octaves) == 784 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, far_octaves) == 1040 + 32 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(FarMapUniforms) == 48);
-static_assert(offsetof(FrameUniforms, far_map) == 832 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(offsetof(FrameUniforms, foam_weights) == 880 + 32 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(offsetof(FrameUniforms, air_rayleigh) == 880 + 36 * OCEAN_RENDER_MAX_CASCADES);
-static_assert(offsetof(FrameUniforms, ripples) == 912 + 36 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, far_map) == 1088 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, foam_weights) == 1136 + 32 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, air_rayleigh) == 1136 + 36 * OCEAN_RENDER_MAX_CASCADES);
+static_assert(offsetof(FrameUniforms, ripples) == 1168 + 36 * OCEAN_RENDER_MAX_CASCADES);
 static_assert(sizeof(RippleUniforms) == 16 * OCEAN_RENDER_MAX_RIPPLES + 16);
 static_assert(offsetof(FrameUniforms, foam_streak) ==
-              928 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
+              1184 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
 static_assert(offsetof(FrameUniforms, whitecaps) ==
-              944 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
+              1200 + 36 * OCEAN_RENDER_MAX_CASCADES + 16 * OCEAN_RENDER_MAX_RIPPLES);
 static_assert(sizeof(WhitecapUniforms) == 16 * OCEAN_RENDER_WHITECAP_WAVES + 16);
-static_assert(sizeof(FrameUniforms) == 960 + 36 * OCEAN_RENDER_MAX_CASCADES +
+static_assert(sizeof(FrameUniforms) == 1216 + 36 * OCEAN_RENDER_MAX_CASCADES +
                                            16 * OCEAN_RENDER_MAX_RIPPLES +
                                            16 * OCEAN_RENDER_WHITECAP_WAVES);
 static_assert(sizeof(SkyPush) == 64);

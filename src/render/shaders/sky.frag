@@ -51,5 +51,7 @@ void main() {
   // An environment map carries its own sun (R.17).
   if (sun_above && u.environment.scale == 0.0) c += edge * sun_seen / solid_angle * 0.02;
   // No fog on the sky itself: at the horizon it already is the fog's colour (R.8).
-  colour = vec4(c, 1.0);
+  // The sky moves with the camera's rotation alone, which its motion vectors follow: its share
+  // of the temporal blend is the steady one (alpha 0, R.61).
+  colour = vec4(c, u.footprint_scale < 1.0 ? 0.0 : 1.0);
 }
