@@ -22,8 +22,8 @@ void WhitecapPass::fill_uniforms(const Renderer::State& st, const View& view,
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
   for (std::size_t i = 0; i < waves.size(); ++i) {
     const WhitecapWave& w = waves[i];
-    double phase = std::fmod(w.kx_radpm * ex + w.kz_radpm * ez - w.omega_radps * t + w.phase_rad,
-                             kTwoPi);
+    double phase =
+        std::fmod(w.kx_radpm * ex + w.kz_radpm * ez - w.omega_radps * t + w.phase_rad, kTwoPi);
     if (phase < 0.0) phase += kTwoPi;
     u.whitecaps.waves[i] = {static_cast<float>(w.kx_radpm), static_cast<float>(w.kz_radpm),
                             static_cast<float>(w.amplitude), static_cast<float>(phase)};

@@ -38,9 +38,11 @@ inline constexpr double kWhitecapSpreadRad = std::numbers::pi / 3.0;
 /// the unit vector `wind` ((0, 0): no direction, the sines spread over every direction): lengths
 /// spaced evenly in ln k between the speeds above, directions and phases from additive recurrences
 /// (golden ratio, plastic number), amplitudes A_i ∝ (k_i/k_0)^(slope/2) scaled so that
-/// Σ A²/2 = 1 (unit variance).
+/// Σ A²/2 = 1 (unit variance). Each vector is rounded to the lattice 2π·(m, n)/`period_m` (the
+/// coarsest cascade's, as the ripples' are, M.9.4; 0: not rounded), so the field repeats with the
+/// sea and a camera a whole number of periods away sees the same picture.
 inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
-    double u10_mps, std::array<double, 2> wind) {
+    double u10_mps, std::array<double, 2> wind, double period_m = 0.0) {
   constexpr int kWaves = OCEAN_RENDER_WHITECAP_WAVES;
   constexpr double kG = 9.80665, kTwoPi = 2.0 * std::numbers::pi;
   const double c_long = kWhitecapSpeedLong * u10_mps, c_short = kWhitecapSpeedShort * u10_mps;
@@ -56,8 +58,15 @@ inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
     const double angle = directed ? base + (2.0 * u - 1.0) * kWhitecapSpreadRad : kTwoPi * u;
     const double amplitude = std::pow(k / k_low, 0.5 * kWhitecapSpectrumSlope);
     variance += 0.5 * amplitude * amplitude;
-    waves[static_cast<std::size_t>(i)] = {k * std::cos(angle), k * std::sin(angle), amplitude,
-                                          std::sqrt(kG * k), kTwoPi * p};
+    double kx = k * std::cos(angle), kz = k * std::sin(angle);
+    if (period_m > 0.0) {
+      const double dk = kTwoPi / period_m;
+      kx = dk * std::round(kx / dk);
+      kz = dk * std::round(kz / dk);
+      if (kx == 0.0 && kz == 0.0) kx = dk;
+    }
+    waves[static_cast<std::size_t>(i)] = {kx, kz, amplitude, std::sqrt(kG * std::hypot(kx, kz)),
+                                          kTwoPi * p};
   }
   for (WhitecapWave& w : waves) w.amplitude /= std::sqrt(variance);
   return waves;

@@ -125,6 +125,8 @@ TEST(LocalSurfaceRender, PixelsCarryTheCompositedNormalAndAccumulatedFoam) {
   // Steep enough to fold over blocks of 5×5 cells (Fr = 0.38): the slender pressure's crests
   // (docs/waves.md W.4) are narrower than an 8 m hull's at 1 m made.
   p.waveforms.clear();
+  // A hard edge: the hull, 8 m from the border, keeps its whole wake (W.9b's edge would fade it).
+  p.area.edge_fraction = 0.0;
   p.wakes.push_back({.x_m = 24.0,
                      .heading_deg = 180.0,
                      .speed_mps = 4.5,

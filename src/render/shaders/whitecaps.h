@@ -48,8 +48,9 @@ using std::sqrt;
 OCEAN_FN float whitecap_normal_cdf(float x) {
   float z = min(abs(x) * 0.70710678f, 10.5f);
   float t = 1.0f / (1.0f + 0.3275911f * z);
-  float poly = t * (0.254829592f +
-                    t * (-0.284496736f + t * (1.421413741f + t * (-1.453152027f + t * 1.061405429f))));
+  float poly =
+      t * (0.254829592f +
+           t * (-0.284496736f + t * (1.421413741f + t * (-1.453152027f + t * 1.061405429f))));
   float tail = 0.5f * poly * exp(-z * z);
   return x < 0.0f ? tail : 1.0f - tail;
 }
