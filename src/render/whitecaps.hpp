@@ -27,9 +27,13 @@ struct WhitecapWave {
 /// (c = 0.2·U10/√10: 0.26 m at 10 m/s) so that their edges are ragged and holed as foam's are.
 /// A chosen range, not a law.
 inline constexpr double kWhitecapSpeedLong = 0.6, kWhitecapSpeedShort = 0.2 / 3.1622776601683795;
-/// The sines' share of the variance per unit ln k falls as k^−½ from the longest: the patches'
-/// outlines carry more of it than the raggedness of their edges.
+/// The sines' share of the variance per unit ln k falls as k^−½ from the 0.6·U10 wave: the
+/// patches' outlines carry more of it than the raggedness of their edges.
 inline constexpr double kWhitecapSpectrumSlope = -0.5;
+/// Below that wave the field goes on to waves 8 times longer with a share rising as k¹: a few
+/// long sines of their own would place the patches on a visible lattice (a narrow band's troughs
+/// repeat), these gather them into groups as a sea's wave groups gather its breakers.
+inline constexpr double kWhitecapGroupLengths = 8.0, kWhitecapGroupSlope = 1.0;
 /// The sines' directions lie within this angle either side of the wind (whitecaps are longer
 /// along the crests, across the wind); isotropic where the sea names no wind.
 inline constexpr double kWhitecapSpreadRad = std::numbers::pi / 3.0;
@@ -37,7 +41,8 @@ inline constexpr double kWhitecapSpreadRad = std::numbers::pi / 3.0;
 /// The field's OCEAN_RENDER_WHITECAP_WAVES sines for a sea of wind speed `u10_mps` blowing along
 /// the unit vector `wind` ((0, 0): no direction, the sines spread over every direction): lengths
 /// spaced evenly in ln k between the speeds above, directions and phases from additive recurrences
-/// (golden ratio, plastic number), amplitudes A_i ∝ (k_i/k_0)^(slope/2) scaled so that
+/// (golden ratio, plastic number), amplitudes A_i ∝ (k_i/k_0)^(slope/2) (k_0 of the 0.6·U10 wave,
+/// each side its slope) scaled so that
 /// Σ A²/2 = 1 (unit variance). Each vector is rounded to the lattice 2π·(m, n)/`period_m` (the
 /// coarsest cascade's, as the ripples' are, M.9.4; 0: not rounded), so the field repeats with the
 /// sea and a camera a whole number of periods away sees the same picture.
@@ -46,7 +51,8 @@ inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
   constexpr int kWaves = OCEAN_RENDER_WHITECAP_WAVES;
   constexpr double kG = 9.80665, kTwoPi = 2.0 * std::numbers::pi;
   const double c_long = kWhitecapSpeedLong * u10_mps, c_short = kWhitecapSpeedShort * u10_mps;
-  const double k_low = kG / (c_long * c_long), k_high = kG / (c_short * c_short);  // c² = g/k
+  const double k_peak = kG / (c_long * c_long), k_high = kG / (c_short * c_short);  // c² = g/k
+  const double k_low = k_peak / kWhitecapGroupLengths;
   const bool directed = wind[0] != 0.0 || wind[1] != 0.0;
   const double base = directed ? std::atan2(wind[1], wind[0]) : 0.0;
   std::array<WhitecapWave, kWaves> waves{};
@@ -56,7 +62,8 @@ inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
     const double u = std::fmod(0.5 + i * 0.6180339887498949, 1.0);   // golden ratio
     const double p = std::fmod(0.25 + i * 0.7548776662466927, 1.0);  // plastic number
     const double angle = directed ? base + (2.0 * u - 1.0) * kWhitecapSpreadRad : kTwoPi * u;
-    const double amplitude = std::pow(k / k_low, 0.5 * kWhitecapSpectrumSlope);
+    const double amplitude = std::pow(
+        k / k_peak, 0.5 * (k >= k_peak ? kWhitecapSpectrumSlope : kWhitecapGroupSlope));
     variance += 0.5 * amplitude * amplitude;
     double kx = k * std::cos(angle), kz = k * std::sin(angle);
     if (period_m > 0.0) {
