@@ -4,7 +4,9 @@
 // previous frame's displacement array (kept as a copy) under the previous camera — and
 // motion.frag writes the difference of the two NDC positions; the sky's pixels move with the
 // camera's rotation (motion_sky.frag). The read-back scales NDC to pixels.
+#include <cstdint>
 #include <cstring>
+#include <span>
 #include <string>
 
 #include "frame_steps.hpp"
@@ -19,6 +21,38 @@ namespace ocean::render {
 namespace {
 
 constexpr VkFormat kMotionFormat = VK_FORMAT_R16G16_SFLOAT;
+
+// The sky's and the surface's motion pipelines from their shaders (one view, or the eyes of
+// `view_mask` at once), on the pass's layout, into `sky` and `ocean`.
+Status make_motion_pipelines(Renderer::State& st, std::span<const std::uint32_t> sky_vert_spv,
+                             std::span<const std::uint32_t> sky_frag_spv,
+                             std::span<const std::uint32_t> ocean_vert_spv, std::uint32_t view_mask,
+                             VkPipeline& sky, VkPipeline& ocean) {
+  const MotionPass& mp = pass<MotionPass>(st);
+  Result<VkShaderModule> sky_vert = shader_module(st, sky_vert_spv);
+  Result<VkShaderModule> sky_frag = shader_module(st, sky_frag_spv);
+  Result<VkShaderModule> ocean_vert = shader_module(st, ocean_vert_spv);
+  Result<VkShaderModule> ocean_frag = shader_module(st, spirv::motion_frag());
+  for (const auto* m : {&sky_vert, &sky_frag, &ocean_vert, &ocean_frag})
+    if (!m->ok()) return m->status();
+  Result<VkPipeline> p = make_pipeline(*st.ctx, {.vert = sky_vert.value(),
+                                                 .frag = sky_frag.value(),
+                                                 .layout = mp.layout,
+                                                 .colour = kMotionFormat,
+                                                 .depth_test = false,
+                                                 .view_mask = view_mask});
+  if (!p.ok()) return p.status();
+  sky = p.value();
+  p = make_pipeline(*st.ctx, {.vert = ocean_vert.value(),
+                              .frag = ocean_frag.value(),
+                              .layout = mp.layout,
+                              .colour = kMotionFormat,
+                              .mesh_input = true,
+                              .view_mask = view_mask});
+  if (!p.ok()) return p.status();
+  ocean = p.value();
+  return {};
+}
 
 Status create_motion_objects(Renderer::State& st) {
   MotionPass& mp = pass<MotionPass>(st);
@@ -59,27 +93,8 @@ Status create_motion_objects(Renderer::State& st) {
     s = vk::check(vkCreatePipelineLayout(d, &layout, nullptr, &mp.layout),
                   "vkCreatePipelineLayout");
   if (!s.ok()) return s;
-  Result<VkShaderModule> sky_vert = shader_module(st, spirv::sky_vert());
-  Result<VkShaderModule> sky_frag = shader_module(st, spirv::motion_sky_frag());
-  Result<VkShaderModule> ocean_vert = shader_module(st, spirv::ocean_vert_motion());
-  Result<VkShaderModule> ocean_frag = shader_module(st, spirv::motion_frag());
-  for (const auto* m : {&sky_vert, &sky_frag, &ocean_vert, &ocean_frag})
-    if (!m->ok()) return m->status();
-  Result<VkPipeline> p = make_pipeline(*st.ctx, {.vert = sky_vert.value(),
-                                                 .frag = sky_frag.value(),
-                                                 .layout = mp.layout,
-                                                 .colour = kMotionFormat,
-                                                 .depth_test = false});
-  if (!p.ok()) return p.status();
-  mp.sky = p.value();
-  p = make_pipeline(*st.ctx, {.vert = ocean_vert.value(),
-                              .frag = ocean_frag.value(),
-                              .layout = mp.layout,
-                              .colour = kMotionFormat,
-                              .mesh_input = true});
-  if (!p.ok()) return p.status();
-  mp.ocean = p.value();
-  return {};
+  return make_motion_pipelines(st, spirv::sky_vert(), spirv::motion_sky_frag(),
+                               spirv::ocean_vert_motion(), 0, mp.sky, mp.ocean);
 }
 
 // The view-projection of `camera` with its eye at the origin: what a direction sees.
@@ -232,28 +247,10 @@ Status record_stereo_motion(Renderer::State& st, VkCommandBuffer cmd,
   MotionPass& mp = pass<MotionPass>(st);
   constexpr std::uint32_t kBothEyes = 0b11;
   if (mp.ocean_mv == VK_NULL_HANDLE) {
-    Result<VkShaderModule> sky_vert = shader_module(st, spirv::sky_vert_mv());
-    Result<VkShaderModule> sky_frag = shader_module(st, spirv::motion_sky_frag_mv());
-    Result<VkShaderModule> ocean_vert = shader_module(st, spirv::ocean_vert_motion_mv());
-    Result<VkShaderModule> ocean_frag = shader_module(st, spirv::motion_frag());
-    for (const auto* m : {&sky_vert, &sky_frag, &ocean_vert, &ocean_frag})
-      if (!m->ok()) return m->status();
-    Result<VkPipeline> p = make_pipeline(*st.ctx, {.vert = sky_vert.value(),
-                                                   .frag = sky_frag.value(),
-                                                   .layout = mp.layout,
-                                                   .colour = kMotionFormat,
-                                                   .depth_test = false,
-                                                   .view_mask = kBothEyes});
-    if (!p.ok()) return p.status();
-    mp.sky_mv = p.value();
-    p = make_pipeline(*st.ctx, {.vert = ocean_vert.value(),
-                                .frag = ocean_frag.value(),
-                                .layout = mp.layout,
-                                .colour = kMotionFormat,
-                                .mesh_input = true,
-                                .view_mask = kBothEyes});
-    if (!p.ok()) return p.status();
-    mp.ocean_mv = p.value();
+    Status made =
+        make_motion_pipelines(st, spirv::sky_vert_mv(), spirv::motion_sky_frag_mv(),
+                              spirv::ocean_vert_motion_mv(), kBothEyes, mp.sky_mv, mp.ocean_mv);
+    if (!made.ok()) return made;
   }
   if (mp.stereo_target.image == VK_NULL_HANDLE || mp.stereo_target.width != depth.width ||
       mp.stereo_target.height != depth.height) {

@@ -80,6 +80,21 @@ struct Drawing {
   double weight = 0.2;
 };
 
+// The test's view (the camera kEyeHeightM up looking level, clear sky) with `how`'s temporal
+// anti-aliasing; mono, or the head of a stereo pair.
+ocean::render::View test_view(const Drawing& how) {
+  ocean::render::View view;
+  view.camera = {.position_m = {0.0, kEyeHeightM, 0.0},
+                 .target_m = {1000.0, kEyeHeightM, 300.0},
+                 .fov_y_rad = kFovDeg * std::numbers::pi / 180.0,
+                 .aspect = static_cast<double>(kW) / kH,
+                 .near_m = 0.2,
+                 .far_m = 2e5};
+  view.shading = ocean::render::sky_preset("clear").value();
+  view.temporal_aa = {.enabled = how.taa, .current_weight = how.weight};
+  return view;
+}
+
 // Luminance (Rec. 709, linear) of frames at `times`, drawn as `how` says.
 std::vector<std::vector<double>> render_luminance(const Drawing& how,
                                                   const std::vector<double>& times) {
@@ -91,15 +106,7 @@ std::vector<std::vector<double>> render_luminance(const Drawing& how,
   if (how.taa) {
     EXPECT_TRUE(scene.value()->renderer().set_motion_vectors(true).ok());
   }
-  ocean::render::View view;
-  view.camera = {.position_m = {0.0, kEyeHeightM, 0.0},
-                 .target_m = {1000.0, kEyeHeightM, 300.0},
-                 .fov_y_rad = kFovDeg * std::numbers::pi / 180.0,
-                 .aspect = static_cast<double>(kW) / kH,
-                 .near_m = 0.2,
-                 .far_m = 2e5};
-  view.shading = ocean::render::sky_preset("clear").value();
-  view.temporal_aa = {.enabled = how.taa, .current_weight = how.weight};
+  const ocean::render::View view = test_view(how);
   std::vector<std::vector<double>> out;
   for (std::size_t f = 0; f < times.size(); ++f) {
     EXPECT_TRUE(
@@ -142,15 +149,7 @@ std::vector<std::array<std::vector<double>, 2>> render_stereo_luminance(
   if (how.taa) {
     EXPECT_TRUE(scene.value()->renderer().set_motion_vectors(true).ok());
   }
-  ocean::render::View view;
-  view.camera = {.position_m = {0.0, kEyeHeightM, 0.0},
-                 .target_m = {1000.0, kEyeHeightM, 300.0},
-                 .fov_y_rad = kFovDeg * std::numbers::pi / 180.0,
-                 .aspect = static_cast<double>(kW) / kH,
-                 .near_m = 0.2,
-                 .far_m = 2e5};
-  view.shading = ocean::render::sky_preset("clear").value();
-  view.temporal_aa = {.enabled = how.taa, .current_weight = how.weight};
+  const ocean::render::View view = test_view(how);
   std::vector<std::array<std::vector<double>, 2>> out;
   for (std::size_t f = 0; f < times.size(); ++f) {
     EXPECT_TRUE(
