@@ -45,8 +45,7 @@ Status Renderer::configure(const SurfaceDescription& surface) {
     whitecaps.waves = whitecap_waves(
         u10, drift > 0.0 ? std::array<double, 2>{surface.foam_drift_mps[0] / drift,
                                                  surface.foam_drift_mps[1] / drift}
-                         : std::array<double, 2>{0.0, 0.0},
-        surface.patch_sizes_m.empty() ? 0.0 : surface.patch_sizes_m.front());
+                         : std::array<double, 2>{0.0, 0.0});
   }
   st.cascades = static_cast<int>(cascade_count);
   const int n = surface.resolution;

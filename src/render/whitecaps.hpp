@@ -43,11 +43,11 @@ inline constexpr double kWhitecapSpreadRad = std::numbers::pi / 3.0;
 /// spaced evenly in ln k between the speeds above, directions and phases from additive recurrences
 /// (golden ratio, plastic number), amplitudes A_i ∝ (k_i/k_0)^(slope/2) (k_0 of the 0.6·U10 wave,
 /// each side its slope) scaled so that
-/// Σ A²/2 = 1 (unit variance). Each vector is rounded to the lattice 2π·(m, n)/`period_m` (the
-/// coarsest cascade's, as the ripples' are, M.9.4; 0: not rounded), so the field repeats with the
-/// sea and a camera a whole number of periods away sees the same picture.
+/// Σ A²/2 = 1 (unit variance). The vectors lie on no lattice: the field does not repeat with the
+/// cascades, so that from altitude the whitecaps do not show their period (the hex tiles hide it,
+/// R.14), and a camera whole periods away sees another realisation of the same statistics.
 inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
-    double u10_mps, std::array<double, 2> wind, double period_m = 0.0) {
+    double u10_mps, std::array<double, 2> wind) {
   constexpr int kWaves = OCEAN_RENDER_WHITECAP_WAVES;
   constexpr double kG = 9.80665, kTwoPi = 2.0 * std::numbers::pi;
   const double c_long = kWhitecapSpeedLong * u10_mps, c_short = kWhitecapSpeedShort * u10_mps;
@@ -65,15 +65,8 @@ inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
     const double amplitude = std::pow(
         k / k_peak, 0.5 * (k >= k_peak ? kWhitecapSpectrumSlope : kWhitecapGroupSlope));
     variance += 0.5 * amplitude * amplitude;
-    double kx = k * std::cos(angle), kz = k * std::sin(angle);
-    if (period_m > 0.0) {
-      const double dk = kTwoPi / period_m;
-      kx = dk * std::round(kx / dk);
-      kz = dk * std::round(kz / dk);
-      if (kx == 0.0 && kz == 0.0) kx = dk;
-    }
-    waves[static_cast<std::size_t>(i)] = {kx, kz, amplitude, std::sqrt(kG * std::hypot(kx, kz)),
-                                          kTwoPi * p};
+    waves[static_cast<std::size_t>(i)] = {k * std::cos(angle), k * std::sin(angle), amplitude,
+                                          std::sqrt(kG * k), kTwoPi * p};
   }
   for (WhitecapWave& w : waves) w.amplitude /= std::sqrt(variance);
   return waves;

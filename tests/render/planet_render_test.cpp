@@ -125,6 +125,9 @@ TEST(PlanetRender, TheSameSeaFarFromTheOriginGivesTheSamePicture) {
                 .far_m = 2e5};
     v.quality = ocean::lod::quality_preset(ocean::lod::QualityPreset::low);
     v.ocean_size_m = 2048.0;
+    // The whitecaps' patches (R.11b) do not repeat with the cascades: whole periods away they are
+    // another realisation, which this test of the periodic sea's precision leaves out.
+    v.shading.whitecap_patches = false;
     ASSERT_TRUE(rig->renderer->draw(v).ok());
     pictures.emplace_back();
     ASSERT_TRUE(rig->renderer->read_srgb(pictures.back()).ok());

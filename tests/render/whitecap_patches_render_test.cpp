@@ -96,13 +96,12 @@ TEST(WhitecapPatches, TheDrawnCoverKeepsTheProbabilityOnAverage) {
   std::printf("whitecaps: mean drawn cover against F, worst relative error %.2e\n", worst);
 }
 
-// The field of R.11b at 10 m/s (on the 1000 m cascade's lattice), sampled over a square of 16 ×
-// its longest wavelength on 512² points: mean 0 and variance 1 (Σ A²/2 = 1) within 5 %, and the
+// The field of R.11b at 10 m/s, sampled over a square of 16 × its longest wavelength on 512² points: mean 0 and variance 1 (Σ A²/2 = 1) within 5 %, and the
 // share below Φ⁻¹(F) — the white area a resolved picture draws — within 35 % of F for F = 0.5 %,
 // 1 %, 5 % and 20 %: a sum of 48 sines is close to, not exactly, Gaussian, and this is the error
 // the patches' cover carries.
 TEST(WhitecapPatches, TheFieldIsCloseToGaussian) {
-  const auto waves = ocean::render::whitecap_waves(10.0, {1.0, 0.0}, 1000.0);  // the moderate sea
+  const auto waves = ocean::render::whitecap_waves(10.0, {1.0, 0.0});
   double amp2 = 0.0, k_min = 1e9;
   for (const auto& w : waves) {
     amp2 += 0.5 * w.amplitude * w.amplitude;
