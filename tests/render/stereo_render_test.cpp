@@ -144,6 +144,15 @@ std::array<EyeDifference, 2> stereo_against_mono(Renderer& stereo, Renderer& mon
   return out;
 }
 
+// A view without the whitecaps' patches (R.11b): their edge is a step about as wide as the
+// field's change across a pixel, which turns a last-bit difference between the multiview and the
+// mono vertex paths' world positions into a level of the 8-bit picture; the bit-for-bit
+// comparisons below are of everything else.
+View no_patches(View view) {
+  view.shading.whitecap_patches = false;
+  return view;
+}
+
 // A 4 m cube (the object pass draws in stereo as well).
 ocean::render::Mesh cube() {
   std::vector<std::array<double, 3>> v;
@@ -166,7 +175,7 @@ TEST(StereoRender, EachEyeEqualsAMonoRenderFromItsPose) {
   const ocean::render::Mesh box = cube();
   ASSERT_TRUE(stereo->set_meshes(std::span(&box, 1)).ok());
   ASSERT_TRUE(mono->set_meshes(std::span(&box, 1)).ok());
-  View head = ocean::render::testing::eye_level_view(kEyeW, kEyeH);
+  View head = no_patches(ocean::render::testing::eye_level_view(kEyeW, kEyeH));
   // Away from the lines where the grid centre's snap (L.9) changes, so that the eyes and the
   // head share one grid centre; a box 40 m ahead, a little to the right.
   for (ocean::lod::Vec3* p : {&head.camera.position_m, &head.camera.target_m})
@@ -181,6 +190,16 @@ TEST(StereoRender, EachEyeEqualsAMonoRenderFromItsPose) {
     for (const EyeDifference& e :
          stereo_against_mono(*stereo, *mono, head, eyes.value(), ipd, both))
       EXPECT_EQ(e.d.max, 0) << "IPD " << ipd;
+  }
+  // With the patches: the same but for a level or two where an edge meets a last-bit difference.
+  View with_patches = head;
+  with_patches.shading.whitecap_patches = true;
+  const auto pair = ocean::render::stereo_eyes(head.camera, ocean::render::kDefaultIpd_m);
+  ASSERT_TRUE(pair.ok());
+  for (const EyeDifference& e : stereo_against_mono(*stereo, *mono, with_patches, pair.value(),
+                                                    ocean::render::kDefaultIpd_m, both)) {
+    EXPECT_LE(e.d.max, 3);
+    EXPECT_LT(e.above_2, 1e-4);
   }
   // The box is in both eyes (orange: red well above blue; the sea and the sky are not).
   for (int e = 0; e < 2; ++e) {
@@ -224,7 +243,7 @@ TEST(StereoRender, HeadsetEyesEachEqualAMonoRenderFromTheirPose) {
   auto mono = rig->renderer(kEyeW, kEyeH);
   ASSERT_NE(stereo, nullptr);
   ASSERT_NE(mono, nullptr);
-  View head = ocean::render::testing::eye_level_view(kEyeW, kEyeH);
+  View head = no_patches(ocean::render::testing::eye_level_view(kEyeW, kEyeH));
   head.camera.position_m = {7.3, 6.0, 4.1};  // clear of the grid centre's snap lines (L.9)
   head.camera.target_m = {7.3, 6.0, 4.1 - 100.0};
   const auto eyes = headset_eyes(head.camera, 0.3);

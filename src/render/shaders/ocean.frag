@@ -170,9 +170,8 @@ void main() {
   }
   // The sea's breaking probability drawn as white patches, its mean kept (R.11b).
   if (u.foam_weighted > 0.5 && u.whitecaps.count > 0.0) {
-    vec2 r = world_xz - u.camera_pos_m.xz;
-    float g, v, s2;
-    whitecap_field(u.whitecaps, r.x, r.y, dx.x, dx.y, dy.x, dy.y, g, v, s2);
+    float g, v, s2;  // the phases are at the grid's centre, where world_xz is 0 (R.16)
+    whitecap_field(u.whitecaps, world_xz.x, world_xz.y, dx.x, dx.y, dy.x, dy.y, g, v, s2);
     no_foam = 1.0 - whitecap_patch(clamp(1.0 - no_foam, 0.0, 1.0), g, v, s2);
   }
   ripples_at(world_xz, dx, dy, slope, variance);  // the short waves the pixel resolves (R.62)

@@ -197,7 +197,7 @@ struct RippleUniforms {
 };
 
 // The sea's whitecaps as patches (R.11b): the sines of a Gaussian field g of unit variance, per
-// sine (k_x, k_z, amplitude, phase at the camera and the frame's time); count 0 draws each
+// sine (k_x, k_z, amplitude, phase at the quadtree's centre and the frame's time); count 0 draws each
 // cascade's breaking probability as it is.
 struct WhitecapUniforms {
   vec4 waves[OCEAN_RENDER_WHITECAP_WAVES];

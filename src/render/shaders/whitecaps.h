@@ -99,8 +99,8 @@ OCEAN_FN float whitecap_patch(float cover, float g, float v, float s2) {
   return whitecap_normal_cdf((a * sqrt(1.0f + s2) - g) / sqrt(max(rest, 1e-8f)));
 }
 
-// The field g at (rx, rz) metres from the camera: Σ w_i·A_i·sin(k_i·r + ψ_i) over the uniforms'
-// sines (k_x, k_z, A_i, ψ_i at the camera and the frame's time), Σ A_i²/2 = 1.
+// The field g at (rx, rz) metres from the quadtree's centre: Σ w_i·A_i·sin(k_i·r + ψ_i) over the
+// uniforms' sines (k_x, k_z, A_i, ψ_i at the quadtree's centre and the frame's time), Σ A_i²/2 = 1.
 // (dxx, dxz), (dyx, dyz): the pixel's footprint (the world position's screen derivatives). A sine
 // whose phase changes by Δθ = max(|k·dx|, |k·dy|) across the pixel is drawn with weight
 // w = clamp(2 − 2Δθ/π, 0, 1) (R.62's rule); v = Σ w²·A²/2 is what is drawn of the variance and
