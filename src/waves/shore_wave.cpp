@@ -95,7 +95,10 @@ Result<ShoreWave> ShoreWave::make(ShoreWaveParams params) {
   const double h = p.bathymetry.size_m / cols;
   const double x0 = p.bathymetry.origin_m[0], z0 = p.bathymetry.origin_m[1];
   const auto n = static_cast<std::size_t>(rows) * static_cast<std::size_t>(cols);
-  const auto at = [cols](int r, int c) { return static_cast<std::size_t>(r) * cols + c; };
+  const auto at = [cols](int r, int c) {
+    return static_cast<std::size_t>(r) * static_cast<std::size_t>(cols) +
+           static_cast<std::size_t>(c);
+  };
   std::vector<double> k(n);
   for (std::size_t i = 0; i < n; ++i) k[i] = shore_wavenumber(w.omega_, m.values[i], g);
   const auto water = [&](int r, int c) {
@@ -216,7 +219,8 @@ Result<ShoreWave> ShoreWave::make(ShoreWaveParams params) {
   std::sort(order.begin(), order.end(), [&](std::size_t l, std::size_t r) { return S[l] < S[r]; });
   std::vector<char> done(source);
   for (const std::size_t i : order) {
-    const int r = static_cast<int>(i / cols), c = static_cast<int>(i % cols);
+    const auto ucols = static_cast<std::size_t>(cols);
+    const int r = static_cast<int>(i / ucols), c = static_cast<int>(i % ucols);
     double inflow = 0.0;
     const auto from = [&](int rn, int cn, double component) {
       if (!water(rn, cn) || !done[at(rn, cn)] || component <= 0.0) return;
@@ -259,9 +263,11 @@ ShoreWavePoint ShoreWave::at(double x, double z) const {
   const int c0 = std::min(static_cast<int>(cu), m.cols - 1), c1 = std::min(c0 + 1, m.cols - 1);
   const int r0 = std::min(static_cast<int>(cv), m.rows - 1), r1 = std::min(r0 + 1, m.rows - 1);
   const double fu = cu - c0, fv = cv - r0;
-  const std::size_t idx[4] = {
-      static_cast<std::size_t>(r0) * m.cols + c0, static_cast<std::size_t>(r0) * m.cols + c1,
-      static_cast<std::size_t>(r1) * m.cols + c0, static_cast<std::size_t>(r1) * m.cols + c1};
+  const auto cell = [&](int r, int c) {
+    return static_cast<std::size_t>(r) * static_cast<std::size_t>(m.cols) +
+           static_cast<std::size_t>(c);
+  };
+  const std::size_t idx[4] = {cell(r0, c0), cell(r0, c1), cell(r1, c0), cell(r1, c1)};
   const double wt[4] = {(1 - fu) * (1 - fv), fu * (1 - fv), (1 - fu) * fv, fu * fv};
   double sum = 0.0, s = 0.0, dx = 0.0, dz = 0.0, density = 0.0;
   for (int j = 0; j < 4; ++j) {
