@@ -37,16 +37,10 @@ Status Renderer::configure(const SurfaceDescription& surface) {
   pass<FarFieldPass>(st).noise = surface.far_noise;
   pass<RipplePass>(st).waves = surface.short_waves;
   // Whitecaps as patches (R.11b) where the cascades' foam is the breaking probability.
-  const double drift = std::hypot(surface.foam_drift_mps[0], surface.foam_drift_mps[1]);
-  const double u10 = whitecap_wind_mps(surface);
   WhitecapPass& whitecaps = pass<WhitecapPass>(st);
-  whitecaps.enabled = !surface.foam_weights.empty() && u10 > 0.0 && std::isfinite(u10);
-  if (whitecaps.enabled) {
-    whitecaps.waves = whitecap_waves(
-        u10, drift > 0.0 ? std::array<double, 2>{surface.foam_drift_mps[0] / drift,
-                                                 surface.foam_drift_mps[1] / drift}
-                         : std::array<double, 2>{0.0, 0.0});
-  }
+  const auto whitecap_sines = whitecap_waves(surface);
+  whitecaps.enabled = !surface.foam_weights.empty() && whitecap_sines.has_value();
+  if (whitecaps.enabled) whitecaps.waves = *whitecap_sines;
   st.cascades = static_cast<int>(cascade_count);
   const int n = surface.resolution;
   for (int c = 0; c < st.cascades; ++c) {

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "ocean/plan.hpp"
 #include "pass.hpp"
@@ -62,8 +63,8 @@ inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
     const double u = std::fmod(0.5 + i * 0.6180339887498949, 1.0);   // golden ratio
     const double p = std::fmod(0.25 + i * 0.7548776662466927, 1.0);  // plastic number
     const double angle = directed ? base + (2.0 * u - 1.0) * kWhitecapSpreadRad : kTwoPi * u;
-    const double amplitude = std::pow(
-        k / k_peak, 0.5 * (k >= k_peak ? kWhitecapSpectrumSlope : kWhitecapGroupSlope));
+    const double amplitude =
+        std::pow(k / k_peak, 0.5 * (k >= k_peak ? kWhitecapSpectrumSlope : kWhitecapGroupSlope));
     variance += 0.5 * amplitude * amplitude;
     waves[static_cast<std::size_t>(i)] = {k * std::cos(angle), k * std::sin(angle), amplitude,
                                           std::sqrt(kG * k), kTwoPi * p};
@@ -72,13 +73,19 @@ inline std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES> whitecap_waves(
   return waves;
 }
 
-/// The wind speed the patches scale with: U10 = |drift|/kWindDriftFraction where the sea names its
-/// wind; otherwise the wind of a fully developed sea of height Hs, Hs = 0.21·U²/g (Pierson &
-/// Moskowitz 1964).
-inline double whitecap_wind_mps(const SurfaceDescription& surface) {
+/// The field's sines for a described sea, scaled with its wind: U10 = |drift|/kWindDriftFraction
+/// along the drift where the sea names its wind; otherwise the wind of a fully developed sea of
+/// height Hs, Hs = 0.21·U²/g (Pierson & Moskowitz 1964), with no direction. Empty where that
+/// wind is not a positive finite speed (a flat sea).
+inline std::optional<std::array<WhitecapWave, OCEAN_RENDER_WHITECAP_WAVES>> whitecap_waves(
+    const SurfaceDescription& surface) {
   const double drift = std::hypot(surface.foam_drift_mps[0], surface.foam_drift_mps[1]);
-  if (drift > 0.0) return drift / kWindDriftFraction;
-  return std::sqrt(9.80665 * surface.significant_wave_height_m / 0.21);
+  const double u10 = drift > 0.0 ? drift / kWindDriftFraction
+                                 : std::sqrt(9.80665 * surface.significant_wave_height_m / 0.21);
+  if (!(u10 > 0.0 && std::isfinite(u10))) return std::nullopt;
+  return whitecap_waves(u10, drift > 0.0 ? std::array<double, 2>{surface.foam_drift_mps[0] / drift,
+                                                                 surface.foam_drift_mps[1] / drift}
+                                         : std::array<double, 2>{0.0, 0.0});
 }
 
 // render pass 255: WhitecapPass — the sea's whitecaps drawn as patches (R.11b)
